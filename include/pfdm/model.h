@@ -1,0 +1,71 @@
+// Which parameter functions a model lets vary, and one fitted state of it.
+#ifndef PFDM_MODEL_H_
+#define PFDM_MODEL_H_
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/model_point.h"
+#include "pfdm/parameter_function.h"
+
+namespace pfdm {
+
+enum class FunctionMode {
+  kFree,      // Piecewise linear over the knots.
+  kConstant,  // One fitted value for every u.
+  kFixed,     // Held at its initial value.
+};
+
+struct ModelConfig {
+  std::string name = "paper";
+  int num_knots = 17;
+  // Apex at u_min, base at u_max.  The base sits above the equator so that
+  // the base ring can move along the axis (a3 scales sin u, zero at u = 0).
+  double u_min = -1.5707963267948966;
+  double u_max = 0.5235987755982988;  // pi / 6
+  std::array<FunctionMode, kNumFunctions> modes{};
+
+  // The paper's LV set-up: a0 constant (held: it is the scale gauge),
+  // eps1 = eps2 = 1, e3o = 0; a1 a2 a3 tau b0..b3 e1o e2o free.
+  static ModelConfig Paper(int num_knots);
+  // The paper's Fig. 2(b) baseline: the same functions, constant along u.
+  static ModelConfig Superellipsoid(int num_knots);
+  // "paper" or "superellipsoid"; throws InputError otherwise.
+  static ModelConfig FromName(const std::string& name, int num_knots);
+
+  KnotGrid Grid() const { return KnotGrid(num_knots, u_min, u_max); }
+  FunctionMask FreeMask() const;
+};
+
+// Values before any fit: eps = 1, b1 = b3 = 1 (bending, if any, tilts),
+// everything else 0 but the a's, which initialization sets.
+FunctionValues DefaultFunctionValues();
+
+struct ModelState {
+  std::array<double, 3> center{0.0, 0.0, 0.0};
+  std::array<double, 4> quaternion{1.0, 0.0, 0.0, 0.0};  // (w, x, y, z)
+  FunctionValues globals = DefaultFunctionValues();      // Non-free functions.
+  std::vector<FunctionValues> knots;                     // Free functions.
+};
+
+struct Model {
+  ModelConfig config;
+  ModelState state;
+
+  // A model whose every knot and global holds `values`.
+  static Model Uniform(const ModelConfig& config, const FunctionValues& values);
+
+  bool UnitExponents() const;
+  double FunctionAt(int function, double u) const;
+  FunctionValues FunctionsAt(double u) const;
+  Eigen::Vector3d ModelPoint(double u, double v) const;  // s, model frame
+  Eigen::Vector3d WorldPoint(double u, double v) const;  // c + R s
+  // Rotation world_from_model.
+  Eigen::Matrix3d Rotation() const;
+};
+
+}  // namespace pfdm
+
+#endif  // PFDM_MODEL_H_

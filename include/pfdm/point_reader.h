@@ -1,0 +1,31 @@
+// Reads point sequences: pfdm's CSV and biv-me guide-point files.
+#ifndef PFDM_POINT_READER_H_
+#define PFDM_POINT_READER_H_
+
+#include <string>
+#include <vector>
+
+#include "pfdm/point_data.h"
+
+namespace pfdm {
+
+// CSV with a header naming at least frame,id,x,y,z (any order; other
+// columns ignored).  Frames must run 0..F-1 with none empty and no id twice
+// in a frame.  Throws InputError "PATH:LINE: ..." or "PATH: frame N: ...".
+PointSequence ReadPointsCsv(const std::string& path);
+
+// biv-me guide points, tab-separated with header `x y z contour type frameID
+// weight time frame`: one file, or a folder of GPFile_*.txt.  Frames are the
+// distinct `time frame` values in order.  Only rows whose contour type is
+// listed are kept (all when the list is empty); each is an untracked point
+// with an id of its own.
+PointSequence ReadGpFiles(const std::string& path,
+                          const std::vector<std::string>& contour_types);
+
+// Splits a comma-separated list, expanding lv-endo and lv-epi into the SAX
+// and LAX contour types.
+std::vector<std::string> ExpandContourAlias(const std::string& spec);
+
+}  // namespace pfdm
+
+#endif  // PFDM_POINT_READER_H_

@@ -1,0 +1,60 @@
+#include "pfdm/clinical_summary.h"
+
+#include <cmath>
+
+namespace pfdm {
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
+
+double AxialLength(const Model& model) {
+  const double a0 = model.state.globals[kA0];
+  const double u_min = model.config.u_min, u_max = model.config.u_max;
+  return a0 * (model.FunctionAt(kA3, u_max) * std::sin(u_max) -
+               model.FunctionAt(kA3, u_min) * std::sin(u_min)) +
+         model.FunctionAt(kE3o, u_max) - model.FunctionAt(kE3o, u_min);
+}
+
+}  // namespace
+
+int ApicalKnot(const ModelConfig& config) {
+  const KnotGrid grid = config.Grid();
+  for (int k = 0; k < grid.num_knots(); ++k) {
+    if (std::cos(grid.KnotU(k)) > 1e-6) return k;
+  }
+  return 0;
+}
+
+ClinicalSummary SummarizeFrame(int frame, const Model& reference,
+                               const Model& current) {
+  const KnotGrid grid = current.config.Grid();
+  const int apical = ApicalKnot(current.config);
+  ClinicalSummary summary;
+  summary.frame = frame;
+  summary.apex_rotation_deg =
+      current.FunctionAt(kTau, grid.KnotU(apical)) * kDegreesPerRadian;
+  summary.base_rotation_deg =
+      current.FunctionAt(kTau, grid.u_max()) * kDegreesPerRadian;
+  summary.net_twist_deg = summary.base_rotation_deg - summary.apex_rotation_deg;
+  int counted = 0;
+  for (int k = 0; k < grid.num_knots(); ++k) {
+    const double u = grid.KnotU(k);
+    auto ratio = [&](int f) {
+      return current.FunctionAt(f, u) / reference.FunctionAt(f, u);
+    };
+    summary.radial_ratio_x.push_back(ratio(kA1));
+    summary.radial_ratio_y.push_back(ratio(kA2));
+    summary.longitudinal_ratio.push_back(ratio(kA3));
+    if (k < apical) continue;
+    summary.radial_contraction_x_percent += 100.0 * (1.0 - ratio(kA1));
+    summary.radial_contraction_y_percent += 100.0 * (1.0 - ratio(kA2));
+    ++counted;
+  }
+  summary.radial_contraction_x_percent /= counted;
+  summary.radial_contraction_y_percent /= counted;
+  summary.longitudinal_shortening_percent =
+      100.0 * (1.0 - AxialLength(current) / AxialLength(reference));
+  return summary;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,361 @@
+#include "pfdm/fitter.h"
+
+#include <chrono>
+#include <limits>
+#include <cmath>
+#include <memory>
+#include <unordered_map>
+
+#include "ceres/ceres.h"
+#include "pfdm/error.h"
+#include "pfdm/point_residual.h"
+#include "pfdm/regularizer.h"
+
+namespace pfdm {
+namespace {
+
+constexpr int kReferenceHeld[] = {kA3, kTau, kB0, kB1, kB2, kB3};
+constexpr int kGlobalsBlock = -1;
+// Makes the axis gauge outweigh the data by far: its residual stays below
+// 1e-6 mm while the data can barely feel it in the conditioning.
+constexpr double kGaugeWeight = 1e2;
+
+bool Contains(const std::vector<int>& list, int value) {
+  return std::find(list.begin(), list.end(), value) != list.end();
+}
+
+// Entries of a parameter block (the globals, or knot `block`) that the gauge
+// and the configuration hold.  Frame 0 is the reference configuration: no
+// twist or bending by definition; a3 is held (at the value initialization
+// gave, with a0 spanning the data: see SpanAxialExtent), since a surface
+// seen only through distances fixes the meridian's shape but not how u runs
+// along it; its axis is the least-squares line of the
+// ring centres (AxisGaugeResidual), which leaves the pose to carry the rigid
+// motion.  With offsets constant in u they are simply held at zero.
+std::vector<int> HeldEntries(const ModelConfig& config, bool reference,
+                             int block) {
+  const FunctionMode fitted =
+      block == kGlobalsBlock ? FunctionMode::kConstant : FunctionMode::kFree;
+  std::vector<int> held;
+  for (int f = 0; f < kNumFunctions; ++f) {
+    bool hold = config.modes[f] != fitted;
+    if (reference) {
+      hold = hold || std::find(std::begin(kReferenceHeld),
+                               std::end(kReferenceHeld),
+                               f) != std::end(kReferenceHeld);
+      hold = hold || ((f == kE1o || f == kE2o) && block == kGlobalsBlock);
+    }
+    if (hold) held.push_back(f);
+  }
+  return held;
+}
+
+// Millimetres of model-point motion per unit of each function, for the
+// regularizers.  Everything scales with the data, so scaled data get scaled
+// lengths.  tau is weighted as if at radius a0, about four times the LV's:
+// near the apex the rings are too small for the data to pin the twist, and
+// twist varies slowly along the axis, so its smoothness carries more.
+FunctionValues FunctionScales(const Model& model, const std::vector<int>& held) {
+  const double a0 = model.state.globals[kA0];
+  const double radius =
+      a0 * 0.5 * (model.FunctionAt(kA1, 0.0) + model.FunctionAt(kA2, 0.0));
+  FunctionValues scales{};
+  scales[kA0] = 1.0;
+  scales[kA1] = scales[kA2] = scales[kA3] = a0;
+  scales[kEps1] = scales[kEps2] = radius;
+  scales[kTau] = a0;
+  scales[kB0] = scales[kB2] = scales[kE1o] = scales[kE2o] = scales[kE3o] = 1.0;
+  scales[kB1] = scales[kB3] = radius;
+  for (int f : held) scales[f] = 0.0;
+  return scales;
+}
+
+void AddBlock(ceres::Problem* problem, double* values,
+              const std::vector<int>& held) {
+  problem->AddParameterBlock(values, kNumFunctions);
+  if (static_cast<int>(held.size()) == kNumFunctions) {
+    problem->SetParameterBlockConstant(values);
+    return;
+  }
+  if (!held.empty()) {
+    problem->SetManifold(values, new ceres::SubsetManifold(kNumFunctions, held));
+  }
+  auto bound = [&](int f, double lower, double upper) {
+    if (Contains(held, f)) return;
+    problem->SetParameterLowerBound(values, f, lower);
+    problem->SetParameterUpperBound(values, f, upper);
+  };
+  for (int f : {kA1, kA2, kA3}) bound(f, 1e-3, 1.0);
+  for (int f : {kEps1, kEps2}) bound(f, 0.1, 4.0);
+  for (int f : {kB1, kB3}) bound(f, -1.0, 1.0);
+}
+
+ceres::LossFunction* MakeLoss(const FitOptions& options) {
+  if (options.loss == "none") return nullptr;
+  if (options.loss == "huber") return new ceres::HuberLoss(options.loss_scale_mm);
+  if (options.loss == "cauchy") {
+    return new ceres::CauchyLoss(options.loss_scale_mm);
+  }
+  throw InputError("unknown --loss '" + options.loss +
+                   "' (expected none, huber or cauchy)");
+}
+
+// One Levenberg-Marquardt solve of a frame for fixed material points.
+// Points listed in `sliding` get the point-to-plane residual.
+ceres::Solver::Summary SolveFrame(const std::vector<Eigen::Vector3d>& points,
+                                  const std::vector<MaterialPoint>& material,
+                                  const std::vector<bool>& sliding,
+                                  bool reference, const ModelState& prior,
+                                  const FitOptions& options, Model* model) {
+  const ModelConfig& config = model->config;
+  const KnotGrid grid = config.Grid();
+  ModelState& state = model->state;
+  ceres::Problem problem;
+
+  problem.AddParameterBlock(state.center.data(), 3);
+  problem.AddParameterBlock(state.quaternion.data(), 4,
+                            new ceres::QuaternionManifold);
+  if (!reference) {
+    problem.SetParameterBlockConstant(state.center.data());
+    problem.SetParameterBlockConstant(state.quaternion.data());
+  }
+  const std::vector<int> global_held =
+      HeldEntries(config, reference, kGlobalsBlock);
+  AddBlock(&problem, state.globals.data(), global_held);
+  for (int k = 0; k < config.num_knots; ++k) {
+    AddBlock(&problem, state.knots[k].data(), HeldEntries(config, reference, k));
+  }
+
+  ceres::LossFunction* loss = MakeLoss(options);
+  const FunctionMask free_mask = config.FreeMask();
+  const bool unit_exponents = model->UnitExponents();
+  for (size_t i = 0; i < points.size(); ++i) {
+    const KnotSpan span = grid.Span(material[i].u);
+    ceres::CostFunction* cost =
+        sliding[i]
+            ? SurfaceResidual::Create(
+                  points[i], material[i].u, material[i].v, span.weight,
+                  free_mask, unit_exponents,
+                  SurfaceNormal(*model, material[i].u, material[i].v))
+            : PointResidual::Create(points[i], material[i].u, material[i].v,
+                                    span.weight, free_mask, unit_exponents);
+    problem.AddResidualBlock(cost, loss, state.center.data(), state.quaternion.data(),
+        state.globals.data(), state.knots[span.k0].data(),
+        state.knots[span.k0 + 1].data());
+  }
+
+  const double points_per_knot =
+      static_cast<double>(points.size()) / config.num_knots;
+  const FunctionValues knot_scales =
+      FunctionScales(*model, HeldEntries(config, false, 0));
+  if (options.smoothness_weight > 0.0) {
+    const double sqrt_weight =
+        std::sqrt(options.smoothness_weight * points_per_knot);
+    for (int k = 1; k + 1 < config.num_knots; ++k) {
+      problem.AddResidualBlock(
+          SmoothnessResidual::Create(sqrt_weight, knot_scales), nullptr,
+          state.knots[k - 1].data(), state.knots[k].data(),
+          state.knots[k + 1].data());
+    }
+  }
+  if (reference && config.modes[kE1o] == FunctionMode::kFree) {
+    std::vector<double*> knots;
+    for (FunctionValues& knot : state.knots) knots.push_back(knot.data());
+    problem.AddResidualBlock(
+        new AxisGaugeResidual(config.num_knots,
+                              kGaugeWeight * std::sqrt(points.size())),
+        nullptr, knots);
+  }
+  if (options.prior_weight > 0.0) {
+    const double sqrt_weight = std::sqrt(options.prior_weight * points_per_knot);
+    for (int k = 0; k < config.num_knots; ++k) {
+      problem.AddResidualBlock(
+          PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
+          nullptr, state.knots[k].data());
+    }
+    problem.AddResidualBlock(
+        PriorResidual::Create(
+            std::sqrt(options.prior_weight * points.size()),
+            FunctionScales(*model, global_held), prior.globals),
+        nullptr, state.globals.data());
+  }
+
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = options.linear_solver;
+  solver_options.max_num_iterations = options.max_iterations;
+  solver_options.num_threads = options.num_threads;
+  solver_options.function_tolerance = 1e-9;
+  solver_options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+  return summary;
+}
+
+std::vector<Eigen::Vector3d> Positions(const Frame& frame) {
+  std::vector<Eigen::Vector3d> positions;
+  positions.reserve(frame.points.size());
+  for (const DataPoint& p : frame.points) positions.push_back(p.position);
+  return positions;
+}
+
+// Fills material[i] for the listed points with their closest material points
+// and returns how far (mm) the farthest one moved on the model.
+double UpdateClosest(const Model& model,
+                     const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<size_t>& which,
+                     std::vector<MaterialPoint>* material) {
+  std::vector<Eigen::Vector3d> subset;
+  for (size_t i : which) subset.push_back(points[i]);
+  const std::vector<MaterialPoint> closest = ClosestMaterialPoints(model, subset);
+  double moved = 0.0;
+  for (size_t j = 0; j < which.size(); ++j) {
+    MaterialPoint& old = (*material)[which[j]];
+    moved = std::max(moved, (model.WorldPoint(closest[j].u, closest[j].v) -
+                             model.WorldPoint(old.u, old.v))
+                                .norm());
+    old = closest[j];
+  }
+  return moved;
+}
+
+void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
+               FrameFit* fit) {
+  double sum_squared = 0.0, sum = 0.0, max = 0.0;
+  fit->residuals.clear();
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d r =
+        model.WorldPoint(fit->material[i].u, fit->material[i].v) - points[i];
+    fit->residuals.push_back(r);
+    sum_squared += r.squaredNorm();
+    sum += r.norm();
+    max = std::max(max, r.norm());
+  }
+  fit->rms_mm = std::sqrt(sum_squared / points.size());
+  fit->mean_distance_mm = sum / points.size();
+  fit->max_distance_mm = max;
+  fit->state = model.state;
+}
+
+// Sets a0 so that the model, a3 held, reaches from its fitted apex to the
+// highest data point along its axis (the base rim), keeping the apex, the
+// radii in mm and the orientation where they are.  With a robust loss,
+// points farther than three loss scales from the surface are outliers and
+// do not count.
+void SpanAxialExtent(const std::vector<Eigen::Vector3d>& points,
+                     const FitOptions& options, Model* model) {
+  const Eigen::Vector3d axis = model->Rotation().col(2);
+  const Eigen::Vector3d center(model->state.center.data());
+  const double outlier_mm = options.loss == "none"
+                                ? std::numeric_limits<double>::infinity()
+                                : 3.0 * options.loss_scale_mm;
+  std::vector<MaterialPoint> closest;
+  if (options.loss != "none") closest = ClosestMaterialPoints(*model, points);
+  double z_base = -std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!closest.empty() &&
+        (model->WorldPoint(closest[i].u, closest[i].v) - points[i]).norm() >
+            outlier_mm) {
+      continue;
+    }
+    z_base = std::max(z_base, (points[i] - center).dot(axis));
+  }
+  if (!std::isfinite(z_base)) return;
+  const double sin_min = std::sin(model->config.u_min);
+  const double sin_max = std::sin(model->config.u_max);
+  FunctionValues& globals = model->state.globals;
+  const double a0 = globals[kA0];
+  const double a3 = model->FunctionAt(kA3, model->config.u_min);
+  const double z_apex = a0 * a3 * sin_min;
+  const double new_a0 = (z_base - z_apex) / (a3 * (sin_max - sin_min));
+  const Eigen::Vector3d new_center =
+      center + axis * (z_apex - new_a0 * a3 * sin_min);
+  for (int i = 0; i < 3; ++i) model->state.center[i] = new_center[i];
+  auto rescale = [&](FunctionValues& values) {
+    values[kA1] *= a0 / new_a0;
+    values[kA2] *= a0 / new_a0;
+  };
+  rescale(globals);
+  for (FunctionValues& knot : model->state.knots) rescale(knot);
+  globals[kA0] = new_a0;
+}
+
+}  // namespace
+
+SequenceFit FitSequence(const PointSequence& sequence,
+                        const ModelConfig& config, const FitOptions& options) {
+  if (sequence.frames.empty()) {
+    throw InputError(sequence.source + ": no frames");
+  }
+  std::unordered_map<std::int64_t, int> frames_per_id;
+  for (const Frame& frame : sequence.frames) {
+    if (static_cast<int>(frame.points.size()) < options.min_points) {
+      throw InputError(sequence.source + ": frame " +
+                       std::to_string(frame.index) + ": only " +
+                       std::to_string(frame.points.size()) +
+                       " points, at least " +
+                       std::to_string(options.min_points) + " needed");
+    }
+    for (const DataPoint& p : frame.points) ++frames_per_id[p.id];
+  }
+
+  SequenceFit result;
+  result.config = config;
+  Model model = InitializeModel(config, Positions(sequence.frames[0]),
+                                options.hint);
+  ModelState prior = model.state;
+  std::unordered_map<std::int64_t, MaterialPoint> tracked_material;
+
+  for (const Frame& frame : sequence.frames) {
+    const auto start = std::chrono::steady_clock::now();
+    const bool reference = frame.index == sequence.frames[0].index;
+    const std::vector<Eigen::Vector3d> points = Positions(frame);
+    FrameFit fit;
+    fit.frame = frame.index;
+    fit.material.resize(points.size());
+    std::vector<size_t> unknown;
+    for (size_t i = 0; i < points.size(); ++i) {
+      auto it = tracked_material.find(frame.points[i].id);
+      if (it != tracked_material.end()) {
+        fit.material[i] = it->second;
+      } else {
+        unknown.push_back(i);
+      }
+    }
+    UpdateClosest(model, points, unknown, &fit.material);
+    std::vector<bool> sliding(points.size(), false);
+    for (size_t i : unknown) sliding[i] = true;
+
+    ceres::Solver::Summary summary;
+    for (int round = 0; round < options.max_correspondence_rounds; ++round) {
+      summary = SolveFrame(points, fit.material, sliding, reference, prior,
+                           options, &model);
+      fit.iterations += summary.iterations.size() - 1;
+      ++fit.correspondence_rounds;
+      if (summary.termination_type == ceres::FAILURE ||
+          !summary.IsSolutionUsable()) {
+        throw InputError(sequence.source + ": frame " +
+                         std::to_string(frame.index) +
+                         ": solver failed: " + summary.message);
+      }
+      if (unknown.empty()) break;
+      if (reference) SpanAxialExtent(points, options, &model);
+      const double moved = UpdateClosest(model, points, unknown, &fit.material);
+      if (moved < options.correspondence_tolerance_mm) break;
+    }
+    fit.termination = ceres::TerminationTypeToString(summary.termination_type);
+    for (size_t i : unknown) {
+      if (frames_per_id[frame.points[i].id] > 1) {
+        tracked_material[frame.points[i].id] = fit.material[i];
+      }
+    }
+    Summarize(model, points, &fit);
+    fit.solve_seconds = std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - start)
+                            .count();
+    prior = model.state;
+    result.frames.push_back(std::move(fit));
+  }
+  return result;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,62 @@
+#include "pfdm/model.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "pfdm/error.h"
+
+namespace pfdm {
+namespace {
+
+TEST(ModelConfigTest, PaperSetUpFreesTheLvFunctions) {
+  const ModelConfig config = ModelConfig::Paper(17);
+  for (int f : {kA1, kA2, kA3, kTau, kB0, kB1, kB2, kB3, kE1o, kE2o}) {
+    EXPECT_EQ(config.modes[f], FunctionMode::kFree) << FunctionName(f);
+  }
+  for (int f : {kA0, kEps1, kEps2, kE3o}) {
+    EXPECT_EQ(config.modes[f], FunctionMode::kFixed) << FunctionName(f);
+  }
+  EXPECT_EQ(config.num_knots, 17);
+}
+
+TEST(ModelConfigTest, SuperellipsoidMakesEveryFreeFunctionConstant) {
+  const ModelConfig config = ModelConfig::Superellipsoid(17);
+  EXPECT_EQ(config.FreeMask(), 0u);
+  EXPECT_EQ(config.modes[kTau], FunctionMode::kConstant);
+  EXPECT_EQ(config.modes[kA0], FunctionMode::kFixed);
+}
+
+TEST(ModelConfigTest, FromNameRejectsUnknownModelsAndTooFewKnots) {
+  EXPECT_EQ(ModelConfig::FromName("superellipsoid", 9).name, "superellipsoid");
+  EXPECT_THROW(ModelConfig::FromName("cylinder", 17), InputError);
+  EXPECT_THROW(ModelConfig::FromName("paper", 1), InputError);
+}
+
+TEST(ModelTest, FreeFunctionsInterpolateAndOthersComeFromTheGlobals) {
+  Model model = Model::Uniform(ModelConfig::Paper(3), DefaultFunctionValues());
+  model.state.knots[1][kA1] = 0.2;
+  model.state.knots[2][kA1] = 0.6;
+  model.state.globals[kA0] = 7.0;
+  model.state.knots[1][kA0] = 99.0;  // Fixed: knots are not read.
+  const KnotGrid grid = model.config.Grid();
+  const double u = 0.75 * grid.KnotU(1) + 0.25 * grid.KnotU(2);
+  EXPECT_NEAR(model.FunctionAt(kA1, u), 0.3, 1e-12);
+  EXPECT_EQ(model.FunctionAt(kA0, u), 7.0);
+}
+
+TEST(ModelTest, WorldPointAppliesThePose) {
+  FunctionValues f = DefaultFunctionValues();
+  f[kA0] = 10.0;
+  Model model = Model::Uniform(ModelConfig::Paper(5), f);
+  model.state.center = {1.0, 2.0, 3.0};
+  // 90 degrees about z: x -> y.
+  model.state.quaternion = {std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};
+  const Eigen::Vector3d s = model.ModelPoint(0.0, 0.0);
+  EXPECT_NEAR(s.x(), 5.0, 1e-12);
+  const Eigen::Vector3d x = model.WorldPoint(0.0, 0.0);
+  EXPECT_TRUE(x.isApprox(Eigen::Vector3d(1.0, 7.0, 3.0), 1e-12));
+  EXPECT_TRUE(model.UnitExponents());
+}
+
+}  // namespace
+}  // namespace pfdm

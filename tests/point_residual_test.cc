@@ -1,0 +1,174 @@
+#include "pfdm/point_residual.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "ceres/gradient_checker.h"
+#include "ceres/manifold.h"
+#include "gtest/gtest.h"
+#include "pfdm/model.h"
+
+namespace pfdm {
+namespace {
+
+struct State {
+  double center[3] = {4.0, -7.0, 12.0};
+  double quaternion[4];
+  FunctionValues globals;
+  FunctionValues knot0;
+  FunctionValues knot1;
+};
+
+State GeneralState() {
+  State s;
+  const double norm = std::sqrt(0.9 * 0.9 + 0.1 * 0.1 + 0.3 * 0.3 + 0.2 * 0.2);
+  const double q[4] = {0.9, 0.1, -0.3, 0.2};
+  for (int i = 0; i < 4; ++i) s.quaternion[i] = q[i] / norm;
+  FunctionValues f = DefaultFunctionValues();
+  f[kA0] = 60.0;
+  f[kA1] = 0.4;
+  f[kA2] = 0.35;
+  f[kA3] = 0.8;
+  f[kEps1] = 0.8;
+  f[kEps2] = 1.2;
+  f[kB0] = 1.5;
+  f[kB1] = 0.4;
+  f[kB2] = -0.7;
+  f[kB3] = -1.0;
+  f[kTau] = 0.2;
+  f[kE1o] = 1.0;
+  f[kE2o] = -2.0;
+  f[kE3o] = 0.5;
+  s.globals = f;
+  s.knot0 = f;
+  s.knot1 = f;
+  for (int i = 1; i < kNumFunctions; ++i) s.knot1[i] *= 1.1;
+  return s;
+}
+
+// Worst error of the autodiff Jacobian against central differences, each
+// block's relative to that block's largest entry (entries that should be
+// zero make entry-wise relative errors meaningless).
+double WorstJacobianError(const ceres::CostFunction& cost, State& s) {
+  ceres::QuaternionManifold quaternion_manifold;
+  const std::vector<const ceres::Manifold*> manifolds = {
+      nullptr, &quaternion_manifold, nullptr, nullptr, nullptr};
+  ceres::NumericDiffOptions numeric;
+  numeric.relative_step_size = 1e-7;
+  ceres::GradientChecker checker(&cost, &manifolds, numeric);
+  const double* parameters[] = {s.center, s.quaternion, s.globals.data(),
+                                s.knot0.data(), s.knot1.data()};
+  ceres::GradientChecker::ProbeResults results;
+  checker.Probe(parameters, 1e-5, &results);
+  EXPECT_TRUE(results.return_value);
+  double worst = 0.0;
+  for (size_t i = 0; i < results.local_jacobians.size(); ++i) {
+    const Eigen::MatrixXd& analytic = results.local_jacobians[i];
+    const Eigen::MatrixXd& numeric = results.local_numeric_jacobians[i];
+    EXPECT_TRUE(analytic.allFinite()) << "block " << i;
+    const double scale = std::max(1e-3, numeric.cwiseAbs().maxCoeff());
+    worst = std::max(worst, (analytic - numeric).cwiseAbs().maxCoeff() / scale);
+  }
+  return worst;
+}
+
+struct Case {
+  const char* name;
+  double u, v;
+  void (*edit)(State*);
+};
+
+void NoEdit(State*) {}
+void UnitExponents(State* s) {
+  for (FunctionValues* f : {&s->globals, &s->knot0, &s->knot1}) {
+    (*f)[kEps1] = (*f)[kEps2] = 1.0;
+  }
+}
+void ZeroBending(State* s) {
+  for (FunctionValues* f : {&s->globals, &s->knot0, &s->knot1}) {
+    (*f)[kB0] = (*f)[kB2] = 0.0;
+  }
+}
+void IdentityPose(State* s) {
+  s->quaternion[0] = 1.0;
+  s->quaternion[1] = s->quaternion[2] = s->quaternion[3] = 0.0;
+  s->center[0] = s->center[1] = s->center[2] = 0.0;
+}
+
+const Case kCases[] = {
+    {"general", 0.3, 1.1, NoEdit},
+    {"apex pole", -M_PI / 2, 0.7, NoEdit},
+    {"v on +x axis", -0.4, 0.0, NoEdit},
+    {"v on +y axis", -0.4, M_PI / 2, NoEdit},
+    {"v on -x axis", -0.4, -M_PI, NoEdit},
+    {"equator", 0.0, 2.0, NoEdit},
+    {"eps = 1", -0.6, 0.8, UnitExponents},
+    {"eps = 1 at the pole", -M_PI / 2, 0.0, UnitExponents},
+    {"zero bending", 0.2, -2.2, ZeroBending},
+    {"identity pose", -1.0, 0.5, IdentityPose},
+};
+
+TEST(PointResidualTest, AutodiffJacobianMatchesNumericAtSingularPoints) {
+  for (FunctionMask mask : {FunctionMask{(1u << kNumFunctions) - 1},
+                            ModelConfig::Paper(17).FreeMask(), FunctionMask{0}}) {
+    for (const Case& c : kCases) {
+      State s = GeneralState();
+      c.edit(&s);
+      const Eigen::Vector3d data(1.0, 2.0, 3.0);
+      std::unique_ptr<ceres::CostFunction> point(
+          PointResidual::Create(data, c.u, c.v, 0.3, mask, false));
+      EXPECT_LT(WorstJacobianError(*point, s), 1e-5) << c.name << " " << mask;
+      std::unique_ptr<ceres::CostFunction> surface(SurfaceResidual::Create(
+          data, c.u, c.v, 0.3, mask, false, Eigen::Vector3d(0.6, 0.0, 0.8)));
+      EXPECT_LT(WorstJacobianError(*surface, s), 1e-5) << c.name << " " << mask;
+    }
+  }
+}
+
+TEST(PointResidualTest, ResidualIsModelPointMinusData) {
+  State s = GeneralState();
+  IdentityPose(&s);
+  const Eigen::Vector3d data(1.0, 2.0, 3.0);
+  const FunctionMask none = 0;  // Every function from the globals.
+  std::unique_ptr<ceres::CostFunction> cost(
+      PointResidual::Create(data, 0.0, 0.0, 0.5, none, false));
+  const double* parameters[] = {s.center, s.quaternion, s.globals.data(),
+                                s.knot0.data(), s.knot1.data()};
+  double residual[3];
+  ASSERT_TRUE(cost->Evaluate(parameters, residual, nullptr));
+  // u = v = 0: e = (a0 a1, 0, 0); the tilt bend lifts it by
+  // b0 (cos(pi/2 (a1 - b1)) - cos(pi/2 b1)); twist and offsets follow.
+  const FunctionValues& f = s.globals;
+  const double e1 = f[kA0] * f[kA1];
+  const double z = f[kB0] * (std::cos(M_PI / 2 * (e1 / f[kA0] - f[kB1])) -
+                             std::cos(M_PI / 2 * f[kB1]));
+  const Eigen::Vector3d expected(e1 * std::cos(f[kTau]) + f[kE1o],
+                                 e1 * std::sin(f[kTau]) + f[kE2o],
+                                 z + f[kE3o]);
+  EXPECT_NEAR(residual[0], expected.x() - data.x(), 1e-12);
+  EXPECT_NEAR(residual[1], expected.y() - data.y(), 1e-12);
+  EXPECT_NEAR(residual[2], expected.z() - data.z(), 1e-12);
+}
+
+TEST(PointResidualTest, KnotsAreBlendedByTheHatWeights) {
+  State s = GeneralState();
+  IdentityPose(&s);
+  const FunctionMask free_a1 = 1u << kA1;
+  std::unique_ptr<ceres::CostFunction> cost(PointResidual::Create(
+      Eigen::Vector3d::Zero(), 0.0, 0.0, 0.25, free_a1, true));
+  s.globals = DefaultFunctionValues();
+  s.globals[kA0] = 10.0;
+  s.globals[kB0] = 0.0;
+  s.knot0[kA1] = 0.2;
+  s.knot1[kA1] = 0.6;
+  const double* parameters[] = {s.center, s.quaternion, s.globals.data(),
+                                s.knot0.data(), s.knot1.data()};
+  double residual[3];
+  ASSERT_TRUE(cost->Evaluate(parameters, residual, nullptr));
+  EXPECT_NEAR(residual[0], 10.0 * (0.75 * 0.2 + 0.25 * 0.6), 1e-12);
+}
+
+}  // namespace
+}  // namespace pfdm
