@@ -77,7 +77,7 @@ std::string ParametersCsv(const std::vector<Model>& frames) {
 
 std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                     const FitOptions& options) {
-  using nlohmann::json;
+  using json = nlohmann::ordered_json;
   json settings = {{"points", points.source},
                    {"smoothness_weight", options.smoothness_weight},
                    {"prior_weight", options.prior_weight},

@@ -1,6 +1,8 @@
 #include "pfdm/point_reader.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -48,12 +50,21 @@ InputError Restate(const std::string& path, const io::error::base& error) {
   return InputError(where + ": " + what);
 }
 
-void CheckFinite(const std::string& path, unsigned line, const char* name,
-                 double value) {
-  if (!std::isfinite(value)) {
-    throw InputError(path + ":" + std::to_string(line) + ": column '" + name +
-                     "' is not a finite number");
+// libfccp splits the fields; its own float parser rounds differently from
+// strtod, so coordinates are converted by the standard library, which makes
+// written files read back bit for bit.
+double ParseCoordinate(const std::string& path, unsigned line,
+                       const char* name, const char* text) {
+  const std::string where =
+      path + ":" + std::to_string(line) + ": column '" + name + "'";
+  double value = 0.0;
+  const char* end = text + std::strlen(text);
+  const auto [rest, error] = std::from_chars(text, end, value);
+  if (error != std::errc() || rest != end || rest == text) {
+    throw InputError(where + " is not a number: '" + text + "'");
   }
+  if (!std::isfinite(value)) throw InputError(where + " is not a finite number");
+  return value;
 }
 
 // Orders frames and checks that 0..F-1 are all there.
@@ -84,19 +95,19 @@ PointSequence ReadPointsCsv(const std::string& path) {
         in(path);
     in.read_header(io::ignore_extra_column, "frame", "id", "x", "y", "z");
     long long frame, id;
-    double x, y, z;
+    char *x = nullptr, *y = nullptr, *z = nullptr;
     while (in.read_row(frame, id, x, y, z)) {
       const unsigned line = in.get_file_line();
       const std::string where = path + ":" + std::to_string(line);
-      CheckFinite(path, line, "x", x);
-      CheckFinite(path, line, "y", y);
-      CheckFinite(path, line, "z", z);
+      const Eigen::Vector3d position(ParseCoordinate(path, line, "x", x),
+                                     ParseCoordinate(path, line, "y", y),
+                                     ParseCoordinate(path, line, "z", z));
       if (frame < 0) throw InputError(where + ": negative frame " + std::to_string(frame));
       if (!ids[frame].insert(id).second) {
         throw InputError(where + ": id " + std::to_string(id) +
                          " appears twice in frame " + std::to_string(frame));
       }
-      frames[frame].push_back({id, Eigen::Vector3d(x, y, z)});
+      frames[frame].push_back({id, position});
     }
   } catch (const io::error::base& error) {
     throw Restate(path, error);
@@ -122,36 +133,32 @@ PointSequence ReadGpFiles(const std::string& path,
   const std::set<std::string> keep(contour_types.begin(), contour_types.end());
   std::map<long long, std::vector<DataPoint>> frames;
   std::int64_t next_id = 0;
-  for (const std::string& file : files) {
+  for (size_t file_index = 0; file_index < files.size(); ++file_index) {
+    const std::string& file = files[file_index];
+    std::vector<DataPoint>& points = frames[file_index];
     try {
-      io::CSVReader<5, io::trim_chars<' '>, io::no_quote_escape<'\t'>> in(file);
-      in.read_header(io::ignore_extra_column, "x", "y", "z", "contour type",
-                     "time frame");
-      double x, y, z;
-      std::string type;
-      long long frame;
-      while (in.read_row(x, y, z, type, frame)) {
+      io::CSVReader<4, io::trim_chars<' '>, io::no_quote_escape<'\t'>> in(file);
+      in.read_header(io::ignore_extra_column, "x", "y", "z", "contour type");
+      char *x = nullptr, *y = nullptr, *z = nullptr, *type = nullptr;
+      while (in.read_row(x, y, z, type)) {
         const unsigned line = in.get_file_line();
-        CheckFinite(file, line, "x", x);
-        CheckFinite(file, line, "y", y);
-        CheckFinite(file, line, "z", z);
+        const Eigen::Vector3d position(ParseCoordinate(file, line, "x", x),
+                                       ParseCoordinate(file, line, "y", y),
+                                       ParseCoordinate(file, line, "z", z));
         if (!keep.empty() && keep.count(type) == 0) continue;
-        frames[frame].push_back({next_id++, Eigen::Vector3d(x, y, z)});
+        points.push_back({next_id++, position});
       }
     } catch (const io::error::base& error) {
       throw Restate(file, error);
     }
+    if (points.empty()) {
+      std::string list;
+      for (const auto& t : contour_types) list += (list.empty() ? "" : ",") + t;
+      throw InputError(file + ": frame " + std::to_string(file_index) +
+                       ": no points of contour types " + list);
+    }
   }
-  if (frames.empty()) {
-    std::string list;
-    for (const auto& type : contour_types) list += (list.empty() ? "" : ",") + type;
-    throw InputError("no points of contour types " + list + " in " + path);
-  }
-  // biv-me numbers frames by acquisition; ours run 0..F-1 in that order.
-  std::map<long long, std::vector<DataPoint>> renumbered;
-  long long index = 0;
-  for (auto& [frame, points] : frames) renumbered[index++] = std::move(points);
-  return Assemble(path, std::move(renumbered));
+  return Assemble(path, std::move(frames));
 }
 
 std::vector<std::string> ExpandContourAlias(const std::string& spec) {

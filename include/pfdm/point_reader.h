@@ -15,10 +15,11 @@ namespace pfdm {
 PointSequence ReadPointsCsv(const std::string& path);
 
 // biv-me guide points, tab-separated with header `x y z contour type frameID
-// weight time frame`: one file, or a folder of GPFile_*.txt.  Frames are the
-// distinct `time frame` values in order.  Only rows whose contour type is
-// listed are kept (all when the list is empty); each is an untracked point
-// with an id of its own.
+// weight time frame`: one file (one frame), or a folder of GPFile_*.txt, one
+// frame per file in name order, as biv-me writes them.  The `time frame`
+// column is not read: biv-me's own files carry 1.0 there on some LAX rows.
+// Only rows whose contour type is listed are kept (all when the list is
+// empty); each is an untracked point with an id of its own.
 PointSequence ReadGpFiles(const std::string& path,
                           const std::vector<std::string>& contour_types);
 

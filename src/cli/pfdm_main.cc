@@ -121,6 +121,7 @@ int Simulate() {
   truth.replace_filename(truth.stem().string() + "_truth.csv");
   const std::string points_csv = ToPointsCsv(phantom.points);
   const std::string truth_csv = ParametersCsv(phantom.truth);
+  if (truth.has_parent_path()) EnsureDirectory(truth.parent_path().string());
   WriteFileAtomically(FLAGS_out, points_csv);
   WriteFileAtomically(truth.string(), truth_csv);
   std::printf("wrote %s (%d frames x %d tags) and %s\n", FLAGS_out.c_str(),

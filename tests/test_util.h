@@ -1,0 +1,30 @@
+// Helpers shared by the tests: scratch folders and running the pfdm binary.
+#ifndef PFDM_TESTS_TEST_UTIL_H_
+#define PFDM_TESTS_TEST_UTIL_H_
+
+#include <string>
+
+namespace pfdm {
+
+// A fresh empty folder under the test temp dir, unique per call.
+std::string ScratchDirectory(const std::string& name);
+
+void WriteText(const std::string& path, const std::string& text);
+std::string ReadText(const std::string& path);
+
+struct CommandResult {
+  int exit_code = 0;
+  std::string output;  // stdout
+  std::string error;   // stderr
+};
+
+// Runs the built pfdm binary with the given arguments (shell-quoted by the
+// caller where needed).
+CommandResult RunPfdm(const std::string& arguments);
+
+// ../shared/data beside the source tree, or "" when it is absent.
+std::string SharedDataDirectory();
+
+}  // namespace pfdm
+
+#endif  // PFDM_TESTS_TEST_UTIL_H_
