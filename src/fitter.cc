@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <limits>
+#include <optional>
 #include <cmath>
 #include <memory>
 #include <unordered_map>
@@ -29,11 +30,16 @@ bool Contains(const std::vector<int>& list, int value) {
 // twist or bending by definition; a3 is held (at the value initialization
 // gave, with a0 spanning the data: see SpanAxialExtent), since a surface
 // seen only through distances fixes the meridian's shape but not how u runs
-// along it; its axis is the least-squares line of the
-// ring centres (AxisGaugeResidual), which leaves the pose to carry the rigid
-// motion.  With offsets constant in u they are simply held at zero.
-std::vector<int> HeldEntries(const ModelConfig& config, bool reference,
+// along it; its axis is the least-squares line of the ring centres
+// (AxisGaugeResidual), which leaves the pose to carry the rigid motion.
+// With offsets constant in u they are simply held at zero.  A later frame
+// with no tracked point holds tau: without material points a turn of a
+// ring about the axis is invisible, and the fit would only drift.
+enum class FrameKind { kReference, kTracked, kUntracked };
+
+std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
                              int block) {
+  const bool reference = kind == FrameKind::kReference;
   const FunctionMode fitted =
       block == kGlobalsBlock ? FunctionMode::kConstant : FunctionMode::kFree;
   std::vector<int> held;
@@ -45,6 +51,7 @@ std::vector<int> HeldEntries(const ModelConfig& config, bool reference,
                                f) != std::end(kReferenceHeld);
       hold = hold || ((f == kE1o || f == kE2o) && block == kGlobalsBlock);
     }
+    if (kind == FrameKind::kUntracked) hold = hold || f == kTau;
     if (hold) held.push_back(f);
   }
   return held;
@@ -101,11 +108,15 @@ ceres::LossFunction* MakeLoss(const FitOptions& options) {
 }
 
 // One Levenberg-Marquardt solve of a frame for fixed material points.
-// Points listed in `sliding` get the point-to-plane residual.
+// Points listed in `sliding` get the point-to-plane residual, except where
+// they lie past the base rim: there the plane says nothing about how far,
+// so they pull with the whole distance.  rim_height, when given, is where
+// the base rim must sit (RimResidual).
 ceres::Solver::Summary SolveFrame(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<MaterialPoint>& material,
                                   const std::vector<bool>& sliding,
-                                  bool reference, const ModelState& prior,
+                                  std::optional<double> rim_height,
+                                  FrameKind kind, const ModelState& prior,
                                   const FitOptions& options, Model* model) {
   const ModelConfig& config = model->config;
   const KnotGrid grid = config.Grid();
@@ -115,15 +126,16 @@ ceres::Solver::Summary SolveFrame(const std::vector<Eigen::Vector3d>& points,
   problem.AddParameterBlock(state.center.data(), 3);
   problem.AddParameterBlock(state.quaternion.data(), 4,
                             new ceres::QuaternionManifold);
+  const bool reference = kind == FrameKind::kReference;
   if (!reference) {
     problem.SetParameterBlockConstant(state.center.data());
     problem.SetParameterBlockConstant(state.quaternion.data());
   }
   const std::vector<int> global_held =
-      HeldEntries(config, reference, kGlobalsBlock);
+      HeldEntries(config, kind, kGlobalsBlock);
   AddBlock(&problem, state.globals.data(), global_held);
   for (int k = 0; k < config.num_knots; ++k) {
-    AddBlock(&problem, state.knots[k].data(), HeldEntries(config, reference, k));
+    AddBlock(&problem, state.knots[k].data(), HeldEntries(config, kind, k));
   }
 
   ceres::LossFunction* loss = MakeLoss(options);
@@ -132,7 +144,7 @@ ceres::Solver::Summary SolveFrame(const std::vector<Eigen::Vector3d>& points,
   for (size_t i = 0; i < points.size(); ++i) {
     const KnotSpan span = grid.Span(material[i].u);
     ceres::CostFunction* cost =
-        sliding[i]
+        sliding[i] && material[i].u < config.u_max
             ? SurfaceResidual::Create(
                   points[i], material[i].u, material[i].v, span.weight,
                   free_mask, unit_exponents,
@@ -147,7 +159,7 @@ ceres::Solver::Summary SolveFrame(const std::vector<Eigen::Vector3d>& points,
   const double points_per_knot =
       static_cast<double>(points.size()) / config.num_knots;
   const FunctionValues knot_scales =
-      FunctionScales(*model, HeldEntries(config, false, 0));
+      FunctionScales(*model, HeldEntries(config, FrameKind::kTracked, 0));
   if (options.smoothness_weight > 0.0) {
     const double sqrt_weight =
         std::sqrt(options.smoothness_weight * points_per_knot);
@@ -157,6 +169,12 @@ ceres::Solver::Summary SolveFrame(const std::vector<Eigen::Vector3d>& points,
           state.knots[k - 1].data(), state.knots[k].data(),
           state.knots[k + 1].data());
     }
+  }
+  if (rim_height) {
+    problem.AddResidualBlock(
+        RimResidual::Create(std::sqrt(points_per_knot), std::sin(config.u_max),
+                            *rim_height, free_mask),
+        nullptr, state.globals.data(), state.knots.back().data());
   }
   if (reference && config.modes[kE1o] == FunctionMode::kFree) {
     std::vector<double*> knots;
@@ -236,30 +254,37 @@ void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
   fit->state = model.state;
 }
 
-// Sets a0 so that the model, a3 held, reaches from its fitted apex to the
-// highest data point along its axis (the base rim), keeping the apex, the
-// radii in mm and the orientation where they are.  With a robust loss,
-// points farther than three loss scales from the surface are outliers and
-// do not count.
-void SpanAxialExtent(const std::vector<Eigen::Vector3d>& points,
-                     const FitOptions& options, Model* model) {
-  const Eigen::Vector3d axis = model->Rotation().col(2);
-  const Eigen::Vector3d center(model->state.center.data());
-  const double outlier_mm = options.loss == "none"
-                                ? std::numeric_limits<double>::infinity()
-                                : 3.0 * options.loss_scale_mm;
+// Height along the model axis of the highest data point that is not an
+// outlier: with a robust loss, points farther than three loss scales from
+// the surface do not count.  NaN when none counts.
+double TopHeight(const std::vector<Eigen::Vector3d>& points,
+                 const FitOptions& options, const Model& model) {
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  const Eigen::Vector3d center(model.state.center.data());
   std::vector<MaterialPoint> closest;
-  if (options.loss != "none") closest = ClosestMaterialPoints(*model, points);
-  double z_base = -std::numeric_limits<double>::infinity();
+  if (options.loss != "none") closest = ClosestMaterialPoints(model, points);
+  double top = std::numeric_limits<double>::quiet_NaN();
   for (size_t i = 0; i < points.size(); ++i) {
     if (!closest.empty() &&
-        (model->WorldPoint(closest[i].u, closest[i].v) - points[i]).norm() >
-            outlier_mm) {
+        (model.WorldPoint(closest[i].u, closest[i].v) - points[i]).norm() >
+            3.0 * options.loss_scale_mm) {
       continue;
     }
-    z_base = std::max(z_base, (points[i] - center).dot(axis));
+    const double z = (points[i] - center).dot(axis);
+    if (!(z <= top)) top = z;
   }
+  return top;
+}
+
+// Sets a0 so that the model, a3 held, reaches from its fitted apex to the
+// highest data point along its axis (the base rim), keeping the apex, the
+// radii in mm and the orientation where they are.
+void SpanAxialExtent(const std::vector<Eigen::Vector3d>& points,
+                     const FitOptions& options, Model* model) {
+  const double z_base = TopHeight(points, options, *model);
   if (!std::isfinite(z_base)) return;
+  const Eigen::Vector3d axis = model->Rotation().col(2);
+  const Eigen::Vector3d center(model->state.center.data());
   const double sin_min = std::sin(model->config.u_min);
   const double sin_max = std::sin(model->config.u_max);
   FunctionValues& globals = model->state.globals;
@@ -325,10 +350,19 @@ SequenceFit FitSequence(const PointSequence& sequence,
     std::vector<bool> sliding(points.size(), false);
     for (size_t i : unknown) sliding[i] = true;
 
+    const FrameKind kind = reference ? FrameKind::kReference
+                           : unknown.size() == points.size()
+                               ? FrameKind::kUntracked
+                               : FrameKind::kTracked;
     ceres::Solver::Summary summary;
     for (int round = 0; round < options.max_correspondence_rounds; ++round) {
-      summary = SolveFrame(points, fit.material, sliding, reference, prior,
-                           options, &model);
+      std::optional<double> rim_height;
+      if (!reference && !unknown.empty()) {
+        const double top = TopHeight(points, options, model);
+        if (std::isfinite(top)) rim_height = top;
+      }
+      summary = SolveFrame(points, fit.material, sliding, rim_height,
+                           kind, prior, options, &model);
       fit.iterations += summary.iterations.size() - 1;
       ++fit.correspondence_rounds;
       if (summary.termination_type == ceres::FAILURE ||

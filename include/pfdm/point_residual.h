@@ -102,6 +102,43 @@ class SurfaceResidual {
   Eigen::Vector3d data_;
 };
 
+// r = sqrt(w) (a0 a3(u_max) sin(u_max) + e3o(u_max) - z_top): the base rim,
+// whose axial height this is in the model frame, at the highest data point.
+// Contours say where the wall is, not which latitude a point has, so
+// without it nothing stops an open model from reaching past the data.
+class RimResidual {
+ public:
+  RimResidual(double sqrt_weight, double sin_u_max, double z_top,
+              FunctionMask free_mask)
+      : sqrt_weight_(sqrt_weight),
+        sin_u_max_(sin_u_max),
+        z_top_(z_top),
+        free_mask_(free_mask) {}
+
+  template <typename T>
+  bool operator()(const T* globals, const T* last_knot, T* residual) const {
+    auto value = [&](int f) {
+      return (free_mask_ >> f) & 1u ? last_knot[f] : globals[f];
+    };
+    residual[0] = sqrt_weight_ * (value(kA0) * value(kA3) * sin_u_max_ +
+                                  value(kE3o) - z_top_);
+    return true;
+  }
+
+  static ceres::CostFunction* Create(double sqrt_weight, double sin_u_max,
+                                     double z_top, FunctionMask free_mask) {
+    return new ceres::AutoDiffCostFunction<RimResidual, 1, kNumFunctions,
+                                           kNumFunctions>(
+        new RimResidual(sqrt_weight, sin_u_max, z_top, free_mask));
+  }
+
+ private:
+  double sqrt_weight_;
+  double sin_u_max_;
+  double z_top_;
+  FunctionMask free_mask_;
+};
+
 }  // namespace pfdm
 
 #endif  // PFDM_POINT_RESIDUAL_H_
