@@ -87,8 +87,8 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                     options.max_correspondence_rounds},
                    {"correspondence_tolerance_mm",
                     options.correspondence_tolerance_mm},
-                   {"max_iterations", options.max_iterations},
-                   {"threads", options.num_threads}};
+                   {"max_iterations", options.solver.max_iterations},
+                   {"threads", options.solver.num_threads}};
   if (options.hint) {
     const auto& h = *options.hint;
     settings["apex_hint"] = {h.apex.x(), h.apex.y(), h.apex.z()};

@@ -107,12 +107,12 @@ ceres::LossFunction* MakeLoss(const FitOptions& options) {
                    "' (expected none, huber or cauchy)");
 }
 
-// One Levenberg-Marquardt solve of a frame for fixed material points.
+// One solve of a frame for fixed material points.
 // Points listed in `sliding` get the point-to-plane residual, except where
 // they lie past the base rim: there the plane says nothing about how far,
 // so they pull with the whole distance.  rim_height, when given, is where
 // the base rim must sit (RimResidual).
-ceres::Solver::Summary SolveFrame(const std::vector<Eigen::Vector3d>& points,
+SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                                   const std::vector<MaterialPoint>& material,
                                   const std::vector<bool>& sliding,
                                   std::optional<double> rim_height,
@@ -198,15 +198,7 @@ ceres::Solver::Summary SolveFrame(const std::vector<Eigen::Vector3d>& points,
         nullptr, state.globals.data());
   }
 
-  ceres::Solver::Options solver_options;
-  solver_options.linear_solver_type = options.linear_solver;
-  solver_options.max_num_iterations = options.max_iterations;
-  solver_options.num_threads = options.num_threads;
-  solver_options.function_tolerance = 1e-9;
-  solver_options.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver_options, &problem, &summary);
-  return summary;
+  return SolveProblem(&problem, options.solver);
 }
 
 std::vector<Eigen::Vector3d> Positions(const Frame& frame) {
@@ -354,29 +346,33 @@ SequenceFit FitSequence(const PointSequence& sequence,
                            : unknown.size() == points.size()
                                ? FrameKind::kUntracked
                                : FrameKind::kTracked;
-    ceres::Solver::Summary summary;
+    SolverReport report;
     for (int round = 0; round < options.max_correspondence_rounds; ++round) {
       std::optional<double> rim_height;
       if (!reference && !unknown.empty()) {
         const double top = TopHeight(points, options, model);
         if (std::isfinite(top)) rim_height = top;
       }
-      summary = SolveFrame(points, fit.material, sliding, rim_height,
-                           kind, prior, options, &model);
-      fit.iterations += summary.iterations.size() - 1;
+      report = SolveFrame(points, fit.material, sliding, rim_height, kind,
+                          prior, options, &model);
+      fit.iterations += report.iterations;
       ++fit.correspondence_rounds;
-      if (summary.termination_type == ceres::FAILURE ||
-          !summary.IsSolutionUsable()) {
+      for (SolverTracePoint point : report.trace) {
+        point.iteration += fit.trace.empty() ? 0 : fit.trace.back().iteration + 1;
+        point.wall_seconds += fit.trace.empty() ? 0 : fit.trace.back().wall_seconds;
+        fit.trace.push_back(point);
+      }
+      if (!report.usable) {
         throw InputError(sequence.source + ": frame " +
                          std::to_string(frame.index) +
-                         ": solver failed: " + summary.message);
+                         ": solver failed: " + report.message);
       }
       if (unknown.empty()) break;
       if (reference) SpanAxialExtent(points, options, &model);
       const double moved = UpdateClosest(model, points, unknown, &fit.material);
       if (moved < options.correspondence_tolerance_mm) break;
     }
-    fit.termination = ceres::TerminationTypeToString(summary.termination_type);
+    fit.termination = report.termination;
     for (size_t i : unknown) {
       if (frames_per_id[frame.points[i].id] > 1) {
         tracked_material[frame.points[i].id] = fit.material[i];

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "Eigen/Core"
-#include "ceres/types.h"
 #include "pfdm/correspondence.h"
 #include "pfdm/initialization.h"
 #include "pfdm/model.h"
 #include "pfdm/point_data.h"
+#include "pfdm/solver.h"
 
 namespace pfdm {
 
@@ -28,9 +28,7 @@ struct FitOptions {
   int max_correspondence_rounds = 10;
   // Rounds stop when no material point's model position moves more.
   double correspondence_tolerance_mm = 0.05;
-  int max_iterations = 100;
-  int num_threads = 1;
-  ceres::LinearSolverType linear_solver = ceres::SPARSE_NORMAL_CHOLESKY;
+  SolverOptions solver;
   std::optional<AxisHint> hint;
   int min_points = 10;
 };
@@ -47,6 +45,8 @@ struct FrameFit {
   int correspondence_rounds = 0;
   double solve_seconds = 0.0;
   std::string termination;
+  // Every solver iteration of every correspondence round, numbered on.
+  std::vector<SolverTracePoint> trace;
 };
 
 struct SequenceFit {

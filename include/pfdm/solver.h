@@ -1,0 +1,67 @@
+// The three ways pfdm drives a built frame problem to rest: the direct
+// Ceres solve, damped stepping inside Ceres, and the explicit Lagrangian
+// integrator.  All share the problem's residuals.
+#ifndef PFDM_SOLVER_H_
+#define PFDM_SOLVER_H_
+
+#include <string>
+#include <vector>
+
+#include "ceres/problem.h"
+#include "ceres/types.h"
+
+namespace pfdm {
+
+enum class SolverKind { kDirect, kDamped, kIntegrator };
+
+// "direct", "damped" or "integrator"; throws InputError otherwise.
+SolverKind SolverFromName(const std::string& name);
+const char* SolverName(SolverKind kind);
+
+struct SolverOptions {
+  SolverKind kind = SolverKind::kDirect;
+  int max_iterations = 100;
+  int num_threads = 1;
+  ceres::LinearSolverType linear_solver = ceres::SPARSE_NORMAL_CHOLESKY;
+  // Dynamics (damped and integrator): pseudo-time step, 0 = choose from the
+  // stability bound; rest when the generalized force norm falls below this
+  // fraction of its first value.
+  double time_step = 0.0;
+  double rest_tolerance = 1e-6;
+  int max_steps = 20000;
+};
+
+// One iteration (direct, damped) or step (integrator).
+struct SolverTracePoint {
+  int iteration = 0;
+  double pseudo_time = 0.0;  // 0 for the direct solve.
+  double wall_seconds = 0.0;
+  double cost = 0.0;           // 1/2 sum of squared residuals.
+  double gradient_norm = 0.0;  // |J^T r|, the generalized force.
+};
+
+struct SolverReport {
+  int iterations = 0;
+  bool usable = true;
+  bool converged = false;
+  std::string termination;  // e.g. "CONVERGENCE", "NO_CONVERGENCE", "REST".
+  std::string message;
+  int residual_evaluations = 0;
+  int jacobian_evaluations = 0;
+  double jacobian_seconds = 0.0;
+  double linear_solver_seconds = 0.0;
+  std::vector<SolverTracePoint> trace;
+};
+
+// Dispatches on options.kind.
+SolverReport SolveProblem(ceres::Problem* problem,
+                          const SolverOptions& options);
+
+SolverReport SolveDirect(ceres::Problem* problem, const SolverOptions& options);
+SolverReport SolveDamped(ceres::Problem* problem, const SolverOptions& options);
+SolverReport SolveIntegrator(ceres::Problem* problem,
+                             const SolverOptions& options);
+
+}  // namespace pfdm
+
+#endif  // PFDM_SOLVER_H_

@@ -1,0 +1,28 @@
+// The pfdm subcommands, each in its own file, and what they share.
+#ifndef PFDM_CLI_COMMANDS_H_
+#define PFDM_CLI_COMMANDS_H_
+
+#include "gflags/gflags.h"
+#include "pfdm/fitter.h"
+#include "pfdm/model.h"
+#include "pfdm/point_data.h"
+
+DECLARE_string(points);
+DECLARE_string(out);
+DECLARE_int32(threads);
+
+namespace pfdm {
+
+// Each returns the exit code; bad input throws InputError.
+int RunFit();
+int RunSimulate();
+
+// From the shared flags (--points --format --contours; --model --knots;
+// --smoothness --prior --loss --loss_scale --threads --apex --base --solver).
+PointSequence PointsFromFlags();
+ModelConfig ModelConfigFromFlags();
+FitOptions FitOptionsFromFlags();
+
+}  // namespace pfdm
+
+#endif  // PFDM_CLI_COMMANDS_H_

@@ -1,0 +1,27 @@
+// pfdm fit: fits every frame and writes fit.json, parameters.csv and VTK.
+#include <cstdio>
+
+#include "commands.h"
+#include "pfdm/error.h"
+#include "pfdm/fit_output.h"
+
+namespace pfdm {
+
+int RunFit() {
+  if (FLAGS_out.empty()) throw InputError("fit needs --out DIR");
+  const ModelConfig config = ModelConfigFromFlags();
+  const FitOptions options = FitOptionsFromFlags();
+  const PointSequence points = PointsFromFlags();
+  const SequenceFit fit = FitSequence(points, config, options);
+  WriteFitOutputs(FLAGS_out, points, fit, options);
+  for (const FrameFit& frame : fit.frames) {
+    std::printf("frame %3d  points %5zu  rms %.3f mm  max %.3f mm  %s\n",
+                frame.frame, frame.residuals.size(), frame.rms_mm,
+                frame.max_distance_mm, frame.termination.c_str());
+  }
+  std::printf("wrote %s/fit.json, parameters.csv, frame_*.vtk\n",
+              FLAGS_out.c_str());
+  return 0;
+}
+
+}  // namespace pfdm
