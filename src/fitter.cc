@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "ceres/ceres.h"
+#include "pfdm/data_cost.h"
 #include "pfdm/error.h"
 #include "pfdm/point_residual.h"
 #include "pfdm/regularizer.h"
@@ -145,12 +146,14 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     const KnotSpan span = grid.Span(material[i].u);
     ceres::CostFunction* cost =
         sliding[i] && material[i].u < config.u_max
-            ? SurfaceResidual::Create(
-                  points[i], material[i].u, material[i].v, span.weight,
-                  free_mask, unit_exponents,
-                  SurfaceNormal(*model, material[i].u, material[i].v))
-            : PointResidual::Create(points[i], material[i].u, material[i].v,
-                                    span.weight, free_mask, unit_exponents);
+            ? MakeSurfaceCost(points[i], material[i].u, material[i].v,
+                              span.weight, free_mask, unit_exponents,
+                              SurfaceNormal(*model, material[i].u,
+                                            material[i].v),
+                              options.jacobian)
+            : MakePointCost(points[i], material[i].u, material[i].v,
+                            span.weight, free_mask, unit_exponents,
+                            options.jacobian);
     problem.AddResidualBlock(cost, loss, state.center.data(), state.quaternion.data(),
         state.globals.data(), state.knots[span.k0].data(),
         state.knots[span.k0 + 1].data());

@@ -5,8 +5,6 @@
 #include <memory>
 #include <vector>
 
-#include "ceres/gradient_checker.h"
-#include "ceres/manifold.h"
 #include "gtest/gtest.h"
 #include "pfdm/model.h"
 
@@ -48,83 +46,10 @@ State GeneralState() {
   return s;
 }
 
-// Worst error of the autodiff Jacobian against central differences, each
-// block's relative to that block's largest entry (entries that should be
-// zero make entry-wise relative errors meaningless).
-double WorstJacobianError(const ceres::CostFunction& cost, State& s) {
-  ceres::QuaternionManifold quaternion_manifold;
-  const std::vector<const ceres::Manifold*> manifolds = {
-      nullptr, &quaternion_manifold, nullptr, nullptr, nullptr};
-  ceres::NumericDiffOptions numeric;
-  numeric.relative_step_size = 1e-7;
-  ceres::GradientChecker checker(&cost, &manifolds, numeric);
-  const double* parameters[] = {s.center, s.quaternion, s.globals.data(),
-                                s.knot0.data(), s.knot1.data()};
-  ceres::GradientChecker::ProbeResults results;
-  checker.Probe(parameters, 1e-5, &results);
-  EXPECT_TRUE(results.return_value);
-  double worst = 0.0;
-  for (size_t i = 0; i < results.local_jacobians.size(); ++i) {
-    const Eigen::MatrixXd& analytic = results.local_jacobians[i];
-    const Eigen::MatrixXd& numeric = results.local_numeric_jacobians[i];
-    EXPECT_TRUE(analytic.allFinite()) << "block " << i;
-    const double scale = std::max(1e-3, numeric.cwiseAbs().maxCoeff());
-    worst = std::max(worst, (analytic - numeric).cwiseAbs().maxCoeff() / scale);
-  }
-  return worst;
-}
-
-struct Case {
-  const char* name;
-  double u, v;
-  void (*edit)(State*);
-};
-
-void NoEdit(State*) {}
-void UnitExponents(State* s) {
-  for (FunctionValues* f : {&s->globals, &s->knot0, &s->knot1}) {
-    (*f)[kEps1] = (*f)[kEps2] = 1.0;
-  }
-}
-void ZeroBending(State* s) {
-  for (FunctionValues* f : {&s->globals, &s->knot0, &s->knot1}) {
-    (*f)[kB0] = (*f)[kB2] = 0.0;
-  }
-}
 void IdentityPose(State* s) {
   s->quaternion[0] = 1.0;
   s->quaternion[1] = s->quaternion[2] = s->quaternion[3] = 0.0;
   s->center[0] = s->center[1] = s->center[2] = 0.0;
-}
-
-const Case kCases[] = {
-    {"general", 0.3, 1.1, NoEdit},
-    {"apex pole", -M_PI / 2, 0.7, NoEdit},
-    {"v on +x axis", -0.4, 0.0, NoEdit},
-    {"v on +y axis", -0.4, M_PI / 2, NoEdit},
-    {"v on -x axis", -0.4, -M_PI, NoEdit},
-    {"equator", 0.0, 2.0, NoEdit},
-    {"eps = 1", -0.6, 0.8, UnitExponents},
-    {"eps = 1 at the pole", -M_PI / 2, 0.0, UnitExponents},
-    {"zero bending", 0.2, -2.2, ZeroBending},
-    {"identity pose", -1.0, 0.5, IdentityPose},
-};
-
-TEST(PointResidualTest, AutodiffJacobianMatchesNumericAtSingularPoints) {
-  for (FunctionMask mask : {FunctionMask{(1u << kNumFunctions) - 1},
-                            ModelConfig::Paper(17).FreeMask(), FunctionMask{0}}) {
-    for (const Case& c : kCases) {
-      State s = GeneralState();
-      c.edit(&s);
-      const Eigen::Vector3d data(1.0, 2.0, 3.0);
-      std::unique_ptr<ceres::CostFunction> point(
-          PointResidual::Create(data, c.u, c.v, 0.3, mask, false));
-      EXPECT_LT(WorstJacobianError(*point, s), 1e-5) << c.name << " " << mask;
-      std::unique_ptr<ceres::CostFunction> surface(SurfaceResidual::Create(
-          data, c.u, c.v, 0.3, mask, false, Eigen::Vector3d(0.6, 0.0, 0.8)));
-      EXPECT_LT(WorstJacobianError(*surface, s), 1e-5) << c.name << " " << mask;
-    }
-  }
 }
 
 TEST(PointResidualTest, ResidualIsModelPointMinusData) {

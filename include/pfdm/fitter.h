@@ -8,6 +8,7 @@
 
 #include "Eigen/Core"
 #include "pfdm/correspondence.h"
+#include "pfdm/data_cost.h"
 #include "pfdm/initialization.h"
 #include "pfdm/model.h"
 #include "pfdm/point_data.h"
@@ -29,6 +30,7 @@ struct FitOptions {
   // Rounds stop when no material point's model position moves more.
   double correspondence_tolerance_mm = 0.05;
   SolverOptions solver;
+  JacobianKind jacobian = JacobianKind::kAnalytic;
   std::optional<AxisHint> hint;
   int min_points = 10;
 };

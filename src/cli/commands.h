@@ -16,6 +16,7 @@ namespace pfdm {
 // Each returns the exit code; bad input throws InputError.
 int RunFit();
 int RunSimulate();
+int RunCheckJacobians();
 
 // From the shared flags (--points --format --contours; --model --knots;
 // --smoothness --prior --loss --loss_scale --threads --apex --base --solver).

@@ -23,6 +23,7 @@ DEFINE_int32(threads, 1, "Ceres threads");
 DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
 DEFINE_string(solver, "direct", "direct, damped or integrator");
+DEFINE_string(jacobian, "analytic", "analytic, autodiff or numeric");
 
 namespace pfdm {
 namespace {
@@ -71,6 +72,7 @@ FitOptions FitOptionsFromFlags() {
   options.loss_scale_mm = FLAGS_loss_scale;
   options.solver.num_threads = FLAGS_threads;
   options.solver.kind = SolverFromName(FLAGS_solver);
+  options.jacobian = JacobianFromName(FLAGS_jacobian);
   if (FLAGS_apex.empty() != FLAGS_base.empty()) {
     throw InputError("--apex and --base go together");
   }

@@ -20,6 +20,7 @@ const Command kCommands[] = {
      "[--solver direct|damped|integrator]"},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]"},
+    {"check-jacobians", RunCheckJacobians, "[--tolerance 1e-6]"},
 };
 
 std::string Usage() {
