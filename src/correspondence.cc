@@ -96,7 +96,7 @@ template <typename T>
 Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
                                     const T& v) {
   const ModelConfig& config = model.config;
-  const KnotGrid grid = config.Grid();
+  const KnotGrid& grid = config.Grid();
   double u_value;
   if constexpr (std::is_same_v<T, double>) {
     u_value = u;

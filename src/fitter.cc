@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "ceres/ceres.h"
+#include "pfdm/analytic_point_residual.h"
 #include "pfdm/data_cost.h"
 #include "pfdm/error.h"
 #include "pfdm/point_residual.h"
@@ -21,6 +22,9 @@ constexpr int kGlobalsBlock = -1;
 // Makes the axis gauge outweigh the data by far: its residual stays below
 // 1e-6 mm while the data can barely feel it in the conditioning.
 constexpr double kGaugeWeight = 1e2;
+// Points per grouped residual block: enough to amortize Ceres' per-block
+// work, few enough to leave blocks for every thread.
+constexpr size_t kPointsPerGroup = 128;
 
 bool Contains(const std::vector<int>& list, int value) {
   return std::find(list.begin(), list.end(), value) != list.end();
@@ -142,21 +146,44 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   ceres::LossFunction* loss = MakeLoss(options);
   const FunctionMask free_mask = config.FreeMask();
   const bool unit_exponents = model->UnitExponents();
+  // Grouped residual blocks when each point need not carry its own loss.
+  const bool grouped =
+      options.jacobian == JacobianKind::kAnalytic && loss == nullptr;
+  std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
+  auto add_group = [&](int k0) {
+    problem.AddResidualBlock(
+        new PointGroupResidual(std::move(groups[k0]), free_mask,
+                               unit_exponents),
+        nullptr, state.center.data(), state.quaternion.data(),
+        state.globals.data(), state.knots[k0].data(),
+        state.knots[k0 + 1].data());
+    groups[k0].clear();
+  };
   for (size_t i = 0; i < points.size(); ++i) {
     const KnotSpan span = grid.Span(material[i].u);
+    const double u = material[i].u, v = material[i].v;
+    const bool plane = sliding[i] && u < config.u_max;
+    if (grouped) {
+      groups[span.k0].push_back(
+          plane ? PointSample(points[i], u, v, span.weight,
+                              SurfaceNormal(*model, u, v))
+                : PointSample(points[i], u, v, span.weight));
+      if (groups[span.k0].size() == kPointsPerGroup) add_group(span.k0);
+      continue;
+    }
     ceres::CostFunction* cost =
-        sliding[i] && material[i].u < config.u_max
-            ? MakeSurfaceCost(points[i], material[i].u, material[i].v,
-                              span.weight, free_mask, unit_exponents,
-                              SurfaceNormal(*model, material[i].u,
-                                            material[i].v),
-                              options.jacobian)
-            : MakePointCost(points[i], material[i].u, material[i].v,
-                            span.weight, free_mask, unit_exponents,
-                            options.jacobian);
-    problem.AddResidualBlock(cost, loss, state.center.data(), state.quaternion.data(),
-        state.globals.data(), state.knots[span.k0].data(),
-        state.knots[span.k0 + 1].data());
+        plane ? MakeSurfaceCost(points[i], u, v, span.weight, free_mask,
+                                unit_exponents, SurfaceNormal(*model, u, v),
+                                options.jacobian)
+              : MakePointCost(points[i], u, v, span.weight, free_mask,
+                              unit_exponents, options.jacobian);
+    problem.AddResidualBlock(cost, loss, state.center.data(),
+                             state.quaternion.data(), state.globals.data(),
+                             state.knots[span.k0].data(),
+                             state.knots[span.k0 + 1].data());
+  }
+  for (int k0 = 0; k0 + 1 < config.num_knots; ++k0) {
+    if (!groups[k0].empty()) add_group(k0);
   }
 
   const double points_per_knot =
@@ -359,6 +386,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
       report = SolveFrame(points, fit.material, sliding, rim_height, kind,
                           prior, options, &model);
       fit.iterations += report.iterations;
+      fit.jacobian_seconds += report.jacobian_seconds;
+      fit.linear_solver_seconds += report.linear_solver_seconds;
       ++fit.correspondence_rounds;
       for (SolverTracePoint point : report.trace) {
         point.iteration += fit.trace.empty() ? 0 : fit.trace.back().iteration + 1;

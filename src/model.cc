@@ -36,6 +36,17 @@ ModelConfig ModelConfig::FromName(const std::string& name, int num_knots) {
                    "' (expected paper or superellipsoid)");
 }
 
+const KnotGrid& ModelConfig::Grid() const {
+  // Model evaluation asks for the grid at every point; building it costs
+  // one asin per knot.
+  thread_local KnotGrid grid(num_knots, u_min, u_max);
+  if (grid.num_knots() != num_knots || grid.u_min() != u_min ||
+      grid.u_max() != u_max) {
+    grid = KnotGrid(num_knots, u_min, u_max);
+  }
+  return grid;
+}
+
 FunctionMask ModelConfig::FreeMask() const {
   FunctionMask mask = 0;
   for (int f = 0; f < kNumFunctions; ++f) {

@@ -28,13 +28,17 @@ KnotGrid::KnotGrid(int num_knots, double u_min, double u_max)
     : num_knots_(num_knots), u_min_(u_min), u_max_(u_max) {
   CHECK_GE(num_knots, 1);
   CHECK_LT(u_min, u_max);
-}
-
-double KnotGrid::KnotU(int k) const {
-  if (num_knots_ == 1) return 0.5 * (u_min_ + u_max_);
-  const double s_min = std::sin(u_min_), s_max = std::sin(u_max_);
-  return std::asin(
-      std::clamp(s_min + (s_max - s_min) * k / (num_knots_ - 1), -1.0, 1.0));
+  if (num_knots == 1) {
+    knot_u_.push_back(0.5 * (u_min + u_max));
+    return;
+  }
+  const double s_min = std::sin(u_min), s_max = std::sin(u_max);
+  for (int k = 0; k < num_knots; ++k) {
+    knot_u_.push_back(std::asin(std::clamp(
+        s_min + (s_max - s_min) * k / (num_knots - 1), -1.0, 1.0)));
+  }
+  knot_u_.front() = u_min;  // Exactly, whatever asin(sin(.)) rounds to.
+  knot_u_.back() = u_max;
 }
 
 KnotSpan KnotGrid::Span(double u) const {

@@ -3,18 +3,40 @@
 #ifndef PFDM_ANALYTIC_POINT_RESIDUAL_H_
 #define PFDM_ANALYTIC_POINT_RESIDUAL_H_
 
+#include <vector>
+
+#include "ceres/cost_function.h"
 #include "ceres/sized_cost_function.h"
 #include "pfdm/model_point.h"
 
 namespace pfdm {
 
-// r = c + R(q) s(f) - d (or n . that, with a normal).  Jacobians:
+// One data point tied to its material point.  With a normal it gives the
+// point-to-plane residual n . (x - d), else the 3-vector x - d.
+struct PointSample {
+  Eigen::Vector3d data = Eigen::Vector3d::Zero();
+  Angles<double> angles{1.0, 0.0, 1.0, 0.0};
+  double knot_weight = 0.0;
+  bool has_normal = false;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+
+  PointSample() = default;
+  PointSample(const Eigen::Vector3d& data, double u, double v,
+              double knot_weight);
+  PointSample(const Eigen::Vector3d& data, double u, double v,
+              double knot_weight, const Eigen::Vector3d& normal);
+  int num_residuals() const { return has_normal ? 1 : 3; }
+};
+
+// Parameter blocks of every data residual: center (3), quaternion (4),
+// globals, knot0, knot1 (kNumFunctions each).  With x = c + R(q) s(f):
 //   dr/dc = I,
 //   dr/dq = d(R(q) s)/dq for the ambient quaternion (w, v), as
 //           UnitQuaternionRotatePoint evaluates R s = s + 2w v x s
 //           + 2 v (v . s) - 2 s |v|^2,
-//   dr/d(knot0, knot1, globals) = R ds/df times (1 - w), w or 1 on the
-//           functions each block supplies (see docs/jacobians.md).
+//   dr/d(globals, knot0, knot1) = R ds/df times 1, (1 - w) or w on the
+//           functions each block supplies (docs/jacobians.md),
+// and n^T times all of that for a point-to-plane sample.
 class AnalyticPointResidual
     : public ceres::SizedCostFunction<3, 3, 4, kNumFunctions, kNumFunctions,
                                       kNumFunctions> {
@@ -26,14 +48,11 @@ class AnalyticPointResidual
                 double** jacobians) const override;
 
  private:
-  Eigen::Vector3d data_;
-  Angles<double> angles_;
-  double knot_weight_;
+  PointSample sample_;
   FunctionMask free_mask_;
   bool unit_exponents_;
 };
 
-// n . (c + R(q) s(f) - d): the point-to-plane residual.
 class AnalyticSurfaceResidual
     : public ceres::SizedCostFunction<1, 3, 4, kNumFunctions, kNumFunctions,
                                       kNumFunctions> {
@@ -45,8 +64,26 @@ class AnalyticSurfaceResidual
                 double** jacobians) const override;
 
  private:
-  AnalyticPointResidual point_;
-  Eigen::Vector3d normal_;
+  PointSample sample_;
+  FunctionMask free_mask_;
+  bool unit_exponents_;
+};
+
+// Many points between the same two knots as one residual block, their
+// residuals stacked.  Ceres then handles a few tall blocks instead of
+// thousands of 3-row ones: less bookkeeping per point and dense products in
+// J^T J.  Only for the plain squared loss (a robust loss acts per block).
+class PointGroupResidual : public ceres::CostFunction {
+ public:
+  PointGroupResidual(std::vector<PointSample> samples, FunctionMask free_mask,
+                     bool unit_exponents);
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override;
+
+ private:
+  std::vector<PointSample> samples_;
+  FunctionMask free_mask_;
+  bool unit_exponents_;
 };
 
 }  // namespace pfdm

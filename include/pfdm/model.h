@@ -35,7 +35,9 @@ struct ModelConfig {
   // "paper" or "superellipsoid"; throws InputError otherwise.
   static ModelConfig FromName(const std::string& name, int num_knots);
 
-  KnotGrid Grid() const { return KnotGrid(num_knots, u_min, u_max); }
+  // The knots of this configuration; the reference stays valid until the
+  // same thread asks for another configuration's grid.
+  const KnotGrid& Grid() const;
   FunctionMask FreeMask() const;
 };
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace pfdm {
 
@@ -49,7 +50,7 @@ class KnotGrid {
   int num_knots() const { return num_knots_; }
   double u_min() const { return u_min_; }
   double u_max() const { return u_max_; }
-  double KnotU(int k) const;
+  double KnotU(int k) const { return knot_u_[k]; }
   // u is clamped to [u_min, u_max]; the last span is used at u_max so that
   // every span names two distinct knots when K >= 2.
   KnotSpan Span(double u) const;
@@ -58,6 +59,7 @@ class KnotGrid {
   int num_knots_;
   double u_min_;
   double u_max_;
+  std::vector<double> knot_u_;
 };
 
 using FunctionValues = std::array<double, kNumFunctions>;

@@ -1,0 +1,78 @@
+// ns per data point for the residual alone, the autodiff Jacobian and the
+// analytic Jacobian.  Arg(0): residual only; Arg(1): with Jacobians.
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "benchmark/benchmark.h"
+#include "pfdm/data_cost.h"
+#include "pfdm/model.h"
+
+namespace pfdm {
+namespace {
+
+constexpr int kPoints = 256;
+
+struct Fixture {
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs;
+  double center[3] = {1, 2, 3};
+  double quaternion[4] = {0.9, 0.1, -0.3, 0.2};
+  FunctionValues globals, knot0, knot1;
+  std::vector<double> residuals = std::vector<double>(3);
+  std::vector<double> storage = std::vector<double>(3 * (7 + 3 * kNumFunctions));
+};
+
+Fixture MakeFixture(JacobianKind kind) {
+  Fixture fixture;
+  fixture.globals = DefaultFunctionValues();
+  fixture.globals[kA0] = 90.0;
+  fixture.knot0 = fixture.knot1 = fixture.globals;
+  fixture.knot1[kA1] = 0.6;
+  const double norm = std::sqrt(0.81 + 0.01 + 0.09 + 0.04);
+  for (double& q : fixture.quaternion) q /= norm;
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> u(-1.5, 0.5), v(-3.1, 3.1);
+  for (int i = 0; i < kPoints; ++i) {
+    fixture.costs.emplace_back(MakePointCost(
+        Eigen::Vector3d(1, 2, 3), u(random), v(random), 0.3,
+        ModelConfig::Paper(17).FreeMask(), true, kind));
+  }
+  return fixture;
+}
+
+void Run(benchmark::State& state, JacobianKind kind) {
+  Fixture fixture = MakeFixture(kind);
+  const double* parameters[] = {fixture.center, fixture.quaternion,
+                                fixture.globals.data(), fixture.knot0.data(),
+                                fixture.knot1.data()};
+  double* jacobians[5];
+  double* next = fixture.storage.data();
+  for (int i = 0; i < 5; ++i) {
+    jacobians[i] = next;
+    next += 3 * (i == 0 ? 3 : i == 1 ? 4 : kNumFunctions);
+  }
+  double** requested = state.range(0) ? jacobians : nullptr;
+  for (auto _ : state) {
+    for (const auto& cost : fixture.costs) {
+      cost->Evaluate(parameters, fixture.residuals.data(), requested);
+    }
+    benchmark::DoNotOptimize(fixture.residuals.data());
+    benchmark::DoNotOptimize(fixture.storage.data());
+  }
+  state.SetItemsProcessed(state.iterations() * kPoints);
+  state.counters["ns_per_point"] = benchmark::Counter(
+      state.iterations() * kPoints,
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
+      benchmark::Counter::kIs1000);
+}
+
+void BM_Analytic(benchmark::State& state) { Run(state, JacobianKind::kAnalytic); }
+void BM_Autodiff(benchmark::State& state) { Run(state, JacobianKind::kAutodiff); }
+
+BENCHMARK(BM_Analytic)->Arg(0)->Arg(1);
+BENCHMARK(BM_Autodiff)->Arg(0)->Arg(1);
+
+}  // namespace
+}  // namespace pfdm
+
+BENCHMARK_MAIN();

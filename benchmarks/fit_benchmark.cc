@@ -1,0 +1,111 @@
+// Whole-frame fits: a tracked phantom frame of N points, K = 17, solved from
+// the previous frame's fit.  Reports time per LM iteration split into
+// Jacobian evaluation and linear solve, and each configuration's time per
+// iteration as a multiple of this machine's arithmetic floor.
+//
+// Floor per LM iteration = (Jacobian flops + J^T J flops + factorization
+// flops) / (dense matrix-multiply rate).  A data point's 3 rows carry
+// 3 + 3 + 2 x 10 = 26 non-zero columns in the tangent space (center,
+// quaternion, two knots of the paper's 10 free functions), so J^T J costs
+// 3 x 26^2 multiply-adds per point; the analytic Jacobian about 300 flops per
+// point; the factorization p^3 / 3 for p = 6 + 17 x 10 parameters.
+#include <chrono>
+#include <cstdio>
+
+#include "Eigen/Core"
+#include "benchmark/benchmark.h"
+#include "pfdm/fitter.h"
+#include "pfdm/phantom.h"
+
+namespace pfdm {
+namespace {
+
+constexpr double kJacobianFlopsPerPoint = 300.0;
+constexpr double kNonZerosPerPoint = 26.0;
+constexpr double kParameters = 6.0 + 17.0 * 10.0;
+
+// Flops per second of a 512 x 512 dense matrix product, the best case for
+// this machine's arithmetic.
+double MatrixMultiplyRate() {
+  static const double rate = [] {
+    const int n = 512;
+    const Eigen::MatrixXd a = Eigen::MatrixXd::Random(n, n);
+    const Eigen::MatrixXd b = Eigen::MatrixXd::Random(n, n);
+    Eigen::MatrixXd c(n, n);
+    double best = 1e30;
+    for (int repeat = 0; repeat < 5; ++repeat) {
+      const auto start = std::chrono::steady_clock::now();
+      c.noalias() = a * b;
+      benchmark::DoNotOptimize(c.data());
+      best = std::min(best, std::chrono::duration<double>(
+                                std::chrono::steady_clock::now() - start)
+                                .count());
+    }
+    return 2.0 * n * n * n / best;
+  }();
+  return rate;
+}
+
+double FloorSecondsPerIteration(int num_points) {
+  const double flops = num_points * (kJacobianFlopsPerPoint +
+                                     2.0 * 3.0 * kNonZerosPerPoint *
+                                         kNonZerosPerPoint) +
+                       kParameters * kParameters * kParameters / 3.0;
+  return flops / MatrixMultiplyRate();
+}
+
+void BM_MatrixMultiplyRate(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(MatrixMultiplyRate());
+  state.counters["gflops"] = MatrixMultiplyRate() / 1e9;
+}
+BENCHMARK(BM_MatrixMultiplyRate)->Iterations(1);
+
+// Args: points, threads, linear solver, jacobian (0 analytic, 1 autodiff).
+void BM_FitFrame(benchmark::State& state) {
+  const int num_points = static_cast<int>(state.range(0));
+  PhantomOptions phantom_options;
+  phantom_options.num_points = num_points;
+  phantom_options.num_frames = 2;
+  const Phantom phantom = MakePhantom(phantom_options);
+  FitOptions options;
+  options.solver.num_threads = static_cast<int>(state.range(1));
+  options.solver.linear_solver =
+      static_cast<ceres::LinearSolverType>(state.range(2));
+  options.jacobian =
+      state.range(3) == 0 ? JacobianKind::kAnalytic : JacobianKind::kAutodiff;
+  SequenceFit fit;
+  for (auto _ : state) {
+    fit = FitSequence(phantom.points, ModelConfig::Paper(17), options);
+  }
+  const FrameFit& frame = fit.frames[1];  // Tracked: one solve.
+  const double iterations = std::max(frame.iterations, 1);
+  const double per_iteration = frame.solve_seconds / iterations;
+  state.counters["iterations"] = frame.iterations;
+  state.counters["frame_ms"] = 1e3 * frame.solve_seconds;
+  state.counters["ms_per_iter"] = 1e3 * per_iteration;
+  state.counters["jacobian_ms_per_iter"] = 1e3 * frame.jacobian_seconds / iterations;
+  state.counters["linear_ms_per_iter"] =
+      1e3 * frame.linear_solver_seconds / iterations;
+  state.counters["x_floor"] = per_iteration / FloorSecondsPerIteration(num_points);
+  state.counters["rms_mm"] = frame.rms_mm;
+}
+
+void FitArguments(benchmark::internal::Benchmark* b) {
+  b->ArgNames({"points", "threads", "solver", "autodiff"});
+  for (int points : {1000, 10000, 50000}) {
+    for (int threads : {1, 2}) {
+      for (int solver : {ceres::SPARSE_NORMAL_CHOLESKY,
+                         ceres::DENSE_NORMAL_CHOLESKY, ceres::DENSE_QR}) {
+        if (solver == ceres::DENSE_QR && points > 10000) continue;
+        b->Args({points, threads, solver, 0});
+      }
+    }
+    b->Args({points, 1, ceres::SPARSE_NORMAL_CHOLESKY, 1});
+  }
+}
+BENCHMARK(BM_FitFrame)->Apply(FitArguments)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace
+}  // namespace pfdm
+
+BENCHMARK_MAIN();
