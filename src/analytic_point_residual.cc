@@ -121,36 +121,11 @@ PointSample::PointSample(const Eigen::Vector3d& data, double u, double v,
       has_normal(true),
       normal(normal) {}
 
-AnalyticPointResidual::AnalyticPointResidual(const Eigen::Vector3d& data,
-                                             double u, double v,
-                                             double knot_weight,
-                                             FunctionMask free_mask,
-                                             bool unit_exponents)
-    : sample_(data, u, v, knot_weight),
-      free_mask_(free_mask),
-      unit_exponents_(unit_exponents) {}
-
-bool AnalyticPointResidual::Evaluate(double const* const* parameters,
-                                     double* residuals,
-                                     double** jacobians) const {
-  EvaluateSample(sample_, free_mask_, unit_exponents_, parameters,
+void EvaluatePointSample(const PointSample& sample, FunctionMask free_mask,
+                         bool unit_exponents, double const* const* parameters,
+                         double* residuals, double** jacobians) {
+  EvaluateSample(sample, free_mask, unit_exponents, parameters,
                  RotationMatrix(parameters[1]), residuals, jacobians);
-  return true;
-}
-
-AnalyticSurfaceResidual::AnalyticSurfaceResidual(
-    const Eigen::Vector3d& data, double u, double v, double knot_weight,
-    FunctionMask free_mask, bool unit_exponents, const Eigen::Vector3d& normal)
-    : sample_(data, u, v, knot_weight, normal),
-      free_mask_(free_mask),
-      unit_exponents_(unit_exponents) {}
-
-bool AnalyticSurfaceResidual::Evaluate(double const* const* parameters,
-                                       double* residuals,
-                                       double** jacobians) const {
-  EvaluateSample(sample_, free_mask_, unit_exponents_, parameters,
-                 RotationMatrix(parameters[1]), residuals, jacobians);
-  return true;
 }
 
 PointGroupResidual::PointGroupResidual(std::vector<PointSample> samples,

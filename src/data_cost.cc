@@ -33,8 +33,8 @@ ceres::CostFunction* MakePointCost(const Eigen::Vector3d& data, double u,
                                    JacobianKind kind) {
   switch (kind) {
     case JacobianKind::kAnalytic:
-      return new AnalyticPointResidual(data, u, v, knot_weight, free_mask,
-                                       unit_exponents);
+      return new AnalyticPointResidual(PointSample(data, u, v, knot_weight),
+                                       free_mask, unit_exponents);
     case JacobianKind::kAutodiff:
       return PointResidual::Create(data, u, v, knot_weight, free_mask,
                                    unit_exponents);
@@ -56,8 +56,9 @@ ceres::CostFunction* MakeSurfaceCost(const Eigen::Vector3d& data, double u,
                                      JacobianKind kind) {
   switch (kind) {
     case JacobianKind::kAnalytic:
-      return new AnalyticSurfaceResidual(data, u, v, knot_weight, free_mask,
-                                         unit_exponents, normal);
+      return new AnalyticSurfaceResidual(
+          PointSample(data, u, v, knot_weight, normal), free_mask,
+          unit_exponents);
     case JacobianKind::kAutodiff:
       return SurfaceResidual::Create(data, u, v, knot_weight, free_mask,
                                      unit_exponents, normal);

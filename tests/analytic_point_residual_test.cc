@@ -63,14 +63,15 @@ TEST(AnalyticPointResidualTest, MatchesAutodiffAtRandomStates) {
                                   f[2].data()};
     std::unique_ptr<ceres::CostFunction> autodiff(
         PointResidual::Create(data, u, v, weight, mask, unit_exponents));
-    AnalyticPointResidual analytic(data, u, v, weight, mask, unit_exponents);
+    AnalyticPointResidual analytic(PointSample(data, u, v, weight), mask,
+                                   unit_exponents);
     ExpectSame(analytic, *autodiff, parameters);
 
     const Eigen::Vector3d normal = Eigen::Vector3d(1, 2, 2) / 3.0;
     std::unique_ptr<ceres::CostFunction> autodiff_surface(SurfaceResidual::Create(
         data, u, v, weight, mask, unit_exponents, normal));
-    AnalyticSurfaceResidual analytic_surface(data, u, v, weight, mask,
-                                             unit_exponents, normal);
+    AnalyticSurfaceResidual analytic_surface(
+        PointSample(data, u, v, weight, normal), mask, unit_exponents);
     ExpectSame(analytic_surface, *autodiff_surface, parameters);
   }
 }
@@ -80,7 +81,7 @@ TEST(AnalyticPointResidualTest, SkipsJacobiansCeresDoesNotAskFor) {
   f[kA0] = 40.0;
   double center[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
   const double* parameters[] = {center, q, f.data(), f.data(), f.data()};
-  AnalyticPointResidual cost(Eigen::Vector3d::Zero(), 0.2, 0.3, 0.5,
+  AnalyticPointResidual cost(PointSample(Eigen::Vector3d::Zero(), 0.2, 0.3, 0.5),
                              ModelConfig::Paper(17).FreeMask(), true);
   double residual[3], knot_jacobian[3 * kNumFunctions];
   double* jacobians[5] = {nullptr, nullptr, nullptr, knot_jacobian, nullptr};

@@ -19,30 +19,21 @@ struct State {
   FunctionValues knot1;
 };
 
+// A bent, twisted, offset state with knots that differ.
 State GeneralState() {
   State s;
-  const double norm = std::sqrt(0.9 * 0.9 + 0.1 * 0.1 + 0.3 * 0.3 + 0.2 * 0.2);
-  const double q[4] = {0.9, 0.1, -0.3, 0.2};
-  for (int i = 0; i < 4; ++i) s.quaternion[i] = q[i] / norm;
+  s.quaternion[0] = 1.0;
+  s.quaternion[1] = s.quaternion[2] = s.quaternion[3] = 0.0;
   FunctionValues f = DefaultFunctionValues();
   f[kA0] = 60.0;
-  f[kA1] = 0.4;
-  f[kA2] = 0.35;
-  f[kA3] = 0.8;
-  f[kEps1] = 0.8;
-  f[kEps2] = 1.2;
   f[kB0] = 1.5;
   f[kB1] = 0.4;
-  f[kB2] = -0.7;
-  f[kB3] = -1.0;
   f[kTau] = 0.2;
   f[kE1o] = 1.0;
   f[kE2o] = -2.0;
   f[kE3o] = 0.5;
-  s.globals = f;
-  s.knot0 = f;
-  s.knot1 = f;
-  for (int i = 1; i < kNumFunctions; ++i) s.knot1[i] *= 1.1;
+  s.globals = s.knot0 = s.knot1 = f;
+  s.knot1[kA1] = 0.7;
   return s;
 }
 

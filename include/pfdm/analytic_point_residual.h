@@ -28,6 +28,12 @@ struct PointSample {
   int num_residuals() const { return has_normal ? 1 : 3; }
 };
 
+// Writes the sample's residual rows and, for each block asked for (non-null
+// in jacobians), its Jacobian rows, row major.
+void EvaluatePointSample(const PointSample& sample, FunctionMask free_mask,
+                         bool unit_exponents, double const* const* parameters,
+                         double* residuals, double** jacobians);
+
 // Parameter blocks of every data residual: center (3), quaternion (4),
 // globals, knot0, knot1 (kNumFunctions each).  With x = c + R(q) s(f):
 //   dr/dc = I,
@@ -37,15 +43,23 @@ struct PointSample {
 //   dr/d(globals, knot0, knot1) = R ds/df times 1, (1 - w) or w on the
 //           functions each block supplies (docs/jacobians.md),
 // and n^T times all of that for a point-to-plane sample.
-class AnalyticPointResidual
-    : public ceres::SizedCostFunction<3, 3, 4, kNumFunctions, kNumFunctions,
-                                      kNumFunctions> {
+template <int kNumResiduals>
+class AnalyticResidual
+    : public ceres::SizedCostFunction<kNumResiduals, 3, 4, kNumFunctions,
+                                      kNumFunctions, kNumFunctions> {
  public:
-  AnalyticPointResidual(const Eigen::Vector3d& data, double u, double v,
-                        double knot_weight, FunctionMask free_mask,
-                        bool unit_exponents);
+  AnalyticResidual(const PointSample& sample, FunctionMask free_mask,
+                   bool unit_exponents)
+      : sample_(sample),
+        free_mask_(free_mask),
+        unit_exponents_(unit_exponents) {}
+
   bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override;
+                double** jacobians) const override {
+    EvaluatePointSample(sample_, free_mask_, unit_exponents_, parameters,
+                        residuals, jacobians);
+    return true;
+  }
 
  private:
   PointSample sample_;
@@ -53,21 +67,8 @@ class AnalyticPointResidual
   bool unit_exponents_;
 };
 
-class AnalyticSurfaceResidual
-    : public ceres::SizedCostFunction<1, 3, 4, kNumFunctions, kNumFunctions,
-                                      kNumFunctions> {
- public:
-  AnalyticSurfaceResidual(const Eigen::Vector3d& data, double u, double v,
-                          double knot_weight, FunctionMask free_mask,
-                          bool unit_exponents, const Eigen::Vector3d& normal);
-  bool Evaluate(double const* const* parameters, double* residuals,
-                double** jacobians) const override;
-
- private:
-  PointSample sample_;
-  FunctionMask free_mask_;
-  bool unit_exponents_;
-};
+using AnalyticPointResidual = AnalyticResidual<3>;    // Without a normal.
+using AnalyticSurfaceResidual = AnalyticResidual<1>;  // With a normal.
 
 // Many points between the same two knots as one residual block, their
 // residuals stacked.  Ceres then handles a few tall blocks instead of
