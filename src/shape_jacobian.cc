@@ -14,6 +14,12 @@ struct Power {
   double d_exponent;
 };
 
+// sin and cos of one angle in one libm call.
+struct SinCos {
+  explicit SinCos(double angle) { ::sincos(angle, &sin, &cos); }
+  double sin, cos;
+};
+
 Power PowerOf(double x, double e, bool unit_exponents) {
   if (unit_exponents) return {x, 0.0};
   const double base = x * x + kSignedPowerDelta * kSignedPowerDelta;
@@ -39,13 +45,14 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
                           a0 * f[kA3] * su.value);
 
   const double x1 = e[0] / a0, x2 = e[1] / a0;
-  const double phase1 = kHalfPi * (x1 - f[kB1]);
-  const double phase2 = kHalfPi * (x2 - f[kB3]);
-  const double g1 = std::cos(phase1) - std::cos(kHalfPi * f[kB1]);
-  const double g2 = std::cos(phase2) - std::cos(kHalfPi * f[kB3]);
+  const SinCos phase1(kHalfPi * (x1 - f[kB1])), shape1(kHalfPi * f[kB1]);
+  const SinCos phase2(kHalfPi * (x2 - f[kB3])), shape2(kHalfPi * f[kB3]);
+  const double g1 = phase1.cos - shape1.cos;
+  const double g2 = phase2.cos - shape2.cos;
   const Eigen::Vector3d b(e[0], e[1], e[2] + f[kB0] * g1 + f[kB2] * g2);
 
-  const double c = std::cos(f[kTau]), s = std::sin(f[kTau]);
+  const SinCos twist(f[kTau]);
+  const double c = twist.cos, s = twist.sin;
   const Eigen::Vector3d t(c * b[0] - s * b[1], s * b[0] + c * b[1], b[2]);
   const Eigen::Vector3d shape = t + Eigen::Vector3d(f[kE1o], f[kE2o], f[kE3o]);
   if (jacobian == nullptr) return shape;
@@ -63,18 +70,16 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
   de(1, kEps2) = a0 * f[kA2] * cu.value * sv.d_exponent;
 
   // db/df = B_e de/df + the bend's own dependence on a0 and b0..b3.
-  const double gx1 = -kHalfPi * std::sin(phase1);
-  const double gx2 = -kHalfPi * std::sin(phase2);
+  const double gx1 = -kHalfPi * phase1.sin;
+  const double gx2 = -kHalfPi * phase2.sin;
   const double beta1 = f[kB0] * gx1 / a0, beta2 = f[kB2] * gx2 / a0;
   Eigen::Matrix<double, 3, kNumFunctions> db = de;
   db.row(2) += beta1 * de.row(0) + beta2 * de.row(1);
   db(2, kA0) -= beta1 * x1 + beta2 * x2;  // x_i = e_i / a0 with e_i held.
   db(2, kB0) += g1;
-  db(2, kB1) += f[kB0] * (kHalfPi * std::sin(phase1) +
-                          kHalfPi * std::sin(kHalfPi * f[kB1]));
+  db(2, kB1) += f[kB0] * kHalfPi * (phase1.sin + shape1.sin);
   db(2, kB2) += g2;
-  db(2, kB3) += f[kB2] * (kHalfPi * std::sin(phase2) +
-                          kHalfPi * std::sin(kHalfPi * f[kB3]));
+  db(2, kB3) += f[kB2] * kHalfPi * (phase2.sin + shape2.sin);
 
   // Twist rotates the first two rows; tau itself turns b; offsets add.
   ShapeJacobian& ds = *jacobian;
