@@ -92,6 +92,8 @@ void BM_FitFrame(benchmark::State& state) {
 
 void FitArguments(benchmark::internal::Benchmark* b) {
   b->ArgNames({"points", "threads", "solver", "autodiff"});
+  // The interactive case: a 2,000-point frame from the previous frame.
+  b->Args({2000, 1, ceres::SPARSE_NORMAL_CHOLESKY, 0});
   for (int points : {1000, 10000, 50000}) {
     for (int threads : {1, 2}) {
       for (int solver : {ceres::SPARSE_NORMAL_CHOLESKY,
