@@ -60,3 +60,32 @@ TEST(ModelTest, WorldPointAppliesThePose) {
 
 }  // namespace
 }  // namespace pfdm
+
+namespace pfdm {
+namespace {
+
+// Each ring turns by tau at its own u: the twisted model's ring equals the
+// untwisted one rotated about the axis by the interpolated tau(u).
+TEST(ModelTest, TwistTurnsEachRingByItsOwnTau) {
+  FunctionValues f = DefaultFunctionValues();
+  f[kA0] = 50.0;
+  f[kA1] = 0.4;
+  f[kA2] = 0.3;
+  const Model straight = Model::Uniform(ModelConfig::Paper(5), f);
+  Model twisted = straight;
+  for (int k = 0; k < 5; ++k) twisted.state.knots[k][kTau] = 0.05 * k - 0.1;
+  for (double u : {-1.2, -0.6, 0.0, 0.4}) {
+    const double tau = twisted.FunctionAt(kTau, u);
+    for (double v : {-2.0, 0.5, 1.9}) {
+      const Eigen::Vector3d p = straight.ModelPoint(u, v);
+      const Eigen::Vector3d q = twisted.ModelPoint(u, v);
+      EXPECT_NEAR(std::atan2(q.y(), q.x()) - std::atan2(p.y(), p.x()), tau,
+                  1e-12);
+      EXPECT_NEAR(q.head<2>().norm(), p.head<2>().norm(), 1e-12);
+      EXPECT_NEAR(q.z(), p.z(), 1e-12);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pfdm
