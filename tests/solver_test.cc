@@ -1,0 +1,50 @@
+#include "pfdm/solver.h"
+
+#include "ceres/autodiff_cost_function.h"
+#include "gtest/gtest.h"
+#include "pfdm/error.h"
+
+namespace pfdm {
+namespace {
+
+struct Quadratic {
+  template <typename T>
+  bool operator()(const T* x, T* r) const {
+    r[0] = x[0] * x[0] - 4.0;
+    return true;
+  }
+};
+
+TEST(SolverTest, NamesRoundTripAndUnknownNamesAreErrors) {
+  for (SolverKind kind : {SolverKind::kDirect, SolverKind::kDamped,
+                          SolverKind::kIntegrator}) {
+    EXPECT_EQ(SolverFromName(SolverName(kind)), kind);
+  }
+  try {
+    SolverFromName("newton");
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(),
+                 "unknown --solver 'newton' (expected direct, damped or "
+                 "integrator)");
+  }
+}
+
+TEST(SolverTest, DirectSolveReportsItsIterations) {
+  double x = 5.0;
+  ceres::Problem problem;
+  problem.AddResidualBlock(
+      new ceres::AutoDiffCostFunction<Quadratic, 1, 1>(new Quadratic), nullptr,
+      &x);
+  const SolverReport report = SolveDirect(&problem, SolverOptions());
+  EXPECT_NEAR(x, 2.0, 1e-8);
+  EXPECT_TRUE(report.usable);
+  EXPECT_TRUE(report.converged);
+  EXPECT_EQ(report.termination, "CONVERGENCE");
+  EXPECT_EQ(static_cast<int>(report.trace.size()), report.iterations + 1);
+  EXPECT_GT(report.trace.front().cost, report.trace.back().cost);
+  EXPECT_GE(report.jacobian_evaluations, report.iterations);
+}
+
+}  // namespace
+}  // namespace pfdm
