@@ -391,9 +391,12 @@ SequenceFit FitSequence(const PointSequence& sequence,
       fit.jacobian_seconds += report.jacobian_seconds;
       fit.linear_solver_seconds += report.linear_solver_seconds;
       ++fit.correspondence_rounds;
+      const SolverTracePoint last =
+          fit.trace.empty() ? SolverTracePoint{-1} : fit.trace.back();
       for (SolverTracePoint point : report.trace) {
-        point.iteration += fit.trace.empty() ? 0 : fit.trace.back().iteration + 1;
-        point.wall_seconds += fit.trace.empty() ? 0 : fit.trace.back().wall_seconds;
+        point.iteration += last.iteration + 1;
+        point.pseudo_time += last.pseudo_time;
+        point.wall_seconds += last.wall_seconds;
         fit.trace.push_back(point);
       }
       if (!report.usable) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "Eigen/Core"
+#include "Eigen/Geometry"  // Users of models take cross products.
 #include "pfdm/model_point.h"
 #include "pfdm/parameter_function.h"
 

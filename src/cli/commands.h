@@ -17,6 +17,7 @@ namespace pfdm {
 int RunFit();
 int RunSimulate();
 int RunCheckJacobians();
+int RunCompareSolvers();
 
 // From the shared flags (--points --format --contours; --model --knots;
 // --smoothness --prior --loss --loss_scale --threads --apex --base --solver).

@@ -21,6 +21,8 @@ const Command kCommands[] = {
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]"},
     {"check-jacobians", RunCheckJacobians, "[--tolerance 1e-6]"},
+    {"compare-solvers", RunCompareSolvers,
+     "--points FILE --out DIR: direct, damped and integrator side by side"},
 };
 
 std::string Usage() {
