@@ -388,6 +388,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
       report = SolveFrame(points, fit.material, sliding, rim_height, kind,
                           prior, options, &model);
       fit.iterations += report.iterations;
+      fit.residual_evaluations += report.residual_evaluations;
+      fit.jacobian_evaluations += report.jacobian_evaluations;
       fit.jacobian_seconds += report.jacobian_seconds;
       fit.linear_solver_seconds += report.linear_solver_seconds;
       ++fit.correspondence_rounds;

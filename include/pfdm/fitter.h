@@ -46,6 +46,8 @@ struct FrameFit {
   int iterations = 0;
   int correspondence_rounds = 0;
   double solve_seconds = 0.0;
+  int residual_evaluations = 0;        // Summed over the rounds.
+  int jacobian_evaluations = 0;
   double jacobian_seconds = 0.0;       // Summed over the solver's iterations.
   double linear_solver_seconds = 0.0;  // Likewise.
   std::string termination;
