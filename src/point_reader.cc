@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstring>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "libfccp/csv.h"
 #include "pfdm/error.h"
@@ -24,7 +28,8 @@ InputError Restate(const std::string& path, const io::error::base& error) {
     where += ":" + std::to_string(line->file_line);
   }
   std::string column;
-  if (const auto* named = dynamic_cast<const io::error::with_column_name*>(&error)) {
+  if (const auto* named =
+          dynamic_cast<const io::error::with_column_name*>(&error)) {
     column = named->column_name;
   }
   std::string what;
@@ -32,7 +37,8 @@ InputError Restate(const std::string& path, const io::error::base& error) {
     what = "cannot open the file";
   } else if (dynamic_cast<const io::error::missing_column_in_header*>(&error)) {
     what = "missing column '" + column + "'";
-  } else if (dynamic_cast<const io::error::duplicated_column_in_header*>(&error)) {
+  } else if (dynamic_cast<const io::error::duplicated_column_in_header*>(
+                 &error)) {
     what = "column '" + column + "' appears twice";
   } else if (dynamic_cast<const io::error::header_missing*>(&error)) {
     what = "empty file, no header";
@@ -40,8 +46,18 @@ InputError Restate(const std::string& path, const io::error::base& error) {
     what = "too few columns";
   } else if (dynamic_cast<const io::error::too_many_columns*>(&error)) {
     what = "too many columns";
+  } else if (dynamic_cast<const io::error::escaped_string_not_closed*>(
+                 &error)) {
+    what = "a quoted field is not closed";
+  } else if (dynamic_cast<const io::error::line_length_limit_exceeded*>(
+                 &error)) {
+    what = "line too long";
+  } else if (dynamic_cast<const io::error::integer_overflow*>(&error) ||
+             dynamic_cast<const io::error::integer_underflow*>(&error)) {
+    what = "column '" + column + "' is out of range";
   } else if (!column.empty()) {
-    const auto* content = dynamic_cast<const io::error::with_column_content*>(&error);
+    const auto* content =
+        dynamic_cast<const io::error::with_column_content*>(&error);
     what = "column '" + column + "' is not a number" +
            (content ? ": '" + std::string(content->column_content) + "'" : "");
   } else {
@@ -53,17 +69,24 @@ InputError Restate(const std::string& path, const io::error::base& error) {
 // libfccp splits the fields; its own float parser rounds differently from
 // strtod, so coordinates are converted by the standard library, which makes
 // written files read back bit for bit.
-double ParseCoordinate(const std::string& path, unsigned line,
-                       const char* name, const char* text) {
+double ParseCoordinate(const std::string& path, unsigned line, const char* name,
+                       const char* text) {
   const std::string where =
       path + ":" + std::to_string(line) + ": column '" + name + "'";
   double value = 0.0;
   const char* end = text + std::strlen(text);
-  const auto [rest, error] = std::from_chars(text, end, value);
-  if (error != std::errc() || rest != end || rest == text) {
+  // from_chars refuses the explicit plus sign that strtod and writers allow.
+  const char* begin = text[0] == '+' && text[1] != '-' ? text + 1 : text;
+  const auto [rest, error] = std::from_chars(begin, end, value);
+  if (error == std::errc::result_out_of_range) {
+    throw InputError(where + " is out of range: '" + text + "'");
+  }
+  if (error != std::errc() || rest != end || rest == begin) {
     throw InputError(where + " is not a number: '" + text + "'");
   }
-  if (!std::isfinite(value)) throw InputError(where + " is not a finite number");
+  if (!std::isfinite(value)) {
+    throw InputError(where + " is not a finite number");
+  }
   return value;
 }
 
@@ -88,10 +111,15 @@ PointSequence Assemble(const std::string& path,
 }  // namespace
 
 PointSequence ReadPointsCsv(const std::string& path) {
+  // fopen accepts a folder and reading it looks like an empty file.
+  if (std::filesystem::is_directory(path)) {
+    throw InputError(path + ": is a folder, not a CSV file");
+  }
   std::map<long long, std::vector<DataPoint>> frames;
   std::map<long long, std::set<long long>> ids;
   try {
-    io::CSVReader<5, io::trim_chars<' ', '\t'>, io::double_quote_escape<',', '"'>>
+    io::CSVReader<5, io::trim_chars<' ', '\t'>,
+                  io::double_quote_escape<',', '"'>>
         in(path);
     in.read_header(io::ignore_extra_column, "frame", "id", "x", "y", "z");
     long long frame, id;
@@ -102,7 +130,9 @@ PointSequence ReadPointsCsv(const std::string& path) {
       const Eigen::Vector3d position(ParseCoordinate(path, line, "x", x),
                                      ParseCoordinate(path, line, "y", y),
                                      ParseCoordinate(path, line, "z", z));
-      if (frame < 0) throw InputError(where + ": negative frame " + std::to_string(frame));
+      if (frame < 0) {
+        throw InputError(where + ": negative frame " + std::to_string(frame));
+      }
       if (!ids[frame].insert(id).second) {
         throw InputError(where + ": id " + std::to_string(id) +
                          " appears twice in frame " + std::to_string(frame));
@@ -126,7 +156,9 @@ PointSequence ReadGpFiles(const std::string& path,
       }
     }
     std::sort(files.begin(), files.end());
-    if (files.empty()) throw InputError(path + ": no GPFile_*.txt in this folder");
+    if (files.empty()) {
+      throw InputError(path + ": no GPFile_*.txt in this folder");
+    }
   } else {
     files.push_back(path);
   }
@@ -151,11 +183,21 @@ PointSequence ReadGpFiles(const std::string& path,
     } catch (const io::error::base& error) {
       throw Restate(file, error);
     }
+  }
+  // A filter that matches nothing anywhere is a wrong type name, not a
+  // frame without contours: say so once, for the whole input.
+  std::string what = "no points";
+  if (!contour_types.empty()) {
+    what += " of contour types ";
+    for (size_t i = 0; i < contour_types.size(); ++i) {
+      what += (i > 0 ? "," : "") + contour_types[i];
+    }
+  }
+  if (next_id == 0) throw InputError(path + ": " + what);
+  for (const auto& [index, points] : frames) {
     if (points.empty()) {
-      std::string list;
-      for (const auto& t : contour_types) list += (list.empty() ? "" : ",") + t;
-      throw InputError(file + ": frame " + std::to_string(file_index) +
-                       ": no points of contour types " + list);
+      throw InputError(files[index] + ": frame " + std::to_string(index) +
+                       ": " + what);
     }
   }
   return Assemble(path, std::move(frames));

@@ -1,6 +1,7 @@
 #include "pfdm/atomic_file.h"
 
 #include <filesystem>
+#include <string>
 
 #include "gtest/gtest.h"
 #include "pfdm/error.h"
@@ -27,18 +28,55 @@ TEST(AtomicFileTest, UnwritablePlaceIsAnInputError) {
     WriteFileAtomically("/nonexistent/dir/a.txt", "x");
     FAIL();
   } catch (const InputError& error) {
-    EXPECT_EQ(std::string(error.what()),
-              "/nonexistent/dir/a.txt: cannot write: No such file or directory");
+    EXPECT_EQ(
+        std::string(error.what()),
+        "/nonexistent/dir/a.txt: cannot write: No such file or directory");
   }
   EXPECT_FALSE(std::filesystem::exists("/nonexistent/dir"));
+}
+
+TEST(AtomicFileTest, FailedRenameKeepsTheTargetAndRemovesTheTemporary) {
+  const std::string dir = ScratchDirectory("atomic_rename");
+  // A non-empty folder cannot be replaced by a file.
+  std::filesystem::create_directories(dir + "/out/inner");
+  try {
+    WriteFileAtomically(dir + "/out", "x");
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              dir + "/out: cannot write: Is a directory");
+  }
+  EXPECT_TRUE(std::filesystem::is_directory(dir + "/out/inner"));
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    (void)entry;
+    ++files;
+  }
+  EXPECT_EQ(files, 1);
+}
+
+TEST(AtomicFileTest, WritesBinaryContentsByteForByte) {
+  const std::string dir = ScratchDirectory("atomic_binary");
+  const std::string contents("a\0b\r\n\xff", 6);
+  WriteFileAtomically(dir + "/b.bin", contents);
+  EXPECT_EQ(ReadText(dir + "/b.bin"), contents);
+  WriteFileAtomically(dir + "/empty", "");
+  EXPECT_EQ(std::filesystem::file_size(dir + "/empty"), 0u);
 }
 
 TEST(AtomicFileTest, EnsureDirectoryCreatesParentsAndRejectsFiles) {
   const std::string dir = ScratchDirectory("ensure");
   EnsureDirectory(dir + "/a/b");
   EXPECT_TRUE(std::filesystem::is_directory(dir + "/a/b"));
+  EnsureDirectory(dir + "/a/b");  // Already there: fine.
   WriteText(dir + "/file", "x");
-  EXPECT_THROW(EnsureDirectory(dir + "/file"), InputError);
+  try {
+    EnsureDirectory(dir + "/file");
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              dir + "/file: cannot create folder: Not a directory");
+  }
 }
 
 }  // namespace

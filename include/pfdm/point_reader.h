@@ -19,7 +19,9 @@ PointSequence ReadPointsCsv(const std::string& path);
 // frame per file in name order, as biv-me writes them.  The `time frame`
 // column is not read: biv-me's own files carry 1.0 there on some LAX rows.
 // Only rows whose contour type is listed are kept (all when the list is
-// empty); each is an untracked point with an id of its own.
+// empty); each is an untracked point with an id of its own.  Throws
+// InputError "PATH: no points of contour types A,B" when the filter keeps
+// nothing at all, and "FILE: frame N: ..." when it empties one frame.
 PointSequence ReadGpFiles(const std::string& path,
                           const std::vector<std::string>& contour_types);
 
