@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "pfdm/model_surface.h"
+
 namespace pfdm {
 namespace {
 
@@ -54,7 +56,36 @@ ClinicalSummary SummarizeFrame(int frame, const Model& reference,
   summary.radial_contraction_y_percent /= counted;
   summary.longitudinal_shortening_percent =
       100.0 * (1.0 - AxialLength(current) / AxialLength(reference));
+  summary.volume_ml = CavityVolumeMl(current);
   return summary;
+}
+
+std::vector<ClinicalSummary> SummarizeSequence(
+    const std::vector<Model>& frames) {
+  std::vector<ClinicalSummary> summaries;
+  for (size_t t = 0; t < frames.size(); ++t) {
+    summaries.push_back(
+        SummarizeFrame(static_cast<int>(t), frames.front(), frames[t]));
+  }
+  return summaries;
+}
+
+EjectionFraction EjectionFractionOf(
+    const std::vector<ClinicalSummary>& summaries) {
+  EjectionFraction ef;
+  if (summaries.empty()) return ef;
+  ef.ed_frame = summaries.front().frame;
+  ef.edv_ml = summaries.front().volume_ml;
+  ef.es_frame = ef.ed_frame;
+  ef.esv_ml = ef.edv_ml;
+  for (const ClinicalSummary& s : summaries) {
+    if (s.volume_ml < ef.esv_ml) {
+      ef.es_frame = s.frame;
+      ef.esv_ml = s.volume_ml;
+    }
+  }
+  if (ef.edv_ml > 0.0) ef.ratio = (ef.edv_ml - ef.esv_ml) / ef.edv_ml;
+  return ef;
 }
 
 }  // namespace pfdm

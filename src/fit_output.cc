@@ -7,12 +7,16 @@
 #include "nlohmann/json.hpp"
 #include "pfdm/atomic_file.h"
 #include "pfdm/clinical_summary.h"
-#include "pfdm/vtk_writer.h"
+#include "pfdm/fit_plots.h"
+#include "pfdm/fit_report.h"
+#include "pfdm/model_surface.h"
+#include "pfdm/vtp_writer.h"
 
 namespace pfdm {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegreesPerRadian = 180.0 / kPi;
 constexpr int kSurfaceRings = 33;
 constexpr int kSurfaceMeridians = 48;
 
@@ -26,9 +30,32 @@ constexpr const char* kGaugeConvention =
     "relative to frame 0 and offsets, bending and a1..a3 are motion relative "
     "to frame 0's axis.";
 
+constexpr const char* kEjectionDefinition =
+    "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; "
+    "volume_ml is the fitted cavity as cavity_closure says.";
+
+constexpr const char* kRegionsConvention =
+    "AHA-style segments: thirds of frame 0's axis from the base rim to the "
+    "apex (segments 1-6 basal, 7-12 mid, 13-16 apical), each cut into equal "
+    "sectors of longitude v counted counter-clockwise about +z (seen from "
+    "the base) from v = -180 degrees, the model's -x axis, not the RV "
+    "insertion; per frame, twist_deg is the segment's mean tau and "
+    "radial_contraction_percent the mean of 1 - r / r(frame 0), r the "
+    "distance from the ring centre.";
+
+std::string CavityClosure(const FitAnalysis& analysis) {
+  if (analysis.base_planes.empty()) {
+    return "flat lid: a fan of triangles from the base rim to its centroid";
+  }
+  return "each frame's mitral valve plane (least squares through its " +
+         std::to_string(analysis.base_planes.front().num_points) +
+         " MITRAL_VALVE guide points on frame 0), the model continued past "
+         "its base rim with its functions held at their base values";
+}
+
 bool IsLength(int f) {
-  return f == kA0 || f == kA1 || f == kA2 || f == kA3 || f == kB0 ||
-         f == kB2 || f == kE1o || f == kE2o || f == kE3o;
+  return f == kA0 || f == kA1 || f == kA2 || f == kA3 || f == kB0 || f == kB2 ||
+         f == kE1o || f == kE2o || f == kE3o;
 }
 
 // Function value in its reported unit (see ParametersCsv).
@@ -77,18 +104,22 @@ std::string ParametersCsv(const std::vector<Model>& frames) {
 
 std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                     const FitOptions& options) {
+  return FitJson(points, fit, options, AnalyzeFit(fit));
+}
+
+std::string FitJson(const PointSequence& points, const SequenceFit& fit,
+                    const FitOptions& options, const FitAnalysis& analysis) {
   using json = nlohmann::ordered_json;
-  json settings = {{"points", points.source},
-                   {"smoothness_weight", options.smoothness_weight},
-                   {"prior_weight", options.prior_weight},
-                   {"loss", options.loss},
-                   {"loss_scale_mm", options.loss_scale_mm},
-                   {"max_correspondence_rounds",
-                    options.max_correspondence_rounds},
-                   {"correspondence_tolerance_mm",
-                    options.correspondence_tolerance_mm},
-                   {"max_iterations", options.solver.max_iterations},
-                   {"threads", options.solver.num_threads}};
+  json settings = {
+      {"points", points.source},
+      {"smoothness_weight", options.smoothness_weight},
+      {"prior_weight", options.prior_weight},
+      {"loss", options.loss},
+      {"loss_scale_mm", options.loss_scale_mm},
+      {"max_correspondence_rounds", options.max_correspondence_rounds},
+      {"correspondence_tolerance_mm", options.correspondence_tolerance_mm},
+      {"max_iterations", options.solver.max_iterations},
+      {"threads", options.solver.num_threads}};
   if (options.hint) {
     const auto& h = *options.hint;
     settings["apex_hint"] = {h.apex.x(), h.apex.y(), h.apex.z()};
@@ -97,9 +128,10 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   }
   json functions = json::object();
   for (int f = 0; f < kNumFunctions; ++f) {
-    functions[FunctionName(f)] = {
-        {"mode", ModeName(fit.config.modes[f])},
-        {"unit", f == kTau ? "rad" : IsLength(f) ? "mm" : "1"}};
+    functions[FunctionName(f)] = {{"mode", ModeName(fit.config.modes[f])},
+                                  {"unit", f == kTau     ? "rad"
+                                           : IsLength(f) ? "mm"
+                                                         : "1"}};
   }
   json model = {{"name", fit.config.name},
                 {"knots", fit.config.num_knots},
@@ -108,12 +140,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                 {"functions", functions}};
 
   json frames = json::array();
-  const Model reference = fit.ModelAt(0);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& frame = fit.frames[t];
-    const Model current = fit.ModelAt(t);
-    const ClinicalSummary summary = SummarizeFrame(frame.frame, reference,
-                                                   current);
+    const ClinicalSummary& summary = analysis.clinical[t];
     frames.push_back(
         {{"frame", frame.frame},
          {"n_points", frame.residuals.size()},
@@ -124,6 +153,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
          {"correspondence_rounds", frame.correspondence_rounds},
          {"solve_seconds", frame.solve_seconds},
          {"termination", frame.termination},
+         {"volume_ml", summary.volume_ml},
          {"pose",
           {{"center_mm", frame.state.center},
            {"quaternion_wxyz", frame.state.quaternion}}},
@@ -141,40 +171,52 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
            {"radial_ratio_y_per_knot", summary.radial_ratio_y},
            {"longitudinal_ratio_per_knot", summary.longitudinal_ratio}}}});
   }
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  json ejection = {{"ratio", ef.ratio},
+                   {"ed_frame", ef.ed_frame},
+                   {"es_frame", ef.es_frame},
+                   {"edv_ml", ef.edv_ml},
+                   {"esv_ml", ef.esv_ml},
+                   {"definition", kEjectionDefinition},
+                   {"cavity_closure", CavityClosure(analysis)}};
+  json regions = json::array();
+  for (size_t r = 0; r < analysis.regions.size(); ++r) {
+    const WallRegion& region = analysis.regions[r];
+    std::vector<double> twist, radial;
+    for (const auto& motion : analysis.region_motion) {
+      twist.push_back(motion[r].twist_deg);
+      radial.push_back(motion[r].radial_contraction_percent);
+    }
+    regions.push_back({{"segment", region.segment},
+                       {"name", region.Name()},
+                       {"v_range_deg",
+                        {region.v_begin * kDegreesPerRadian,
+                         region.v_end * kDegreesPerRadian}},
+                       {"twist_deg", twist},
+                       {"radial_contraction_percent", radial}});
+  }
   json document = {{"pfdm_version", "0.1.0"},
                    {"settings", settings},
                    {"model", model},
                    {"gauge_convention", kGaugeConvention},
+                   {"ejection_fraction", ejection},
+                   {"regions_convention", kRegionsConvention},
+                   {"regions", regions},
                    {"frames", frames}};
   return document.dump(2) + "\n";
 }
 
-std::string FrameVtk(const Model& model, const Frame& frame,
-                     const FrameFit& fit) {
+VtkPolyData FramePolyData(const Model& model, const Frame& frame,
+                          const FrameFit& fit) {
+  const ModelSurface surface =
+      MakeModelSurface(model, kSurfaceRings, kSurfaceMeridians);
   VtkPolyData data;
-  std::vector<double> u_values, v_values, is_data;
-  std::vector<Eigen::Vector3d> residuals;
-  for (int i = 0; i < kSurfaceRings; ++i) {
-    const double u = model.config.u_min +
-                     (model.config.u_max - model.config.u_min) * i /
-                         (kSurfaceRings - 1);
-    for (int j = 0; j < kSurfaceMeridians; ++j) {
-      const double v = -kPi + 2.0 * kPi * j / kSurfaceMeridians;
-      data.points.push_back(model.WorldPoint(u, v));
-      u_values.push_back(u);
-      v_values.push_back(v);
-      is_data.push_back(0.0);
-      residuals.push_back(Eigen::Vector3d::Zero());
-    }
-  }
-  for (int i = 0; i + 1 < kSurfaceRings; ++i) {
-    for (int j = 0; j < kSurfaceMeridians; ++j) {
-      const int a = i * kSurfaceMeridians + j;
-      const int b = i * kSurfaceMeridians + (j + 1) % kSurfaceMeridians;
-      data.triangles.push_back({a, b, b + kSurfaceMeridians});
-      data.triangles.push_back({a, b + kSurfaceMeridians, a + kSurfaceMeridians});
-    }
-  }
+  data.points = surface.mesh.points;
+  data.triangles = surface.mesh.triangles;
+  std::vector<double> u_values = surface.u, v_values = surface.v;
+  std::vector<double> is_data(data.points.size(), 0.0);
+  std::vector<Eigen::Vector3d> residuals(data.points.size(),
+                                         Eigen::Vector3d::Zero());
   for (size_t i = 0; i < frame.points.size(); ++i) {
     data.vertices.push_back(static_cast<int>(data.points.size()));
     data.points.push_back(frame.points[i].position);
@@ -183,25 +225,50 @@ std::string FrameVtk(const Model& model, const Frame& frame,
     is_data.push_back(1.0);
     residuals.push_back(fit.residuals[i]);
   }
-  data.point_scalars = {{"u", u_values}, {"v", v_values}, {"is_data", is_data}};
+  std::vector<double> twist;
+  for (double u : u_values) {
+    twist.push_back(model.FunctionAt(kTau, u) * kDegreesPerRadian);
+  }
+  data.point_scalars = {{"u", u_values},
+                        {"v", v_values},
+                        {"twist_deg", twist},
+                        {"is_data", is_data}};
   data.point_vectors = {{"residual", residuals}};
-  return ToLegacyVtk(data, "pfdm frame " + std::to_string(frame.index));
+  return data;
+}
+
+std::string FrameVtk(const Model& model, const Frame& frame,
+                     const FrameFit& fit) {
+  return ToLegacyVtk(FramePolyData(model, frame, fit),
+                     "pfdm frame " + std::to_string(frame.index));
 }
 
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
-                     const SequenceFit& fit, const FitOptions& options) {
+                     const SequenceFit& fit, const FitOptions& options,
+                     const std::vector<BasePlane>& base_planes) {
   // Everything is rendered before the first file is written, so a failure
-  // leaves no partial set behind.
+  // (gnuplot missing, say) leaves no partial set behind.
+  const FitAnalysis analysis = AnalyzeFit(fit, base_planes);
   std::vector<std::pair<std::string, std::string>> files;
-  files.emplace_back("fit.json", FitJson(points, fit, options));
-  std::vector<Model> models;
-  for (size_t t = 0; t < fit.frames.size(); ++t) models.push_back(fit.ModelAt(t));
-  files.emplace_back("parameters.csv", ParametersCsv(models));
+  files.emplace_back("parameters.csv", ParametersCsv(analysis.models));
+  std::vector<std::pair<double, std::string>> timesteps;
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     char name[32];
-    std::snprintf(name, sizeof(name), "frame_%03d.vtk", fit.frames[t].frame);
-    files.emplace_back(name, FrameVtk(models[t], points.frames[t], fit.frames[t]));
+    std::snprintf(name, sizeof(name), "frame_%03d", fit.frames[t].frame);
+    const VtkPolyData data =
+        FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
+    files.emplace_back(std::string(name) + ".vtk",
+                       ToLegacyVtk(data, std::string("pfdm ") + name));
+    files.emplace_back(std::string(name) + ".vtp", ToVtkXmlPolyData(data));
+    timesteps.emplace_back(fit.frames[t].frame, std::string(name) + ".vtp");
   }
+  files.emplace_back("fit.pvd", PvdCollection(timesteps));
+  const std::string parameters_svg = ParameterPlotsSvg(analysis.models);
+  files.emplace_back("parameters.svg", parameters_svg);
+  files.emplace_back("report.html",
+                     FitReportHtml(points, fit, analysis, parameters_svg,
+                                   CycleCurvesSvg(analysis.clinical)));
+  files.emplace_back("fit.json", FitJson(points, fit, options, analysis));
   EnsureDirectory(dir);
   for (const auto& [name, contents] : files) {
     WriteFileAtomically(dir + "/" + name, contents);

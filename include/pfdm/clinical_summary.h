@@ -25,11 +25,31 @@ struct ClinicalSummary {
   double radial_contraction_y_percent = 0.0;
   // 1 - L / L0 with L the axial distance from apex to base-ring centre.
   double longitudinal_shortening_percent = 0.0;
+  // The cavity closed at the base rim (CavityVolumeMl).
+  double volume_ml = 0.0;
+};
+
+// (EDV - ESV) / EDV with end-diastole the first frame and end-systole the
+// frame of least volume: the fit starts at ED, as tagged sequences do.
+struct EjectionFraction {
+  int ed_frame = 0;
+  int es_frame = 0;
+  double edv_ml = 0.0;
+  double esv_ml = 0.0;
+  double ratio = 0.0;
 };
 
 // reference is frame 0's model, current the frame's.
 ClinicalSummary SummarizeFrame(int frame, const Model& reference,
                                const Model& current);
+
+// SummarizeFrame of every frame against frames[0].
+std::vector<ClinicalSummary> SummarizeSequence(
+    const std::vector<Model>& frames);
+
+// From the summaries' volumes; all zero for an empty list.
+EjectionFraction EjectionFractionOf(
+    const std::vector<ClinicalSummary>& summaries);
 
 // Index of the first knot whose ring has a non-zero radius.
 int ApicalKnot(const ModelConfig& config);

@@ -1,13 +1,16 @@
-// The files `pfdm fit` writes: fit.json, parameters.csv, frame_NNN.vtk.
+// The files `pfdm fit` writes: fit.json, parameters.csv, parameters.svg,
+// report.html, frame_NNN.vtk and .vtp, fit.pvd.
 #ifndef PFDM_FIT_OUTPUT_H_
 #define PFDM_FIT_OUTPUT_H_
 
 #include <string>
 #include <vector>
 
+#include "pfdm/fit_analysis.h"
 #include "pfdm/fitter.h"
 #include "pfdm/model.h"
 #include "pfdm/point_data.h"
+#include "pfdm/vtk_writer.h"
 
 namespace pfdm {
 
@@ -17,18 +20,27 @@ namespace pfdm {
 // model frame.
 std::string ParametersCsv(const std::vector<Model>& frames);
 
-// Settings, model, gauge convention, per-frame errors and clinical summary.
+// Settings, model, gauge convention, per-frame errors, clinical summary and
+// cavity volume; ejection fraction and regional wall motion.
+std::string FitJson(const PointSequence& points, const SequenceFit& fit,
+                    const FitOptions& options, const FitAnalysis& analysis);
 std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                     const FitOptions& options);
 
 // The fitted surface (a u, v grid of triangles) and the data points as
-// vertices, with point data u, v, is_data and the residual vectors.
+// vertices, with point data u, v, twist_deg (tau at u), is_data and the
+// residual vectors.
+VtkPolyData FramePolyData(const Model& model, const Frame& frame,
+                          const FrameFit& fit);
 std::string FrameVtk(const Model& model, const Frame& frame,
                      const FrameFit& fit);
 
-// Writes all of the above into dir, each file atomically.
+// Writes all of the above into dir, each file atomically, once everything
+// has been computed; fit.json last, so that its presence marks a complete
+// set (pfdm batch resumes on it).  base_planes as for AnalyzeFit.
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
-                     const SequenceFit& fit, const FitOptions& options);
+                     const SequenceFit& fit, const FitOptions& options,
+                     const std::vector<BasePlane>& base_planes = {});
 
 }  // namespace pfdm
 

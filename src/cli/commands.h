@@ -3,6 +3,7 @@
 #define PFDM_CLI_COMMANDS_H_
 
 #include "gflags/gflags.h"
+#include "pfdm/base_plane.h"
 #include "pfdm/fitter.h"
 #include "pfdm/model.h"
 #include "pfdm/point_data.h"
@@ -18,12 +19,16 @@ int RunFit();
 int RunSimulate();
 int RunCheckJacobians();
 int RunCompareSolvers();
+int RunBatch();
+int RunMeshPoints();
 
 // From the shared flags (--points --format --contours; --model --knots;
 // --smoothness --prior --loss --loss_scale --threads --apex --base --solver).
 PointSequence PointsFromFlags();
 ModelConfig ModelConfigFromFlags();
 FitOptions FitOptionsFromFlags();
+// Per frame, the plane closing the cavity for --base_plane (fit_command.cc).
+std::vector<BasePlane> BasePlanesFromFlags(const std::string& points);
 
 }  // namespace pfdm
 

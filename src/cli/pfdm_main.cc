@@ -23,6 +23,11 @@ const Command kCommands[] = {
     {"check-jacobians", RunCheckJacobians, "[--tolerance 1e-6]"},
     {"compare-solvers", RunCompareSolvers,
      "--points FILE --out DIR: direct, damped and integrator side by side"},
+    {"batch", RunBatch,
+     "--manifest cases.csv --out DIR [--jobs N] [--shard i/n]: fits a cohort"},
+    {"mesh-points", RunMeshPoints,
+     "--mesh FILE|DIR --out FILE.csv [--mesh_filter S] [--label 0] "
+     "[--cap_surfaces ED-endo,ES-endo]: mesh vertices as tracked points"},
 };
 
 std::string Usage() {
