@@ -19,7 +19,8 @@ struct Fixture {
   double quaternion[4] = {0.9, 0.1, -0.3, 0.2};
   FunctionValues globals, knot0, knot1;
   std::vector<double> residuals = std::vector<double>(3);
-  std::vector<double> storage = std::vector<double>(3 * (7 + 3 * kNumFunctions));
+  std::vector<double> storage =
+      std::vector<double>(3 * (7 + 3 * kNumFunctions));
 };
 
 Fixture MakeFixture(JacobianKind kind) {
@@ -33,9 +34,9 @@ Fixture MakeFixture(JacobianKind kind) {
   std::mt19937 random(1);
   std::uniform_real_distribution<double> u(-1.5, 0.5), v(-3.1, 3.1);
   for (int i = 0; i < kPoints; ++i) {
-    fixture.costs.emplace_back(MakePointCost(
-        Eigen::Vector3d(1, 2, 3), u(random), v(random), 0.3,
-        ModelConfig::Paper(17).FreeMask(), true, kind));
+    fixture.costs.emplace_back(
+        MakePointCost(Eigen::Vector3d(1, 2, 3), u(random), v(random), 0.3,
+                      ModelConfig::Paper(17).FreeMask(), true, kind));
   }
   return fixture;
 }
@@ -66,8 +67,12 @@ void Run(benchmark::State& state, JacobianKind kind) {
       benchmark::Counter::kIs1000);
 }
 
-void BM_Analytic(benchmark::State& state) { Run(state, JacobianKind::kAnalytic); }
-void BM_Autodiff(benchmark::State& state) { Run(state, JacobianKind::kAutodiff); }
+void BM_Analytic(benchmark::State& state) {
+  Run(state, JacobianKind::kAnalytic);
+}
+void BM_Autodiff(benchmark::State& state) {
+  Run(state, JacobianKind::kAutodiff);
+}
 
 BENCHMARK(BM_Analytic)->Arg(0)->Arg(1);
 BENCHMARK(BM_Autodiff)->Arg(0)->Arg(1);

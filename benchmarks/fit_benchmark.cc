@@ -47,10 +47,10 @@ double MatrixMultiplyRate() {
 }
 
 double FloorSecondsPerIteration(int num_points) {
-  const double flops = num_points * (kJacobianFlopsPerPoint +
-                                     2.0 * 3.0 * kNonZerosPerPoint *
-                                         kNonZerosPerPoint) +
-                       kParameters * kParameters * kParameters / 3.0;
+  const double flops =
+      num_points * (kJacobianFlopsPerPoint +
+                    2.0 * 3.0 * kNonZerosPerPoint * kNonZerosPerPoint) +
+      kParameters * kParameters * kParameters / 3.0;
   return flops / MatrixMultiplyRate();
 }
 
@@ -83,10 +83,12 @@ void BM_FitFrame(benchmark::State& state) {
   state.counters["iterations"] = frame.iterations;
   state.counters["frame_ms"] = 1e3 * frame.solve_seconds;
   state.counters["ms_per_iter"] = 1e3 * per_iteration;
-  state.counters["jacobian_ms_per_iter"] = 1e3 * frame.jacobian_seconds / iterations;
+  state.counters["jacobian_ms_per_iter"] =
+      1e3 * frame.jacobian_seconds / iterations;
   state.counters["linear_ms_per_iter"] =
       1e3 * frame.linear_solver_seconds / iterations;
-  state.counters["x_floor"] = per_iteration / FloorSecondsPerIteration(num_points);
+  state.counters["x_floor"] =
+      per_iteration / FloorSecondsPerIteration(num_points);
   state.counters["rms_mm"] = frame.rms_mm;
 }
 
@@ -105,7 +107,10 @@ void FitArguments(benchmark::internal::Benchmark* b) {
     b->Args({points, 1, ceres::SPARSE_NORMAL_CHOLESKY, 1});
   }
 }
-BENCHMARK(BM_FitFrame)->Apply(FitArguments)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FitFrame)
+    ->Apply(FitArguments)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 }  // namespace pfdm

@@ -82,7 +82,8 @@ void EvaluateSample(const PointSample& sample, FunctionMask free_mask,
     }
   };
   if (want[0]) {
-    Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rows).setIdentity();
+    Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(rows)
+        .setIdentity();
     emit(0);
   }
   if (want[1]) {

@@ -43,8 +43,8 @@ double LongitudeAround(const Model& model, const Eigen::Vector3d& point,
       model.Rotation().transpose() *
       (point - Eigen::Map<const Eigen::Vector3d>(model.state.center.data()));
   const FunctionValues f = model.FunctionsAt(u);
-  const double angle = std::atan2(local.y() - f[kE2o], local.x() - f[kE1o]) -
-                       f[kTau];
+  const double angle =
+      std::atan2(local.y() - f[kE2o], local.x() - f[kE1o]) - f[kTau];
   return std::atan2(std::sin(angle) / f[kA2], std::cos(angle) / f[kA1]);
 }
 
@@ -52,7 +52,8 @@ MaterialPoint Refine(const Model& model, const Eigen::Vector3d& target,
                      MaterialPoint start) {
   using Jet2 = ceres::Jet<double, 2>;
   MaterialPoint best = start;
-  double best_cost = (WorldPointAt(model, best.u, best.v) - target).squaredNorm();
+  double best_cost =
+      (WorldPointAt(model, best.u, best.v) - target).squaredNorm();
   double lambda = 1e-3;
   for (int step = 0; step < kRefinementSteps; ++step) {
     const Eigen::Matrix<Jet2, 3, 1> x =
@@ -105,10 +106,10 @@ Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
   }
   const KnotSpan span = grid.Span(u_value);
   const int k1 = std::min(span.k0 + 1, config.num_knots - 1);
-  const T weight = config.num_knots == 1
-                       ? T(0.0)
-                       : (u - grid.KnotU(span.k0)) /
-                             (grid.KnotU(k1) - grid.KnotU(span.k0));
+  const T weight =
+      config.num_knots == 1
+          ? T(0.0)
+          : (u - grid.KnotU(span.k0)) / (grid.KnotU(k1) - grid.KnotU(span.k0));
   T globals[kNumFunctions], knot0[kNumFunctions], knot1[kNumFunctions];
   for (int f = 0; f < kNumFunctions; ++f) {
     globals[f] = T(model.state.globals[f]);
@@ -120,9 +121,9 @@ Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
   T center[3], quaternion[4];
   for (int i = 0; i < 3; ++i) center[i] = T(model.state.center[i]);
   for (int i = 0; i < 4; ++i) quaternion[i] = T(model.state.quaternion[i]);
-  return WorldFromModel(center, quaternion,
-                        ReferenceShape(f, MakeAngles(u, v),
-                                       model.UnitExponents()));
+  return WorldFromModel(
+      center, quaternion,
+      ReferenceShape(f, MakeAngles(u, v), model.UnitExponents()));
 }
 
 template Eigen::Vector3d WorldPointAt(const Model&, const double&,
@@ -148,8 +149,9 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
   std::vector<MaterialPoint> samples;
   cloud.points.reserve(kGridU * kGridV);
   for (int i = 0; i < kGridU; ++i) {
-    const double u = model.config.u_min +
-                     (model.config.u_max - model.config.u_min) * i / (kGridU - 1);
+    const double u =
+        model.config.u_min +
+        (model.config.u_max - model.config.u_min) * i / (kGridU - 1);
     for (int j = 0; j < kGridV; ++j) {
       const double v = -kPi + 2.0 * kPi * j / kGridV;
       samples.push_back({u, v});

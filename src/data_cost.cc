@@ -63,10 +63,9 @@ ceres::CostFunction* MakeSurfaceCost(const Eigen::Vector3d& data, double u,
       return SurfaceResidual::Create(data, u, v, knot_weight, free_mask,
                                      unit_exponents, normal);
     case JacobianKind::kNumeric:
-      return new ceres::NumericDiffCostFunction<SurfaceResidual,
-                                                ceres::CENTRAL, 1, 3, 4,
-                                                kNumFunctions, kNumFunctions,
-                                                kNumFunctions>(
+      return new ceres::NumericDiffCostFunction<SurfaceResidual, ceres::CENTRAL,
+                                                1, 3, 4, kNumFunctions,
+                                                kNumFunctions, kNumFunctions>(
           new SurfaceResidual(
               PointResidual(data, u, v, knot_weight, free_mask, unit_exponents),
               normal, data));

@@ -1,10 +1,10 @@
 #include "pfdm/fitter.h"
 
 #include <chrono>
-#include <limits>
-#include <optional>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 
 #include "ceres/ceres.h"
@@ -53,9 +53,9 @@ std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
   for (int f = 0; f < kNumFunctions; ++f) {
     bool hold = config.modes[f] != fitted;
     if (reference) {
-      hold = hold || std::find(std::begin(kReferenceHeld),
-                               std::end(kReferenceHeld),
-                               f) != std::end(kReferenceHeld);
+      hold = hold ||
+             std::find(std::begin(kReferenceHeld), std::end(kReferenceHeld),
+                       f) != std::end(kReferenceHeld);
       hold = hold || ((f == kE1o || f == kE2o) && block == kGlobalsBlock);
     }
     if (kind == FrameKind::kUntracked) hold = hold || f == kTau;
@@ -69,7 +69,8 @@ std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
 // lengths.  tau is weighted as if at radius a0, about four times the LV's:
 // near the apex the rings are too small for the data to pin the twist, and
 // twist varies slowly along the axis, so its smoothness carries more.
-FunctionValues FunctionScales(const Model& model, const std::vector<int>& held) {
+FunctionValues FunctionScales(const Model& model,
+                              const std::vector<int>& held) {
   const double a0 = model.state.globals[kA0];
   const double radius =
       a0 * 0.5 * (model.FunctionAt(kA1, 0.0) + model.FunctionAt(kA2, 0.0));
@@ -92,7 +93,8 @@ void AddBlock(ceres::Problem* problem, double* values,
     return;
   }
   if (!held.empty()) {
-    problem->SetManifold(values, new ceres::SubsetManifold(kNumFunctions, held));
+    problem->SetManifold(values,
+                         new ceres::SubsetManifold(kNumFunctions, held));
   }
   auto bound = [&](int f, double lower, double upper) {
     if (Contains(held, f)) return;
@@ -106,7 +108,8 @@ void AddBlock(ceres::Problem* problem, double* values,
 
 ceres::LossFunction* MakeLoss(const FitOptions& options) {
   if (options.loss == "none") return nullptr;
-  if (options.loss == "huber") return new ceres::HuberLoss(options.loss_scale_mm);
+  if (options.loss == "huber")
+    return new ceres::HuberLoss(options.loss_scale_mm);
   if (options.loss == "cauchy") {
     return new ceres::CauchyLoss(options.loss_scale_mm);
   }
@@ -120,11 +123,11 @@ ceres::LossFunction* MakeLoss(const FitOptions& options) {
 // so they pull with the whole distance.  rim_height, when given, is where
 // the base rim must sit (RimResidual).
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
-                                  const std::vector<MaterialPoint>& material,
-                                  const std::vector<bool>& sliding,
-                                  std::optional<double> rim_height,
-                                  FrameKind kind, const ModelState& prior,
-                                  const FitOptions& options, Model* model) {
+                        const std::vector<MaterialPoint>& material,
+                        const std::vector<bool>& sliding,
+                        std::optional<double> rim_height, FrameKind kind,
+                        const ModelState& prior, const FitOptions& options,
+                        Model* model) {
   const ModelConfig& config = model->config;
   const KnotGrid grid = config.Grid();
   ModelState& state = model->state;
@@ -138,8 +141,7 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     problem.SetParameterBlockConstant(state.center.data());
     problem.SetParameterBlockConstant(state.quaternion.data());
   }
-  const std::vector<int> global_held =
-      HeldEntries(config, kind, kGlobalsBlock);
+  const std::vector<int> global_held = HeldEntries(config, kind, kGlobalsBlock);
   AddBlock(&problem, state.globals.data(), global_held);
   for (int k = 0; k < config.num_knots; ++k) {
     AddBlock(&problem, state.knots[k].data(), HeldEntries(config, kind, k));
@@ -153,12 +155,12 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
       options.jacobian == JacobianKind::kAnalytic && loss == nullptr;
   std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
   auto add_group = [&](int k0) {
-    problem.AddResidualBlock(
-        new PointGroupResidual(std::move(groups[k0]), free_mask,
-                               unit_exponents),
-        nullptr, state.center.data(), state.quaternion.data(),
-        state.globals.data(), state.knots[k0].data(),
-        state.knots[k0 + 1].data());
+    problem.AddResidualBlock(new PointGroupResidual(std::move(groups[k0]),
+                                                    free_mask, unit_exponents),
+                             nullptr, state.center.data(),
+                             state.quaternion.data(), state.globals.data(),
+                             state.knots[k0].data(),
+                             state.knots[k0 + 1].data());
     groups[k0].clear();
   };
   for (size_t i = 0; i < points.size(); ++i) {
@@ -217,16 +219,17 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
         nullptr, knots);
   }
   if (options.prior_weight > 0.0) {
-    const double sqrt_weight = std::sqrt(options.prior_weight * points_per_knot);
+    const double sqrt_weight =
+        std::sqrt(options.prior_weight * points_per_knot);
     for (int k = 0; k < config.num_knots; ++k) {
       problem.AddResidualBlock(
           PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
           nullptr, state.knots[k].data());
     }
     problem.AddResidualBlock(
-        PriorResidual::Create(
-            std::sqrt(options.prior_weight * points.size()),
-            FunctionScales(*model, global_held), prior.globals),
+        PriorResidual::Create(std::sqrt(options.prior_weight * points.size()),
+                              FunctionScales(*model, global_held),
+                              prior.globals),
         nullptr, state.globals.data());
   }
 
@@ -248,7 +251,8 @@ double UpdateClosest(const Model& model,
                      std::vector<MaterialPoint>* material) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
-  const std::vector<MaterialPoint> closest = ClosestMaterialPoints(model, subset);
+  const std::vector<MaterialPoint> closest =
+      ClosestMaterialPoints(model, subset);
   double moved = 0.0;
   for (size_t j = 0; j < which.size(); ++j) {
     MaterialPoint& old = (*material)[which[j]];
@@ -349,8 +353,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
 
   SequenceFit result;
   result.config = config;
-  Model model = InitializeModel(config, Positions(sequence.frames[0]),
-                                options.hint);
+  Model model =
+      InitializeModel(config, Positions(sequence.frames[0]), options.hint);
   ModelState prior = model.state;
   std::unordered_map<std::int64_t, MaterialPoint> tracked_material;
 
@@ -418,9 +422,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
       }
     }
     Summarize(model, points, &fit);
-    fit.solve_seconds = std::chrono::duration<double>(
-                            std::chrono::steady_clock::now() - start)
-                            .count();
+    fit.solve_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+            .count();
     prior = model.state;
     result.frames.push_back(std::move(fit));
   }

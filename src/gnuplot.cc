@@ -43,8 +43,9 @@ void RenderSvg(const std::vector<PlotData>& data, const std::string& script,
   std::filesystem::remove(script_path + ".log");
   if (status != 0 || !std::filesystem::exists(temporary)) {
     std::filesystem::remove(temporary);
-    throw InputError(svg_path + ": gnuplot failed" +
-                     (log.empty() ? " (is gnuplot-nox installed?)" : ": " + log));
+    throw InputError(
+        svg_path + ": gnuplot failed" +
+        (log.empty() ? " (is gnuplot-nox installed?)" : ": " + log));
   }
   std::filesystem::rename(temporary, svg_path);
 }

@@ -47,7 +47,8 @@ Model InitializeModel(const ModelConfig& config,
   for (const auto& p : points) mean += p;
   mean /= points.size();
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const auto& p : points) covariance += (p - mean) * (p - mean).transpose();
+  for (const auto& p : points)
+    covariance += (p - mean) * (p - mean).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
 
   Eigen::Vector3d axis = hint ? (hint->base_center - hint->apex).normalized()
@@ -55,8 +56,8 @@ Model InitializeModel(const ModelConfig& config,
   // Across-axis principal direction: the covariance projected off the axis.
   const Eigen::Matrix3d off_axis =
       Eigen::Matrix3d::Identity() - axis * axis.transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> across(
-      off_axis * covariance * off_axis);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> across(off_axis * covariance *
+                                                        off_axis);
   Eigen::Vector3d x_axis = across.eigenvectors().col(2);
 
   auto local_points = [&](const Eigen::Vector3d& x, const Eigen::Vector3d& z) {
@@ -73,7 +74,8 @@ Model InitializeModel(const ModelConfig& config,
     if (low_radius > high_radius) axis = -axis;
   }
   double third_moment = 0.0;
-  for (const auto& p : points) third_moment += std::pow((p - mean).dot(x_axis), 3);
+  for (const auto& p : points)
+    third_moment += std::pow((p - mean).dot(x_axis), 3);
   if (third_moment < 0.0) x_axis = -x_axis;
   const Eigen::Vector3d y_axis = axis.cross(x_axis);
 
@@ -97,7 +99,8 @@ Model InitializeModel(const ModelConfig& config,
 
   std::vector<double> radius_x, radius_y;
   for (const auto& p : local) {
-    const double s = std::clamp((p.z() - z_origin) / (a0 * kInitialA3), -1.0, 1.0);
+    const double s =
+        std::clamp((p.z() - z_origin) / (a0 * kInitialA3), -1.0, 1.0);
     const double c = std::sqrt(1.0 - s * s);
     if (c < 0.5) continue;
     radius_x.push_back(p.x() * p.x() / (c * c));

@@ -110,10 +110,10 @@ JacobianCheck Check(const std::string& name, const std::string& residual,
   check.finite = results.return_value;
   for (size_t i = 0; i < results.local_jacobians.size(); ++i) {
     const Eigen::MatrixXd& analytic = results.local_jacobians[i];
-    const Eigen::MatrixXd& numeric_jacobian = results.local_numeric_jacobians[i];
+    const Eigen::MatrixXd& numeric_jacobian =
+        results.local_numeric_jacobians[i];
     check.finite = check.finite && analytic.allFinite();
-    const double scale =
-        std::max(1e-3, numeric_jacobian.cwiseAbs().maxCoeff());
+    const double scale = std::max(1e-3, numeric_jacobian.cwiseAbs().maxCoeff());
     check.block_error[i] =
         (analytic - numeric_jacobian).cwiseAbs().maxCoeff() / scale;
     check.worst = std::max(check.worst, check.block_error[i]);
@@ -128,7 +128,8 @@ std::vector<JacobianCheck> CheckJacobians() {
   std::vector<JacobianCheck> checks;
   const Eigen::Vector3d data(1.0, 2.0, 3.0), normal(0.6, 0.0, 0.8);
   for (const auto& [name, s] : States()) {
-    for (JacobianKind kind : {JacobianKind::kAnalytic, JacobianKind::kAutodiff}) {
+    for (JacobianKind kind :
+         {JacobianKind::kAnalytic, JacobianKind::kAutodiff}) {
       std::unique_ptr<ceres::CostFunction> point(MakePointCost(
           data, s.u, s.v, 0.3, s.free_mask, s.unit_exponents, kind));
       checks.push_back(Check(name, "point", kind, *point, s));

@@ -8,8 +8,8 @@
 namespace pfdm {
 namespace {
 constexpr const char* kNames[kNumFunctions] = {
-    "a0", "a1", "a2", "a3", "eps1", "eps2", "b0",
-    "b1", "b2", "b3", "tau", "e1o", "e2o", "e3o"};
+    "a0", "a1", "a2", "a3",  "eps1", "eps2", "b0",
+    "b1", "b2", "b3", "tau", "e1o",  "e2o",  "e3o"};
 }  // namespace
 
 const char* FunctionName(int function) {
@@ -34,8 +34,8 @@ KnotGrid::KnotGrid(int num_knots, double u_min, double u_max)
   }
   const double s_min = std::sin(u_min), s_max = std::sin(u_max);
   for (int k = 0; k < num_knots; ++k) {
-    knot_u_.push_back(std::asin(std::clamp(
-        s_min + (s_max - s_min) * k / (num_knots - 1), -1.0, 1.0)));
+    knot_u_.push_back(std::asin(
+        std::clamp(s_min + (s_max - s_min) * k / (num_knots - 1), -1.0, 1.0)));
   }
   knot_u_.front() = u_min;  // Exactly, whatever asin(sin(.)) rounds to.
   knot_u_.back() = u_max;

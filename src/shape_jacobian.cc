@@ -31,8 +31,8 @@ Power PowerOf(double x, double e, bool unit_exponents) {
 
 // With e the primitive, b = T_b(e), t = Rz(tau) b and s = t + o:
 //   ds/df = Rz (B_e de/df + db/df|_e) + dt/dtau + do/df,
-// B_e = I + e3 (beta1, beta2, 0)^T, beta_i = b_{2i-2} g_x(e_i / a0, b_{2i-1}) / a0,
-// g(x, b) = cos(pi/2 (x - b)) - cos(pi/2 b).
+// B_e = I + e3 (beta1, beta2, 0)^T, beta_i = b_{2i-2} g_x(e_i / a0, b_{2i-1}) /
+// a0, g(x, b) = cos(pi/2 (x - b)) - cos(pi/2 b).
 Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
                                  bool unit_exponents, ShapeJacobian* jacobian) {
   const Power cu = PowerOf(angles.cos_u, f[kEps1], unit_exponents);
@@ -58,7 +58,8 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
   if (jacobian == nullptr) return shape;
 
   // de/df: only a0, a1..a3 and the exponents enter the primitive.
-  Eigen::Matrix<double, 3, kNumFunctions> de = Eigen::Matrix<double, 3, kNumFunctions>::Zero();
+  Eigen::Matrix<double, 3, kNumFunctions> de =
+      Eigen::Matrix<double, 3, kNumFunctions>::Zero();
   de.col(kA0) = e / a0;
   de(0, kA1) = a0 * cu.value * cv.value;
   de(1, kA2) = a0 * cu.value * sv.value;

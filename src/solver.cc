@@ -51,8 +51,8 @@ SolverReport SolveDirect(ceres::Problem* problem,
 
   SolverReport report;
   report.iterations = static_cast<int>(summary.iterations.size()) - 1;
-  report.usable = summary.IsSolutionUsable() &&
-                  summary.termination_type != ceres::FAILURE;
+  report.usable =
+      summary.IsSolutionUsable() && summary.termination_type != ceres::FAILURE;
   report.converged = summary.termination_type == ceres::CONVERGENCE;
   report.termination = ceres::TerminationTypeToString(summary.termination_type);
   report.message = summary.message;

@@ -44,7 +44,8 @@ TEST(AnalyticPointResidualTest, MatchesAutodiffAtRandomStates) {
   for (int trial = 0; trial < 50; ++trial) {
     Eigen::Vector4d q(unit(random), unit(random), unit(random), unit(random));
     q.normalize();
-    double center[3] = {10 * unit(random), 10 * unit(random), 10 * unit(random)};
+    double center[3] = {10 * unit(random), 10 * unit(random),
+                        10 * unit(random)};
     FunctionValues f[3];
     for (FunctionValues& values : f) {
       values = DefaultFunctionValues();
@@ -68,8 +69,9 @@ TEST(AnalyticPointResidualTest, MatchesAutodiffAtRandomStates) {
     ExpectSame(analytic, *autodiff, parameters);
 
     const Eigen::Vector3d normal = Eigen::Vector3d(1, 2, 2) / 3.0;
-    std::unique_ptr<ceres::CostFunction> autodiff_surface(SurfaceResidual::Create(
-        data, u, v, weight, mask, unit_exponents, normal));
+    std::unique_ptr<ceres::CostFunction> autodiff_surface(
+        SurfaceResidual::Create(data, u, v, weight, mask, unit_exponents,
+                                normal));
     AnalyticSurfaceResidual analytic_surface(
         PointSample(data, u, v, weight, normal), mask, unit_exponents);
     ExpectSame(analytic_surface, *autodiff_surface, parameters);
@@ -81,8 +83,9 @@ TEST(AnalyticPointResidualTest, SkipsJacobiansCeresDoesNotAskFor) {
   f[kA0] = 40.0;
   double center[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
   const double* parameters[] = {center, q, f.data(), f.data(), f.data()};
-  AnalyticPointResidual cost(PointSample(Eigen::Vector3d::Zero(), 0.2, 0.3, 0.5),
-                             ModelConfig::Paper(17).FreeMask(), true);
+  AnalyticPointResidual cost(
+      PointSample(Eigen::Vector3d::Zero(), 0.2, 0.3, 0.5),
+      ModelConfig::Paper(17).FreeMask(), true);
   double residual[3], knot_jacobian[3 * kNumFunctions];
   double* jacobians[5] = {nullptr, nullptr, nullptr, knot_jacobian, nullptr};
   ASSERT_TRUE(cost.Evaluate(parameters, residual, jacobians));

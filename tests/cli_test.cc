@@ -13,8 +13,8 @@ namespace fs = std::filesystem;
 
 TEST(CliTest, SimulateThenFitWritesEveryOutput) {
   const std::string dir = ScratchDirectory("cli");
-  CommandResult run = RunPfdm("simulate --frames 3 --tags 600 --out " + dir +
-                              "/phantom.csv");
+  CommandResult run =
+      RunPfdm("simulate --frames 3 --tags 600 --out " + dir + "/phantom.csv");
   ASSERT_EQ(run.exit_code, 0) << run.error;
   ASSERT_TRUE(fs::exists(dir + "/phantom_truth.csv"));
   run = RunPfdm("fit --points " + dir + "/phantom.csv --out " + dir + "/fit");
@@ -66,8 +66,10 @@ const BadInput kBadInputs[] = {
      "tags.csv: frame 1 has no points"},
     {"duplicate id", "frame,id,x,y,z\n0,1,2,3,4\n0,1,2,3,5\n", "",
      "tags.csv:3: id 1 appears twice in frame 0"},
-    {"too few points", "frame,id,x,y,z\n0,1,2,3,4\n0,2,5,6,7\n0,3,1,1,1\n"
-     "0,4,2,2,2\n", "", "tags.csv: frame 0: only 4 points, at least 10 needed"},
+    {"too few points",
+     "frame,id,x,y,z\n0,1,2,3,4\n0,2,5,6,7\n0,3,1,1,1\n"
+     "0,4,2,2,2\n",
+     "", "tags.csv: frame 0: only 4 points, at least 10 needed"},
     {"unknown model", "frame,id,x,y,z\n0,1,2,3,4\n", "--model cylinder",
      "unknown --model 'cylinder' (expected paper or superellipsoid)"},
     {"half a hint", "frame,id,x,y,z\n0,1,2,3,4\n", "--apex 1,2,3",
@@ -98,7 +100,8 @@ TEST(CliTest, BadInputGivesOneLineNonZeroExitAndNoOutput) {
 TEST(CliTest, UnknownCommandIsAUsageError) {
   const CommandResult run = RunPfdm("transmogrify");
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.error.find("unknown command 'transmogrify'"), std::string::npos);
+  EXPECT_NE(run.error.find("unknown command 'transmogrify'"),
+            std::string::npos);
 }
 
 }  // namespace

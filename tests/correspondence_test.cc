@@ -29,7 +29,8 @@ TEST(CorrespondenceTest, FindsTheMaterialPointOfPointsOffTheSurface) {
   const std::vector<MaterialPoint> found = ClosestMaterialPoints(model, points);
   for (size_t i = 0; i < points.size(); ++i) {
     EXPECT_NEAR(found[i].u, expected[i].u, 1e-5);
-    EXPECT_NEAR(std::remainder(found[i].v - expected[i].v, 2 * M_PI), 0.0, 1e-5);
+    EXPECT_NEAR(std::remainder(found[i].v - expected[i].v, 2 * M_PI), 0.0,
+                1e-5);
     EXPECT_NEAR((model.WorldPoint(found[i].u, found[i].v) - points[i]).norm(),
                 0.8, 1e-6);
   }

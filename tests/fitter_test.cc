@@ -74,7 +74,8 @@ TEST_P(RecoveryTest, RecoversPhantomParameterFunctions) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(NoiseDraws, RecoveryTest, ::testing::Values(1u, 2u, 3u));
+INSTANTIATE_TEST_SUITE_P(NoiseDraws, RecoveryTest,
+                         ::testing::Values(1u, 2u, 3u));
 
 // Frame 0: only the noise normal to the surface is left (0.5 mm).  Later
 // frames keep frame 0's material points, so the tangential noise of both
@@ -130,8 +131,7 @@ void ExpectSameParameters(const SequenceFit& a, const SequenceFit& b,
     for (int k = 0; k < grid.num_knots(); ++k) {
       const double u = grid.KnotU(k);
       for (int f : {kA1, kA2, kA3, kE1o, kE2o, kB0, kB2}) {
-        EXPECT_NEAR(Reported(mb, f, u), length_scale * Reported(ma, f, u),
-                    0.02)
+        EXPECT_NEAR(Reported(mb, f, u), length_scale * Reported(ma, f, u), 0.02)
             << FunctionName(f) << " frame " << t << " knot " << k;
       }
       EXPECT_NEAR(mb.FunctionAt(kTau, u), ma.FunctionAt(kTau, u),
@@ -204,7 +204,8 @@ TEST(FitterTest, RobustLossResistsOutlierTags) {
   for (int k = 1; k < grid.num_knots(); ++k) {
     const double u = grid.KnotU(k);
     EXPECT_NEAR(Reported(model, kA1, u) / Reported(phantom.truth[4], kA1, u),
-                1.0, 0.03) << k;
+                1.0, 0.03)
+        << k;
   }
 }
 

@@ -22,7 +22,8 @@ TEST(InitializationTest, AxisPointsFromApexToBase) {
   const Model model =
       InitializeModel(ModelConfig::Paper(17), FirstFrame(phantom), {});
   const Eigen::Vector3d truth_axis = phantom.truth[0].Rotation().col(2);
-  EXPECT_GT(model.Rotation().col(2).dot(truth_axis), std::cos(3.0 * M_PI / 180));
+  EXPECT_GT(model.Rotation().col(2).dot(truth_axis),
+            std::cos(3.0 * M_PI / 180));
   // The model spans the data: apex to base is about 110 mm.
   const double length = model.state.globals[kA0] * 0.8 * 1.5;
   EXPECT_NEAR(length, 110.0, 3.0);

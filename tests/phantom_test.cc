@@ -26,7 +26,9 @@ TEST(PhantomTest, NoiseFreeTagsLieOnTheTruthAndKeepTheirIds) {
     const auto material = ClosestMaterialPoints(phantom.truth[t], positions);
     for (size_t i = 0; i < positions.size(); ++i) {
       EXPECT_LT((phantom.truth[t].WorldPoint(material[i].u, material[i].v) -
-                 positions[i]).norm(), 1e-6);
+                 positions[i])
+                    .norm(),
+                1e-6);
     }
   }
 }
@@ -40,7 +42,8 @@ TEST(PhantomTest, NoiseHasTheRequestedSpread) {
   int count = 0;
   for (size_t i = 0; i < a.points.frames[2].points.size(); ++i) {
     sum_squared += (a.points.frames[2].points[i].position -
-                    b.points.frames[2].points[i].position).squaredNorm();
+                    b.points.frames[2].points[i].position)
+                       .squaredNorm();
     count += 3;
   }
   EXPECT_NEAR(std::sqrt(sum_squared / count), 0.5, 0.03);

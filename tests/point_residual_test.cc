@@ -61,8 +61,7 @@ TEST(PointResidualTest, ResidualIsModelPointMinusData) {
   const double z = f[kB0] * (std::cos(M_PI / 2 * (e1 / f[kA0] - f[kB1])) -
                              std::cos(M_PI / 2 * f[kB1]));
   const Eigen::Vector3d expected(e1 * std::cos(f[kTau]) + f[kE1o],
-                                 e1 * std::sin(f[kTau]) + f[kE2o],
-                                 z + f[kE3o]);
+                                 e1 * std::sin(f[kTau]) + f[kE2o], z + f[kE3o]);
   EXPECT_NEAR(residual[0], expected.x() - data.x(), 1e-12);
   EXPECT_NEAR(residual[1], expected.y() - data.y(), 1e-12);
   EXPECT_NEAR(residual[2], expected.z() - data.z(), 1e-12);

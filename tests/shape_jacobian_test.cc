@@ -20,10 +20,12 @@ TEST(ShapeJacobianTest, ShapeMatchesReferenceShape) {
     for (double v : {-3.0, 0.0, 1.2}) {
       const Angles<double> angles = MakeAngles(u, v);
       ShapeJacobian jacobian;
-      EXPECT_TRUE(ShapeAndJacobian(f.data(), angles, false, &jacobian)
-                      .isApprox(ReferenceShape(f.data(), angles, false), 1e-14));
-      EXPECT_TRUE(ShapeAndJacobian(f.data(), angles, false, nullptr)
-                      .isApprox(ReferenceShape(f.data(), angles, false), 1e-14));
+      EXPECT_TRUE(
+          ShapeAndJacobian(f.data(), angles, false, &jacobian)
+              .isApprox(ReferenceShape(f.data(), angles, false), 1e-14));
+      EXPECT_TRUE(
+          ShapeAndJacobian(f.data(), angles, false, nullptr)
+              .isApprox(ReferenceShape(f.data(), angles, false), 1e-14));
     }
   }
 }

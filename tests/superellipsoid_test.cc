@@ -48,8 +48,9 @@ TEST(SuperellipsoidTest, UnitExponentShortcutMatchesThePowers) {
   for (double u : {-M_PI / 2, -0.3, 0.0, 0.7}) {
     for (double v : {-M_PI, -1.0, 0.0, M_PI / 2}) {
       const Angles<double> angles = MakeAngles(u, v);
-      EXPECT_TRUE(Superellipsoid(f.data(), angles, true)
-                      .isApprox(Superellipsoid(f.data(), angles, false), 1e-12));
+      EXPECT_TRUE(
+          Superellipsoid(f.data(), angles, true)
+              .isApprox(Superellipsoid(f.data(), angles, false), 1e-12));
     }
   }
 }

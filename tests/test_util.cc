@@ -36,8 +36,8 @@ std::string ReadText(const std::string& path) {
 CommandResult RunPfdm(const std::string& arguments) {
   const std::string dir = ScratchDirectory("run");
   const std::string out = dir + "/stdout", err = dir + "/stderr";
-  const std::string command = std::string(PFDM_BINARY) + " " + arguments +
-                              " > " + out + " 2> " + err;
+  const std::string command =
+      std::string(PFDM_BINARY) + " " + arguments + " > " + out + " 2> " + err;
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

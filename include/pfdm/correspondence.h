@@ -17,8 +17,7 @@ struct MaterialPoint {
 // The model's world-space point x(u, v), for any scalar (a Jet when u and v
 // are differentiated).
 template <typename T>
-Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
-                                    const T& v);
+Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u, const T& v);
 
 // Unit normal of the model surface at (u, v), world frame.  At the
 // apex pole, where d/dv vanishes, the axis direction -z.

@@ -38,15 +38,15 @@ struct FitOptions {
 struct FrameFit {
   int frame = 0;
   ModelState state;
-  std::vector<MaterialPoint> material;      // One per data point.
-  std::vector<Eigen::Vector3d> residuals;   // Model minus data, mm.
+  std::vector<MaterialPoint> material;     // One per data point.
+  std::vector<Eigen::Vector3d> residuals;  // Model minus data, mm.
   double rms_mm = 0.0;
   double mean_distance_mm = 0.0;
   double max_distance_mm = 0.0;
   int iterations = 0;
   int correspondence_rounds = 0;
   double solve_seconds = 0.0;
-  int residual_evaluations = 0;        // Summed over the rounds.
+  int residual_evaluations = 0;  // Summed over the rounds.
   int jacobian_evaluations = 0;
   double jacobian_seconds = 0.0;       // Summed over the solver's iterations.
   double linear_solver_seconds = 0.0;  // Likewise.

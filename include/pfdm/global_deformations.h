@@ -41,15 +41,13 @@ Eigen::Matrix<T, 3, 1> Twist(const T* f, const Eigen::Matrix<T, 3, 1>& e) {
   using std::sin;
   const T c = cos(f[kTau]);
   const T s = sin(f[kTau]);
-  return Eigen::Matrix<T, 3, 1>(c * e[0] - s * e[1], s * e[0] + c * e[1],
-                                e[2]);
+  return Eigen::Matrix<T, 3, 1>(c * e[0] - s * e[1], s * e[0] + c * e[1], e[2]);
 }
 
 // T_o(e) = e + (e1o, e2o, e3o).
 template <typename T>
 Eigen::Matrix<T, 3, 1> Offset(const T* f, const Eigen::Matrix<T, 3, 1>& e) {
-  return Eigen::Matrix<T, 3, 1>(e[0] + f[kE1o], e[1] + f[kE2o],
-                                e[2] + f[kE3o]);
+  return Eigen::Matrix<T, 3, 1>(e[0] + f[kE1o], e[1] + f[kE2o], e[2] + f[kE3o]);
 }
 
 }  // namespace pfdm

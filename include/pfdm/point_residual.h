@@ -16,8 +16,7 @@ class PointResidual {
   static constexpr int kNumResiduals = 3;
 
   PointResidual(const Eigen::Vector3d& data, double u, double v,
-                double knot_weight, FunctionMask free_mask,
-                bool unit_exponents)
+                double knot_weight, FunctionMask free_mask, bool unit_exponents)
       : data_(data),
         angles_(MakeAngles(u, v)),
         knot_weight_(knot_weight),
@@ -27,8 +26,8 @@ class PointResidual {
   template <typename T>
   bool operator()(const T* center, const T* quaternion, const T* globals,
                   const T* knot0, const T* knot1, T* residual) const {
-    const Eigen::Matrix<T, 3, 1> x = Position(center, quaternion, globals,
-                                              knot0, knot1);
+    const Eigen::Matrix<T, 3, 1> x =
+        Position(center, quaternion, globals, knot0, knot1);
     for (int i = 0; i < 3; ++i) residual[i] = x[i] - data_[i];
     return true;
   }
@@ -49,8 +48,8 @@ class PointResidual {
                                      bool unit_exponents) {
     return new ceres::AutoDiffCostFunction<PointResidual, kNumResiduals, 3, 4,
                                            kNumFunctions, kNumFunctions,
-                                           kNumFunctions>(new PointResidual(
-        data, u, v, knot_weight, free_mask, unit_exponents));
+                                           kNumFunctions>(
+        new PointResidual(data, u, v, knot_weight, free_mask, unit_exponents));
   }
 
  private:
@@ -89,11 +88,11 @@ class SurfaceResidual {
                                      FunctionMask free_mask,
                                      bool unit_exponents,
                                      const Eigen::Vector3d& normal) {
-    return new ceres::AutoDiffCostFunction<SurfaceResidual, 1, 3, 4,
-                                           kNumFunctions, kNumFunctions,
-                                           kNumFunctions>(new SurfaceResidual(
-        PointResidual(data, u, v, knot_weight, free_mask, unit_exponents),
-        normal, data));
+    return new ceres::AutoDiffCostFunction<
+        SurfaceResidual, 1, 3, 4, kNumFunctions, kNumFunctions, kNumFunctions>(
+        new SurfaceResidual(
+            PointResidual(data, u, v, knot_weight, free_mask, unit_exponents),
+            normal, data));
   }
 
  private:
@@ -120,8 +119,8 @@ class RimResidual {
     auto value = [&](int f) {
       return (free_mask_ >> f) & 1u ? last_knot[f] : globals[f];
     };
-    residual[0] = sqrt_weight_ * (value(kA0) * value(kA3) * sin_u_max_ +
-                                  value(kE3o) - z_top_);
+    residual[0] = sqrt_weight_ *
+                  (value(kA0) * value(kA3) * sin_u_max_ + value(kE3o) - z_top_);
     return true;
   }
 

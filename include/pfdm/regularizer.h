@@ -23,8 +23,8 @@ class SmoothnessResidual {
   bool operator()(const T* previous, const T* knot, const T* next,
                   T* residual) const {
     for (int f = 0; f < kNumFunctions; ++f) {
-      residual[f] = sqrt_weight_ * scales_[f] *
-                    (previous[f] - 2.0 * knot[f] + next[f]);
+      residual[f] =
+          sqrt_weight_ * scales_[f] * (previous[f] - 2.0 * knot[f] + next[f]);
     }
     return true;
   }

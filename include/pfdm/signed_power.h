@@ -16,8 +16,8 @@ constexpr double kSignedPowerDelta = 1e-6;
 template <typename T, typename E>
 T SignedPower(const T& x, const E& e) {
   using std::pow;
-  return x * pow(x * x + kSignedPowerDelta * kSignedPowerDelta,
-                 (e - 1.0) * 0.5);
+  return x *
+         pow(x * x + kSignedPowerDelta * kSignedPowerDelta, (e - 1.0) * 0.5);
 }
 
 }  // namespace pfdm

@@ -5,7 +5,8 @@
 #include "commands.h"
 #include "pfdm/jacobian_check.h"
 
-DEFINE_double(tolerance, 1e-6, "check-jacobians: largest relative error allowed");
+DEFINE_double(tolerance, 1e-6,
+              "check-jacobians: largest relative error allowed");
 
 namespace pfdm {
 

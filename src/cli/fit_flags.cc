@@ -7,15 +7,18 @@
 #include "pfdm/point_reader.h"
 #include "pfdm/solver.h"
 
-DEFINE_string(points, "", "input points: a frame,id,x,y,z CSV, or a biv-me "
+DEFINE_string(points, "",
+              "input points: a frame,id,x,y,z CSV, or a biv-me "
               "GPFile_*.txt or a folder of them");
 DEFINE_string(format, "auto", "csv, gpfile or auto (by name)");
-DEFINE_string(contours, "lv-endo", "GPFile contour types to keep, "
+DEFINE_string(contours, "lv-endo",
+              "GPFile contour types to keep, "
               "comma-separated; lv-endo and lv-epi are aliases");
 DEFINE_string(out, "", "output folder (simulate: output CSV)");
 DEFINE_string(model, "paper", "paper or superellipsoid");
 DEFINE_int32(knots, 17, "knots per parameter function");
-DEFINE_double(smoothness, 1.0, "smoothness weight, relative to one knot's data");
+DEFINE_double(smoothness, 1.0,
+              "smoothness weight, relative to one knot's data");
 DEFINE_double(prior, 0.001, "pull toward the previous frame, same units");
 DEFINE_string(loss, "none", "none, huber or cauchy");
 DEFINE_double(loss_scale, 1.0, "robust loss scale, mm");
