@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "ceres/crs_matrix.h"
@@ -19,6 +21,20 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Forward Euler runs at this fraction of its stability limit: the power
+// iteration underestimates lambda_max, and at the limit itself the stiffest
+// mode would only oscillate.
+constexpr double kStabilitySafety = 0.9;
+// Pseudo-time step of the damped mode when none is given.  With
+// D = diag(J^T J) the explicit limit is about 1; at 1,000 the slow modes of
+// a frame fit (lambda ~ 1e-4) lose a tenth or more of their amplitude per
+// step and a frame rests in tens of steps.
+constexpr double kDefaultDampedStep = 1e3;
+// Halvings of an explicit step before the integrator gives up.
+constexpr int kMaxRefusals = 50;
+// Relative energy changes this small are the rounding of the sum.
+constexpr double kRounding = 1e-13;
+
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -27,7 +43,7 @@ double SecondsSince(Clock::time_point start) {
 // vector that Problem::Evaluate returns.
 struct State {
   std::vector<double*> blocks;
-  std::vector<int> sizes, tangent_sizes, offsets;
+  std::vector<int> sizes, offsets;
   int tangent_size = 0;
 };
 
@@ -39,9 +55,8 @@ State FreeBlocks(const ceres::Problem& problem) {
     if (problem.IsParameterBlockConstant(block)) continue;
     state.blocks.push_back(block);
     state.sizes.push_back(problem.ParameterBlockSize(block));
-    state.tangent_sizes.push_back(problem.ParameterBlockTangentSize(block));
     state.offsets.push_back(state.tangent_size);
-    state.tangent_size += state.tangent_sizes.back();
+    state.tangent_size += problem.ParameterBlockTangentSize(block);
   }
   return state;
 }
@@ -52,13 +67,22 @@ struct Evaluation {
   ceres::CRSMatrix jacobian;
 };
 
-bool Evaluate(ceres::Problem* problem, const State& state, bool jacobian,
-              Evaluation* evaluation) {
+// The cost and its tangent-space gradient (and the Jacobian if asked), all
+// finite.  Ceres computes the Jacobian blocks for a gradient anyway; asking
+// for the CRS matrix only adds its assembly.
+bool Evaluate(ceres::Problem* problem, const State& state, int num_threads,
+              bool jacobian, Evaluation* evaluation) {
   ceres::Problem::EvaluateOptions options;
   options.parameter_blocks = state.blocks;
-  return problem->Evaluate(options, &evaluation->cost, nullptr,
-                           &evaluation->gradient,
-                           jacobian ? &evaluation->jacobian : nullptr);
+  options.num_threads = num_threads;
+  if (!problem->Evaluate(options, &evaluation->cost, nullptr,
+                         &evaluation->gradient,
+                         jacobian ? &evaluation->jacobian : nullptr)) {
+    return false;
+  }
+  return std::isfinite(evaluation->cost) &&
+         std::all_of(evaluation->gradient.begin(), evaluation->gradient.end(),
+                     [](double g) { return std::isfinite(g); });
 }
 
 double Norm(const std::vector<double>& v) {
@@ -67,30 +91,31 @@ double Norm(const std::vector<double>& v) {
   return std::sqrt(sum);
 }
 
-// diag(J^T J), floored so that directions the residuals do not see move
-// like weakly damped ones instead of dividing by zero.
-std::vector<double> Damping(const ceres::CRSMatrix& j) {
+// diag(J^T J), floored so that directions the residuals barely see are
+// weakly damped instead of dividing by zero.
+std::vector<double> JacobiDamping(const ceres::CRSMatrix& j) {
   std::vector<double> d(j.num_cols, 0.0);
   for (size_t k = 0; k < j.values.size(); ++k) {
     d[j.cols[k]] += j.values[k] * j.values[k];
   }
-  const double floor =
-      1e-12 * std::max(1e-300, *std::max_element(d.begin(), d.end()));
-  for (double& x : d) x = std::max(x, floor);
+  const double largest = *std::max_element(d.begin(), d.end());
+  for (double& x : d) x = std::max(x, 1e-12 * std::max(largest, 1e-300));
   return d;
 }
 
-// Largest eigenvalue of D^-1/2 J^T J D^-1/2 by power iteration: forward
-// Euler on D qdot = -J^T J q is stable for dt < 2 / lambda_max.
+// lambda_max of D^-1/2 J^T J D^-1/2 by power iteration on the CRS Jacobian,
+// from a start vector with no symmetry that could hide the top mode.
 double LargestEigenvalue(const ceres::CRSMatrix& j,
                          const std::vector<double>& d) {
-  std::vector<double> x(j.num_cols, 1.0), y(j.num_rows), z(j.num_cols);
+  std::vector<double> x(j.num_cols), y(j.num_rows), z(j.num_cols);
+  for (int c = 0; c < j.num_cols; ++c) x[c] = 1.0 + 0.5 * std::sin(c + 1.0);
   double lambda = 0.0;
-  for (int iteration = 0; iteration < 50; ++iteration) {
+  for (int iteration = 0; iteration < 100; ++iteration) {
     const double norm = Norm(x);
+    if (norm == 0.0) break;
     for (int c = 0; c < j.num_cols; ++c) x[c] /= norm * std::sqrt(d[c]);
-    std::fill(y.begin(), y.end(), 0.0);
     for (int r = 0; r < j.num_rows; ++r) {
+      y[r] = 0.0;
       for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
         y[r] += j.values[k] * x[j.cols[k]];
       }
@@ -103,34 +128,68 @@ double LargestEigenvalue(const ceres::CRSMatrix& j,
     }
     for (int c = 0; c < j.num_cols; ++c) z[c] /= std::sqrt(d[c]);
     const double next = Norm(z);
-    const bool settled = std::abs(next - lambda) < 1e-6 * next;
+    const bool settled = std::abs(next - lambda) <= 1e-4 * next;
     lambda = next;
-    x = z;
+    x.swap(z);
     if (settled) break;
   }
   return lambda;
 }
 
-// q <- q [+] step per block, through each block's manifold, then into the
-// bounds.  Returns false if a manifold refuses.
+// out = x [+] delta through the block's manifold, then into its bounds, as
+// Ceres moves a block.
+bool PlusInBounds(const ceres::Problem& problem, double* block, int size,
+                  const double* x, const double* delta, double* out) {
+  if (const ceres::Manifold* manifold = problem.GetManifold(block)) {
+    if (!manifold->Plus(x, delta, out)) return false;
+  } else {
+    for (int i = 0; i < size; ++i) out[i] = x[i] + delta[i];
+  }
+  for (int i = 0; i < size; ++i) {
+    out[i] = std::clamp(out[i], problem.GetParameterLowerBound(block, i),
+                        problem.GetParameterUpperBound(block, i));
+  }
+  return true;
+}
+
+// Moves every free block by its part of the tangent step.
 bool Move(ceres::Problem* problem, const State& state,
           const std::vector<double>& step) {
+  std::vector<double> moved;
   for (size_t b = 0; b < state.blocks.size(); ++b) {
     double* x = state.blocks[b];
-    const double* delta = step.data() + state.offsets[b];
-    std::vector<double> moved(x, x + state.sizes[b]);
-    if (const ceres::Manifold* manifold = problem->GetManifold(x)) {
-      if (!manifold->Plus(x, delta, moved.data())) return false;
-    } else {
-      for (int i = 0; i < state.sizes[b]; ++i) moved[i] += delta[i];
-    }
-    for (int i = 0; i < state.sizes[b]; ++i) {
-      moved[i] = std::clamp(moved[i], problem->GetParameterLowerBound(x, i),
-                            problem->GetParameterUpperBound(x, i));
+    moved.resize(state.sizes[b]);
+    if (!PlusInBounds(*problem, x, state.sizes[b], x,
+                      step.data() + state.offsets[b], moved.data())) {
+      return false;
     }
     std::copy(moved.begin(), moved.end(), x);
   }
   return true;
+}
+
+// |x - (x [+] -g)| with the bounds applied, Ceres' gradient_norm: the force
+// that is free to move the model, so that the three solvers' traces report
+// the same quantity.
+double ProjectedGradientNorm(const ceres::Problem& problem, const State& state,
+                             const std::vector<double>& gradient) {
+  std::vector<double> minus_g, moved;
+  double sum = 0.0;
+  for (size_t b = 0; b < state.blocks.size(); ++b) {
+    const double* g = gradient.data() + state.offsets[b];
+    const int tangent_size = problem.ParameterBlockTangentSize(state.blocks[b]);
+    minus_g.assign(g, g + tangent_size);
+    for (double& x : minus_g) x = -x;
+    moved.resize(state.sizes[b]);
+    if (!PlusInBounds(problem, state.blocks[b], state.sizes[b], state.blocks[b],
+                      minus_g.data(), moved.data())) {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+    for (int i = 0; i < state.sizes[b]; ++i) {
+      sum += std::pow(moved[i] - state.blocks[b][i], 2);
+    }
+  }
+  return std::sqrt(sum);
 }
 
 std::vector<double> Snapshot(const State& state) {
@@ -143,27 +202,56 @@ std::vector<double> Snapshot(const State& state) {
 }
 
 void Restore(const State& state, const std::vector<double>& values) {
-  size_t at = 0;
+  auto from = values.begin();
   for (size_t b = 0; b < state.blocks.size(); ++b) {
-    std::copy(values.begin() + at, values.begin() + at + state.sizes[b],
-              state.blocks[b]);
-    at += state.sizes[b];
+    std::copy(from, from + state.sizes[b], state.blocks[b]);
+    from += state.sizes[b];
   }
 }
 
-// Records the damped trajectory and stops the solve once the model rests.
-class RestCallback : public ceres::IterationCallback {
+// Rest: the power the damping dissipates, dE/dt = -qdot^T D qdot =
+// -|f|^2_{D^-1}, has fallen below rest_tolerance^2 of the initial energy per
+// unit pseudo-time, i.e. the force in the damping metric below
+// rest_tolerance of sqrt(E_0).  Measured from the energy itself so that
+// both dynamics solvers stop by the same rule, and, unlike |J^T r|, blind
+// to forces that a bound holds and to the units of the parameters.
+class RestTest {
  public:
-  RestCallback(double dt, double rest_tolerance, SolverReport* report)
-      : dt_(dt), rest_tolerance_(rest_tolerance), report_(report) {}
+  RestTest(double initial_energy, double rest_tolerance)
+      : threshold_(rest_tolerance * rest_tolerance * initial_energy) {}
+  bool AtRest(double dt, double energy_before, double energy_after) const {
+    return std::abs(energy_before - energy_after) <= threshold_ * dt;
+  }
+
+ private:
+  double threshold_;
+};
+
+// Records the damped trajectory and stops the solve once the model rests.
+// The step of iteration k was taken with the radius that iteration k - 1
+// reported; a rejected step does not move the model and takes no time.
+class DampedCallback : public ceres::IterationCallback {
+ public:
+  DampedCallback(double rest_tolerance, SolverReport* report)
+      : rest_tolerance_(rest_tolerance), report_(report) {}
 
   ceres::CallbackReturnType operator()(
       const ceres::IterationSummary& summary) override {
-    report_->trace.push_back({summary.iteration, summary.iteration * dt_,
+    const double dt = radius_;
+    radius_ = summary.trust_region_radius;
+    if (summary.iteration == 0) {
+      rest_test_.emplace(summary.cost, rest_tolerance_);
+    } else if (!summary.step_is_successful) {
+      return ceres::SOLVER_CONTINUE;
+    } else {
+      time_ += dt;
+    }
+    report_->trace.push_back({summary.iteration, time_,
                               summary.cumulative_time_in_seconds, summary.cost,
                               summary.gradient_norm});
-    if (summary.iteration == 0) initial_force_ = summary.gradient_norm;
-    if (summary.gradient_norm <= rest_tolerance_ * initial_force_) {
+    const double before = energy_;
+    energy_ = summary.cost;
+    if (summary.iteration > 0 && rest_test_->AtRest(dt, before, energy_)) {
       at_rest_ = true;
       return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     }
@@ -172,121 +260,150 @@ class RestCallback : public ceres::IterationCallback {
   bool at_rest() const { return at_rest_; }
 
  private:
-  double dt_;
   double rest_tolerance_;
   SolverReport* report_;
-  double initial_force_ = 0.0;
+  std::optional<RestTest> rest_test_;
+  double radius_ = 0.0, time_ = 0.0, energy_ = 0.0;
   bool at_rest_ = false;
 };
 
+void Fail(const std::string& message, SolverReport* report) {
+  report->usable = false;
+  report->converged = false;
+  report->termination = "FAILURE";
+  report->message = message;
+}
+
 }  // namespace
 
-// Forward Euler: q_{n+1} = q_n [+] (-dt D^-1 J^T r), D = diag(J^T J) at the
-// start, dt = 0.9 x 2 / lambda_max(D^-1/2 J^T J D^-1/2) unless given.  A
-// step that raises the cost (the bound was estimated at the start) is
-// undone and dt halved.
+// Forward Euler in the tangent space: q_{n+1} = q_n [+] (-dt D^-1 J^T r),
+// projected into the bounds.  A step that raises the energy (the stability
+// bound was estimated once, at the start) or leaves the residuals
+// non-finite is undone and dt halved for good.
 SolverReport SolveIntegrator(ceres::Problem* problem,
                              const SolverOptions& options) {
   const Clock::time_point start = Clock::now();
   SolverReport report;
   const State state = FreeBlocks(*problem);
   Evaluation now;
-  if (!Evaluate(problem, state, true, &now)) {
-    report.usable = false;
-    report.termination = "FAILURE";
-    report.message = "residual evaluation failed at the start";
+  report.residual_evaluations = report.jacobian_evaluations = 1;
+  if (!Evaluate(problem, state, options.num_threads, true, &now)) {
+    Fail("the residuals or their Jacobian are not finite at the start",
+         &report);
     return report;
   }
-  report.residual_evaluations = report.jacobian_evaluations = 1;
-  const std::vector<double> d = Damping(now.jacobian);
-  double dt = options.time_step > 0.0
-                  ? options.time_step
-                  : 0.9 * 2.0 / LargestEigenvalue(now.jacobian, d);
-  const double initial_force = Norm(now.gradient);
+  const RestTest rest_test(now.cost, options.rest_tolerance);
+  std::vector<double> d;
+  double dt = options.time_step;
+  if (state.tangent_size > 0) {
+    d = JacobiDamping(now.jacobian);
+    if (dt <= 0.0) {
+      dt = kStabilitySafety * 2.0 / LargestEigenvalue(now.jacobian, d);
+    }
+  }
+  now.jacobian = ceres::CRSMatrix();
   double time = 0.0;
-  report.trace.push_back({0, 0.0, SecondsSince(start), now.cost, initial_force});
+  report.trace.push_back(
+      {0, 0.0, SecondsSince(start), now.cost,
+       ProjectedGradientNorm(*problem, state, now.gradient)});
   report.termination = "NO_CONVERGENCE";
-  std::vector<double> step(state.tangent_size);
-  // Rest: the force has fallen by rest_tolerance, or the cost has stopped
-  // falling (relative 1e-12 over a window of steps): the slowest modes of
-  // forward Euler decay as (1 - dt lambda_min)^n, and past this point they
-  // move the model by less than rounding.
-  constexpr int kWindow = 200;
-  std::vector<double> costs = {now.cost};
-  for (int n = 1; n <= options.max_steps; ++n) {
-    const bool stalled =
-        costs.size() > kWindow &&
-        costs[costs.size() - 1 - kWindow] - now.cost <= 1e-12 * now.cost;
-    if (Norm(now.gradient) <= options.rest_tolerance * initial_force ||
-        stalled) {
+  if (state.tangent_size == 0 || Norm(now.gradient) == 0.0) {
+    report.termination = "REST";
+    report.converged = true;
+    return report;
+  }
+  std::vector<double> step(state.tangent_size), before;
+  Evaluation next;
+  int refusals = 0;
+  while (report.iterations < options.max_steps) {
+    for (int i = 0; i < state.tangent_size; ++i) {
+      step[i] = -dt * now.gradient[i] / d[i];
+    }
+    before = Snapshot(state);
+    const bool moved = Move(problem, state, step);
+    ++report.residual_evaluations;
+    ++report.jacobian_evaluations;
+    const bool finite =
+        moved && Evaluate(problem, state, options.num_threads, false, &next);
+    if (!finite || next.cost > now.cost) {
+      Restore(state, before);
+      if (finite && next.cost - now.cost <= kRounding * now.cost) {
+        report.termination = "REST";  // Flat to rounding: nowhere to go.
+        report.converged = true;
+        break;
+      }
+      if (++refusals > kMaxRefusals) {
+        Fail(
+            "no stable step: the energy rises or the residuals are not "
+            "finite even at dt = " +
+                std::to_string(dt),
+            &report);
+        break;
+      }
+      dt *= 0.5;
+      continue;
+    }
+    refusals = 0;
+    time += dt;
+    ++report.iterations;
+    const bool at_rest = rest_test.AtRest(dt, now.cost, next.cost);
+    std::swap(now, next);
+    report.trace.push_back(
+        {report.iterations, time, SecondsSince(start), now.cost,
+         ProjectedGradientNorm(*problem, state, now.gradient)});
+    if (at_rest) {
       report.termination = "REST";
       report.converged = true;
       break;
     }
-    for (int i = 0; i < state.tangent_size; ++i) {
-      step[i] = -dt * now.gradient[i] / d[i];
-    }
-    const std::vector<double> before = Snapshot(state);
-    Evaluation next;
-    const bool moved = Move(problem, state, step);
-    ++report.residual_evaluations;
-    ++report.jacobian_evaluations;
-    if (!moved || !Evaluate(problem, state, false, &next) ||
-        !std::isfinite(next.cost) || next.cost > now.cost) {
-      Restore(state, before);
-      dt *= 0.5;
-      if (dt < 1e-30) {
-        report.usable = false;
-        report.termination = "FAILURE";
-        report.message = "the integrator cannot take a stable step";
-        break;
-      }
-      continue;
-    }
-    time += dt;
-    now = std::move(next);
-    costs.push_back(now.cost);
-    report.iterations = n;
-    report.trace.push_back(
-        {n, time, SecondsSince(start), now.cost, Norm(now.gradient)});
   }
   return report;
 }
 
-// Levenberg-Marquardt with the trust region pinned: Ceres solves
-// (J^T J + D / radius) dq = -J^T r with D = diag(J^T J) (jacobi scaling
-// cancels), the linearly implicit Euler step of D qdot = -J^T r with
-// dt = radius.  Held at dt: the radius cannot grow past max, and
-// non-monotonic steps keep rejections (which would shrink it) rare.
-SolverReport SolveDamped(ceres::Problem* problem, const SolverOptions& options) {
-  const double dt = options.time_step > 0.0 ? options.time_step : 100.0;
+// Levenberg-Marquardt with the trust region pinned at dt: Ceres solves
+// (J^T J + diag(J^T J) / radius) dq = -J^T r (Jacobi scaling cancels), the
+// linearly implicit Euler step of D qdot = -J^T r with D = diag(J^T J) and
+// step radius.  The radius cannot grow past its maximum; a rejected step
+// would halve it, so steps are judged against the initial energy
+// (unbounded non-monotonic steps) and none is line-searched.
+SolverReport SolveDamped(ceres::Problem* problem,
+                         const SolverOptions& options) {
+  const double dt =
+      options.time_step > 0.0 ? options.time_step : kDefaultDampedStep;
   SolverReport report;
-  RestCallback callback(dt, options.rest_tolerance, &report);
+  DampedCallback callback(options.rest_tolerance, &report);
   ceres::Solver::Options solver_options;
   solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   solver_options.initial_trust_region_radius = dt;
   solver_options.max_trust_region_radius = dt;
+  solver_options.min_trust_region_radius = std::min(1e-32, dt);
   solver_options.use_nonmonotonic_steps = true;
   solver_options.max_consecutive_nonmonotonic_steps =
       std::numeric_limits<int>::max();
+  solver_options.min_relative_decrease = 0.0;
+  solver_options.max_num_line_search_step_size_iterations = 0;
   solver_options.linear_solver_type = options.linear_solver;
   solver_options.num_threads = options.num_threads;
   solver_options.max_num_iterations = options.max_steps;
+  // Rest is the callback's to decide; Ceres stops only on a step lost in
+  // rounding.
   solver_options.function_tolerance = 0.0;
   solver_options.gradient_tolerance = 0.0;
-  solver_options.parameter_tolerance = 1e-14;
+  solver_options.parameter_tolerance = 1e-15;
   solver_options.logging_type = ceres::SILENT;
   solver_options.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem, &summary);
 
   report.iterations = static_cast<int>(summary.iterations.size()) - 1;
-  report.usable = summary.IsSolutionUsable() &&
-                  summary.termination_type != ceres::FAILURE;
-  report.converged = callback.at_rest() ||
-                     summary.termination_type == ceres::CONVERGENCE;
-  report.termination = callback.at_rest() ? "REST"
-                       : ceres::TerminationTypeToString(summary.termination_type);
+  report.usable =
+      summary.IsSolutionUsable() && summary.termination_type != ceres::FAILURE;
+  report.converged =
+      callback.at_rest() || summary.termination_type == ceres::CONVERGENCE;
+  report.termination =
+      callback.at_rest()
+          ? "REST"
+          : ceres::TerminationTypeToString(summary.termination_type);
   report.message = summary.message;
   report.residual_evaluations = summary.num_residual_evaluations;
   report.jacobian_evaluations = summary.num_jacobian_evaluations;

@@ -1,5 +1,7 @@
 #include "pfdm/solver.h"
 
+#include <limits>
+
 #include "ceres/autodiff_cost_function.h"
 #include "gtest/gtest.h"
 #include "pfdm/error.h"
@@ -16,8 +18,8 @@ struct Quadratic {
 };
 
 TEST(SolverTest, NamesRoundTripAndUnknownNamesAreErrors) {
-  for (SolverKind kind : {SolverKind::kDirect, SolverKind::kDamped,
-                          SolverKind::kIntegrator}) {
+  for (SolverKind kind :
+       {SolverKind::kDirect, SolverKind::kDamped, SolverKind::kIntegrator}) {
     EXPECT_EQ(SolverFromName(SolverName(kind)), kind);
   }
   try {
@@ -44,6 +46,48 @@ TEST(SolverTest, DirectSolveReportsItsIterations) {
   EXPECT_EQ(static_cast<int>(report.trace.size()), report.iterations + 1);
   EXPECT_GT(report.trace.front().cost, report.trace.back().cost);
   EXPECT_GE(report.jacobian_evaluations, report.iterations);
+  EXPECT_GE(report.residual_evaluations, report.iterations);
+  for (const SolverTracePoint& point : report.trace) {
+    EXPECT_EQ(point.pseudo_time, 0.0);  // No dynamics, no pseudo-time.
+  }
+}
+
+TEST(SolverTest, DirectSolveOfNaNIsUnusable) {
+  double x = std::numeric_limits<double>::quiet_NaN();
+  ceres::Problem problem;
+  problem.AddResidualBlock(
+      new ceres::AutoDiffCostFunction<Quadratic, 1, 1>(new Quadratic), nullptr,
+      &x);
+  const SolverReport report = SolveDirect(&problem, SolverOptions());
+  EXPECT_FALSE(report.usable);
+  EXPECT_EQ(report.termination, "FAILURE");
+  EXPECT_FALSE(report.message.empty());
+}
+
+// Each kind reaches x = 2 its own way: the dynamics in pseudo-time, the
+// integrator with one evaluation per step.
+TEST(SolverTest, SolveProblemDispatchesOnTheKind) {
+  for (SolverKind kind :
+       {SolverKind::kDirect, SolverKind::kDamped, SolverKind::kIntegrator}) {
+    double x = 5.0;
+    ceres::Problem problem;
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<Quadratic, 1, 1>(new Quadratic),
+        nullptr, &x);
+    SolverOptions options;
+    options.kind = kind;
+    const SolverReport report = SolveProblem(&problem, options);
+    EXPECT_NEAR(x, 2.0, 1e-5) << SolverName(kind);
+    EXPECT_EQ(report.trace.back().pseudo_time > 0.0,
+              kind != SolverKind::kDirect)
+        << SolverName(kind);
+    EXPECT_EQ(report.termination == "REST", kind != SolverKind::kDirect)
+        << SolverName(kind);
+    if (kind == SolverKind::kIntegrator) {
+      EXPECT_EQ(report.jacobian_evaluations, report.residual_evaluations);
+      EXPECT_GE(report.residual_evaluations, report.iterations + 1);
+    }
+  }
 }
 
 }  // namespace

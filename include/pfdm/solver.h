@@ -23,9 +23,10 @@ struct SolverOptions {
   int max_iterations = 100;
   int num_threads = 1;
   ceres::LinearSolverType linear_solver = ceres::SPARSE_NORMAL_CHOLESKY;
-  // Dynamics (damped and integrator): pseudo-time step, 0 = choose from the
-  // stability bound; rest when the generalized force norm falls below this
-  // fraction of its first value.
+  // Dynamics (damped and integrator): pseudo-time step, 0 = the default
+  // (integrator: 0.9 of the stability bound; damped: 1,000); rest when the
+  // energy dissipated per unit pseudo-time falls below rest_tolerance^2 of
+  // the initial energy (docs/dynamics.md).
   double time_step = 0.0;
   double rest_tolerance = 1e-6;
   int max_steps = 20000;
@@ -37,7 +38,7 @@ struct SolverTracePoint {
   double pseudo_time = 0.0;  // 0 for the direct solve.
   double wall_seconds = 0.0;
   double cost = 0.0;           // 1/2 sum of squared residuals.
-  double gradient_norm = 0.0;  // |J^T r|, the generalized force.
+  double gradient_norm = 0.0;  // Projected |J^T r|, as Ceres reports it.
 };
 
 struct SolverReport {

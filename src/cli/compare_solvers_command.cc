@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <map>
 #include <sstream>
 
 #include "commands.h"
@@ -11,83 +13,121 @@
 #include "pfdm/gnuplot.h"
 #include "pfdm/solver.h"
 
+DEFINE_int32(max_steps, pfdm::SolverOptions().max_steps,
+             "compare-solvers: most steps per solve of the damped stepping "
+             "and the integrator");
+
 namespace pfdm {
 namespace {
 
 constexpr SolverKind kSolvers[] = {SolverKind::kDirect, SolverKind::kDamped,
                                    SolverKind::kIntegrator};
 
-// The plotted frame: the first tracked one when there is one (the motion),
-// else frame 0.
-int PlottedFrame(const SequenceFit& fit) {
-  return fit.frames.size() > 1 ? 1 : 0;
+// Rows "iteration + 1, wall seconds, energy above the lowest energy any
+// solver reached on the frame" for the log-log plot, about 100 a decade of
+// iterations (the integrator's tens of thousands would bloat the SVG);
+// rows at that lowest energy have no place on a log scale.
+PlotData ExcessEnergy(SolverKind kind, const FrameFit& frame, double lowest) {
+  PlotData plot{SolverName(kind), {}};
+  double next = 0.0;
+  for (size_t i = 0; i < frame.trace.size(); ++i) {
+    const SolverTracePoint& p = frame.trace[i];
+    const double excess = p.cost - lowest;
+    const double x = p.iteration + 1.0;
+    if (excess > 0.0 && (x >= next || i + 1 == frame.trace.size())) {
+      plot.rows.push_back({x, std::max(p.wall_seconds, 1e-6), excess});
+      next = x * 1.023;
+    }
+  }
+  if (plot.rows.empty()) plot.rows.push_back({1.0, 1e-6, 1e-300});
+  return plot;
+}
+
+std::string PlotScript(const std::vector<PlotData>& plots, int frame) {
+  std::string by_iteration, by_time;
+  for (size_t i = 0; i < plots.size(); ++i) {
+    const std::string block = "$" + plots[i].name;
+    const std::string style =
+        " with linespoints pt 7 ps 0.4 lw 2 title '" + plots[i].name + "'";
+    const std::string sep = i + 1 < plots.size() ? ", " : "\n";
+    by_iteration += block + " using 1:3" + style + sep;
+    by_time += block + " using 2:3" + style + sep;
+  }
+  return "set multiplot layout 1,2 title 'Frame " + std::to_string(frame) +
+         ": energy above the lowest reached, same residuals'\n"
+         "set logscale xy\nset format y '10^{%L}'\nset grid\n"
+         "set ylabel 'E - E_{min}'\nset key top right\n"
+         "set xlabel 'iteration / step + 1'\nplot " +
+         by_iteration + "set xlabel 'wall time (s)'\nplot " + by_time +
+         "unset multiplot\n";
 }
 
 }  // namespace
 
 int RunCompareSolvers() {
   if (FLAGS_out.empty()) throw InputError("compare-solvers needs --out DIR");
+  if (FLAGS_max_steps < 1) throw InputError("--max_steps must be at least 1");
   const ModelConfig config = ModelConfigFromFlags();
-  const FitOptions base = FitOptionsFromFlags();
+  FitOptions base = FitOptionsFromFlags();
+  base.solver.max_steps = FLAGS_max_steps;
   const PointSequence points = PointsFromFlags();
 
-  std::ostringstream csv;
-  csv.precision(10);
-  csv << "solver,frame,iteration,pseudo_time,wall_seconds,cost,gradient_norm,"
-         "rms_mm\n";
-  std::vector<PlotData> plots;
-  int plotted_frame = 0;
+  std::map<SolverKind, SequenceFit> fits;
   for (SolverKind kind : kSolvers) {
     FitOptions options = base;
     options.solver.kind = kind;
-    const SequenceFit fit = FitSequence(points, config, options);
-    plotted_frame = PlottedFrame(fit);
-    PlotData plot{SolverName(kind), {}};
-    for (const FrameFit& frame : fit.frames) {
+    fits[kind] = FitSequence(points, config, options);
+  }
+
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "solver,frame,iteration,pseudo_time,wall_seconds,cost,gradient_norm,"
+         "rms_mm\n";
+  std::map<SolverKind, double> seconds, iterations;
+  for (SolverKind kind : kSolvers) {
+    for (const FrameFit& frame : fits[kind].frames) {
+      // sqrt(2 E / N): the RMS data residual when the regularizers' share of
+      // E is small, as it is at a fitted frame.
       const double n = static_cast<double>(frame.residuals.size());
       for (const SolverTracePoint& p : frame.trace) {
         csv << SolverName(kind) << ',' << frame.frame << ',' << p.iteration
             << ',' << p.pseudo_time << ',' << p.wall_seconds << ',' << p.cost
             << ',' << p.gradient_norm << ',' << std::sqrt(2.0 * p.cost / n)
             << '\n';
-        if (frame.frame == PlottedFrame(fit)) {
-          plot.rows.push_back({static_cast<double>(p.iteration),
-                               p.wall_seconds, p.cost});
-        }
       }
-      std::printf("%-10s frame %3d  iterations %6d  %.3f s  rms %.4f mm  %s\n",
+      std::printf("%-10s frame %3d  iterations %6d  %8.3f s  rms %.6f mm  %s\n",
                   SolverName(kind), frame.frame, frame.iterations,
                   frame.solve_seconds, frame.rms_mm, frame.termination.c_str());
+      seconds[kind] += frame.solve_seconds;
+      iterations[kind] += frame.iterations;
     }
-    plots.push_back(std::move(plot));
+  }
+  for (SolverKind kind : kSolvers) {
+    std::printf(
+        "%-10s all frames: %8.0f iterations (%.1fx direct), %.3f s "
+        "(%.1fx direct)\n",
+        SolverName(kind), iterations[kind],
+        iterations[kind] / std::max(1.0, iterations[SolverKind::kDirect]),
+        seconds[kind], seconds[kind] / seconds[SolverKind::kDirect]);
   }
 
-  // Plot the energy above the best rest point any solver reached, so that
-  // the rates of approach show rather than the noise floor.
-  double rest = INFINITY;
-  for (const PlotData& plot : plots) {
-    for (const auto& row : plot.rows) rest = std::min(rest, row[2]);
+  // The first tracked frame when there is one: the motion, one solve.
+  const size_t plotted = points.frames.size() > 1 ? 1 : 0;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (SolverKind kind : kSolvers) {
+    for (const SolverTracePoint& p : fits[kind].frames[plotted].trace) {
+      lowest = std::min(lowest, p.cost);
+    }
   }
-  for (PlotData& plot : plots) {
-    for (auto& row : plot.rows) row[2] = row[2] - rest + 1e-12 * rest;
+  std::vector<PlotData> plots;
+  for (SolverKind kind : kSolvers) {
+    plots.push_back(ExcessEnergy(kind, fits[kind].frames[plotted], lowest));
   }
-  std::string script =
-      "set multiplot layout 1,2 title 'Convergence on the same residuals, "
-      "frame " + std::to_string(plotted_frame) + "'\n"
-      "set logscale y\nset ylabel 'E - E_{rest}'\nset key top right\n"
-      "set logscale x\nset xlabel 'iteration / step'\nplot ";
-  std::string by_time = "set xlabel 'wall time (s)'\nplot ";
-  for (size_t i = 0; i < plots.size(); ++i) {
-    const std::string sep = i + 1 < plots.size() ? ", " : "\n";
-    script += "$" + plots[i].name + " using ($1+1):3 with lines lw 2 title '" +
-              plots[i].name + "'" + sep;
-    by_time += "$" + plots[i].name + " using 2:3 with lines lw 2 title '" +
-               plots[i].name + "'" + sep;
-  }
-  script += by_time + "unset multiplot\n";
 
   EnsureDirectory(FLAGS_out);
-  RenderSvg(plots, script, FLAGS_out + "/convergence.svg", 1200, 500);
+  RenderSvg(plots,
+            PlotScript(plots, fits[SolverKind::kDirect].frames[plotted].frame),
+            FLAGS_out + "/convergence.svg", 1200, 500);
   WriteFileAtomically(FLAGS_out + "/convergence.csv", csv.str());
   std::printf("wrote %s/convergence.csv and convergence.svg\n",
               FLAGS_out.c_str());
