@@ -103,6 +103,40 @@ std::vector<double> JacobiDamping(const ceres::CRSMatrix& j) {
   return d;
 }
 
+// The integrator's D: the chosen base times the caller's per-coordinate
+// scales.  A scale that is not positive and finite would stop or reverse
+// the motion, so it is refused.
+std::optional<std::vector<double>> Damping(const ceres::Problem& problem,
+                                           const State& state,
+                                           const ceres::CRSMatrix& j,
+                                           const SolverOptions& options,
+                                           std::string* error) {
+  std::vector<double> d = options.damping == DampingKind::kJacobi
+                              ? JacobiDamping(j)
+                              : std::vector<double>(j.num_cols, 1.0);
+  for (size_t b = 0; b < state.blocks.size(); ++b) {
+    const auto scale = options.damping_scale.find(state.blocks[b]);
+    if (scale == options.damping_scale.end()) continue;
+    const int tangent_size = problem.ParameterBlockTangentSize(state.blocks[b]);
+    if (static_cast<int>(scale->second.size()) != tangent_size) {
+      *error = "a damping scale lists " + std::to_string(scale->second.size()) +
+               " entries for a block of tangent size " +
+               std::to_string(tangent_size);
+      return std::nullopt;
+    }
+    for (int i = 0; i < tangent_size; ++i) {
+      const double s = scale->second[i];
+      if (!(s > 0.0) || !std::isfinite(s)) {
+        *error = "damping scales must be positive and finite, got " +
+                 std::to_string(s);
+        return std::nullopt;
+      }
+      d[state.offsets[b] + i] *= s;
+    }
+  }
+  return d;
+}
+
 // lambda_max of D^-1/2 J^T J D^-1/2 by power iteration on the CRS Jacobian,
 // from a start vector with no symmetry that could hide the top mode.
 double LargestEigenvalue(const ceres::CRSMatrix& j,
@@ -296,7 +330,14 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
   std::vector<double> d;
   double dt = options.time_step;
   if (state.tangent_size > 0) {
-    d = JacobiDamping(now.jacobian);
+    std::string error;
+    std::optional<std::vector<double>> damping =
+        Damping(*problem, state, now.jacobian, options, &error);
+    if (!damping) {
+      Fail(error, &report);
+      return report;
+    }
+    d = std::move(*damping);
     if (dt <= 0.0) {
       dt = kStabilitySafety * 2.0 / LargestEigenvalue(now.jacobian, d);
     }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "ceres/types.h"
 #include "nlohmann/json.hpp"
 #include "pfdm/atomic_file.h"
 #include "pfdm/clinical_summary.h"
@@ -118,8 +119,28 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
       {"loss_scale_mm", options.loss_scale_mm},
       {"max_correspondence_rounds", options.max_correspondence_rounds},
       {"correspondence_tolerance_mm", options.correspondence_tolerance_mm},
+      {"solver", SolverName(options.solver.kind)},
+      {"linear_solver",
+       ceres::LinearSolverTypeToString(options.solver.linear_solver)},
+      {"jacobian", JacobianName(options.jacobian)},
       {"max_iterations", options.solver.max_iterations},
       {"threads", options.solver.num_threads}};
+  if (options.solver.kind != SolverKind::kDirect) {
+    const SolverOptions& s = options.solver;
+    settings["time_step"] = s.time_step;  // 0: the solver's default.
+    settings["rest_tolerance"] = s.rest_tolerance;
+    settings["max_steps"] = s.max_steps;
+  }
+  if (options.solver.kind == SolverKind::kIntegrator) {
+    const DampingGroups& g = options.damping_groups;
+    settings["damping"] =
+        options.solver.damping == DampingKind::kJacobi ? "jacobi" : "unit";
+    settings["damping_scale"] = {{"pose", g.pose},
+                                 {"shape", g.shape},
+                                 {"twist", g.twist},
+                                 {"bending", g.bending},
+                                 {"offsets", g.offsets}};
+  }
   if (options.hint) {
     const auto& h = *options.hint;
     settings["apex_hint"] = {h.apex.x(), h.apex.y(), h.apex.z()};

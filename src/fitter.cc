@@ -1,10 +1,13 @@
 #include "pfdm/fitter.h"
 
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <unordered_map>
 
 #include "ceres/ceres.h"
@@ -104,6 +107,31 @@ void AddBlock(ceres::Problem* problem, double* values,
   for (int f : {kA1, kA2, kA3}) bound(f, 1e-3, 1.0);
   for (int f : {kEps1, kEps2}) bound(f, 0.1, 4.0);
   for (int f : {kB1, kB3}) bound(f, -1.0, 1.0);
+}
+
+// The groups' multipliers per tangent coordinate of each free block, in
+// the order the blocks' SubsetManifolds keep the free entries.
+void AddDampingScales(const ceres::Problem& problem, FrameKind kind,
+                      const DampingGroups& groups, Model* model,
+                      SolverOptions* solver) {
+  ModelState& state = model->state;
+  auto add = [&](double* block, int index) {
+    if (problem.IsParameterBlockConstant(block)) return;
+    const std::vector<int> held = HeldEntries(model->config, kind, index);
+    std::vector<double>& scales = solver->damping_scale[block];
+    for (int f = 0; f < kNumFunctions; ++f) {
+      if (!Contains(held, f)) scales.push_back(groups.Of(Function(f)));
+    }
+  };
+  add(state.globals.data(), kGlobalsBlock);
+  for (int k = 0; k < model->config.num_knots; ++k) {
+    add(state.knots[k].data(), k);
+  }
+  for (double* pose : {state.center.data(), state.quaternion.data()}) {
+    if (problem.IsParameterBlockConstant(pose)) continue;
+    solver->damping_scale[pose].assign(problem.ParameterBlockTangentSize(pose),
+                                       groups.pose);
+  }
 }
 
 ceres::LossFunction* MakeLoss(const FitOptions& options) {
@@ -233,7 +261,11 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
         nullptr, state.globals.data());
   }
 
-  return SolveProblem(&problem, options.solver);
+  SolverOptions solver = options.solver;
+  if (solver.kind == SolverKind::kIntegrator) {
+    AddDampingScales(problem, kind, options.damping_groups, model, &solver);
+  }
+  return SolveProblem(&problem, solver);
 }
 
 std::vector<Eigen::Vector3d> Positions(const Frame& frame) {
@@ -333,6 +365,53 @@ void SpanAxialExtent(const std::vector<Eigen::Vector3d>& points,
 }
 
 }  // namespace
+
+double DampingGroups::Of(Function f) const {
+  switch (f) {
+    case kTau:
+      return twist;
+    case kB0:
+    case kB1:
+    case kB2:
+    case kB3:
+      return bending;
+    case kE1o:
+    case kE2o:
+    case kE3o:
+      return offsets;
+    default:
+      return shape;
+  }
+}
+
+DampingGroups DampingGroupsFromText(const std::string& text) {
+  DampingGroups groups;
+  const std::map<std::string, double*> by_name = {{"pose", &groups.pose},
+                                                  {"shape", &groups.shape},
+                                                  {"twist", &groups.twist},
+                                                  {"bending", &groups.bending},
+                                                  {"offsets", &groups.offsets}};
+  std::istringstream entries(text);
+  std::string entry;
+  while (std::getline(entries, entry, ',')) {
+    const size_t equals = entry.find('=');
+    const auto group = by_name.find(entry.substr(0, equals));
+    double value = 0.0;
+    const char* first = entry.data() + equals + 1;
+    const char* last = entry.data() + entry.size();
+    const bool parsed = equals != std::string::npos &&
+                        std::from_chars(first, last, value).ptr == last &&
+                        first != last;
+    if (group == by_name.end() || !parsed || !(value > 0.0) ||
+        !std::isfinite(value)) {
+      throw InputError("--damping_scale entry '" + entry +
+                       "' is not group=value with a positive value and group "
+                       "one of pose, shape, twist, bending, offsets");
+    }
+    *group->second = value;
+  }
+  return groups;
+}
 
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options) {

@@ -25,6 +25,13 @@ const char* SolverName(SolverKind kind) {
   return "";
 }
 
+DampingKind DampingFromName(const std::string& name) {
+  if (name == "jacobi") return DampingKind::kJacobi;
+  if (name == "unit") return DampingKind::kUnit;
+  throw InputError("unknown --damping '" + name +
+                   "' (expected jacobi or unit)");
+}
+
 SolverReport SolveProblem(ceres::Problem* problem,
                           const SolverOptions& options) {
   switch (options.kind) {

@@ -30,6 +30,10 @@ TEST(CliTest, SimulateThenFitWritesEveryOutput) {
       nlohmann::json::parse(ReadText(dir + "/fit/fit.json"));
   ASSERT_EQ(fit["frames"].size(), 3u);
   EXPECT_EQ(fit["model"]["knots"], 17);
+  EXPECT_EQ(fit["settings"]["solver"], "direct");
+  EXPECT_EQ(fit["settings"]["linear_solver"], "SPARSE_NORMAL_CHOLESKY");
+  EXPECT_EQ(fit["settings"]["jacobian"], "analytic");
+  EXPECT_FALSE(fit["settings"].contains("damping"));
   EXPECT_EQ(fit["model"]["functions"]["tau"]["mode"], "free");
   EXPECT_LT(fit["frames"][0]["rms_mm"].get<double>(), 0.6);
   EXPECT_EQ(fit["frames"][2]["n_points"], 600);
@@ -47,6 +51,32 @@ TEST(CliTest, SimulateThenFitWritesEveryOutput) {
   int count = 0;
   while (std::getline(rows, line)) ++count;
   EXPECT_EQ(count, 3 * 14 * 17);
+}
+
+TEST(CliTest, FitWithTheIntegratorRecordsItsSettings) {
+  const std::string dir = ScratchDirectory("cli_integrator");
+  CommandResult run =
+      RunPfdm("simulate --frames 2 --tags 150 --out " + dir + "/phantom.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  run = RunPfdm(
+      "fit --knots 9 --solver integrator --damping unit "
+      "--damping_scale twist=2,offsets=0.5 --time_step 1e-4 "
+      "--max_steps 50 --rest_tolerance 1e-5 --points " +
+      dir + "/phantom.csv --out " + dir + "/fit");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json settings =
+      nlohmann::json::parse(ReadText(dir + "/fit/fit.json"))["settings"];
+  EXPECT_EQ(settings["solver"], "integrator");
+  EXPECT_EQ(settings["damping"], "unit");
+  EXPECT_EQ(settings["damping_scale"]["twist"], 2.0);
+  EXPECT_EQ(settings["damping_scale"]["offsets"], 0.5);
+  EXPECT_EQ(settings["damping_scale"]["shape"], 1.0);
+  EXPECT_EQ(settings["time_step"], 1e-4);
+  EXPECT_EQ(settings["max_steps"], 50);
+  EXPECT_EQ(settings["rest_tolerance"], 1e-5);
+  const nlohmann::json frames =
+      nlohmann::json::parse(ReadText(dir + "/fit/fit.json"))["frames"];
+  EXPECT_LE(frames[0]["iterations"].get<int>(), 50 * 10);  // 50 per round.
 }
 
 struct BadInput {
@@ -76,6 +106,19 @@ const BadInput kBadInputs[] = {
      "--apex and --base go together"},
     {"bad hint", "frame,id,x,y,z\n0,1,2,3,4\n", "--apex 1,2 --base 0,0,0",
      "--apex must be x,y,z in mm, got '1,2'"},
+    {"unknown linear solver", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--linear_solver CHOLMOD", "unknown --linear_solver 'CHOLMOD'"},
+    {"negative time step", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--solver integrator --time_step -1",
+     "--time_step must be 0 (default) or positive"},
+    {"no steps", "frame,id,x,y,z\n0,1,2,3,4\n", "--max_steps 0",
+     "--max_steps must be at least 1"},
+    {"unknown damping", "frame,id,x,y,z\n0,1,2,3,4\n", "--damping mass",
+     "unknown --damping 'mass' (expected jacobi or unit)"},
+    {"bad damping scale", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--damping_scale twist=0",
+     "--damping_scale entry 'twist=0' is not group=value with a positive "
+     "value and group one of pose, shape, twist, bending, offsets"},
 };
 
 TEST(CliTest, BadInputGivesOneLineNonZeroExitAndNoOutput) {

@@ -16,6 +16,21 @@
 
 namespace pfdm {
 
+// Multipliers of the integrator's damping per parameter group
+// (SolverOptions::damping_scale): a group with a larger one moves slower.
+struct DampingGroups {
+  double pose = 1.0;     // Centre and rotation (frame 0 only).
+  double shape = 1.0;    // a0..a3, eps1, eps2.
+  double twist = 1.0;    // tau.
+  double bending = 1.0;  // b0..b3.
+  double offsets = 1.0;  // e1o, e2o, e3o.
+  double Of(Function f) const;
+};
+
+// "group=value,..." with groups pose, shape, twist, bending, offsets;
+// throws InputError naming the bad entry.
+DampingGroups DampingGroupsFromText(const std::string& text);
+
 struct FitOptions {
   // Regularizer weights, each relative to one knot's share of the data
   // (N / K points).  Smoothness: 1 penalizes a knot bent 1 mm off the line
@@ -30,6 +45,7 @@ struct FitOptions {
   // Rounds stop when no material point's model position moves more.
   double correspondence_tolerance_mm = 0.05;
   SolverOptions solver;
+  DampingGroups damping_groups;
   JacobianKind jacobian = JacobianKind::kAnalytic;
   std::optional<AxisHint> hint;
   int min_points = 10;

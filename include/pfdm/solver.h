@@ -5,6 +5,7 @@
 #define PFDM_SOLVER_H_
 
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "ceres/problem.h"
@@ -14,9 +15,17 @@ namespace pfdm {
 
 enum class SolverKind { kDirect, kDamped, kIntegrator };
 
+// The integrator's damping matrix D before the per-coordinate scales:
+// diag(J^T J) at the start (each parameter moves at the rate the residuals
+// hold it, pseudo-time dimensionless) or the identity (the paper's constant
+// damping; then pseudo-time carries the units of the parameters).
+enum class DampingKind { kJacobi, kUnit };
+
 // "direct", "damped" or "integrator"; throws InputError otherwise.
 SolverKind SolverFromName(const std::string& name);
 const char* SolverName(SolverKind kind);
+// "jacobi" or "unit"; throws InputError otherwise.
+DampingKind DampingFromName(const std::string& name);
 
 struct SolverOptions {
   SolverKind kind = SolverKind::kDirect;
@@ -30,6 +39,12 @@ struct SolverOptions {
   double time_step = 0.0;
   double rest_tolerance = 1e-6;
   int max_steps = 20000;
+  // Integrator only: D = diag(scale) x base.  Per free parameter block, a
+  // multiplier for each tangent coordinate (a block not listed: all 1), so
+  // that a caller can make parameter groups move at different rates.  The
+  // damped mode's D is Ceres' Levenberg-Marquardt diagonal, diag(J^T J).
+  DampingKind damping = DampingKind::kJacobi;
+  std::unordered_map<const double*, std::vector<double>> damping_scale;
 };
 
 // One iteration (direct, damped) or step (integrator).

@@ -13,10 +13,6 @@
 #include "pfdm/gnuplot.h"
 #include "pfdm/solver.h"
 
-DEFINE_int32(max_steps, pfdm::SolverOptions().max_steps,
-             "compare-solvers: most steps per solve of the damped stepping "
-             "and the integrator");
-
 namespace pfdm {
 namespace {
 
@@ -66,10 +62,8 @@ std::string PlotScript(const std::vector<PlotData>& plots, int frame) {
 
 int RunCompareSolvers() {
   if (FLAGS_out.empty()) throw InputError("compare-solvers needs --out DIR");
-  if (FLAGS_max_steps < 1) throw InputError("--max_steps must be at least 1");
   const ModelConfig config = ModelConfigFromFlags();
-  FitOptions base = FitOptionsFromFlags();
-  base.solver.max_steps = FLAGS_max_steps;
+  const FitOptions base = FitOptionsFromFlags();
   const PointSequence points = PointsFromFlags();
 
   std::map<SolverKind, SequenceFit> fits;

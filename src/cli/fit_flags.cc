@@ -1,7 +1,9 @@
 // Flags shared by the commands that read points and fit.
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
+#include "ceres/types.h"
 #include "commands.h"
 #include "pfdm/error.h"
 #include "pfdm/point_reader.h"
@@ -26,6 +28,22 @@ DEFINE_int32(threads, 1, "Ceres threads");
 DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
 DEFINE_string(solver, "direct", "direct, damped or integrator");
+DEFINE_string(linear_solver, "SPARSE_NORMAL_CHOLESKY",
+              "Ceres linear solver, e.g. SPARSE_NORMAL_CHOLESKY, "
+              "DENSE_NORMAL_CHOLESKY, DENSE_QR");
+DEFINE_double(time_step, 0.0,
+              "damped and integrator: pseudo-time step; 0 = default "
+              "(integrator: 0.9 of its stability bound, damped: 1000)");
+DEFINE_double(rest_tolerance, pfdm::SolverOptions().rest_tolerance,
+              "damped and integrator: at rest when the energy dissipated per "
+              "unit pseudo-time is below rest_tolerance^2 of the initial");
+DEFINE_int32(max_steps, pfdm::SolverOptions().max_steps,
+             "damped and integrator: most steps per solve");
+DEFINE_string(damping, "jacobi",
+              "integrator: damping D = jacobi (diag J^T J) or unit");
+DEFINE_string(damping_scale, "",
+              "integrator: multipliers of D per group, e.g. "
+              "twist=10,offsets=2 (groups pose shape twist bending offsets)");
 DEFINE_string(jacobian, "analytic", "analytic, autodiff or numeric");
 
 namespace pfdm {
@@ -75,6 +93,22 @@ FitOptions FitOptionsFromFlags() {
   options.loss_scale_mm = FLAGS_loss_scale;
   options.solver.num_threads = FLAGS_threads;
   options.solver.kind = SolverFromName(FLAGS_solver);
+  if (!ceres::StringToLinearSolverType(FLAGS_linear_solver,
+                                       &options.solver.linear_solver)) {
+    throw InputError("unknown --linear_solver '" + FLAGS_linear_solver + "'");
+  }
+  if (!(FLAGS_time_step >= 0.0) || !std::isfinite(FLAGS_time_step)) {
+    throw InputError("--time_step must be 0 (default) or positive");
+  }
+  options.solver.time_step = FLAGS_time_step;
+  if (!(FLAGS_rest_tolerance > 0.0) || !std::isfinite(FLAGS_rest_tolerance)) {
+    throw InputError("--rest_tolerance must be positive");
+  }
+  options.solver.rest_tolerance = FLAGS_rest_tolerance;
+  if (FLAGS_max_steps < 1) throw InputError("--max_steps must be at least 1");
+  options.solver.max_steps = FLAGS_max_steps;
+  options.solver.damping = DampingFromName(FLAGS_damping);
+  options.damping_groups = DampingGroupsFromText(FLAGS_damping_scale);
   options.jacobian = JacobianFromName(FLAGS_jacobian);
   if (FLAGS_apex.empty() != FLAGS_base.empty()) {
     throw InputError("--apex and --base go together");
