@@ -266,15 +266,15 @@ class RestTest {
 // reported; a rejected step does not move the model and takes no time.
 class DampedCallback : public ceres::IterationCallback {
  public:
-  DampedCallback(double rest_tolerance, SolverReport* report)
-      : rest_tolerance_(rest_tolerance), report_(report) {}
+  DampedCallback(const SolverOptions& options, SolverReport* report)
+      : options_(options), report_(report) {}
 
   ceres::CallbackReturnType operator()(
       const ceres::IterationSummary& summary) override {
     const double dt = radius_;
     radius_ = summary.trust_region_radius;
     if (summary.iteration == 0) {
-      rest_test_.emplace(summary.cost, rest_tolerance_);
+      rest_test_.emplace(summary.cost, options_.rest_tolerance);
     } else if (!summary.step_is_successful) {
       return ceres::SOLVER_CONTINUE;
     } else {
@@ -283,6 +283,7 @@ class DampedCallback : public ceres::IterationCallback {
     report_->trace.push_back({summary.iteration, time_,
                               summary.cumulative_time_in_seconds, summary.cost,
                               summary.gradient_norm});
+    if (options_.on_step) options_.on_step(report_->trace.back());
     const double before = energy_;
     energy_ = summary.cost;
     if (summary.iteration > 0 && rest_test_->AtRest(dt, before, energy_)) {
@@ -294,7 +295,7 @@ class DampedCallback : public ceres::IterationCallback {
   bool at_rest() const { return at_rest_; }
 
  private:
-  double rest_tolerance_;
+  const SolverOptions& options_;
   SolverReport* report_;
   std::optional<RestTest> rest_test_;
   double radius_ = 0.0, time_ = 0.0, energy_ = 0.0;
@@ -347,6 +348,7 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
   report.trace.push_back(
       {0, 0.0, SecondsSince(start), now.cost,
        ProjectedGradientNorm(*problem, state, now.gradient)});
+  if (options.on_step) options.on_step(report.trace.back());
   report.termination = "NO_CONVERGENCE";
   if (state.tangent_size == 0 || Norm(now.gradient) == 0.0) {
     report.termination = "REST";
@@ -392,6 +394,7 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
     report.trace.push_back(
         {report.iterations, time, SecondsSince(start), now.cost,
          ProjectedGradientNorm(*problem, state, now.gradient)});
+    if (options.on_step) options.on_step(report.trace.back());
     if (at_rest) {
       report.termination = "REST";
       report.converged = true;
@@ -412,7 +415,7 @@ SolverReport SolveDamped(ceres::Problem* problem,
   const double dt =
       options.time_step > 0.0 ? options.time_step : kDefaultDampedStep;
   SolverReport report;
-  DampedCallback callback(options.rest_tolerance, &report);
+  DampedCallback callback(options, &report);
   ceres::Solver::Options solver_options;
   solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   solver_options.initial_trust_region_radius = dt;
@@ -433,6 +436,7 @@ SolverReport SolveDamped(ceres::Problem* problem,
   solver_options.parameter_tolerance = 1e-15;
   solver_options.logging_type = ceres::SILENT;
   solver_options.callbacks.push_back(&callback);
+  solver_options.update_state_every_iteration = bool(options.on_step);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem, &summary);
 

@@ -59,13 +59,6 @@ bool IsLength(int f) {
          f == kE1o || f == kE2o || f == kE3o;
 }
 
-// Function value in its reported unit (see ParametersCsv).
-double Reported(const Model& model, int f, double u) {
-  const double value = model.FunctionAt(f, u);
-  if (f == kA1 || f == kA2 || f == kA3) return value * model.state.globals[kA0];
-  return value;
-}
-
 double KnotRingZ(const Model& model, double u) {
   return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
          model.FunctionAt(kE3o, u);
@@ -85,6 +78,12 @@ std::string ModeName(FunctionMode mode) {
 
 }  // namespace
 
+double ReportedValue(const Model& model, int f, double u) {
+  const double value = model.FunctionAt(f, u);
+  if (f == kA1 || f == kA2 || f == kA3) return value * model.state.globals[kA0];
+  return value;
+}
+
 std::string ParametersCsv(const std::vector<Model>& frames) {
   std::ostringstream out;
   out.precision(10);
@@ -96,7 +95,7 @@ std::string ParametersCsv(const std::vector<Model>& frames) {
       for (int k = 0; k < grid.num_knots(); ++k) {
         const double u = grid.KnotU(k);
         out << t << ',' << FunctionName(f) << ',' << k << ',' << u << ','
-            << KnotRingZ(model, u) << ',' << Reported(model, f, u) << '\n';
+            << KnotRingZ(model, u) << ',' << ReportedValue(model, f, u) << '\n';
       }
     }
   }

@@ -134,6 +134,37 @@ void AddDampingScales(const ceres::Problem& problem, FrameKind kind,
   }
 }
 
+// Keeps the model state at log-spaced iterations of a frame's path, and
+// the last one, which is where the frame ends.
+class TrajectoryRecorder {
+ public:
+  TrajectoryRecorder(int per_decade, const Model* model,
+                     std::vector<TrajectoryPoint>* trajectory)
+      : ratio_(per_decade > 0 ? std::pow(10.0, 1.0 / per_decade) : 0.0),
+        model_(model),
+        trajectory_(trajectory) {}
+
+  void Step(int iteration, double pseudo_time) {
+    latest_ = {iteration, pseudo_time, model_->state};
+    if (iteration + 1.0 < next_) return;
+    trajectory_->push_back(latest_);
+    next_ = std::max(next_ + 1.0, (iteration + 1.0) * ratio_);
+  }
+  void Finish() {
+    if (ratio_ > 0.0 && (trajectory_->empty() ||
+                         trajectory_->back().iteration != latest_.iteration)) {
+      trajectory_->push_back(latest_);
+    }
+  }
+
+ private:
+  double ratio_;
+  const Model* model_;
+  std::vector<TrajectoryPoint>* trajectory_;
+  TrajectoryPoint latest_;
+  double next_ = 0.0;
+};
+
 ceres::LossFunction* MakeLoss(const FitOptions& options) {
   if (options.loss == "none") return nullptr;
   if (options.loss == "huber")
@@ -462,22 +493,32 @@ SequenceFit FitSequence(const PointSequence& sequence,
                                ? FrameKind::kUntracked
                                : FrameKind::kTracked;
     SolverReport report;
+    TrajectoryRecorder recorder(options.trajectory_per_decade, &model,
+                                &fit.trajectory);
     for (int round = 0; round < options.max_correspondence_rounds; ++round) {
       std::optional<double> rim_height;
       if (!reference && !unknown.empty()) {
         const double top = TopHeight(points, options, model);
         if (std::isfinite(top)) rim_height = top;
       }
+      const SolverTracePoint last =
+          fit.trace.empty() ? SolverTracePoint{-1} : fit.trace.back();
+      FitOptions round_options = options;
+      if (options.trajectory_per_decade > 0) {
+        round_options.solver.on_step = [&recorder,
+                                        last](const SolverTracePoint& point) {
+          recorder.Step(last.iteration + 1 + point.iteration,
+                        last.pseudo_time + point.pseudo_time);
+        };
+      }
       report = SolveFrame(points, fit.material, sliding, rim_height, kind,
-                          prior, options, &model);
+                          prior, round_options, &model);
       fit.iterations += report.iterations;
       fit.residual_evaluations += report.residual_evaluations;
       fit.jacobian_evaluations += report.jacobian_evaluations;
       fit.jacobian_seconds += report.jacobian_seconds;
       fit.linear_solver_seconds += report.linear_solver_seconds;
       ++fit.correspondence_rounds;
-      const SolverTracePoint last =
-          fit.trace.empty() ? SolverTracePoint{-1} : fit.trace.back();
       for (SolverTracePoint point : report.trace) {
         point.iteration += last.iteration + 1;
         point.pseudo_time += last.pseudo_time;
@@ -494,6 +535,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
       const double moved = UpdateClosest(model, points, unknown, &fit.material);
       if (moved < options.correspondence_tolerance_mm) break;
     }
+    recorder.Finish();
     fit.termination = report.termination;
     for (size_t i : unknown) {
       if (frames_per_id[frame.points[i].id] > 1) {

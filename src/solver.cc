@@ -45,9 +45,35 @@ SolverReport SolveProblem(ceres::Problem* problem,
   return {};
 }
 
+namespace {
+
+// Hands each iteration to SolverOptions::on_step with the parameter blocks
+// at that iterate.
+class StepObserver : public ceres::IterationCallback {
+ public:
+  explicit StepObserver(const SolverOptions& options) : options_(options) {}
+  ceres::CallbackReturnType operator()(
+      const ceres::IterationSummary& summary) override {
+    options_.on_step({summary.iteration, 0.0,
+                      summary.cumulative_time_in_seconds, summary.cost,
+                      summary.gradient_norm});
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const SolverOptions& options_;
+};
+
+}  // namespace
+
 SolverReport SolveDirect(ceres::Problem* problem,
                          const SolverOptions& options) {
   ceres::Solver::Options solver_options;
+  StepObserver observer(options);
+  if (options.on_step) {
+    solver_options.callbacks.push_back(&observer);
+    solver_options.update_state_every_iteration = true;
+  }
   solver_options.linear_solver_type = options.linear_solver;
   solver_options.max_num_iterations = options.max_iterations;
   solver_options.num_threads = options.num_threads;

@@ -1,4 +1,5 @@
 // pfdm compare-solvers end to end: the trace CSV, the plot, bad flags.
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -41,6 +42,32 @@ std::map<std::pair<std::string, int>, std::vector<Row>> ReadTraces(
   return traces;
 }
 
+// (solver, frame) -> iteration -> "function/knot" -> value.
+using Trajectories = std::map<std::pair<std::string, int>,
+                              std::map<int, std::map<std::string, double>>>;
+
+Trajectories ReadTrajectories(const std::string& path) {
+  std::istringstream lines(ReadText(path));
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "solver,frame,iteration,pseudo_time,function,knot,value");
+  Trajectories trajectories;
+  while (std::getline(lines, line)) {
+    std::istringstream fields(line);
+    std::string solver, frame, iteration, time, function, knot, value;
+    std::getline(fields, solver, ',');
+    std::getline(fields, frame, ',');
+    std::getline(fields, iteration, ',');
+    std::getline(fields, time, ',');
+    std::getline(fields, function, ',');
+    std::getline(fields, knot, ',');
+    std::getline(fields, value, ',');
+    trajectories[{solver, std::stoi(frame)}][std::stoi(iteration)]
+                [function + "/" + knot] = std::stod(value);
+  }
+  return trajectories;
+}
+
 TEST(CliCompareSolversTest, WritesTracesOfAllThreeSolversAndThePlot) {
   const std::string dir = ScratchDirectory("compare");
   CommandResult run =
@@ -72,6 +99,29 @@ TEST(CliCompareSolversTest, WritesTracesOfAllThreeSolversAndThePlot) {
     EXPECT_NEAR(traces.at({solver, 1}).back().cost / direct, 1.0, 1e-4)
         << solver;
   }
+  // The path of the model: thinned, ending where the trace ends, and the
+  // three solvers' paths end at the same twist.
+  const Trajectories paths = ReadTrajectories(dir + "/out/trajectory.csv");
+  ASSERT_EQ(paths.size(), 6u);
+  for (const auto& [key, path] : paths) {
+    SCOPED_TRACE(key.first + " frame " + std::to_string(key.second));
+    const auto& rows = traces.at(key);
+    EXPECT_EQ(path.begin()->first, 0);
+    EXPECT_EQ(path.rbegin()->first, rows.back().iteration);
+    EXPECT_LE(path.size(), 12 + 10 * std::log10(rows.size()));
+    EXPECT_EQ(path.begin()->second.size(), 10u * 9u);  // The 10 free.
+  }
+  const auto& direct_end = paths.at({"direct", 1}).rbegin()->second;
+  for (const char* solver : {"damped", "integrator"}) {
+    const auto& end = paths.at({solver, 1}).rbegin()->second;
+    EXPECT_NEAR(end.at("tau/8"), direct_end.at("tau/8"), 0.01 * M_PI / 180)
+        << solver;
+    EXPECT_NEAR(end.at("a1/4"), direct_end.at("a1/4"), 0.01) << solver;
+  }
+  // Frame 1 starts from frame 0's fit: its twist is still 0 there.
+  EXPECT_EQ(paths.at({"integrator", 1}).begin()->second.at("tau/8"), 0.0);
+  EXPECT_NE(paths.at({"integrator", 1}).rbegin()->second.at("tau/8"), 0.0);
+
   const std::string svg = ReadText(dir + "/out/convergence.svg");
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("integrator"), std::string::npos);

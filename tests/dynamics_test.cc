@@ -138,6 +138,34 @@ TEST_P(SolverKindTest, ReachesTheMinimumOfALinearProblem) {
   }
 }
 
+// on_step sees every trace point with the parameters at that iterate: the
+// cost recomputed from them is the cost the trace reports.
+TEST_P(SolverKindTest, OnStepSeesEachIterate) {
+  double x[2] = {5.0, -3.0};
+  ceres::Problem problem;
+  AddLinear(&problem, x);
+  SolverOptions options;
+  options.kind = GetParam();
+  std::vector<SolverTracePoint> seen;
+  std::vector<double> costs;
+  options.on_step = [&](const SolverTracePoint& point) {
+    seen.push_back(point);
+    const Eigen::Vector3d r = LinearJacobian() * Eigen::Vector2d(x[0], x[1]) -
+                              Eigen::Vector3d(1.0, 20.0, 0.3);
+    costs.push_back(0.5 * r.squaredNorm());
+  };
+  const SolverReport report = SolveProblem(&problem, options);
+  ASSERT_EQ(seen.size(), report.trace.size());
+  ASSERT_GE(seen.size(), 2u);
+  for (size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].iteration, report.trace[i].iteration);
+    EXPECT_NEAR(costs[i], report.trace[i].cost,
+                1e-12 * (1.0 + report.trace[i].cost))
+        << "point " << i;
+  }
+  EXPECT_GT(costs.front(), 100.0 * costs.back() + 1e-12);
+}
+
 // The rotation is reached on the unit sphere and x0 stops at its bound.
 // Ceres (direct, damped) solves each step as if unbounded and then clips
 // it, so x1, coupled to x0, stops short of the constrained minimum

@@ -14,6 +14,9 @@
 
 namespace pfdm {
 
+// Function f at u in the unit ParametersCsv reports it in.
+double ReportedValue(const Model& model, int f, double u);
+
 // One row per frame, function and knot: frame,function,knot,u,z_mm,value.
 // Lengths (a0, a1..a3 as a0 a_i, b0, b2, offsets) in mm, tau in radians,
 // eps and b1, b3 unitless; z_mm is the knot ring's axial position in the

@@ -49,6 +49,17 @@ struct FitOptions {
   JacobianKind jacobian = JacobianKind::kAnalytic;
   std::optional<AxisHint> hint;
   int min_points = 10;
+  // Model states kept along each frame's solver path, log-spaced in the
+  // iteration count at this many per decade, plus the start and the end;
+  // 0 keeps none (FrameFit::trajectory).
+  int trajectory_per_decade = 0;
+};
+
+// The model at one point of a frame's solver path.
+struct TrajectoryPoint {
+  int iteration = 0;  // As numbered in FrameFit::trace.
+  double pseudo_time = 0.0;
+  ModelState state;
 };
 
 struct FrameFit {
@@ -69,6 +80,7 @@ struct FrameFit {
   std::string termination;
   // Every solver iteration of every correspondence round, numbered on.
   std::vector<SolverTracePoint> trace;
+  std::vector<TrajectoryPoint> trajectory;  // See trajectory_per_decade.
 };
 
 struct SequenceFit {

@@ -4,6 +4,7 @@
 #ifndef PFDM_SOLVER_H_
 #define PFDM_SOLVER_H_
 
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -27,6 +28,15 @@ const char* SolverName(SolverKind kind);
 // "jacobi" or "unit"; throws InputError otherwise.
 DampingKind DampingFromName(const std::string& name);
 
+// One iteration (direct, damped) or step (integrator).
+struct SolverTracePoint {
+  int iteration = 0;
+  double pseudo_time = 0.0;  // 0 for the direct solve.
+  double wall_seconds = 0.0;
+  double cost = 0.0;           // 1/2 sum of squared residuals.
+  double gradient_norm = 0.0;  // Projected |J^T r|, as Ceres reports it.
+};
+
 struct SolverOptions {
   SolverKind kind = SolverKind::kDirect;
   int max_iterations = 100;
@@ -45,15 +55,9 @@ struct SolverOptions {
   // damped mode's D is Ceres' Levenberg-Marquardt diagonal, diag(J^T J).
   DampingKind damping = DampingKind::kJacobi;
   std::unordered_map<const double*, std::vector<double>> damping_scale;
-};
-
-// One iteration (direct, damped) or step (integrator).
-struct SolverTracePoint {
-  int iteration = 0;
-  double pseudo_time = 0.0;  // 0 for the direct solve.
-  double wall_seconds = 0.0;
-  double cost = 0.0;           // 1/2 sum of squared residuals.
-  double gradient_norm = 0.0;  // Projected |J^T r|, as Ceres reports it.
+  // Called with each point of SolverReport::trace as it is recorded, while
+  // the parameter blocks hold that iterate: lets a caller keep the path.
+  std::function<void(const SolverTracePoint&)> on_step;
 };
 
 struct SolverReport {

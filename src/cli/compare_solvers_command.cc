@@ -10,8 +10,13 @@
 #include "commands.h"
 #include "pfdm/atomic_file.h"
 #include "pfdm/error.h"
+#include "pfdm/fit_output.h"
 #include "pfdm/gnuplot.h"
 #include "pfdm/solver.h"
+
+DEFINE_int32(trajectory_per_decade, 10,
+             "compare-solvers: model states written to trajectory.csv per "
+             "decade of iterations (log-spaced, plus first and last)");
 
 namespace pfdm {
 namespace {
@@ -39,6 +44,34 @@ PlotData ExcessEnergy(SolverKind kind, const FrameFit& frame, double lowest) {
   return plot;
 }
 
+// Rows solver,frame,iteration,pseudo_time,function,knot,value (units as in
+// parameters.csv) for every function the model does not fix, at the
+// recorded points of each solver's path.
+std::string TrajectoryCsv(const ModelConfig& config,
+                          const std::map<SolverKind, SequenceFit>& fits) {
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "solver,frame,iteration,pseudo_time,function,knot,value\n";
+  const KnotGrid grid = config.Grid();
+  for (const auto& [kind, fit] : fits) {
+    for (const FrameFit& frame : fit.frames) {
+      for (const TrajectoryPoint& point : frame.trajectory) {
+        const Model model{config, point.state};
+        for (int f = 0; f < kNumFunctions; ++f) {
+          if (config.modes[f] == FunctionMode::kFixed) continue;
+          for (int k = 0; k < grid.num_knots(); ++k) {
+            csv << SolverName(kind) << ',' << frame.frame << ','
+                << point.iteration << ',' << point.pseudo_time << ','
+                << FunctionName(f) << ',' << k << ','
+                << ReportedValue(model, f, grid.KnotU(k)) << '\n';
+          }
+        }
+      }
+    }
+  }
+  return csv.str();
+}
+
 std::string PlotScript(const std::vector<PlotData>& plots, int frame) {
   std::string by_iteration, by_time;
   for (size_t i = 0; i < plots.size(); ++i) {
@@ -63,7 +96,11 @@ std::string PlotScript(const std::vector<PlotData>& plots, int frame) {
 int RunCompareSolvers() {
   if (FLAGS_out.empty()) throw InputError("compare-solvers needs --out DIR");
   const ModelConfig config = ModelConfigFromFlags();
-  const FitOptions base = FitOptionsFromFlags();
+  FitOptions base = FitOptionsFromFlags();
+  if (FLAGS_trajectory_per_decade < 1) {
+    throw InputError("--trajectory_per_decade must be at least 1");
+  }
+  base.trajectory_per_decade = FLAGS_trajectory_per_decade;
   const PointSequence points = PointsFromFlags();
 
   std::map<SolverKind, SequenceFit> fits;
@@ -123,7 +160,9 @@ int RunCompareSolvers() {
             PlotScript(plots, fits[SolverKind::kDirect].frames[plotted].frame),
             FLAGS_out + "/convergence.svg", 1200, 500);
   WriteFileAtomically(FLAGS_out + "/convergence.csv", csv.str());
-  std::printf("wrote %s/convergence.csv and convergence.svg\n",
+  WriteFileAtomically(FLAGS_out + "/trajectory.csv",
+                      TrajectoryCsv(config, fits));
+  std::printf("wrote %s/convergence.csv, trajectory.csv and convergence.svg\n",
               FLAGS_out.c_str());
   return 0;
 }
