@@ -32,7 +32,8 @@ std::vector<BatchCase> ReadManifest(const std::string& path) {
       std::filesystem::path(path).parent_path();
   try {
     io::CSVReader<3, io::trim_chars<' ', '\t'>,
-                  io::double_quote_escape<',', '"'>>
+                  io::double_quote_escape<',', '"'>, io::throw_on_overflow,
+                  io::empty_line_comment>
         in(path);
     in.read_header(io::ignore_extra_column | io::ignore_missing_column, "case",
                    "points", "contours");

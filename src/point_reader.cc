@@ -118,8 +118,10 @@ PointSequence ReadPointsCsv(const std::string& path) {
   std::map<long long, std::vector<DataPoint>> frames;
   std::map<long long, std::set<long long>> ids;
   try {
+    // Blank lines (a trailing one, say) are skipped, not short rows.
     io::CSVReader<5, io::trim_chars<' ', '\t'>,
-                  io::double_quote_escape<',', '"'>>
+                  io::double_quote_escape<',', '"'>, io::throw_on_overflow,
+                  io::empty_line_comment>
         in(path);
     in.read_header(io::ignore_extra_column, "frame", "id", "x", "y", "z");
     long long frame, id;
@@ -169,7 +171,9 @@ PointSequence ReadGpFiles(const std::string& path,
     const std::string& file = files[file_index];
     std::vector<DataPoint>& points = frames[file_index];
     try {
-      io::CSVReader<4, io::trim_chars<' '>, io::no_quote_escape<'\t'>> in(file);
+      io::CSVReader<4, io::trim_chars<' '>, io::no_quote_escape<'\t'>,
+                    io::throw_on_overflow, io::empty_line_comment>
+          in(file);
       in.read_header(io::ignore_extra_column, "x", "y", "z", "contour type");
       char *x = nullptr, *y = nullptr, *z = nullptr, *type = nullptr;
       while (in.read_row(x, y, z, type)) {
@@ -208,6 +212,9 @@ std::vector<std::string> ExpandContourAlias(const std::string& spec) {
   std::istringstream in(spec);
   std::string item;
   while (std::getline(in, item, ',')) {
+    // "lv-endo, lv-epi" as typed in a shell or a manifest cell.
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
     if (item == "lv-endo") {
       types.insert(types.end(), {"SAX_LV_ENDOCARDIAL", "LAX_LV_ENDOCARDIAL"});
     } else if (item == "lv-epi") {

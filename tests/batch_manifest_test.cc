@@ -21,7 +21,8 @@ TEST(BatchManifestTest, ReadsCasesResolvingPathsAgainstTheManifest) {
   WriteText(dir + "/cases.csv",
             "points,case,site\n"
             "data/a.csv,case-a,x\n"
-            "/abs/b.csv,case_b.2,y\n");
+            "\n"  // Blank lines are skipped.
+            "/abs/b.csv,case_b.2,y\n\n");
   const std::vector<BatchCase> cases = ReadManifest(dir + "/cases.csv");
   ASSERT_EQ(cases.size(), 2u);
   EXPECT_EQ(cases[0].name, "case-a");

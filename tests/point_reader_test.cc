@@ -43,6 +43,17 @@ TEST(PointReaderTest, ReadsFramesIdsAndCoordinatesInAnyColumnOrder) {
             Eigen::Vector3d(1.5, -2, 30));
 }
 
+// Blank lines, a trailing one or between frames, are skipped; error line
+// numbers still count them.
+TEST(PointReaderTest, SkipsBlankLines) {
+  const PointSequence sequence =
+      ReadPointsCsv(CsvFile("frame,id,x,y,z\n0,1,2,3,4\n\n  \n1,1,5,6,7\n\n"));
+  ASSERT_EQ(sequence.frames.size(), 2u);
+  EXPECT_EQ(sequence.frames[1].points[0].position, Eigen::Vector3d(5, 6, 7));
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n\n0,1,2,3,nan\n"),
+            "points.csv:3: column 'z' is not a finite number");
+}
+
 TEST(PointReaderTest, BadInputNamesTheFileAndLine) {
   EXPECT_EQ(ErrorOf("frame,id,x,y\n0,1,2,3\n"),
             "points.csv: missing column 'z'");
@@ -149,7 +160,7 @@ TEST(PointReaderTest, GpFileAloneIsOneFrameAndAnEmptyFilterKeepsAll) {
   WriteText(path,
             "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n"
             "1.25\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t7\n"
-            "4\t5\t6\tAPEX_POINT\t9\t1.0\t1.0\n");
+            "4\t5\t6\tAPEX_POINT\t9\t1.0\t1.0\n\n");  // Blank line.
   const PointSequence sequence = ReadGpFiles(path, {});
   EXPECT_EQ(sequence.source, path);
   ASSERT_EQ(sequence.frames.size(), 1u);
@@ -195,6 +206,9 @@ TEST(PointReaderTest, ContourAliasesExpand) {
             (std::vector<std::string>{"SAX_LV_ENDOCARDIAL",
                                       "LAX_LV_ENDOCARDIAL", "LAX_LA"}));
   EXPECT_TRUE(ExpandContourAlias("").empty());
+  EXPECT_EQ(ExpandContourAlias(" lv-epi , LAX_LA "),
+            (std::vector<std::string>{"SAX_LV_EPICARDIAL", "LAX_LV_EPICARDIAL",
+                                      "LAX_LA"}));
 }
 
 TEST(PointReaderTest, ReadsTheBivMePatient) {

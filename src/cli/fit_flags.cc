@@ -6,7 +6,7 @@
 #include "ceres/types.h"
 #include "commands.h"
 #include "pfdm/error.h"
-#include "pfdm/point_reader.h"
+#include "pfdm/point_source.h"
 #include "pfdm/solver.h"
 
 DEFINE_string(points, "",
@@ -65,20 +65,7 @@ Eigen::Vector3d ParsePoint(const std::string& flag, const std::string& text) {
 
 PointSequence PointsFromFlags() {
   if (FLAGS_points.empty()) throw InputError("--points FILE is required");
-  std::string format = FLAGS_format;
-  if (format == "auto") {
-    const std::filesystem::path path(FLAGS_points);
-    format = std::filesystem::is_directory(path) ||
-                     path.filename().string().rfind("GPFile", 0) == 0
-                 ? "gpfile"
-                 : "csv";
-  }
-  if (format == "csv") return ReadPointsCsv(FLAGS_points);
-  if (format == "gpfile") {
-    return ReadGpFiles(FLAGS_points, ExpandContourAlias(FLAGS_contours));
-  }
-  throw InputError("unknown --format '" + FLAGS_format +
-                   "' (expected csv, gpfile or auto)");
+  return ReadPoints(FLAGS_points, FLAGS_format, FLAGS_contours);
 }
 
 ModelConfig ModelConfigFromFlags() {
