@@ -2,6 +2,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -13,10 +14,18 @@ namespace pfdm {
 
 std::string ScratchDirectory(const std::string& name) {
   static int counter = 0;
+  // Named by the test, not the process: a rerun replaces its predecessor's
+  // files (disk use stays bounded) and what a test wrote is easy to find
+  // and look at afterwards, while tests running in parallel never share.
+  std::string test = "no_test";
+  if (const testing::TestInfo* info =
+          testing::UnitTest::GetInstance()->current_test_info()) {
+    test = std::string(info->test_suite_name()) + "." + info->name();
+    std::replace(test.begin(), test.end(), '/', '_');
+  }
   const std::filesystem::path dir =
-      std::filesystem::path(testing::TempDir()) /
-      ("pfdm_" + name + "_" + std::to_string(getpid()) + "_" +
-       std::to_string(counter++));
+      std::filesystem::path(testing::TempDir()) / "pfdm_tests" / test /
+      (name + "_" + std::to_string(counter++));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();

@@ -6,7 +6,9 @@
 
 namespace pfdm {
 
-// A fresh empty folder under the test temp dir, unique per call.
+// A fresh empty folder, <temp dir>/pfdm_tests/<Suite.Test>/<name>_<n>,
+// unique per call within a test; kept after the test so that its files
+// (plots, reports, meshes) can be looked at, replaced when the test reruns.
 std::string ScratchDirectory(const std::string& name);
 
 void WriteText(const std::string& path, const std::string& text);
