@@ -61,6 +61,22 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
   EXPECT_NEAR(analysis.clinical[0].volume_ml, mesh[0], 0.10 * mesh[0]);
   EXPECT_NEAR(analysis.clinical[9].volume_ml, mesh[9], 0.10 * mesh[9]);
   EXPECT_LT(sum_deviation / 25, 0.05);
+  // Where the volumes part (frames 10 and 11, 10-12 % low) the surface is
+  // still unbiased against the contours: the mean signed distance of the
+  // data along the surface normal is within 0.15 mm on every frame, so the
+  // shortfall is not a fit pulled inward by its regularizer.
+  for (int t = 0; t < 25; ++t) {
+    const Model model = fit.ModelAt(t);
+    const FrameFit& frame = fit.frames[t];
+    double sum = 0.0;
+    for (size_t i = 0; i < frame.residuals.size(); ++i) {
+      sum += frame.residuals[i].dot(
+          SurfaceNormal(model, frame.material[i].u, frame.material[i].v));
+    }
+    const double bias = sum / frame.residuals.size();
+    if (t >= 9 && t <= 11) std::printf("frame %d bias %+.3f mm\n", t, bias);
+    EXPECT_LT(std::abs(bias), 0.15) << "frame " << t;
+  }
   const double mesh_ef = 1.0 - mesh[9] / mesh[0];
   EXPECT_NEAR(analysis.ejection_fraction.ratio, mesh_ef, 0.05);
   EXPECT_NEAR(analysis.ejection_fraction.es_frame, 9, 1);
