@@ -8,6 +8,7 @@
 
 #include "Eigen/Core"
 #include "pfdm/correspondence.h"
+#include "pfdm/damping_groups.h"
 #include "pfdm/data_cost.h"
 #include "pfdm/initialization.h"
 #include "pfdm/model.h"
@@ -15,21 +16,6 @@
 #include "pfdm/solver.h"
 
 namespace pfdm {
-
-// Multipliers of the integrator's damping per parameter group
-// (SolverOptions::damping_scale): a group with a larger one moves slower.
-struct DampingGroups {
-  double pose = 1.0;     // Centre and rotation (frame 0 only).
-  double shape = 1.0;    // a0..a3, eps1, eps2.
-  double twist = 1.0;    // tau.
-  double bending = 1.0;  // b0..b3.
-  double offsets = 1.0;  // e1o, e2o, e3o.
-  double Of(Function f) const;
-};
-
-// "group=value,..." with groups pose, shape, twist, bending, offsets;
-// throws InputError naming the bad entry.
-DampingGroups DampingGroupsFromText(const std::string& text);
 
 struct FitOptions {
   // Regularizer weights, each relative to one knot's share of the data

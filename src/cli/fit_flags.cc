@@ -1,6 +1,5 @@
 // Flags shared by the commands that read points and fit.
 #include <cmath>
-#include <filesystem>
 #include <sstream>
 
 #include "ceres/types.h"
