@@ -401,6 +401,7 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
       break;
     }
   }
+  report.minimizer_seconds = SecondsSince(start);
   return report;
 }
 
@@ -454,6 +455,7 @@ SolverReport SolveDamped(ceres::Problem* problem,
   report.jacobian_evaluations = summary.num_jacobian_evaluations;
   report.jacobian_seconds = summary.jacobian_evaluation_time_in_seconds;
   report.linear_solver_seconds = summary.linear_solver_time_in_seconds;
+  report.minimizer_seconds = summary.minimizer_time_in_seconds;
   return report;
 }
 

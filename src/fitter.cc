@@ -11,6 +11,7 @@
 #include "pfdm/analytic_point_residual.h"
 #include "pfdm/data_cost.h"
 #include "pfdm/error.h"
+#include "pfdm/free_entries.h"
 #include "pfdm/point_residual.h"
 #include "pfdm/regularizer.h"
 
@@ -85,46 +86,113 @@ FunctionValues FunctionScales(const Model& model,
   return scales;
 }
 
-void AddBlock(ceres::Problem* problem, double* values,
-              const std::vector<int>& held) {
-  problem->AddParameterBlock(values, kNumFunctions);
-  if (static_cast<int>(held.size()) == kNumFunctions) {
-    problem->SetParameterBlockConstant(values);
-    return;
+// The frame's parameter blocks: the pose as it is, and the globals and each
+// knot as their free entries, or whole and constant when none is free.
+class FrameBlocks {
+ public:
+  FrameBlocks(FrameKind kind, Model* model, ceres::Problem* problem)
+      : model_(model), problem_(problem) {
+    ModelState& state = model->state;
+    problem->AddParameterBlock(state.center.data(), 3);
+    problem->AddParameterBlock(state.quaternion.data(), 4,
+                               new ceres::QuaternionManifold);
+    if (kind != FrameKind::kReference) {
+      problem->SetParameterBlockConstant(state.center.data());
+      problem->SetParameterBlockConstant(state.quaternion.data());
+    }
+    Add(state.globals.data(), HeldEntries(model->config, kind, kGlobalsBlock));
+    for (int k = 0; k < model->config.num_knots; ++k) {
+      Add(state.knots[k].data(), HeldEntries(model->config, kind, k));
+    }
   }
-  if (!held.empty()) {
-    problem->SetManifold(values,
-                         new ceres::SubsetManifold(kNumFunctions, held));
-  }
-  auto bound = [&](int f, double lower, double upper) {
-    if (Contains(held, f)) return;
-    problem->SetParameterLowerBound(values, f, lower);
-    problem->SetParameterUpperBound(values, f, upper);
-  };
-  for (int f : {kA1, kA2, kA3}) bound(f, 1e-3, 1.0);
-  for (int f : {kEps1, kEps2}) bound(f, 0.1, 4.0);
-  for (int f : {kB1, kB3}) bound(f, -1.0, 1.0);
-}
 
-// The groups' multipliers per tangent coordinate of each free block, in
-// the order the blocks' SubsetManifolds keep the free entries.
-void AddDampingScales(const ceres::Problem& problem, FrameKind kind,
+  // Adds `cost` over the pose (when with_pose) and then the listed blocks
+  // (kGlobalsBlock or a knot index), each as the problem holds it.
+  void AddResidual(ceres::CostFunction* cost, ceres::LossFunction* loss,
+                   bool with_pose, const std::vector<int>& blocks) {
+    std::vector<double*> parameters;
+    std::vector<const FreeEntries*> entries;
+    bool compact = false;
+    if (with_pose) {
+      parameters = {model_->state.center.data(),
+                    model_->state.quaternion.data()};
+      entries = {nullptr, nullptr};
+    }
+    for (int b : blocks) {
+      const Block& block = blocks_[b + 1];
+      parameters.push_back(block.parameters);
+      entries.push_back(block.entries.get());
+      compact = compact || block.entries != nullptr;
+    }
+    if (compact) cost = new FreeEntriesCost(cost, std::move(entries));
+    problem_->AddResidualBlock(cost, loss, parameters);
+  }
+
+  // Calls f(parameter block, its free functions) for each free block.
+  template <typename F>
+  void ForEachFree(F f) const {
+    for (const Block& block : blocks_) {
+      if (block.entries) f(block.parameters, block.entries->free());
+    }
+  }
+
+  // Copies the free entries into the model state.
+  void Store() const {
+    for (const Block& block : blocks_) {
+      if (block.entries) block.entries->Store();
+    }
+  }
+
+ private:
+  struct Block {
+    double* parameters = nullptr;
+    std::unique_ptr<FreeEntries> entries;  // Null when the block is constant.
+  };
+
+  void Add(double* values, const std::vector<int>& held) {
+    Block block;
+    std::vector<int> free;
+    for (int f = 0; f < kNumFunctions; ++f) {
+      if (!Contains(held, f)) free.push_back(f);
+    }
+    if (free.empty()) {
+      block.parameters = values;
+      problem_->AddParameterBlock(values, kNumFunctions);
+      problem_->SetParameterBlockConstant(values);
+      blocks_.push_back(std::move(block));
+      return;
+    }
+    block.entries = std::make_unique<FreeEntries>(values, std::move(free));
+    block.parameters = block.entries->parameters();
+    problem_->AddParameterBlock(block.parameters, block.entries->size());
+    auto bound = [&](int f, double lower, double upper) {
+      const int index = block.entries->IndexOf(f);
+      if (index < 0) return;
+      problem_->SetParameterLowerBound(block.parameters, index, lower);
+      problem_->SetParameterUpperBound(block.parameters, index, upper);
+    };
+    for (int f : {kA1, kA2, kA3}) bound(f, 1e-3, 1.0);
+    for (int f : {kEps1, kEps2}) bound(f, 0.1, 4.0);
+    for (int f : {kB1, kB3}) bound(f, -1.0, 1.0);
+    blocks_.push_back(std::move(block));
+  }
+
+  Model* model_;
+  ceres::Problem* problem_;
+  std::vector<Block> blocks_;  // The globals, then the knots.
+};
+
+// The groups' multipliers per free entry of each free block, and for the
+// pose when it is free.
+void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
                       const DampingGroups& groups, Model* model,
                       SolverOptions* solver) {
-  ModelState& state = model->state;
-  auto add = [&](double* block, int index) {
-    if (problem.IsParameterBlockConstant(block)) return;
-    const std::vector<int> held = HeldEntries(model->config, kind, index);
+  blocks.ForEachFree([&](double* block, const std::vector<int>& free) {
     std::vector<double>& scales = solver->damping_scale[block];
-    for (int f = 0; f < kNumFunctions; ++f) {
-      if (!Contains(held, f)) scales.push_back(groups.Of(Function(f)));
-    }
-  };
-  add(state.globals.data(), kGlobalsBlock);
-  for (int k = 0; k < model->config.num_knots; ++k) {
-    add(state.knots[k].data(), k);
-  }
-  for (double* pose : {state.center.data(), state.quaternion.data()}) {
+    for (int f : free) scales.push_back(groups.Of(Function(f)));
+  });
+  for (double* pose :
+       {model->state.center.data(), model->state.quaternion.data()}) {
     if (problem.IsParameterBlockConstant(pose)) continue;
     solver->damping_scale[pose].assign(problem.ParameterBlockTangentSize(pose),
                                        groups.pose);
@@ -186,22 +254,9 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         Model* model) {
   const ModelConfig& config = model->config;
   const KnotGrid grid = config.Grid();
-  ModelState& state = model->state;
   ceres::Problem problem;
-
-  problem.AddParameterBlock(state.center.data(), 3);
-  problem.AddParameterBlock(state.quaternion.data(), 4,
-                            new ceres::QuaternionManifold);
+  FrameBlocks blocks(kind, model, &problem);
   const bool reference = kind == FrameKind::kReference;
-  if (!reference) {
-    problem.SetParameterBlockConstant(state.center.data());
-    problem.SetParameterBlockConstant(state.quaternion.data());
-  }
-  const std::vector<int> global_held = HeldEntries(config, kind, kGlobalsBlock);
-  AddBlock(&problem, state.globals.data(), global_held);
-  for (int k = 0; k < config.num_knots; ++k) {
-    AddBlock(&problem, state.knots[k].data(), HeldEntries(config, kind, k));
-  }
 
   ceres::LossFunction* loss = MakeLoss(options);
   const FunctionMask free_mask = config.FreeMask();
@@ -211,12 +266,9 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
       options.jacobian == JacobianKind::kAnalytic && loss == nullptr;
   std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
   auto add_group = [&](int k0) {
-    problem.AddResidualBlock(new PointGroupResidual(std::move(groups[k0]),
-                                                    free_mask, unit_exponents),
-                             nullptr, state.center.data(),
-                             state.quaternion.data(), state.globals.data(),
-                             state.knots[k0].data(),
-                             state.knots[k0 + 1].data());
+    blocks.AddResidual(new PointGroupResidual(std::move(groups[k0]), free_mask,
+                                              unit_exponents),
+                       nullptr, true, {kGlobalsBlock, k0, k0 + 1});
     groups[k0].clear();
   };
   for (size_t i = 0; i < points.size(); ++i) {
@@ -237,10 +289,7 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                                 options.jacobian)
               : MakePointCost(points[i], u, v, span.weight, free_mask,
                               unit_exponents, options.jacobian);
-    problem.AddResidualBlock(cost, loss, state.center.data(),
-                             state.quaternion.data(), state.globals.data(),
-                             state.knots[span.k0].data(),
-                             state.knots[span.k0 + 1].data());
+    blocks.AddResidual(cost, loss, true, {kGlobalsBlock, span.k0, span.k0 + 1});
   }
   for (int k0 = 0; k0 + 1 < config.num_knots; ++k0) {
     if (!groups[k0].empty()) add_group(k0);
@@ -254,46 +303,54 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     const double sqrt_weight =
         std::sqrt(options.smoothness_weight * points_per_knot);
     for (int k = 1; k + 1 < config.num_knots; ++k) {
-      problem.AddResidualBlock(
-          SmoothnessResidual::Create(sqrt_weight, knot_scales), nullptr,
-          state.knots[k - 1].data(), state.knots[k].data(),
-          state.knots[k + 1].data());
+      blocks.AddResidual(SmoothnessResidual::Create(sqrt_weight, knot_scales),
+                         nullptr, false, {k - 1, k, k + 1});
     }
   }
   if (rim_height) {
-    problem.AddResidualBlock(
+    blocks.AddResidual(
         RimResidual::Create(std::sqrt(points_per_knot), std::sin(config.u_max),
                             *rim_height, free_mask),
-        nullptr, state.globals.data(), state.knots.back().data());
+        nullptr, false, {kGlobalsBlock, config.num_knots - 1});
   }
   if (reference && config.modes[kE1o] == FunctionMode::kFree) {
-    std::vector<double*> knots;
-    for (FunctionValues& knot : state.knots) knots.push_back(knot.data());
-    problem.AddResidualBlock(
+    std::vector<int> knots;
+    for (int k = 0; k < config.num_knots; ++k) knots.push_back(k);
+    blocks.AddResidual(
         new AxisGaugeResidual(config.num_knots,
                               kGaugeWeight * std::sqrt(points.size())),
-        nullptr, knots);
+        nullptr, false, knots);
   }
   if (options.prior_weight > 0.0) {
     const double sqrt_weight =
         std::sqrt(options.prior_weight * points_per_knot);
     for (int k = 0; k < config.num_knots; ++k) {
-      problem.AddResidualBlock(
+      blocks.AddResidual(
           PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
-          nullptr, state.knots[k].data());
+          nullptr, false, {k});
     }
-    problem.AddResidualBlock(
-        PriorResidual::Create(std::sqrt(options.prior_weight * points.size()),
-                              FunctionScales(*model, global_held),
-                              prior.globals),
-        nullptr, state.globals.data());
+    blocks.AddResidual(
+        PriorResidual::Create(
+            std::sqrt(options.prior_weight * points.size()),
+            FunctionScales(*model, HeldEntries(config, kind, kGlobalsBlock)),
+            prior.globals),
+        nullptr, false, {kGlobalsBlock});
   }
 
   SolverOptions solver = options.solver;
   if (solver.kind == SolverKind::kIntegrator) {
-    AddDampingScales(problem, kind, options.damping_groups, model, &solver);
+    AddDampingScales(problem, blocks, options.damping_groups, model, &solver);
   }
-  return SolveProblem(&problem, solver);
+  if (solver.on_step) {
+    solver.on_step = [&blocks,
+                      observe = solver.on_step](const SolverTracePoint& point) {
+      blocks.Store();
+      observe(point);
+    };
+  }
+  SolverReport report = SolveProblem(&problem, solver);
+  blocks.Store();
+  return report;
 }
 
 std::vector<Eigen::Vector3d> Positions(const Frame& frame) {
@@ -468,6 +525,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
       fit.jacobian_evaluations += report.jacobian_evaluations;
       fit.jacobian_seconds += report.jacobian_seconds;
       fit.linear_solver_seconds += report.linear_solver_seconds;
+      fit.minimizer_seconds += report.minimizer_seconds;
       ++fit.correspondence_rounds;
       for (SolverTracePoint point : report.trace) {
         point.iteration += last.iteration + 1;

@@ -93,6 +93,7 @@ SolverReport SolveDirect(ceres::Problem* problem,
   report.jacobian_evaluations = summary.num_jacobian_evaluations;
   report.jacobian_seconds = summary.jacobian_evaluation_time_in_seconds;
   report.linear_solver_seconds = summary.linear_solver_time_in_seconds;
+  report.minimizer_seconds = summary.minimizer_time_in_seconds;
   for (const ceres::IterationSummary& iteration : summary.iterations) {
     report.trace.push_back({iteration.iteration, 0.0,
                             iteration.cumulative_time_in_seconds,

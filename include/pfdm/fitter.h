@@ -63,6 +63,7 @@ struct FrameFit {
   int jacobian_evaluations = 0;
   double jacobian_seconds = 0.0;       // Summed over the solver's iterations.
   double linear_solver_seconds = 0.0;  // Likewise.
+  double minimizer_seconds = 0.0;      // Likewise; see SolverReport.
   std::string termination;
   // Every solver iteration of every correspondence round, numbered on.
   std::vector<SolverTracePoint> trace;

@@ -70,6 +70,8 @@ struct SolverReport {
   int jacobian_evaluations = 0;
   double jacobian_seconds = 0.0;
   double linear_solver_seconds = 0.0;
+  // Iterating, without the set-up (Ceres' preprocessing) or the summary.
+  double minimizer_seconds = 0.0;
   std::vector<SolverTracePoint> trace;
 };
 
