@@ -106,10 +106,19 @@ class FrameBlocks {
     }
   }
 
-  // Adds `cost` over the pose (when with_pose) and then the listed blocks
-  // (kGlobalsBlock or a knot index), each as the problem holds it.
+  // The free entries of a block (kGlobalsBlock or a knot index); null when
+  // the block is constant.
+  const FreeEntries* entries(int block) const {
+    return blocks_[block + 1].entries.get();
+  }
+
+  // Adds `cost` over the pose (when with_pose) and then the listed blocks,
+  // each as the problem holds it.  A cost over whole blocks is wrapped in
+  // FreeEntriesCost; one that takes the blocks as they are says so.
+  enum class Takes { kWholeBlocks, kProblemBlocks };
   void AddResidual(ceres::CostFunction* cost, ceres::LossFunction* loss,
-                   bool with_pose, const std::vector<int>& blocks) {
+                   bool with_pose, const std::vector<int>& blocks,
+                   Takes takes = Takes::kWholeBlocks) {
     std::vector<double*> parameters;
     std::vector<const FreeEntries*> entries;
     bool compact = false;
@@ -124,7 +133,9 @@ class FrameBlocks {
       entries.push_back(block.entries.get());
       compact = compact || block.entries != nullptr;
     }
-    if (compact) cost = new FreeEntriesCost(cost, std::move(entries));
+    if (compact && takes == Takes::kWholeBlocks) {
+      cost = new FreeEntriesCost(cost, std::move(entries));
+    }
     problem_->AddResidualBlock(cost, loss, parameters);
   }
 
@@ -173,7 +184,6 @@ class FrameBlocks {
     };
     for (int f : {kA1, kA2, kA3}) bound(f, 1e-3, 1.0);
     for (int f : {kEps1, kEps2}) bound(f, 0.1, 4.0);
-    for (int f : {kB1, kB3}) bound(f, -1.0, 1.0);
     blocks_.push_back(std::move(block));
   }
 
@@ -266,9 +276,16 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
       options.jacobian == JacobianKind::kAnalytic && loss == nullptr;
   std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
   auto add_group = [&](int k0) {
+    const std::array<const FreeEntries*, 3> entries = {
+        blocks.entries(kGlobalsBlock), blocks.entries(k0),
+        blocks.entries(k0 + 1)};
+    const std::array<bool, 5> varied = {
+        reference, reference, entries[0] != nullptr, entries[1] != nullptr,
+        entries[2] != nullptr};
     blocks.AddResidual(new PointGroupResidual(std::move(groups[k0]), free_mask,
-                                              unit_exponents),
-                       nullptr, true, {kGlobalsBlock, k0, k0 + 1});
+                                              unit_exponents, entries, varied),
+                       nullptr, true, {kGlobalsBlock, k0, k0 + 1},
+                       FrameBlocks::Takes::kProblemBlocks);
     groups[k0].clear();
   };
   for (size_t i = 0; i < points.size(); ++i) {
@@ -550,6 +567,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
         tracked_material[frame.points[i].id] = fit.material[i];
       }
     }
+    model.CanonicalizeBending();
     Summarize(model, points, &fit);
     fit.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

@@ -102,6 +102,30 @@ Eigen::Vector3d Model::WorldPoint(double u, double v) const {
                         ModelPoint(u, v));
 }
 
+void Model::CanonicalizeBending() {
+  for (const auto& [amplitude, shape] : {std::pair{kB0, kB1}, {kB2, kB3}}) {
+    if (config.modes[shape] == FunctionMode::kFixed) continue;
+    const bool shape_free = config.modes[shape] == FunctionMode::kFree;
+    double mean = state.globals[shape];
+    if (shape_free) {
+      mean = 0.0;
+      for (const FunctionValues& knot : state.knots) mean += knot[shape];
+      mean /= state.knots.size();
+    }
+    const double turns = std::floor(mean / 2.0);
+    if (turns == 0.0) continue;
+    const double sign = std::fmod(std::abs(turns), 2.0) == 1.0 ? -1.0 : 1.0;
+    auto shift = [&](FunctionValues& values, bool free) {
+      if (free == shape_free) values[shape] -= 2.0 * turns;
+      if (free == (config.modes[amplitude] == FunctionMode::kFree)) {
+        values[amplitude] *= sign;
+      }
+    };
+    shift(state.globals, false);
+    for (FunctionValues& knot : state.knots) shift(knot, true);
+  }
+}
+
 Eigen::Matrix3d Model::Rotation() const {
   Eigen::Matrix3d rotation;
   ceres::QuaternionToRotation(state.quaternion.data(),

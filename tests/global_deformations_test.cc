@@ -48,6 +48,21 @@ TEST(BendTest, TiltAndCupFollowEquationSeven) {
   EXPECT_EQ(bent.y(), e.y());
 }
 
+// Why the fit holds b1 and b3 to a window of width 2 (fitter.cc).
+TEST(BendTest, ShiftingTheShapeByTwoFlipsTheAmplitude) {
+  for (double x : {-0.9, -0.2, 0.0, 0.35, 1.0}) {
+    for (double b : {0.0, 0.4, 1.0, 1.7}) {
+      EXPECT_NEAR(BendProfile(x, b + 2.0), -BendProfile(x, b), 1e-12);
+    }
+  }
+  FunctionValues f = Values(), flipped = Values();
+  f[kB0] = 3.0, f[kB1] = 0.6;
+  flipped[kB0] = -3.0, flipped[kB1] = 2.6;
+  const Eigen::Vector3d e(12.0, -7.0, 4.0);
+  EXPECT_TRUE(Bend(f.data(), e).isApprox(Bend(flipped.data(), e), 1e-12));
+  EXPECT_GT(std::abs(Bend(f.data(), e).z() - e.z()), 0.5);
+}
+
 TEST(BendTest, LeavesTheRingCentreAndZeroBendInPlace) {
   FunctionValues f = Values();
   f[kB0] = 4.0;

@@ -58,6 +58,69 @@ TEST(ModelTest, WorldPointAppliesThePose) {
   EXPECT_TRUE(model.UnitExponents());
 }
 
+// A bent model whose shape functions have the given means (knot k adds
+// 0.1 k - 0.1 to each), b0 and b2 varying along u.
+Model BentModel(const ModelConfig& config, double b1_mean, double b3_mean) {
+  FunctionValues f = DefaultFunctionValues();
+  f[kA0] = 40.0;
+  f[kB1] = b1_mean, f[kB3] = b3_mean;
+  f[kB0] = 6.0, f[kB2] = -4.0;
+  Model model = Model::Uniform(config, f);
+  for (int k = 0; k < config.num_knots; ++k) {
+    model.state.knots[k][kB1] += 0.1 * k - 0.1;
+    model.state.knots[k][kB3] += 0.1 * k - 0.1;
+    model.state.knots[k][kB0] += 2.0 * k;
+    model.state.knots[k][kB2] -= 1.0 * k;
+  }
+  return model;
+}
+
+void ExpectSameSurface(const Model& a, const Model& b) {
+  for (double u : {-1.2, -0.5, 0.0, 0.4}) {
+    for (double v : {-2.5, -1.0, 0.3, 2.0}) {
+      EXPECT_TRUE(a.WorldPoint(u, v).isApprox(b.WorldPoint(u, v), 1e-12));
+    }
+  }
+}
+
+TEST(ModelTest, CanonicalBendingShiftsShapeMeansIntoZeroToTwo) {
+  const ModelConfig config = ModelConfig::Paper(3);
+  // b1 mean 2.5: shifted by 2, b0 negated.  b3 mean -3.5: shifted by +4,
+  // b2 kept.
+  const Model original = BentModel(config, 2.5, -3.5);
+  Model model = original;
+  model.CanonicalizeBending();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(model.state.knots[k][kB1], original.state.knots[k][kB1] - 2.0,
+                1e-12);
+    EXPECT_EQ(model.state.knots[k][kB0], -original.state.knots[k][kB0]);
+    EXPECT_NEAR(model.state.knots[k][kB3], original.state.knots[k][kB3] + 4.0,
+                1e-12);
+    EXPECT_EQ(model.state.knots[k][kB2], original.state.knots[k][kB2]);
+  }
+  ExpectSameSurface(original, model);
+  // Already canonical: untouched, including a mean at the window's start.
+  Model canonical = BentModel(config, 1.9, 0.0);
+  const ModelState before = canonical.state;
+  canonical.CanonicalizeBending();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(canonical.state.knots[k], before.knots[k]);
+  }
+}
+
+TEST(ModelTest, CanonicalBendingActsOnConstantFunctionsToo) {
+  const ModelConfig config = ModelConfig::Superellipsoid(3);
+  FunctionValues f = DefaultFunctionValues();
+  f[kA0] = 40.0;
+  f[kB0] = 5.0, f[kB1] = -0.5;
+  Model model = Model::Uniform(config, f);
+  const Model original = model;
+  model.CanonicalizeBending();
+  EXPECT_NEAR(model.state.globals[kB1], 1.5, 1e-12);
+  EXPECT_EQ(model.state.globals[kB0], -5.0);
+  ExpectSameSurface(original, model);
+}
+
 }  // namespace
 }  // namespace pfdm
 

@@ -23,9 +23,9 @@ std::string ScratchDirectory(const std::string& name) {
     test = std::string(info->test_suite_name()) + "." + info->name();
     std::replace(test.begin(), test.end(), '/', '_');
   }
-  const std::filesystem::path dir =
-      std::filesystem::path(testing::TempDir()) / "pfdm_tests" / test /
-      (name + "_" + std::to_string(counter++));
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) /
+                                    "pfdm_tests" / test /
+                                    (name + "_" + std::to_string(counter++));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();

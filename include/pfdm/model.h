@@ -67,6 +67,16 @@ struct Model {
   Eigen::Vector3d WorldPoint(double u, double v) const;  // c + R s
   // Rotation world_from_model.
   Eigen::Matrix3d Rotation() const;
+
+  // The bending gauge.  g(x, b + 2) = -g(x, b), so (b0, b1) and
+  // (-b0, b1 + 2) are the same bend; shifting a whole shape function by a
+  // multiple of 2 (negating its amplitude for an odd multiple) brings the
+  // mean of its values over the knots into [0, 2).  The window is centred
+  // on the tilt (b = 1), the LV's usual bend and the default, so a bend's
+  // sign reads the same across frames.  The fit leaves b1 and b3 unbounded
+  // (a bounded window would stop shape functions that cross its edge) and
+  // applies this after each frame.
+  void CanonicalizeBending();
 };
 
 }  // namespace pfdm
