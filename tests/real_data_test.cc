@@ -21,6 +21,14 @@ TEST(RealDataTest, BivMePatientContoursFitWithinTwoMillimetres) {
   for (const FrameFit& frame : fit.frames) {
     EXPECT_LT(frame.rms_mm, 2.0) << "frame " << frame.frame;
     EXPECT_GT(frame.rms_mm, 0.3) << "frame " << frame.frame;  // Not degenerate.
+    // The bending gauge: shape functions' means in [0, 2).
+    for (int shape : {kB1, kB3}) {
+      double mean = 0.0;
+      for (const FunctionValues& knot : frame.state.knots) mean += knot[shape];
+      mean /= frame.state.knots.size();
+      EXPECT_GE(mean, 0.0) << FunctionName(shape) << " frame " << frame.frame;
+      EXPECT_LT(mean, 2.0) << FunctionName(shape) << " frame " << frame.frame;
+    }
   }
 }
 

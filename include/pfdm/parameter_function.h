@@ -18,9 +18,9 @@ enum Function : int {
   kEps1,    // Latitude squareness.
   kEps2,    // Longitude squareness.
   kB0,      // Bending amplitude across axis 1 (mm).
-  kB1,      // Bending shape across axis 1, in [0, 2].
+  kB1,      // Bending shape across axis 1 (Model::CanonicalizeBending).
   kB2,      // Bending amplitude across axis 2 (mm).
-  kB3,      // Bending shape across axis 2, in [0, 2].
+  kB3,      // Bending shape across axis 2, likewise.
   kTau,     // Twist about axis 3 (radians).
   kE1o,     // Axis offset along axis 1 (mm).
   kE2o,     // Axis offset along axis 2 (mm).
