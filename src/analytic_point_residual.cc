@@ -175,7 +175,7 @@ PointGroupResidual::PointGroupResidual(
     offsets_[b] = columns_;
     if (varied_[b]) columns_ += widths_[b];
   }
-  compressed_ = rows_ > columns_ + 1;
+  compressed_ = columns_ > 0 && rows_ > columns_ + 1;
   set_num_residuals(compressed_ ? columns_ + 1 : rows_);
 }
 
