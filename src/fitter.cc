@@ -567,7 +567,14 @@ SequenceFit FitSequence(const PointSequence& sequence,
         tracked_material[frame.points[i].id] = fit.material[i];
       }
     }
-    model.CanonicalizeBending();
+    // The recorded path goes into the frame's final gauge with the frame.
+    const BendingShift turns = model.CanonicalizeBending();
+    for (TrajectoryPoint& point : fit.trajectory) {
+      if (turns == BendingShift{0.0, 0.0}) break;
+      Model recorded{config, point.state};
+      recorded.ShiftBending(turns);
+      point.state = recorded.state;
+    }
     Summarize(model, points, &fit);
     fit.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

@@ -1,5 +1,8 @@
 #include "pfdm/model.h"
 
+#include <cmath>
+#include <utility>
+
 #include "pfdm/error.h"
 
 namespace pfdm {
@@ -102,21 +105,36 @@ Eigen::Vector3d Model::WorldPoint(double u, double v) const {
                         ModelPoint(u, v));
 }
 
-void Model::CanonicalizeBending() {
-  for (const auto& [amplitude, shape] : {std::pair{kB0, kB1}, {kB2, kB3}}) {
+namespace {
+constexpr std::pair<Function, Function> kBends[2] = {{kB0, kB1}, {kB2, kB3}};
+}  // namespace
+
+BendingShift Model::CanonicalizeBending() {
+  BendingShift turns{0.0, 0.0};
+  for (int i = 0; i < 2; ++i) {
+    const Function shape = kBends[i].second;
     if (config.modes[shape] == FunctionMode::kFixed) continue;
-    const bool shape_free = config.modes[shape] == FunctionMode::kFree;
     double mean = state.globals[shape];
-    if (shape_free) {
+    if (config.modes[shape] == FunctionMode::kFree) {
       mean = 0.0;
       for (const FunctionValues& knot : state.knots) mean += knot[shape];
       mean /= state.knots.size();
     }
-    const double turns = std::floor(mean / 2.0);
-    if (turns == 0.0) continue;
-    const double sign = std::fmod(std::abs(turns), 2.0) == 1.0 ? -1.0 : 1.0;
+    turns[i] = std::floor(mean / 2.0);
+  }
+  ShiftBending(turns);
+  return turns;
+}
+
+void Model::ShiftBending(const BendingShift& turns) {
+  for (int i = 0; i < 2; ++i) {
+    if (turns[i] == 0.0) continue;
+    const auto [amplitude, shape] = kBends[i];
+    const double sign = std::fmod(std::abs(turns[i]), 2.0) == 1.0 ? -1.0 : 1.0;
     auto shift = [&](FunctionValues& values, bool free) {
-      if (free == shape_free) values[shape] -= 2.0 * turns;
+      if (free == (config.modes[shape] == FunctionMode::kFree)) {
+        values[shape] -= 2.0 * turns[i];
+      }
       if (free == (config.modes[amplitude] == FunctionMode::kFree)) {
         values[amplitude] *= sign;
       }

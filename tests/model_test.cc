@@ -89,7 +89,13 @@ TEST(ModelTest, CanonicalBendingShiftsShapeMeansIntoZeroToTwo) {
   // b2 kept.
   const Model original = BentModel(config, 2.5, -3.5);
   Model model = original;
-  model.CanonicalizeBending();
+  const BendingShift turns = model.CanonicalizeBending();
+  EXPECT_EQ(turns[0], 1.0);
+  EXPECT_EQ(turns[1], -2.0);
+  Model shifted = original;  // What the fitter does to a frame's path.
+  shifted.ShiftBending(turns);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(shifted.state.knots[k], model.state.knots[k]);
   for (int k = 0; k < 3; ++k) {
     EXPECT_NEAR(model.state.knots[k][kB1], original.state.knots[k][kB1] - 2.0,
                 1e-12);

@@ -53,6 +53,8 @@ struct ModelState {
   std::vector<FunctionValues> knots;                     // Free functions.
 };
 
+using BendingShift = std::array<double, 2>;
+
 struct Model {
   ModelConfig config;
   ModelState state;
@@ -75,8 +77,11 @@ struct Model {
   // on the tilt (b = 1), the LV's usual bend and the default, so a bend's
   // sign reads the same across frames.  The fit leaves b1 and b3 unbounded
   // (a bounded window would stop shape functions that cross its edge) and
-  // applies this after each frame.
-  void CanonicalizeBending();
+  // applies this after each frame.  Returns the shift, in turns of 2, of
+  // b1 and of b3.
+  BendingShift CanonicalizeBending();
+  // b1 and b3 less 2 x turns, b0 and b2 negated for odd turns.
+  void ShiftBending(const BendingShift& turns);
 };
 
 }  // namespace pfdm
