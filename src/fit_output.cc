@@ -29,7 +29,9 @@ constexpr const char* kGaugeConvention =
     "(offsets e1o, e2o with zero mean and zero linear trend over the knots), "
     "and held in later frames, so tau(u, t) is rotation about the LV axis "
     "relative to frame 0 and offsets, bending and a1..a3 are motion relative "
-    "to frame 0's axis.";
+    "to frame 0's axis; b1 and b3 are shifted by multiples of 2 (negating b0 "
+    "or b2 for odd ones, the same bend) until their knot means lie in "
+    "[0, 2).";
 
 constexpr const char* kEjectionDefinition =
     "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; "
