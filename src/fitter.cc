@@ -271,9 +271,11 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   ceres::LossFunction* loss = MakeLoss(options);
   const FunctionMask free_mask = config.FreeMask();
   const bool unit_exponents = model->UnitExponents();
-  // Grouped residual blocks when each point need not carry its own loss.
-  const bool grouped =
-      options.jacobian == JacobianKind::kAnalytic && loss == nullptr;
+  // Analytic points go into PointGroupResidual blocks, which take the
+  // problem's blocks as they are: many points between the same two knots,
+  // or one each when every point carries its own robust loss.
+  const bool analytic = options.jacobian == JacobianKind::kAnalytic;
+  const size_t group_size = loss == nullptr ? kPointsPerGroup : 1;
   std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
   auto add_group = [&](int k0) {
     const std::array<const FreeEntries*, 3> entries = {
@@ -284,7 +286,7 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
         entries[2] != nullptr};
     blocks.AddResidual(new PointGroupResidual(std::move(groups[k0]), free_mask,
                                               unit_exponents, entries, varied),
-                       nullptr, true, {kGlobalsBlock, k0, k0 + 1},
+                       loss, true, {kGlobalsBlock, k0, k0 + 1},
                        FrameBlocks::Takes::kProblemBlocks);
     groups[k0].clear();
   };
@@ -292,12 +294,12 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     const KnotSpan span = grid.Span(material[i].u);
     const double u = material[i].u, v = material[i].v;
     const bool plane = sliding[i] && u < config.u_max;
-    if (grouped) {
+    if (analytic) {
       groups[span.k0].push_back(
           plane ? PointSample(points[i], u, v, span.weight,
                               SurfaceNormal(*model, u, v))
                 : PointSample(points[i], u, v, span.weight));
-      if (groups[span.k0].size() == kPointsPerGroup) add_group(span.k0);
+      if (groups[span.k0].size() == group_size) add_group(span.k0);
       continue;
     }
     ceres::CostFunction* cost =
@@ -569,11 +571,12 @@ SequenceFit FitSequence(const PointSequence& sequence,
     }
     // The recorded path goes into the frame's final gauge with the frame.
     const BendingShift turns = model.CanonicalizeBending();
-    for (TrajectoryPoint& point : fit.trajectory) {
-      if (turns == BendingShift{0.0, 0.0}) break;
-      Model recorded{config, point.state};
-      recorded.ShiftBending(turns);
-      point.state = recorded.state;
+    if (turns != BendingShift{0.0, 0.0}) {
+      for (TrajectoryPoint& point : fit.trajectory) {
+        Model recorded{config, point.state};
+        recorded.ShiftBending(turns);
+        point.state = recorded.state;
+      }
     }
     Summarize(model, points, &fit);
     fit.solve_seconds =

@@ -74,8 +74,8 @@ using AnalyticSurfaceResidual = AnalyticResidual<1>;  // With a normal.
 
 // Many points between the same two knots as one residual block, their
 // residuals stacked.  Ceres then handles a few tall blocks instead of
-// thousands of 3-row ones.  Only for the plain squared loss (a robust loss
-// acts per block).
+// thousands of 3-row ones.  A robust loss acts per block, so with one the
+// fitter gives each point a group of its own.
 //
 // The blocks are as the frame's problem holds them: the globals and the two
 // knots as their free entries (entries[i]; null: the whole block), and
