@@ -1,6 +1,6 @@
 // ns per data point for the residual alone, the autodiff Jacobian and the
 // analytic Jacobian.  Arg(0): residual only; Arg(1): with Jacobians.
-// BM_PointGroup: the same per point of a 128-point group as a tracked frame
+// BM_PointGroup: the same per point of a 512-point group as a tracked frame
 // uses it (two knots' free entries varied, square-root form).
 #include <memory>
 #include <random>
@@ -86,7 +86,7 @@ void BM_PointGroup(benchmark::State& state) {
   }
   FreeEntries knot0(fixture.knot0.data(), free),
       knot1(fixture.knot1.data(), free);
-  constexpr int kGroup = 128;
+  constexpr int kGroup = 512;
   std::mt19937 random(1);
   std::uniform_real_distribution<double> u(-1.5, 0.5), v(-3.1, 3.1),
       weight(0.0, 1.0);

@@ -27,7 +27,7 @@ constexpr int kGlobalsBlock = -1;
 constexpr double kGaugeWeight = 1e1;
 // Points per grouped residual block: enough to amortize Ceres' per-block
 // work, few enough to leave blocks for every thread.
-constexpr size_t kPointsPerGroup = 128;
+constexpr size_t kPointsPerGroup = 512;
 
 bool Contains(const std::vector<int>& list, int value) {
   return std::find(list.begin(), list.end(), value) != list.end();

@@ -1,7 +1,7 @@
 #include "pfdm/square_root_form.h"
 
 #include <cmath>
-#include <vector>
+#include <utility>
 
 #include "Eigen/Cholesky"
 #include "Eigen/QR"
@@ -13,6 +13,10 @@ namespace {
 // How far |z|^2 may exceed |r|^2 from rounding before the Cholesky route
 // is distrusted.
 constexpr double kRoundingSlack = 1e-12;
+// Pivots below this fraction of the largest count as zero: dropping one
+// changes J^T J by less than that fraction and the gradient by less than
+// its square root, far below what a Levenberg-Marquardt step resolves.
+constexpr double kDroppedPivot = 0.0;
 
 // Householder QR of [J r]: slower, but needs no definiteness.
 SquareRootForm FromQr(const RowMajorMatrix& a) {
@@ -25,33 +29,44 @@ SquareRootForm FromQr(const RowMajorMatrix& a) {
 
 }  // namespace
 
-// The Cholesky factor of the Gram matrix [J r]^T [J r] is [R z; 0 rho]:
-// ~half the flops of a QR and one dense rank update.  Columns that are
-// exactly zero (b1 while b0 = 0, a knot whose weight is 0 for every point)
-// make it singular; they are decoupled from the rest, so they are factored
-// as 1 and zeroed after.  Near-singular J can still spoil z, which
-// |z| > |r| exposes; then the QR decides.
 SquareRootForm ToSquareRootForm(const RowMajorMatrix& a) {
   const int n = static_cast<int>(a.cols()) - 1;
   CHECK_GT(a.rows(), n);
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n + 1, n + 1);
   gram.selfadjointView<Eigen::Lower>().rankUpdate(a.transpose());
-  std::vector<int> zero_columns;
-  for (int i = 0; i < n; ++i) {
-    if (gram(i, i) == 0.0) {
-      gram(i, i) = 1.0;
-      zero_columns.push_back(i);
-    }
-  }
-  const Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> llt(gram.topLeftCorner(n, n));
-  if (llt.info() != Eigen::Success) return FromQr(a);
+  return SquareRootFormFromGram(std::move(gram), [&a] { return a; });
+}
+
+// From the pivoted factorization J^T J = P^T L D L^T P: R = D^(1/2) L^T P
+// and z = D^(-1/2) L^-1 P J^T r, ~half the flops of a QR of [J r].  R need
+// not be triangular, only satisfy the identities.  J^T J is often singular
+// (b1 while b0 = 0, a knot whose weight is 0 for every point, a rotation
+// about the axis of a round model); pivoting puts those directions last,
+// where their pivots are dropped.  What rounding does to a near-singular J
+// can still spoil z, which |z| > |r| exposes; then the QR decides.
+SquareRootForm SquareRootFormFromGram(
+    Eigen::MatrixXd gram, const std::function<RowMajorMatrix()>& rows) {
+  const int n = static_cast<int>(gram.cols()) - 1;
+  const Eigen::LDLT<Eigen::MatrixXd, Eigen::Lower> ldlt(
+      gram.topLeftCorner(n, n));
+  if (ldlt.info() != Eigen::Success) return FromQr(rows());
+  const Eigen::VectorXd d = ldlt.vectorD();
+  const double cutoff = kDroppedPivot * std::max(d.maxCoeff(), 0.0);
+  Eigen::VectorXd root_d(n);
+  for (int i = 0; i < n; ++i) root_d[i] = d[i] > cutoff ? std::sqrt(d[i]) : 0.0;
+
   SquareRootForm form;
-  form.z = llt.matrixL().solve(gram.row(n).head(n).transpose());
+  form.z = ldlt.transpositionsP() * gram.row(n).head(n).transpose();
+  ldlt.matrixL().solveInPlace(form.z);
+  for (int i = 0; i < n; ++i)
+    form.z[i] = root_d[i] > 0.0 ? form.z[i] / root_d[i] : 0.0;
   const double squared_norm = gram(n, n);
   const double rho_squared = squared_norm - form.z.squaredNorm();
-  if (rho_squared < -kRoundingSlack * squared_norm) return FromQr(a);
-  form.r = llt.matrixU();
-  for (int i : zero_columns) form.r(i, i) = 0.0;
+  if (rho_squared < -kRoundingSlack * squared_norm) return FromQr(rows());
+  const Eigen::MatrixXd upper = ldlt.matrixU();
+  const Eigen::MatrixXd p =
+      ldlt.transpositionsP() * Eigen::MatrixXd::Identity(n, n);
+  form.r = root_d.asDiagonal() * upper * p;
   form.rho = std::sqrt(std::max(rho_squared, 0.0));
   return form;
 }

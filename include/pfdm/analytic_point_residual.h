@@ -10,6 +10,7 @@
 #include "ceres/sized_cost_function.h"
 #include "pfdm/free_entries.h"
 #include "pfdm/model_point.h"
+#include "pfdm/square_root_form.h"
 
 namespace pfdm {
 
@@ -85,6 +86,9 @@ using AnalyticSurfaceResidual = AnalyticResidual<1>;  // With a normal.
 // n + 1 rows with the same cost, gradient and J^T J as its 3 rows per
 // point.  Evaluated without Jacobians it gives (|r|, 0, ..., 0): the same
 // cost again.  Jacobians of blocks not in `varied` cannot be asked for then.
+// When both knots are varied over the same functions, J^T J is summed from
+// small per-point moments in the model frame, without forming J
+// (docs/jacobians.md, "The Gram matrix without J").
 class PointGroupResidual : public ceres::CostFunction {
  public:
   PointGroupResidual(std::vector<PointSample> samples, FunctionMask free_mask,
@@ -97,6 +101,13 @@ class PointGroupResidual : public ceres::CostFunction {
   bool compressed() const { return compressed_; }
 
  private:
+  double ResidualNorm(const double* const* blocks,
+                      const Eigen::Matrix3d& rotation) const;
+  RowMajorMatrix StackedRows(const double* const* blocks,
+                             const Eigen::Matrix3d& rotation) const;
+  Eigen::MatrixXd MomentGram(const double* const* blocks,
+                             const Eigen::Matrix3d& rotation) const;
+
   std::vector<PointSample> samples_;
   FunctionMask free_mask_;
   bool unit_exponents_;
@@ -107,6 +118,7 @@ class PointGroupResidual : public ceres::CostFunction {
   int columns_ = 0;
   int rows_ = 0;
   bool compressed_ = false;
+  bool knots_alike_ = false;  // Both knots varied, over the same functions.
 };
 
 }  // namespace pfdm
