@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "benchmark/benchmark.h"
-#include "pfdm/analytic_point_residual.h"
 #include "pfdm/data_cost.h"
 #include "pfdm/model.h"
+#include "pfdm/point_group_residual.h"
 
 namespace pfdm {
 namespace {

@@ -8,10 +8,10 @@
 #include <unordered_map>
 
 #include "ceres/ceres.h"
-#include "pfdm/analytic_point_residual.h"
 #include "pfdm/data_cost.h"
 #include "pfdm/error.h"
 #include "pfdm/free_entries.h"
+#include "pfdm/point_group_residual.h"
 #include "pfdm/point_residual.h"
 #include "pfdm/regularizer.h"
 
