@@ -81,8 +81,7 @@ PointGroupResidual::PointGroupResidual(
                           : std::vector<int>(std::begin(kAllFunctions),
                                              std::end(kAllFunctions));
   };
-  knots_alike_ = getenv("NOMOM") == nullptr && varied_[3] && varied_[4] &&
-                 functions(1) == functions(2);
+  knots_alike_ = varied_[3] && varied_[4] && functions(1) == functions(2);
   set_num_residuals(compressed_ ? columns_ + 1 : rows_);
 }
 
