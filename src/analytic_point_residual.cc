@@ -110,11 +110,9 @@ void EvaluateSample(const PointSample& sample, FunctionMask free_mask,
     if (!layout.first[2 + block]) continue;
     const int width = layout.width[block];
     for (int c = 0; c < width; ++c) {
-      // The globals supply the functions that are not free, the two knots
-      // the free ones.
       const int function = layout.functions[block][c];
-      const bool free = (free_mask >> function) & 1u;
-      const double weight = free != (block == 0) ? block_weight[block] : 0.0;
+      const double weight =
+          Supplies(block, free_mask, function) ? block_weight[block] : 0.0;
       for (int r = 0; r < 3; ++r) {
         rows[r * width + c] = weight * dx_df(r, function);
       }

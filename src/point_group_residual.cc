@@ -17,6 +17,7 @@ using internal::kBlockSizes;
 using internal::RotationJacobian;
 using internal::RotationMatrix;
 using internal::RowLayout;
+using internal::Supplies;
 
 namespace {
 
@@ -230,24 +231,17 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
           Eigen::Map<Eigen::Matrix<double, 3, 4, Eigen::RowMajor>>(world);
       column += 4;
     }
-    // The globals supply the functions that are not free, the knots the
-    // free ones.
-    for (int c = 0; varied_[2] && c < widths_[2]; ++c, ++column) {
-      const int function = layout.functions[0][c];
-      if ((free_mask_ >> function) & 1u) {
-        g.col(column).setZero();
-      } else {
-        g.col(column) = ds.col(function);
+    auto add_columns = [&](int block, int width, const int* functions) {
+      for (int c = 0; c < width; ++c, ++column) {
+        if (Supplies(block, free_mask_, functions[c])) {
+          g.col(column) = ds.col(functions[c]);
+        } else {
+          g.col(column).setZero();
+        }
       }
-    }
-    for (int c = 0; c < m; ++c, ++column) {
-      const int function = knot_functions[c];
-      if ((free_mask_ >> function) & 1u) {
-        g.col(column) = ds.col(function);
-      } else {
-        g.col(column).setZero();
-      }
-    }
+    };
+    if (varied_[2]) add_columns(0, widths_[2], layout.functions[0]);
+    add_columns(1, m, knot_functions);
     g.col(r) = s + model_from_world * (center - sample.data);
     int num_rows = 3;
     if (sample.has_normal) {

@@ -17,6 +17,14 @@ constexpr int kBlockSizes[5] = {3, 4, kNumFunctions, kNumFunctions,
 constexpr int kAllFunctions[kNumFunctions] = {0, 1, 2, 3,  4,  5,  6,
                                               7, 8, 9, 10, 11, 12, 13};
 
+// Whether `block` (0: the globals, 1 and 2: the two knots) supplies
+// `function`: the globals supply the functions that are not free, the knots
+// the free ones.
+inline bool Supplies(int block, FunctionMask free_mask, int function) {
+  const bool free = (free_mask >> function) & 1u;
+  return free != (block == 0);
+}
+
 // d(R(q) s)/dq (3 x 4, row major) for R(q) s as UnitQuaternionRotatePoint
 // computes it: s + 2w (v x s) + 2 v (v . s) - 2 s |v|^2.
 void RotationJacobian(const double* q, const Eigen::Vector3d& s,

@@ -1,5 +1,6 @@
 #include "pfdm/square_root_form.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -10,13 +11,9 @@
 namespace pfdm {
 namespace {
 
-// How far |z|^2 may exceed |r|^2 from rounding before the Cholesky route
-// is distrusted.
+// How far |z|^2 may exceed |r|^2 from rounding before the factorization is
+// distrusted.
 constexpr double kRoundingSlack = 1e-12;
-// Pivots below this fraction of the largest count as zero: dropping one
-// changes J^T J by less than that fraction and the gradient by less than
-// its square root, far below what a Levenberg-Marquardt step resolves.
-constexpr double kDroppedPivot = 0.0;
 
 // Householder QR of [J r]: slower, but needs no definiteness.
 SquareRootForm FromQr(const RowMajorMatrix& a) {
@@ -42,24 +39,26 @@ SquareRootForm ToSquareRootForm(const RowMajorMatrix& a) {
 // not be triangular, only satisfy the identities.  J^T J is often singular
 // (b1 while b0 = 0, a knot whose weight is 0 for every point, a rotation
 // about the axis of a round model); pivoting puts those directions last,
-// where their pivots are dropped.  What rounding does to a near-singular J
-// can still spoil z, which |z| > |r| exposes; then the QR decides.
+// where pivots <= 0 are dropped.  Small positive ones are kept: dropping
+// even those below 1e-14 of the largest perturbs the gradient by up to the
+// square root of that, which cost frame 0 an extra iteration.  What
+// rounding does to a near-singular J can still spoil z, which |z| > |r|
+// exposes; then the QR decides.
 SquareRootForm SquareRootFormFromGram(
     Eigen::MatrixXd gram, const std::function<RowMajorMatrix()>& rows) {
   const int n = static_cast<int>(gram.cols()) - 1;
   const Eigen::LDLT<Eigen::MatrixXd, Eigen::Lower> ldlt(
       gram.topLeftCorner(n, n));
   if (ldlt.info() != Eigen::Success) return FromQr(rows());
-  const Eigen::VectorXd d = ldlt.vectorD();
-  const double cutoff = kDroppedPivot * std::max(d.maxCoeff(), 0.0);
-  Eigen::VectorXd root_d(n);
-  for (int i = 0; i < n; ++i) root_d[i] = d[i] > cutoff ? std::sqrt(d[i]) : 0.0;
-
   SquareRootForm form;
   form.z = ldlt.transpositionsP() * gram.row(n).head(n).transpose();
   ldlt.matrixL().solveInPlace(form.z);
-  for (int i = 0; i < n; ++i)
-    form.z[i] = root_d[i] > 0.0 ? form.z[i] / root_d[i] : 0.0;
+  Eigen::VectorXd root_d = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < n; ++i) {
+    const double d = ldlt.vectorD()[i];
+    if (d > 0.0) root_d[i] = std::sqrt(d);
+    form.z[i] = d > 0.0 ? form.z[i] / root_d[i] : 0.0;
+  }
   const double squared_norm = gram(n, n);
   const double rho_squared = squared_norm - form.z.squaredNorm();
   if (rho_squared < -kRoundingSlack * squared_norm) return FromQr(rows());
