@@ -12,7 +12,7 @@ case,points,contours
 phantom1,phantom1.csv,
 phantom2,phantom2.csv,
 phantom3,phantom3.csv,
-biv-me-patient1,$(realpath "$DATA/biv-me-patient1/guidepoints"),lv-endo
+biv-me-patient1,$(realpath "$DATA/biv-me-patient1/guidepoints"),lv-cavity
 CSV
 "$PFDM" batch --manifest "$OUT/cohort/cases.csv" --out "$OUT/cohort/fits" --jobs 2
 "$PFDM" batch --manifest "$OUT/cohort/cases.csv" --out "$OUT/cohort/fits" --jobs 2

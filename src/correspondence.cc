@@ -138,7 +138,9 @@ Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v) {
     du[i] = x[i].v[0];
     dv[i] = x[i].v[1];
   }
-  const Eigen::Vector3d normal = du.cross(dv);
+  // v turns counter-clockwise about +z and u runs up the axis, so
+  // dv x du points out of the cavity, as the apex fallback does.
+  const Eigen::Vector3d normal = dv.cross(du);
   if (normal.norm() > 1e-9 * du.squaredNorm()) return normal.normalized();
   return -model.Rotation().col(2);
 }

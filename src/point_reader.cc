@@ -219,6 +219,9 @@ std::vector<std::string> ExpandContourAlias(const std::string& spec) {
       types.insert(types.end(), {"SAX_LV_ENDOCARDIAL", "LAX_LV_ENDOCARDIAL"});
     } else if (item == "lv-epi") {
       types.insert(types.end(), {"SAX_LV_EPICARDIAL", "LAX_LV_EPICARDIAL"});
+    } else if (item == "lv-cavity") {
+      types.insert(types.end(),
+                   {"SAX_LV_ENDOCARDIAL", "LAX_LV_ENDOCARDIAL", "AORTA_VALVE"});
     } else if (!item.empty()) {
       types.push_back(item);
     }

@@ -54,6 +54,10 @@ TEST(CorrespondenceTest, NormalIsUnitAndOrthogonalToTheSurface) {
     const Eigen::Vector3d du =
         model.WorldPoint(u + 1e-6, 0.4) - model.WorldPoint(u - 1e-6, 0.4);
     EXPECT_NEAR(n.dot(du.normalized()), 0.0, 1e-4) << u;
+    // Outward: away from the point across the same ring.
+    const Eigen::Vector3d across =
+        model.WorldPoint(u, 0.4 - M_PI) - model.WorldPoint(u, 0.4);
+    if (u > -M_PI / 2) EXPECT_LT(n.dot(across.normalized()), -0.5) << u;
   }
   // At the apex pole the normal is the axis pointing away from the base.
   EXPECT_TRUE(SurfaceNormal(model, -M_PI / 2, 0.0)

@@ -205,6 +205,9 @@ TEST(PointReaderTest, ContourAliasesExpand) {
   EXPECT_EQ(ExpandContourAlias("lv-endo,,LAX_LA"),
             (std::vector<std::string>{"SAX_LV_ENDOCARDIAL",
                                       "LAX_LV_ENDOCARDIAL", "LAX_LA"}));
+  EXPECT_EQ(ExpandContourAlias("lv-cavity"),
+            (std::vector<std::string>{"SAX_LV_ENDOCARDIAL",
+                                      "LAX_LV_ENDOCARDIAL", "AORTA_VALVE"}));
   EXPECT_TRUE(ExpandContourAlias("").empty());
   EXPECT_EQ(ExpandContourAlias(" lv-epi , LAX_LA "),
             (std::vector<std::string>{"SAX_LV_EPICARDIAL", "LAX_LV_EPICARDIAL",

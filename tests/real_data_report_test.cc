@@ -35,36 +35,41 @@ std::vector<double> MeshVolumes(const std::vector<TriangleMesh>& meshes) {
   return volumes;
 }
 
-// biv-me patient 1's LV endocardial contours: no correspondence over time,
-// so no twist; the cavity closed at each frame's mitral valve plane should
-// follow biv-me's own meshes (about 170 ml at ED, 71 ml at frame 9).
+// biv-me patient 1's LV endocardial contours with the aortic valve points
+// (lv-cavity): no correspondence over time, so no twist; the cavity closed
+// at each frame's mitral valve plane should follow biv-me's own meshes
+// (about 170 ml at ED, 71 ml at frame 9) within 10 % at every frame.  With
+// the contours alone, end-systole's outflow tract is extrapolated and
+// frames 10 and 11 come out 11.5 and 10.1 % low.
 TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
   const std::string gp = shared + "/biv-me-patient1/guidepoints";
-  const SequenceFit fit =
-      FitSequence(ReadGpFiles(gp, ExpandContourAlias("lv-endo")),
-                  ModelConfig::Paper(17), FitOptions());
   const std::vector<BasePlane> planes = MitralValvePlanes(gp);
   ASSERT_EQ(planes.size(), 25u);
-  const FitAnalysis analysis = AnalyzeFit(fit, planes);
   const std::vector<double> mesh = MeshVolumes(BivMeLvMeshes(shared));
   EXPECT_NEAR(mesh[0], 174.5, 1.0);  // The reference itself.
   EXPECT_NEAR(mesh[9], 72.0, 1.0);
+  const SequenceFit fit =
+      FitSequence(ReadGpFiles(gp, ExpandContourAlias("lv-cavity")),
+                  ModelConfig::Paper(17), FitOptions());
+  const FitAnalysis analysis = AnalyzeFit(fit, planes);
   double sum_deviation = 0.0;
   for (int t = 0; t < 25; ++t) {
     const double deviation = analysis.clinical[t].volume_ml / mesh[t] - 1.0;
     sum_deviation += std::abs(deviation);
     std::printf("frame %2d  fit %6.1f ml  biv-me mesh %6.1f ml  %+5.1f %%\n", t,
                 analysis.clinical[t].volume_ml, mesh[t], 100 * deviation);
+    EXPECT_LT(std::abs(deviation), 0.10) << "frame " << t;
+    // The two valve points per frame cost the contours no fit.
+    EXPECT_LT(fit.frames[t].rms_mm, 2.0) << "frame " << t;
   }
-  EXPECT_NEAR(analysis.clinical[0].volume_ml, mesh[0], 0.10 * mesh[0]);
-  EXPECT_NEAR(analysis.clinical[9].volume_ml, mesh[9], 0.10 * mesh[9]);
-  EXPECT_LT(sum_deviation / 25, 0.05);
-  // Where the volumes part (frames 10 and 11, 10-12 % low) the surface is
-  // still unbiased against the contours: the mean signed distance of the
-  // data along the surface normal is within 0.15 mm on every frame, so the
-  // shortfall is not a fit pulled inward by its regularizer.
+  EXPECT_LT(sum_deviation / 25, 0.03);
+  // The surface is unbiased against the points: the mean signed distance
+  // of the data along the surface normal is within 0.15 mm on every frame,
+  // so where the volumes part most (frames 6-11, up to 9 % low) it is not
+  // a fit pulled inward by its regularizer: biv-me's mesh lies 0.5-0.6 mm
+  // outside these contours there, 1.6-2.1 mm in the basal 20 mm.
   for (int t = 0; t < 25; ++t) {
     const Model model = fit.ModelAt(t);
     const FrameFit& frame = fit.frames[t];

@@ -26,7 +26,7 @@ std::optional<BasePlane> FitBasePlane(
 // point files (path as for ReadGpFiles); empty when the input is not guide
 // points or some frame has no such plane.  biv-me closes its own LV meshes
 // at the valves, and a flat lid at the highest contour point overestimates
-// the cavity by the tilt of the annulus (5-12 % on biv-me's patient 1).
+// the cavity by the tilt of the annulus (by up to 19 % on biv-me's patient 1).
 std::vector<BasePlane> MitralValvePlanes(const std::string& gp_path);
 
 }  // namespace pfdm

@@ -19,8 +19,8 @@ struct MaterialPoint {
 template <typename T>
 Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u, const T& v);
 
-// Unit normal of the model surface at (u, v), world frame.  At the
-// apex pole, where d/dv vanishes, the axis direction -z.
+// Unit outward normal of the model surface at (u, v), world frame: out of
+// the cavity.  At the apex pole, where d/dv vanishes, the axis direction -z.
 Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v);
 
 // For each point, the (u, v) in [u_min, u_max] x [-pi, pi) whose model point

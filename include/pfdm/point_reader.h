@@ -26,7 +26,12 @@ PointSequence ReadGpFiles(const std::string& path,
                           const std::vector<std::string>& contour_types);
 
 // Splits a comma-separated list, expanding lv-endo and lv-epi into the SAX
-// and LAX contour types.
+// and LAX contour types, and lv-cavity into lv-endo and the aortic valve
+// points: the cavity runs up the outflow tract to that valve, where the
+// basal contours leave it between the long-axis planes.  The mitral valve
+// points are not in it: they close the cavity (MitralValvePlanes), and
+// fitted as surface points where the annulus dips below the rim they pull
+// the basal wall inward.
 std::vector<std::string> ExpandContourAlias(const std::string& spec);
 
 }  // namespace pfdm

@@ -12,9 +12,9 @@ DEFINE_string(points, "",
               "input points: a frame,id,x,y,z CSV, or a biv-me "
               "GPFile_*.txt or a folder of them");
 DEFINE_string(format, "auto", "csv, gpfile or auto (by name)");
-DEFINE_string(contours, "lv-endo",
-              "GPFile contour types to keep, "
-              "comma-separated; lv-endo and lv-epi are aliases");
+DEFINE_string(contours, "lv-cavity",
+              "GPFile contour types to keep, comma-separated; lv-endo, "
+              "lv-epi and lv-cavity (lv-endo and AORTA_VALVE) are aliases");
 DEFINE_string(out, "", "output folder (simulate: output CSV)");
 DEFINE_string(model, "paper", "paper or superellipsoid");
 DEFINE_int32(knots, 17, "knots per parameter function");
