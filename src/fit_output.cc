@@ -126,6 +126,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
       {"jacobian", JacobianName(options.jacobian)},
       {"max_iterations", options.solver.max_iterations},
       {"threads", options.solver.num_threads}};
+  if (!points.contour_types.empty()) {
+    settings["contour_types"] = points.contour_types;
+  }
   if (options.solver.kind != SolverKind::kDirect) {
     const SolverOptions& s = options.solver;
     settings["time_step"] = s.time_step;  // 0: the solver's default.

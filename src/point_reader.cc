@@ -204,7 +204,9 @@ PointSequence ReadGpFiles(const std::string& path,
                        ": " + what);
     }
   }
-  return Assemble(path, std::move(frames));
+  PointSequence sequence = Assemble(path, std::move(frames));
+  sequence.contour_types = contour_types;
+  return sequence;
 }
 
 std::vector<std::string> ExpandContourAlias(const std::string& spec) {

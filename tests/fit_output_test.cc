@@ -59,6 +59,19 @@ TEST(FitOutputTest, JsonHasVolumesEjectionFractionAndRegions) {
   EXPECT_EQ(json["regions"][15]["twist_deg"].size(), 3u);
   EXPECT_EQ(json["regions"][15]["twist_deg"][0].get<double>(), 0.0);
   EXPECT_LT(json["regions"][15]["twist_deg"][2].get<double>(), -1.0);
+  EXPECT_EQ(json["settings"]["points"], f.phantom.points.source);
+  EXPECT_FALSE(json["settings"].contains("contour_types"));
+}
+
+// Guide points name the contour types they kept, so a fit can be redone.
+TEST(FitOutputTest, JsonNamesTheContourTypesKept) {
+  const Fitted& f = PhantomFit();
+  PointSequence points = f.phantom.points;
+  points.contour_types = {"SAX_LV_ENDOCARDIAL", "AORTA_VALVE"};
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(points, f.fit, FitOptions()));
+  EXPECT_EQ(json["settings"]["contour_types"],
+            nlohmann::json({"SAX_LV_ENDOCARDIAL", "AORTA_VALVE"}));
 }
 
 TEST(FitOutputTest, SurfaceCarriesTwistInDegreesAtEachVertex) {

@@ -136,6 +136,7 @@ TEST(PointReaderTest, GpFilesKeepTheChosenContoursAsUntrackedPoints) {
   ASSERT_EQ(sequence.frames[0].points.size(), 2u);
   EXPECT_EQ(sequence.frames[0].points[1].position, Eigen::Vector3d(7, 8, 9));
   EXPECT_NE(sequence.frames[1].points[0].id, sequence.frames[0].points[0].id);
+  EXPECT_EQ(sequence.contour_types, ExpandContourAlias("lv-endo"));
   try {
     ReadGpFiles(dir, {"APEX_POINT"});
     FAIL();

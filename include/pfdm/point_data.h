@@ -25,6 +25,9 @@ struct Frame {
 struct PointSequence {
   std::string source;         // File or folder the points came from.
   std::vector<Frame> frames;  // frames[i].index == i.
+  // Guide points: the contour types kept; empty when all were, or for
+  // other inputs.
+  std::vector<std::string> contour_types;
 };
 
 }  // namespace pfdm
