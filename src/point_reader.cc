@@ -217,13 +217,11 @@ std::vector<std::string> ExpandContourAlias(const std::string& spec) {
     // "lv-endo, lv-epi" as typed in a shell or a manifest cell.
     item.erase(0, item.find_first_not_of(" \t"));
     item.erase(item.find_last_not_of(" \t") + 1);
-    if (item == "lv-endo") {
+    if (item == "lv-endo" || item == "lv-cavity") {
       types.insert(types.end(), {"SAX_LV_ENDOCARDIAL", "LAX_LV_ENDOCARDIAL"});
+      if (item == "lv-cavity") types.push_back("AORTA_VALVE");
     } else if (item == "lv-epi") {
       types.insert(types.end(), {"SAX_LV_EPICARDIAL", "LAX_LV_EPICARDIAL"});
-    } else if (item == "lv-cavity") {
-      types.insert(types.end(),
-                   {"SAX_LV_ENDOCARDIAL", "LAX_LV_ENDOCARDIAL", "AORTA_VALVE"});
     } else if (!item.empty()) {
       types.push_back(item);
     }
