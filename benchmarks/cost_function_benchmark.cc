@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "benchmark/benchmark.h"
-#include "pfdm/data_cost.h"
-#include "pfdm/model.h"
-#include "pfdm/point_group_residual.h"
+#include "pfdm/fit/data_cost.h"
+#include "pfdm/fit/point_group_residual.h"
+#include "pfdm/model/model.h"
 
 namespace pfdm {
 namespace {

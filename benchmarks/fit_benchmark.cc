@@ -21,8 +21,8 @@
 
 #include "Eigen/Core"
 #include "benchmark/benchmark.h"
-#include "pfdm/fitter.h"
-#include "pfdm/phantom.h"
+#include "pfdm/fit/fitter.h"
+#include "pfdm/phantom/phantom.h"
 
 namespace pfdm {
 namespace {

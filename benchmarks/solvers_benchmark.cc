@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "benchmark/benchmark.h"
-#include "pfdm/fitter.h"
-#include "pfdm/phantom.h"
+#include "pfdm/fit/fitter.h"
+#include "pfdm/phantom/phantom.h"
 
 namespace pfdm {
 namespace {

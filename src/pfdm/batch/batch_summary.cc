@@ -1,0 +1,78 @@
+#include "pfdm/batch/batch_summary.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "nlohmann/json.hpp"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += (c == '\n' || c == '\r') ? ' ' : c;
+  }
+  return quoted + "\"";
+}
+
+}  // namespace
+
+CaseSummary SummaryFromFitJson(const std::string& name,
+                               const std::string& json_text,
+                               const std::string& where) {
+  CaseSummary summary;
+  summary.name = name;
+  summary.status = "done";
+  try {
+    const nlohmann::json fit = nlohmann::json::parse(json_text);
+    const nlohmann::json& frames = fit.at("frames");
+    const nlohmann::json& ef = fit.at("ejection_fraction");
+    summary.frames = static_cast<int>(frames.size());
+    for (const auto& frame : frames) {
+      summary.max_rms_mm =
+          std::max(summary.max_rms_mm, frame.at("rms_mm").get<double>());
+    }
+    summary.edv_ml = ef.at("edv_ml").get<double>();
+    summary.esv_ml = ef.at("esv_ml").get<double>();
+    summary.es_frame = ef.at("es_frame").get<int>();
+    summary.ejection_fraction = ef.at("ratio").get<double>();
+    const nlohmann::json& es = frames.at(summary.es_frame).at("clinical");
+    summary.net_twist_deg = es.at("net_twist_deg").get<double>();
+    summary.longitudinal_shortening_percent =
+        es.at("longitudinal_shortening_percent").get<double>();
+    summary.radial_contraction_percent =
+        0.5 * (es.at("radial_contraction_x_percent").get<double>() +
+               es.at("radial_contraction_y_percent").get<double>());
+  } catch (const nlohmann::json::exception& error) {
+    throw InputError(where + ": not a pfdm fit.json: " + error.what());
+  }
+  return summary;
+}
+
+std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
+  std::ostringstream out;
+  out.precision(6);
+  out << "case,status,frames,max_rms_mm,edv_ml,esv_ml,es_frame,"
+         "ejection_fraction,net_twist_at_es_deg,"
+         "longitudinal_shortening_at_es_percent,"
+         "radial_contraction_at_es_percent,error\n";
+  for (const CaseSummary& c : cases) {
+    out << CsvField(c.name) << ',' << c.status << ',';
+    if (c.status == "done") {
+      out << c.frames << ',' << c.max_rms_mm << ',' << c.edv_ml << ','
+          << c.esv_ml << ',' << c.es_frame << ',' << c.ejection_fraction << ','
+          << c.net_twist_deg << ',' << c.longitudinal_shortening_percent << ','
+          << c.radial_contraction_percent << ',';
+    } else {
+      out << ",,,,,,,,,";
+    }
+    out << CsvField(c.error) << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace pfdm

@@ -1,0 +1,38 @@
+// One row per case of a cohort run: summary.csv.
+#ifndef PFDM_BATCH_BATCH_SUMMARY_H_
+#define PFDM_BATCH_BATCH_SUMMARY_H_
+
+#include <string>
+#include <vector>
+
+namespace pfdm {
+
+struct CaseSummary {
+  std::string name;
+  std::string status;  // "done", "failed" or "pending".
+  int frames = 0;
+  double max_rms_mm = 0.0;
+  double edv_ml = 0.0;
+  double esv_ml = 0.0;
+  int es_frame = 0;
+  double ejection_fraction = 0.0;  // Ratio, (EDV - ESV) / EDV.
+  // At ES, the frame of least volume.
+  double net_twist_deg = 0.0;
+  double longitudinal_shortening_percent = 0.0;
+  double radial_contraction_percent = 0.0;  // Mean of x and y.
+  std::string error;                        // For a failed case.
+};
+
+// The numbers of a finished case, read back from its fit.json text, so a
+// resumed run summarizes cases it skipped exactly like ones it fitted.
+// Throws InputError naming `where` when the text is not a pfdm fit.json.
+CaseSummary SummaryFromFitJson(const std::string& name,
+                               const std::string& json_text,
+                               const std::string& where);
+
+// Header and one row per case; text fields quoted where they need it.
+std::string SummaryCsv(const std::vector<CaseSummary>& cases);
+
+}  // namespace pfdm
+
+#endif  // PFDM_BATCH_BATCH_SUMMARY_H_

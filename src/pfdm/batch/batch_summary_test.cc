@@ -1,0 +1,61 @@
+#include "pfdm/batch/batch_summary.h"
+
+#include "gtest/gtest.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+constexpr const char* kFitJson = R"({
+  "ejection_fraction": {"ratio": 0.6, "ed_frame": 0, "es_frame": 1,
+                        "edv_ml": 150.0, "esv_ml": 60.0},
+  "frames": [
+    {"rms_mm": 0.5, "clinical": {"net_twist_deg": 0.0,
+      "longitudinal_shortening_percent": 0.0,
+      "radial_contraction_x_percent": 0.0,
+      "radial_contraction_y_percent": 0.0}},
+    {"rms_mm": 1.25, "clinical": {"net_twist_deg": 12.5,
+      "longitudinal_shortening_percent": 15.0,
+      "radial_contraction_x_percent": 30.0,
+      "radial_contraction_y_percent": 20.0}},
+    {"rms_mm": 0.75, "clinical": {"net_twist_deg": 3.0,
+      "longitudinal_shortening_percent": 5.0,
+      "radial_contraction_x_percent": 5.0,
+      "radial_contraction_y_percent": 5.0}}]})";
+
+TEST(BatchSummaryTest, ReadsTheNumbersAtEndSystoleFromFitJson) {
+  const CaseSummary s = SummaryFromFitJson("p1", kFitJson, "p1/fit.json");
+  EXPECT_EQ(s.status, "done");
+  EXPECT_EQ(s.frames, 3);
+  EXPECT_EQ(s.max_rms_mm, 1.25);
+  EXPECT_EQ(s.es_frame, 1);
+  EXPECT_EQ(s.ejection_fraction, 0.6);
+  EXPECT_EQ(s.net_twist_deg, 12.5);
+  EXPECT_EQ(s.longitudinal_shortening_percent, 15.0);
+  EXPECT_EQ(s.radial_contraction_percent, 25.0);
+  EXPECT_THROW(SummaryFromFitJson("p1", "{\"frames\": []}", "p1/fit.json"),
+               InputError);
+}
+
+TEST(BatchSummaryTest, CsvRowsQuoteWhatNeedsIt) {
+  CaseSummary done = SummaryFromFitJson("p1", kFitJson, "x");
+  CaseSummary failed;
+  failed.name = "p2";
+  failed.status = "failed";
+  failed.error = "p2.csv:3: column 'x' is not a \"number\", sorry";
+  CaseSummary pending;
+  pending.name = "p3";
+  pending.status = "pending";
+  EXPECT_EQ(SummaryCsv({done, failed, pending}),
+            "case,status,frames,max_rms_mm,edv_ml,esv_ml,es_frame,"
+            "ejection_fraction,net_twist_at_es_deg,"
+            "longitudinal_shortening_at_es_percent,"
+            "radial_contraction_at_es_percent,error\n"
+            "p1,done,3,1.25,150,60,1,0.6,12.5,15,25,\n"
+            "p2,failed,,,,,,,,,,\"p2.csv:3: column 'x' is not a "
+            "\"\"number\"\", sorry\"\n"
+            "p3,pending,,,,,,,,,,\n");
+}
+
+}  // namespace
+}  // namespace pfdm

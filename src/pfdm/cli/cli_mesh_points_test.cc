@@ -1,0 +1,58 @@
+// pfdm mesh-points end to end: OBJ frames to tracked points and measures.
+#include <filesystem>
+
+#include "gtest/gtest.h"
+#include "pfdm/testing/test_util.h"
+
+namespace pfdm {
+namespace {
+
+// An open square pyramid (apex at z = 0, rim at z = h) as OBJ text.
+std::string Pyramid(double half_width, double h) {
+  std::string obj = "v 0 0 0\n";
+  const int corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (const auto& c : corners) {
+    obj += "v " + std::to_string(c[0] * half_width) + " " +
+           std::to_string(c[1] * half_width) + " " + std::to_string(h) + "\n";
+  }
+  return obj + "f 1 3 2\nf 1 4 3\nf 1 5 4\nf 1 2 5\n";
+}
+
+TEST(CliMeshPointsTest, ObjFolderBecomesTrackedFramesWithMeasures) {
+  const std::string dir = ScratchDirectory("mesh_points");
+  std::filesystem::create_directories(dir + "/obj");
+  WriteText(dir + "/obj/heart_LV_000.obj", Pyramid(10, 30));
+  WriteText(dir + "/obj/heart_LV_001.obj", Pyramid(8, 27));
+  WriteText(dir + "/obj/heart_RV_000.obj", Pyramid(1, 1));
+  const CommandResult run =
+      RunPfdm("mesh-points --mesh " + dir + "/obj --mesh_filter _LV_ --out " +
+              dir + "/points.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const std::string csv = ReadText(dir + "/points.csv");
+  EXPECT_EQ(csv.rfind("frame,id,x,y,z\n0,0,0,0,0\n0,1,-10,-10,30\n", 0), 0u)
+      << csv;
+  EXPECT_NE(csv.find("\n1,4,-8,8,27\n"), std::string::npos);
+  // Volume 20 x 20 x 30 / 3 = 4 ml, then 16 x 16 x 27 / 3 = 2.304 ml; the
+  // length 30 then 27 (10 %); corners 20 % nearer the axis.
+  EXPECT_NE(run.output.find("    0       4.00      30.00            0.00"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("    1       2.30      27.00           10.00"
+                            "     20.00"),
+            std::string::npos)
+      << run.output;
+}
+
+TEST(CliMeshPointsTest, UnknownFormatIsOneLine) {
+  const std::string dir = ScratchDirectory("mesh_points");
+  WriteText(dir + "/m.ply", "ply\n");
+  const CommandResult run = RunPfdm("mesh-points --mesh " + dir +
+                                    "/m.ply --out " + dir + "/points.csv");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error, "pfdm: error: " + dir +
+                           "/m.ply: unknown mesh format (use --mesh_format)\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/points.csv"));
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,35 @@
+// The pfdm subcommands, each in its own file, and what they share.
+#ifndef PFDM_CLI_COMMANDS_H_
+#define PFDM_CLI_COMMANDS_H_
+
+#include "gflags/gflags.h"
+#include "pfdm/fit/fitter.h"
+#include "pfdm/model/base_plane.h"
+#include "pfdm/model/model.h"
+#include "pfdm/util/point_data.h"
+
+DECLARE_string(points);
+DECLARE_string(out);
+DECLARE_int32(threads);
+
+namespace pfdm {
+
+// Each returns the exit code; bad input throws InputError.
+int RunFit();
+int RunSimulate();
+int RunCheckJacobians();
+int RunCompareSolvers();
+int RunBatch();
+int RunMeshPoints();
+
+// From the shared flags (--points --format --contours; --model --knots;
+// --smoothness --prior --loss --loss_scale --threads --apex --base --solver).
+PointSequence PointsFromFlags();
+ModelConfig ModelConfigFromFlags();
+FitOptions FitOptionsFromFlags();
+// Per frame, the plane closing the cavity for --base_plane (fit_command.cc).
+std::vector<BasePlane> BasePlanesFromFlags(const std::string& points);
+
+}  // namespace pfdm
+
+#endif  // PFDM_CLI_COMMANDS_H_

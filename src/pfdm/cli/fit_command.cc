@@ -1,0 +1,46 @@
+// pfdm fit: fits every frame and writes fit.json, plots, report and meshes.
+#include <cstdio>
+
+#include "pfdm/cli/commands.h"
+#include "pfdm/io/fit_output.h"
+#include "pfdm/util/error.h"
+
+DEFINE_string(base_plane, "auto",
+              "fit, batch: where the cavity volume is "
+              "closed: auto (the mitral valve plane when biv-me guide points "
+              "have MITRAL_VALVE points in every frame, else rim) or rim "
+              "(a flat lid at the base rim)");
+
+namespace pfdm {
+
+std::vector<BasePlane> BasePlanesFromFlags(const std::string& points) {
+  if (FLAGS_base_plane == "rim") return {};
+  if (FLAGS_base_plane != "auto") {
+    throw InputError("unknown --base_plane '" + FLAGS_base_plane +
+                     "' (expected auto or rim)");
+  }
+  return MitralValvePlanes(points);
+}
+
+int RunFit() {
+  if (FLAGS_out.empty()) throw InputError("fit needs --out DIR");
+  const ModelConfig config = ModelConfigFromFlags();
+  const FitOptions options = FitOptionsFromFlags();
+  BasePlanesFromFlags("");  // Checks the flag before the fit.
+  const PointSequence points = PointsFromFlags();
+  const SequenceFit fit = FitSequence(points, config, options);
+  WriteFitOutputs(FLAGS_out, points, fit, options,
+                  BasePlanesFromFlags(FLAGS_points));
+  for (const FrameFit& frame : fit.frames) {
+    std::printf("frame %3d  points %5zu  rms %.3f mm  max %.3f mm  %s\n",
+                frame.frame, frame.residuals.size(), frame.rms_mm,
+                frame.max_distance_mm, frame.termination.c_str());
+  }
+  std::printf(
+      "wrote %s/fit.json, parameters.csv, parameters.svg, report.html, "
+      "frame_*.vtk, frame_*.vtp, fit.pvd\n",
+      FLAGS_out.c_str());
+  return 0;
+}
+
+}  // namespace pfdm

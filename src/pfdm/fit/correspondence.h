@@ -1,0 +1,34 @@
+// Closest material points: the (u, v) a data point is tied to.
+#ifndef PFDM_FIT_CORRESPONDENCE_H_
+#define PFDM_FIT_CORRESPONDENCE_H_
+
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/model/model.h"
+
+namespace pfdm {
+
+struct MaterialPoint {
+  double u = 0.0;
+  double v = 0.0;
+};
+
+// The model's world-space point x(u, v), for any scalar (a Jet when u and v
+// are differentiated).
+template <typename T>
+Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u, const T& v);
+
+// Unit outward normal of the model surface at (u, v), world frame: out of
+// the cavity.  At the apex pole, where d/dv vanishes, the axis direction -z.
+Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v);
+
+// For each point, the (u, v) in [u_min, u_max] x [-pi, pi) whose model point
+// is nearest: the nearest sample of a (u, v) grid, then a few damped
+// Gauss-Newton steps on |x(u, v) - p|^2.
+std::vector<MaterialPoint> ClosestMaterialPoints(
+    const Model& model, const std::vector<Eigen::Vector3d>& points);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_CORRESPONDENCE_H_

@@ -1,0 +1,303 @@
+#include "pfdm/io/fit_output.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "ceres/types.h"
+#include "nlohmann/json.hpp"
+#include "pfdm/io/vtp_writer.h"
+#include "pfdm/model/model_surface.h"
+#include "pfdm/report/clinical_summary.h"
+#include "pfdm/report/fit_plots.h"
+#include "pfdm/report/fit_report.h"
+#include "pfdm/util/atomic_file.h"
+
+namespace pfdm {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegreesPerRadian = 180.0 / kPi;
+constexpr int kSurfaceRings = 33;
+constexpr int kSurfaceMeridians = 48;
+
+constexpr const char* kGaugeConvention =
+    "a0 (scale) is set on frame 0 so that the model, a3 = 0.8 there, spans "
+    "the data from its fitted apex to the highest point along the axis, and "
+    "is held afterwards; the pose is fitted on frame 0 with tau = 0 and no "
+    "bending, the axis being the least-squares line of the ring centres "
+    "(offsets e1o, e2o with zero mean and zero linear trend over the knots), "
+    "and held in later frames, so tau(u, t) is rotation about the LV axis "
+    "relative to frame 0 and offsets, bending and a1..a3 are motion relative "
+    "to frame 0's axis; b1 and b3 are shifted by multiples of 2 (negating b0 "
+    "or b2 for odd ones, the same bend) until their knot means lie in "
+    "[0, 2).";
+
+constexpr const char* kEjectionDefinition =
+    "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; "
+    "volume_ml is the fitted cavity as cavity_closure says.";
+
+constexpr const char* kRegionsConvention =
+    "AHA-style segments: thirds of frame 0's axis from the base rim to the "
+    "apex (segments 1-6 basal, 7-12 mid, 13-16 apical), each cut into equal "
+    "sectors of longitude v counted counter-clockwise about +z (seen from "
+    "the base) from v = -180 degrees, the model's -x axis, not the RV "
+    "insertion; per frame, twist_deg is the segment's mean tau and "
+    "radial_contraction_percent the mean of 1 - r / r(frame 0), r the "
+    "distance from the ring centre.";
+
+std::string CavityClosure(const FitAnalysis& analysis) {
+  if (analysis.base_planes.empty()) {
+    return "flat lid: a fan of triangles from the base rim to its centroid";
+  }
+  return "each frame's mitral valve plane (least squares through its " +
+         std::to_string(analysis.base_planes.front().num_points) +
+         " MITRAL_VALVE guide points on frame 0), the model continued past "
+         "its base rim with its functions held at their base values";
+}
+
+bool IsLength(int f) {
+  return f == kA0 || f == kA1 || f == kA2 || f == kA3 || f == kB0 || f == kB2 ||
+         f == kE1o || f == kE2o || f == kE3o;
+}
+
+double KnotRingZ(const Model& model, double u) {
+  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
+         model.FunctionAt(kE3o, u);
+}
+
+std::string ModeName(FunctionMode mode) {
+  switch (mode) {
+    case FunctionMode::kFree:
+      return "free";
+    case FunctionMode::kConstant:
+      return "constant";
+    case FunctionMode::kFixed:
+      return "fixed";
+  }
+  return "";
+}
+
+}  // namespace
+
+double ReportedValue(const Model& model, int f, double u) {
+  const double value = model.FunctionAt(f, u);
+  if (f == kA1 || f == kA2 || f == kA3) return value * model.state.globals[kA0];
+  return value;
+}
+
+std::string ParametersCsv(const std::vector<Model>& frames) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "frame,function,knot,u,z_mm,value\n";
+  for (size_t t = 0; t < frames.size(); ++t) {
+    const Model& model = frames[t];
+    const KnotGrid grid = model.config.Grid();
+    for (int f = 0; f < kNumFunctions; ++f) {
+      for (int k = 0; k < grid.num_knots(); ++k) {
+        const double u = grid.KnotU(k);
+        out << t << ',' << FunctionName(f) << ',' << k << ',' << u << ','
+            << KnotRingZ(model, u) << ',' << ReportedValue(model, f, u) << '\n';
+      }
+    }
+  }
+  return out.str();
+}
+
+std::string FitJson(const PointSequence& points, const SequenceFit& fit,
+                    const FitOptions& options) {
+  return FitJson(points, fit, options, AnalyzeFit(fit));
+}
+
+std::string FitJson(const PointSequence& points, const SequenceFit& fit,
+                    const FitOptions& options, const FitAnalysis& analysis) {
+  using json = nlohmann::ordered_json;
+  json settings = {
+      {"points", points.source},
+      {"smoothness_weight", options.smoothness_weight},
+      {"prior_weight", options.prior_weight},
+      {"loss", options.loss},
+      {"loss_scale_mm", options.loss_scale_mm},
+      {"max_correspondence_rounds", options.max_correspondence_rounds},
+      {"correspondence_tolerance_mm", options.correspondence_tolerance_mm},
+      {"solver", SolverName(options.solver.kind)},
+      {"linear_solver",
+       ceres::LinearSolverTypeToString(options.solver.linear_solver)},
+      {"jacobian", JacobianName(options.jacobian)},
+      {"max_iterations", options.solver.max_iterations},
+      {"threads", options.solver.num_threads}};
+  if (!points.contour_types.empty()) {
+    settings["contour_types"] = points.contour_types;
+  }
+  if (options.solver.kind != SolverKind::kDirect) {
+    const SolverOptions& s = options.solver;
+    settings["time_step"] = s.time_step;  // 0: the solver's default.
+    settings["rest_tolerance"] = s.rest_tolerance;
+    settings["max_steps"] = s.max_steps;
+  }
+  if (options.solver.kind == SolverKind::kIntegrator) {
+    const DampingGroups& g = options.damping_groups;
+    settings["damping"] =
+        options.solver.damping == DampingKind::kJacobi ? "jacobi" : "unit";
+    settings["damping_scale"] = {{"pose", g.pose},
+                                 {"shape", g.shape},
+                                 {"twist", g.twist},
+                                 {"bending", g.bending},
+                                 {"offsets", g.offsets}};
+  }
+  if (options.hint) {
+    const auto& h = *options.hint;
+    settings["apex_hint"] = {h.apex.x(), h.apex.y(), h.apex.z()};
+    settings["base_hint"] = {h.base_center.x(), h.base_center.y(),
+                             h.base_center.z()};
+  }
+  json functions = json::object();
+  for (int f = 0; f < kNumFunctions; ++f) {
+    functions[FunctionName(f)] = {{"mode", ModeName(fit.config.modes[f])},
+                                  {"unit", f == kTau     ? "rad"
+                                           : IsLength(f) ? "mm"
+                                                         : "1"}};
+  }
+  json model = {{"name", fit.config.name},
+                {"knots", fit.config.num_knots},
+                {"u_min", fit.config.u_min},
+                {"u_max", fit.config.u_max},
+                {"functions", functions}};
+
+  json frames = json::array();
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    const FrameFit& frame = fit.frames[t];
+    const ClinicalSummary& summary = analysis.clinical[t];
+    frames.push_back(
+        {{"frame", frame.frame},
+         {"n_points", frame.residuals.size()},
+         {"rms_mm", frame.rms_mm},
+         {"mean_distance_mm", frame.mean_distance_mm},
+         {"max_distance_mm", frame.max_distance_mm},
+         {"iterations", frame.iterations},
+         {"correspondence_rounds", frame.correspondence_rounds},
+         {"solve_seconds", frame.solve_seconds},
+         {"termination", frame.termination},
+         {"volume_ml", summary.volume_ml},
+         {"pose",
+          {{"center_mm", frame.state.center},
+           {"quaternion_wxyz", frame.state.quaternion}}},
+         {"clinical",
+          {{"net_twist_deg", summary.net_twist_deg},
+           {"apex_rotation_deg", summary.apex_rotation_deg},
+           {"base_rotation_deg", summary.base_rotation_deg},
+           {"radial_contraction_x_percent",
+            summary.radial_contraction_x_percent},
+           {"radial_contraction_y_percent",
+            summary.radial_contraction_y_percent},
+           {"longitudinal_shortening_percent",
+            summary.longitudinal_shortening_percent},
+           {"radial_ratio_x_per_knot", summary.radial_ratio_x},
+           {"radial_ratio_y_per_knot", summary.radial_ratio_y},
+           {"longitudinal_ratio_per_knot", summary.longitudinal_ratio}}}});
+  }
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  json ejection = {{"ratio", ef.ratio},
+                   {"ed_frame", ef.ed_frame},
+                   {"es_frame", ef.es_frame},
+                   {"edv_ml", ef.edv_ml},
+                   {"esv_ml", ef.esv_ml},
+                   {"definition", kEjectionDefinition},
+                   {"cavity_closure", CavityClosure(analysis)}};
+  json regions = json::array();
+  for (size_t r = 0; r < analysis.regions.size(); ++r) {
+    const WallRegion& region = analysis.regions[r];
+    std::vector<double> twist, radial;
+    for (const auto& motion : analysis.region_motion) {
+      twist.push_back(motion[r].twist_deg);
+      radial.push_back(motion[r].radial_contraction_percent);
+    }
+    regions.push_back({{"segment", region.segment},
+                       {"name", region.Name()},
+                       {"v_range_deg",
+                        {region.v_begin * kDegreesPerRadian,
+                         region.v_end * kDegreesPerRadian}},
+                       {"twist_deg", twist},
+                       {"radial_contraction_percent", radial}});
+  }
+  json document = {{"pfdm_version", "0.1.0"},
+                   {"settings", settings},
+                   {"model", model},
+                   {"gauge_convention", kGaugeConvention},
+                   {"ejection_fraction", ejection},
+                   {"regions_convention", kRegionsConvention},
+                   {"regions", regions},
+                   {"frames", frames}};
+  return document.dump(2) + "\n";
+}
+
+VtkPolyData FramePolyData(const Model& model, const Frame& frame,
+                          const FrameFit& fit) {
+  const ModelSurface surface =
+      MakeModelSurface(model, kSurfaceRings, kSurfaceMeridians);
+  VtkPolyData data;
+  data.points = surface.mesh.points;
+  data.triangles = surface.mesh.triangles;
+  std::vector<double> u_values = surface.u, v_values = surface.v;
+  std::vector<double> is_data(data.points.size(), 0.0);
+  std::vector<Eigen::Vector3d> residuals(data.points.size(),
+                                         Eigen::Vector3d::Zero());
+  for (size_t i = 0; i < frame.points.size(); ++i) {
+    data.vertices.push_back(static_cast<int>(data.points.size()));
+    data.points.push_back(frame.points[i].position);
+    u_values.push_back(fit.material[i].u);
+    v_values.push_back(fit.material[i].v);
+    is_data.push_back(1.0);
+    residuals.push_back(fit.residuals[i]);
+  }
+  std::vector<double> twist;
+  for (double u : u_values) {
+    twist.push_back(model.FunctionAt(kTau, u) * kDegreesPerRadian);
+  }
+  data.point_scalars = {{"u", u_values},
+                        {"v", v_values},
+                        {"twist_deg", twist},
+                        {"is_data", is_data}};
+  data.point_vectors = {{"residual", residuals}};
+  return data;
+}
+
+std::string FrameVtk(const Model& model, const Frame& frame,
+                     const FrameFit& fit) {
+  return ToLegacyVtk(FramePolyData(model, frame, fit),
+                     "pfdm frame " + std::to_string(frame.index));
+}
+
+void WriteFitOutputs(const std::string& dir, const PointSequence& points,
+                     const SequenceFit& fit, const FitOptions& options,
+                     const std::vector<BasePlane>& base_planes) {
+  // Everything is rendered before the first file is written, so a failure
+  // (gnuplot missing, say) leaves no partial set behind.
+  const FitAnalysis analysis = AnalyzeFit(fit, base_planes);
+  std::vector<std::pair<std::string, std::string>> files;
+  files.emplace_back("parameters.csv", ParametersCsv(analysis.models));
+  std::vector<std::pair<double, std::string>> timesteps;
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%03d", fit.frames[t].frame);
+    const VtkPolyData data =
+        FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
+    files.emplace_back(std::string(name) + ".vtk",
+                       ToLegacyVtk(data, std::string("pfdm ") + name));
+    files.emplace_back(std::string(name) + ".vtp", ToVtkXmlPolyData(data));
+    timesteps.emplace_back(fit.frames[t].frame, std::string(name) + ".vtp");
+  }
+  files.emplace_back("fit.pvd", PvdCollection(timesteps));
+  const std::string parameters_svg = ParameterPlotsSvg(analysis.models);
+  files.emplace_back("parameters.svg", parameters_svg);
+  files.emplace_back("report.html",
+                     FitReportHtml(points, fit, analysis, parameters_svg,
+                                   CycleCurvesSvg(analysis.clinical)));
+  files.emplace_back("fit.json", FitJson(points, fit, options, analysis));
+  EnsureDirectory(dir);
+  for (const auto& [name, contents] : files) {
+    WriteFileAtomically(dir + "/" + name, contents);
+  }
+}
+
+}  // namespace pfdm

@@ -1,0 +1,50 @@
+// The files `pfdm fit` writes: fit.json, parameters.csv, parameters.svg,
+// report.html, frame_NNN.vtk and .vtp, fit.pvd.
+#ifndef PFDM_IO_FIT_OUTPUT_H_
+#define PFDM_IO_FIT_OUTPUT_H_
+
+#include <string>
+#include <vector>
+
+#include "pfdm/fit/fitter.h"
+#include "pfdm/io/vtk_writer.h"
+#include "pfdm/model/model.h"
+#include "pfdm/report/fit_analysis.h"
+#include "pfdm/util/point_data.h"
+
+namespace pfdm {
+
+// Function f at u in the unit ParametersCsv reports it in.
+double ReportedValue(const Model& model, int f, double u);
+
+// One row per frame, function and knot: frame,function,knot,u,z_mm,value.
+// Lengths (a0, a1..a3 as a0 a_i, b0, b2, offsets) in mm, tau in radians,
+// eps and b1, b3 unitless; z_mm is the knot ring's axial position in the
+// model frame.
+std::string ParametersCsv(const std::vector<Model>& frames);
+
+// Settings, model, gauge convention, per-frame errors, clinical summary and
+// cavity volume; ejection fraction and regional wall motion.
+std::string FitJson(const PointSequence& points, const SequenceFit& fit,
+                    const FitOptions& options, const FitAnalysis& analysis);
+std::string FitJson(const PointSequence& points, const SequenceFit& fit,
+                    const FitOptions& options);
+
+// The fitted surface (a u, v grid of triangles) and the data points as
+// vertices, with point data u, v, twist_deg (tau at u), is_data and the
+// residual vectors.
+VtkPolyData FramePolyData(const Model& model, const Frame& frame,
+                          const FrameFit& fit);
+std::string FrameVtk(const Model& model, const Frame& frame,
+                     const FrameFit& fit);
+
+// Writes all of the above into dir, each file atomically, once everything
+// has been computed; fit.json last, so that its presence marks a complete
+// set (pfdm batch resumes on it).  base_planes as for AnalyzeFit.
+void WriteFitOutputs(const std::string& dir, const PointSequence& points,
+                     const SequenceFit& fit, const FitOptions& options,
+                     const std::vector<BasePlane>& base_planes = {});
+
+}  // namespace pfdm
+
+#endif  // PFDM_IO_FIT_OUTPUT_H_

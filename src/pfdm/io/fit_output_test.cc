@@ -1,0 +1,137 @@
+#include "pfdm/io/fit_output.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "gtest/gtest.h"
+#include "nlohmann/json.hpp"
+#include "pfdm/model/model_surface.h"
+#include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/test_util.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Fitted {
+  Phantom phantom;
+  SequenceFit fit;
+};
+
+const Fitted& PhantomFit() {
+  static const Fitted* fitted = [] {
+    PhantomOptions options;
+    options.num_frames = 3;
+    options.num_points = 600;
+    auto* f = new Fitted{MakePhantom(options), {}};
+    f->fit =
+        FitSequence(f->phantom.points, ModelConfig::Paper(17), FitOptions());
+    return f;
+  }();
+  return *fitted;
+}
+
+TEST(FitOutputTest, JsonHasVolumesEjectionFractionAndRegions) {
+  const Fitted& f = PhantomFit();
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(f.phantom.points, f.fit, FitOptions()));
+  ASSERT_EQ(json["frames"].size(), 3u);
+  std::vector<double> volumes;
+  for (const auto& frame : json["frames"]) {
+    volumes.push_back(frame["volume_ml"].get<double>());
+  }
+  // The fitted cavity within 2 % of the true model's.
+  for (int t = 0; t < 3; ++t) {
+    const double truth = CavityVolumeMl(f.phantom.truth[t]);
+    EXPECT_NEAR(volumes[t], truth, 0.02 * truth) << t;
+  }
+  const auto& ef = json["ejection_fraction"];
+  EXPECT_EQ(ef["ed_frame"], 0);
+  EXPECT_EQ(ef["es_frame"], 2);
+  EXPECT_DOUBLE_EQ(ef["edv_ml"].get<double>(), volumes[0]);
+  EXPECT_NEAR(ef["ratio"].get<double>(), 1.0 - volumes[2] / volumes[0], 1e-12);
+  EXPECT_NE(ef["cavity_closure"].get<std::string>().find("flat lid"),
+            std::string::npos);
+  ASSERT_EQ(json["regions"].size(), 16u);
+  EXPECT_EQ(json["regions"][0]["name"], "basal 1");
+  EXPECT_EQ(json["regions"][15]["twist_deg"].size(), 3u);
+  EXPECT_EQ(json["regions"][15]["twist_deg"][0].get<double>(), 0.0);
+  EXPECT_LT(json["regions"][15]["twist_deg"][2].get<double>(), -1.0);
+  EXPECT_EQ(json["settings"]["points"], f.phantom.points.source);
+  EXPECT_FALSE(json["settings"].contains("contour_types"));
+}
+
+// Guide points name the contour types they kept, so a fit can be redone.
+TEST(FitOutputTest, JsonNamesTheContourTypesKept) {
+  const Fitted& f = PhantomFit();
+  PointSequence points = f.phantom.points;
+  points.contour_types = {"SAX_LV_ENDOCARDIAL", "AORTA_VALVE"};
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(points, f.fit, FitOptions()));
+  EXPECT_EQ(json["settings"]["contour_types"],
+            nlohmann::json({"SAX_LV_ENDOCARDIAL", "AORTA_VALVE"}));
+}
+
+TEST(FitOutputTest, SurfaceCarriesTwistInDegreesAtEachVertex) {
+  const Fitted& f = PhantomFit();
+  const Model model = f.fit.ModelAt(2);
+  const VtkPolyData data =
+      FramePolyData(model, f.phantom.points.frames[2], f.fit.frames[2]);
+  ASSERT_EQ(data.point_scalars.size(), 4u);
+  EXPECT_EQ(data.point_scalars[2].first, "twist_deg");
+  const auto& u = data.point_scalars[0].second;
+  const auto& twist = data.point_scalars[2].second;
+  ASSERT_EQ(twist.size(), data.points.size());
+  EXPECT_EQ(data.vertices.size(), 600u);
+  for (size_t i = 0; i < twist.size(); i += 97) {
+    EXPECT_NEAR(twist[i],
+                model.FunctionAt(kTau, u[i]) * 180.0 / 3.14159265358979323846,
+                1e-9);
+  }
+  // The phantom's apex turns -5 degrees by frame 4, so about -2.5 by 2.
+  EXPECT_LT(*std::min_element(twist.begin(), twist.end()), -1.5);
+}
+
+TEST(FitOutputTest, WritesEveryFileWholeWithACollectionOfTheFrames) {
+  const Fitted& f = PhantomFit();
+  const std::string dir = ScratchDirectory("fit_output") + "/out";
+  WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
+  for (const char* name : {"fit.json", "parameters.csv", "parameters.svg",
+                           "report.html", "fit.pvd", "frame_000.vtk",
+                           "frame_002.vtk", "frame_000.vtp", "frame_002.vtp"}) {
+    EXPECT_TRUE(fs::exists(dir + "/" + name)) << name;
+  }
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos);
+    ++files;
+  }
+  EXPECT_EQ(files, 11);
+  const std::string pvd = ReadText(dir + "/fit.pvd");
+  for (const char* frame :
+       {"frame_000.vtp", "frame_001.vtp", "frame_002.vtp"}) {
+    EXPECT_NE(pvd.find(frame), std::string::npos) << frame;
+  }
+  const std::string svg = ReadText(dir + "/parameters.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("twist tau (degrees)"), std::string::npos);
+  const std::string html = ReadText(dir + "/report.html");
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("ejection fraction"), std::string::npos);
+}
+
+TEST(FitOutputTest, NothingIsWrittenWhenAnOutputCannotBeMade) {
+  // The output folder is a file: one InputError, the file untouched.
+  const Fitted& f = PhantomFit();
+  const std::string dir = ScratchDirectory("fit_output");
+  WriteText(dir + "/taken", "a file");
+  EXPECT_THROW(
+      WriteFitOutputs(dir + "/taken", f.phantom.points, f.fit, FitOptions()),
+      InputError);
+  EXPECT_EQ(ReadText(dir + "/taken"), "a file");
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,232 @@
+#include "pfdm/io/point_reader.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "libfccp/csv.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+// libfccp's messages repeat the file name and run over several clauses;
+// restate them as "PATH:LINE: what".
+InputError Restate(const std::string& path, const io::error::base& error) {
+  std::string where = path;
+  if (const auto* line = dynamic_cast<const io::error::with_file_line*>(&error);
+      line != nullptr && line->file_line > 0) {
+    where += ":" + std::to_string(line->file_line);
+  }
+  std::string column;
+  if (const auto* named =
+          dynamic_cast<const io::error::with_column_name*>(&error)) {
+    column = named->column_name;
+  }
+  std::string what;
+  if (dynamic_cast<const io::error::can_not_open_file*>(&error)) {
+    what = "cannot open the file";
+  } else if (dynamic_cast<const io::error::missing_column_in_header*>(&error)) {
+    what = "missing column '" + column + "'";
+  } else if (dynamic_cast<const io::error::duplicated_column_in_header*>(
+                 &error)) {
+    what = "column '" + column + "' appears twice";
+  } else if (dynamic_cast<const io::error::header_missing*>(&error)) {
+    what = "empty file, no header";
+  } else if (dynamic_cast<const io::error::too_few_columns*>(&error)) {
+    what = "too few columns";
+  } else if (dynamic_cast<const io::error::too_many_columns*>(&error)) {
+    what = "too many columns";
+  } else if (dynamic_cast<const io::error::escaped_string_not_closed*>(
+                 &error)) {
+    what = "a quoted field is not closed";
+  } else if (dynamic_cast<const io::error::line_length_limit_exceeded*>(
+                 &error)) {
+    what = "line too long";
+  } else if (dynamic_cast<const io::error::integer_overflow*>(&error) ||
+             dynamic_cast<const io::error::integer_underflow*>(&error)) {
+    what = "column '" + column + "' is out of range";
+  } else if (!column.empty()) {
+    const auto* content =
+        dynamic_cast<const io::error::with_column_content*>(&error);
+    what = "column '" + column + "' is not a number" +
+           (content ? ": '" + std::string(content->column_content) + "'" : "");
+  } else {
+    what = error.what();
+  }
+  return InputError(where + ": " + what);
+}
+
+// libfccp splits the fields; its own float parser rounds differently from
+// strtod, so coordinates are converted by the standard library, which makes
+// written files read back bit for bit.
+double ParseCoordinate(const std::string& path, unsigned line, const char* name,
+                       const char* text) {
+  const std::string where =
+      path + ":" + std::to_string(line) + ": column '" + name + "'";
+  double value = 0.0;
+  const char* end = text + std::strlen(text);
+  // from_chars refuses the explicit plus sign that strtod and writers allow.
+  const char* begin = text[0] == '+' && text[1] != '-' ? text + 1 : text;
+  const auto [rest, error] = std::from_chars(begin, end, value);
+  if (error == std::errc::result_out_of_range) {
+    throw InputError(where + " is out of range: '" + text + "'");
+  }
+  if (error != std::errc() || rest != end || rest == begin) {
+    throw InputError(where + " is not a number: '" + text + "'");
+  }
+  if (!std::isfinite(value)) {
+    throw InputError(where + " is not a finite number");
+  }
+  return value;
+}
+
+// Orders frames and checks that 0..F-1 are all there.
+PointSequence Assemble(const std::string& path,
+                       std::map<long long, std::vector<DataPoint>> frames) {
+  PointSequence sequence;
+  sequence.source = path;
+  if (frames.empty()) throw InputError(path + ": no points");
+  int expected = 0;
+  for (auto& [index, points] : frames) {
+    if (index != expected) {
+      throw InputError(path + ": frame " + std::to_string(expected) +
+                       " has no points");
+    }
+    sequence.frames.push_back({expected, std::move(points)});
+    ++expected;
+  }
+  return sequence;
+}
+
+}  // namespace
+
+PointSequence ReadPointsCsv(const std::string& path) {
+  // fopen accepts a folder and reading it looks like an empty file.
+  if (std::filesystem::is_directory(path)) {
+    throw InputError(path + ": is a folder, not a CSV file");
+  }
+  std::map<long long, std::vector<DataPoint>> frames;
+  std::map<long long, std::set<long long>> ids;
+  try {
+    // Blank lines (a trailing one, say) are skipped, not short rows.
+    io::CSVReader<5, io::trim_chars<' ', '\t'>,
+                  io::double_quote_escape<',', '"'>, io::throw_on_overflow,
+                  io::empty_line_comment>
+        in(path);
+    in.read_header(io::ignore_extra_column, "frame", "id", "x", "y", "z");
+    long long frame, id;
+    char *x = nullptr, *y = nullptr, *z = nullptr;
+    while (in.read_row(frame, id, x, y, z)) {
+      const unsigned line = in.get_file_line();
+      const std::string where = path + ":" + std::to_string(line);
+      const Eigen::Vector3d position(ParseCoordinate(path, line, "x", x),
+                                     ParseCoordinate(path, line, "y", y),
+                                     ParseCoordinate(path, line, "z", z));
+      if (frame < 0) {
+        throw InputError(where + ": negative frame " + std::to_string(frame));
+      }
+      if (!ids[frame].insert(id).second) {
+        throw InputError(where + ": id " + std::to_string(id) +
+                         " appears twice in frame " + std::to_string(frame));
+      }
+      frames[frame].push_back({id, position});
+    }
+  } catch (const io::error::base& error) {
+    throw Restate(path, error);
+  }
+  return Assemble(path, std::move(frames));
+}
+
+PointSequence ReadGpFiles(const std::string& path,
+                          const std::vector<std::string>& contour_types) {
+  std::vector<std::string> files;
+  if (std::filesystem::is_directory(path)) {
+    for (const auto& entry : std::filesystem::directory_iterator(path)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("GPFile_", 0) == 0 && entry.path().extension() == ".txt") {
+        files.push_back(entry.path().string());
+      }
+    }
+    std::sort(files.begin(), files.end());
+    if (files.empty()) {
+      throw InputError(path + ": no GPFile_*.txt in this folder");
+    }
+  } else {
+    files.push_back(path);
+  }
+  const std::set<std::string> keep(contour_types.begin(), contour_types.end());
+  std::map<long long, std::vector<DataPoint>> frames;
+  std::int64_t next_id = 0;
+  for (size_t file_index = 0; file_index < files.size(); ++file_index) {
+    const std::string& file = files[file_index];
+    std::vector<DataPoint>& points = frames[file_index];
+    try {
+      io::CSVReader<4, io::trim_chars<' '>, io::no_quote_escape<'\t'>,
+                    io::throw_on_overflow, io::empty_line_comment>
+          in(file);
+      in.read_header(io::ignore_extra_column, "x", "y", "z", "contour type");
+      char *x = nullptr, *y = nullptr, *z = nullptr, *type = nullptr;
+      while (in.read_row(x, y, z, type)) {
+        const unsigned line = in.get_file_line();
+        const Eigen::Vector3d position(ParseCoordinate(file, line, "x", x),
+                                       ParseCoordinate(file, line, "y", y),
+                                       ParseCoordinate(file, line, "z", z));
+        if (!keep.empty() && keep.count(type) == 0) continue;
+        points.push_back({next_id++, position});
+      }
+    } catch (const io::error::base& error) {
+      throw Restate(file, error);
+    }
+  }
+  // A filter that matches nothing anywhere is a wrong type name, not a
+  // frame without contours: say so once, for the whole input.
+  std::string what = "no points";
+  if (!contour_types.empty()) {
+    what += " of contour types ";
+    for (size_t i = 0; i < contour_types.size(); ++i) {
+      what += (i > 0 ? "," : "") + contour_types[i];
+    }
+  }
+  if (next_id == 0) throw InputError(path + ": " + what);
+  for (const auto& [index, points] : frames) {
+    if (points.empty()) {
+      throw InputError(files[index] + ": frame " + std::to_string(index) +
+                       ": " + what);
+    }
+  }
+  PointSequence sequence = Assemble(path, std::move(frames));
+  sequence.contour_types = contour_types;
+  return sequence;
+}
+
+std::vector<std::string> ExpandContourAlias(const std::string& spec) {
+  std::vector<std::string> types;
+  std::istringstream in(spec);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    // "lv-endo, lv-epi" as typed in a shell or a manifest cell.
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (item == "lv-endo" || item == "lv-cavity") {
+      types.insert(types.end(), {"SAX_LV_ENDOCARDIAL", "LAX_LV_ENDOCARDIAL"});
+      if (item == "lv-cavity") types.push_back("AORTA_VALVE");
+    } else if (item == "lv-epi") {
+      types.insert(types.end(), {"SAX_LV_EPICARDIAL", "LAX_LV_EPICARDIAL"});
+    } else if (!item.empty()) {
+      types.push_back(item);
+    }
+  }
+  return types;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,240 @@
+#include "pfdm/io/point_reader.h"
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "gtest/gtest.h"
+#include "pfdm/testing/test_util.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+std::string CsvFile(const std::string& text) {
+  const std::string path = ScratchDirectory("reader") + "/points.csv";
+  WriteText(path, text);
+  return path;
+}
+
+std::string ErrorOf(const std::string& text) {
+  const std::string path = CsvFile(text);
+  try {
+    ReadPointsCsv(path);
+  } catch (const InputError& error) {
+    std::string message = error.what();
+    return message.substr(message.find("points.csv"));
+  }
+  return "no error";
+}
+
+TEST(PointReaderTest, ReadsFramesIdsAndCoordinatesInAnyColumnOrder) {
+  const PointSequence sequence =
+      ReadPointsCsv(CsvFile("id,x,y,z,frame,note\n"
+                            "7,1.5,-2,3e1,1,a\n"
+                            "7,1,2,3,0,b\n"
+                            "8,4,5,6,0,c\n"));
+  ASSERT_EQ(sequence.frames.size(), 2u);
+  EXPECT_EQ(sequence.frames[0].index, 0);
+  ASSERT_EQ(sequence.frames[0].points.size(), 2u);
+  EXPECT_EQ(sequence.frames[0].points[1].id, 8);
+  EXPECT_EQ(sequence.frames[1].points[0].position,
+            Eigen::Vector3d(1.5, -2, 30));
+}
+
+// Blank lines, a trailing one or between frames, are skipped; error line
+// numbers still count them.
+TEST(PointReaderTest, SkipsBlankLines) {
+  const PointSequence sequence =
+      ReadPointsCsv(CsvFile("frame,id,x,y,z\n0,1,2,3,4\n\n  \n1,1,5,6,7\n\n"));
+  ASSERT_EQ(sequence.frames.size(), 2u);
+  EXPECT_EQ(sequence.frames[1].points[0].position, Eigen::Vector3d(5, 6, 7));
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n\n0,1,2,3,nan\n"),
+            "points.csv:3: column 'z' is not a finite number");
+}
+
+TEST(PointReaderTest, BadInputNamesTheFileAndLine) {
+  EXPECT_EQ(ErrorOf("frame,id,x,y\n0,1,2,3\n"),
+            "points.csv: missing column 'z'");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,4\n0,2,nan,3,4\n"),
+            "points.csv:3: column 'x' is not a finite number");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,4\n0,2,abc,3,4\n"),
+            "points.csv:3: column 'x' is not a number: 'abc'");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3\n"),
+            "points.csv:2: too few columns");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,4\n2,1,2,3,4\n"),
+            "points.csv: frame 1 has no points");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,4\n0,1,2,3,5\n"),
+            "points.csv:3: id 1 appears twice in frame 0");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n-1,1,2,3,4\n"),
+            "points.csv:2: negative frame -1");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,inf,3,4\n"),
+            "points.csv:2: column 'x' is not a finite number");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,1e999\n"),
+            "points.csv:2: column 'z' is out of range: '1e999'");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,,4\n"),
+            "points.csv:2: column 'y' is not a number: ''");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\none,1,2,3,4\n"),
+            "points.csv:2: column 'frame' is not a number: 'one'");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0.5,1,2,3,4\n"),
+            "points.csv:2: column 'frame' is not a number: '0.5'");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,99999999999999999999,2,3,4\n"),
+            "points.csv:2: column 'id' is out of range");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,4,5\n"),
+            "points.csv:2: too many columns");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,\"2,3,4\n"),
+            "points.csv:2: a quoted field is not closed");
+  EXPECT_EQ(ErrorOf("frame,id,x,x,y,z\n0,1,2,3,4,5\n"),
+            "points.csv: column 'x' appears twice");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n"), "points.csv: no points");
+  EXPECT_EQ(ErrorOf(""), "points.csv: empty file, no header");
+}
+
+TEST(PointReaderTest, NumbersReadBackExactlyWithSignsAndCrLf) {
+  const PointSequence sequence =
+      ReadPointsCsv(CsvFile("frame,id,x,y,z\r\n"
+                            "0,-3,+0.1,-1e-3,0.30000000000000004\r\n"));
+  ASSERT_EQ(sequence.frames.size(), 1u);
+  const DataPoint& point = sequence.frames[0].points[0];
+  EXPECT_EQ(point.id, -3);
+  EXPECT_EQ(point.position.x(), 0.1);
+  EXPECT_EQ(point.position.y(), -1e-3);
+  EXPECT_EQ(point.position.z(), 0.1 + 0.2);
+}
+
+TEST(PointReaderTest, MissingFileOrFolderIsReported) {
+  try {
+    ReadPointsCsv("/nonexistent/tags.csv");
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(), "/nonexistent/tags.csv: cannot open the file");
+  }
+  const std::string dir = ScratchDirectory("folder");
+  try {
+    ReadPointsCsv(dir);
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), dir + ": is a folder, not a CSV file");
+  }
+}
+
+TEST(PointReaderTest, GpFilesKeepTheChosenContoursAsUntrackedPoints) {
+  const std::string dir = ScratchDirectory("gp");
+  const std::string header =
+      "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n";
+  WriteText(dir + "/GPFile_000.txt",
+            header +
+                "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t0\n"
+                "4\t5\t6\tSAX_RV_FREEWALL\t2\t1.0\t0\n"
+                "7\t8\t9\tLAX_LV_ENDOCARDIAL\t9\t1.0\t1.0\n");
+  WriteText(dir + "/GPFile_001.txt",
+            header + "1\t2\t4\tSAX_LV_ENDOCARDIAL\t2\t1.0\t1\n");
+  const PointSequence sequence =
+      ReadGpFiles(dir, ExpandContourAlias("lv-endo"));
+  ASSERT_EQ(sequence.frames.size(), 2u);
+  ASSERT_EQ(sequence.frames[0].points.size(), 2u);
+  EXPECT_EQ(sequence.frames[0].points[1].position, Eigen::Vector3d(7, 8, 9));
+  EXPECT_NE(sequence.frames[1].points[0].id, sequence.frames[0].points[0].id);
+  EXPECT_EQ(sequence.contour_types, ExpandContourAlias("lv-endo"));
+  try {
+    ReadGpFiles(dir, {"APEX_POINT"});
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              dir + ": no points of contour types APEX_POINT");
+  }
+}
+
+std::string GpErrorOf(const std::string& path,
+                      const std::vector<std::string>& types) {
+  try {
+    ReadGpFiles(path, types);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+TEST(PointReaderTest, GpFileAloneIsOneFrameAndAnEmptyFilterKeepsAll) {
+  const std::string path = ScratchDirectory("gp1") + "/GPFile_007.txt";
+  WriteText(path,
+            "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n"
+            "1.25\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t7\n"
+            "4\t5\t6\tAPEX_POINT\t9\t1.0\t1.0\n\n");  // Blank line.
+  const PointSequence sequence = ReadGpFiles(path, {});
+  EXPECT_EQ(sequence.source, path);
+  ASSERT_EQ(sequence.frames.size(), 1u);
+  EXPECT_EQ(sequence.frames[0].index, 0);
+  ASSERT_EQ(sequence.frames[0].points.size(), 2u);
+  EXPECT_EQ(sequence.frames[0].points[0].id, 0);
+  EXPECT_EQ(sequence.frames[0].points[0].position, Eigen::Vector3d(1.25, 2, 3));
+  EXPECT_EQ(sequence.frames[0].points[1].id, 1);
+}
+
+TEST(PointReaderTest, GpFileErrorsNameTheFileAndLineOrFrame) {
+  const std::string dir = ScratchDirectory("gperr");
+  const std::string header =
+      "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n";
+  WriteText(dir + "/GPFile_000.txt",
+            header + "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t0\n");
+  WriteText(dir + "/GPFile_001.txt",
+            header + "1\t2\t3\tSAX_RV_SEPTUM\t2\t1.0\t1\n");
+  WriteText(dir + "/notes.txt", "not a guide-point file");
+  EXPECT_EQ(GpErrorOf(dir, {"SAX_LV_ENDOCARDIAL"}),
+            dir +
+                "/GPFile_001.txt: frame 1: no points of contour types "
+                "SAX_LV_ENDOCARDIAL");
+  EXPECT_EQ(GpErrorOf(dir, {"APEX_POINT", "RV_INSERT"}),
+            dir + ": no points of contour types APEX_POINT,RV_INSERT");
+  WriteText(dir + "/GPFile_001.txt",
+            header +
+                "1\t2\t3\tSAX_RV_SEPTUM\t2\t1.0\t1\n"
+                "1\tnan\t3\tSAX_RV_SEPTUM\t2\t1.0\t1\n");
+  EXPECT_EQ(GpErrorOf(dir, {}),
+            dir + "/GPFile_001.txt:3: column 'y' is not a finite number");
+  WriteText(dir + "/GPFile_001.txt", "x\ty\tcontour type\n");
+  EXPECT_EQ(GpErrorOf(dir, {}), dir + "/GPFile_001.txt: missing column 'z'");
+  const std::string empty = ScratchDirectory("gpempty");
+  EXPECT_EQ(GpErrorOf(empty, {}), empty + ": no GPFile_*.txt in this folder");
+}
+
+TEST(PointReaderTest, ContourAliasesExpand) {
+  EXPECT_EQ(ExpandContourAlias("lv-epi,APEX_POINT"),
+            (std::vector<std::string>{"SAX_LV_EPICARDIAL", "LAX_LV_EPICARDIAL",
+                                      "APEX_POINT"}));
+  EXPECT_EQ(ExpandContourAlias("lv-endo,,LAX_LA"),
+            (std::vector<std::string>{"SAX_LV_ENDOCARDIAL",
+                                      "LAX_LV_ENDOCARDIAL", "LAX_LA"}));
+  EXPECT_EQ(ExpandContourAlias("lv-cavity"),
+            (std::vector<std::string>{"SAX_LV_ENDOCARDIAL",
+                                      "LAX_LV_ENDOCARDIAL", "AORTA_VALVE"}));
+  EXPECT_TRUE(ExpandContourAlias("").empty());
+  EXPECT_EQ(ExpandContourAlias(" lv-epi , LAX_LA "),
+            (std::vector<std::string>{"SAX_LV_EPICARDIAL", "LAX_LV_EPICARDIAL",
+                                      "LAX_LA"}));
+}
+
+TEST(PointReaderTest, ReadsTheBivMePatient) {
+  const std::string shared = SharedDataDirectory();
+  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
+  const PointSequence sequence = ReadGpFiles(
+      shared + "/biv-me-patient1/guidepoints", ExpandContourAlias("lv-endo"));
+  ASSERT_EQ(sequence.frames.size(), 25u);
+  std::set<std::int64_t> ids;
+  for (size_t i = 0; i < sequence.frames.size(); ++i) {
+    const Frame& frame = sequence.frames[i];
+    EXPECT_EQ(frame.index, static_cast<int>(i));
+    EXPECT_GT(frame.points.size(), 100u);
+    for (const DataPoint& point : frame.points) ids.insert(point.id);
+  }
+  // GPFile_000.txt: 233 SAX and 208 LAX LV endocardial rows.
+  EXPECT_EQ(sequence.frames[0].points.size(), 441u);
+  // Untracked: no id is shared between frames.
+  size_t total = 0;
+  for (const Frame& frame : sequence.frames) total += frame.points.size();
+  EXPECT_EQ(ids.size(), total);
+}
+
+}  // namespace
+}  // namespace pfdm

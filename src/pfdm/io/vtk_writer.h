@@ -1,0 +1,27 @@
+// Legacy ASCII VTK polydata, which ParaView opens.
+#ifndef PFDM_IO_VTK_WRITER_H_
+#define PFDM_IO_VTK_WRITER_H_
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "Eigen/Core"
+
+namespace pfdm {
+
+struct VtkPolyData {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> vertices;  // Points emitted as VERTICES cells.
+  std::vector<std::pair<std::string, std::vector<double>>> point_scalars;
+  std::vector<std::pair<std::string, std::vector<Eigen::Vector3d>>>
+      point_vectors;
+};
+
+std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title);
+
+}  // namespace pfdm
+
+#endif  // PFDM_IO_VTK_WRITER_H_

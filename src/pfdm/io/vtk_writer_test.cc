@@ -1,0 +1,129 @@
+#include "pfdm/io/vtk_writer.h"
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+// The output as whitespace-separated tokens after the two free-text lines.
+struct ParsedVtk {
+  std::string version, title;
+  std::vector<std::string> words;
+
+  // Index of the token after the first `key`.
+  size_t After(const std::string& key) const {
+    const auto it = std::find(words.begin(), words.end(), key);
+    EXPECT_NE(it, words.end()) << key;
+    return static_cast<size_t>(it - words.begin()) + 1;
+  }
+  bool Has(const std::string& key) const {
+    return std::find(words.begin(), words.end(), key) != words.end();
+  }
+  std::vector<double> Numbers(const std::string& key, size_t skip,
+                              size_t count) const {
+    std::vector<double> values;
+    for (size_t i = After(key) + skip; i < After(key) + skip + count; ++i) {
+      values.push_back(std::stod(words.at(i)));
+    }
+    return values;
+  }
+};
+
+ParsedVtk Parse(const std::string& text) {
+  ParsedVtk parsed;
+  std::istringstream in(text);
+  std::getline(in, parsed.version);
+  std::getline(in, parsed.title);
+  std::string word;
+  while (in >> word) parsed.words.push_back(word);
+  return parsed;
+}
+
+VtkPolyData Sample() {
+  VtkPolyData data;
+  data.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0.25, -2}};
+  data.triangles = {{0, 1, 2}, {1, 2, 3}};
+  data.vertices = {3};
+  data.point_scalars = {{"u", {0.1, 0.2, 0.3, 0.4}}, {"is_data", {0, 0, 0, 1}}};
+  data.point_vectors = {
+      {"residual", {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, -2, 3}}}};
+  return data;
+}
+
+TEST(VtkWriterTest, WritesHeaderPointsCellsAndPointData) {
+  const ParsedVtk vtk = Parse(ToLegacyVtk(Sample(), "pfdm frame_003"));
+  EXPECT_EQ(vtk.version, "# vtk DataFile Version 3.0");
+  EXPECT_EQ(vtk.title, "pfdm frame_003");
+  EXPECT_EQ(vtk.words[0], "ASCII");
+  EXPECT_EQ(vtk.words[vtk.After("DATASET")], "POLYDATA");
+  EXPECT_EQ(vtk.words[vtk.After("POINTS")], "4");
+  EXPECT_EQ(vtk.words[vtk.After("POINTS") + 1], "double");
+  EXPECT_EQ(vtk.Numbers("POINTS", 2, 12),
+            (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0.5, 0.25, -2}));
+  // VERTICES count, list size (1 + index per cell), then the cells.
+  EXPECT_EQ(vtk.Numbers("VERTICES", 0, 4), (std::vector<double>{1, 2, 1, 3}));
+  EXPECT_EQ(vtk.Numbers("POLYGONS", 0, 10),
+            (std::vector<double>{2, 8, 3, 0, 1, 2, 3, 1, 2, 3}));
+  EXPECT_EQ(vtk.words[vtk.After("POINT_DATA")], "4");
+  EXPECT_EQ(vtk.words[vtk.After("SCALARS")], "u");
+  EXPECT_EQ(vtk.words[vtk.After("u")], "double");
+  EXPECT_EQ(vtk.words[vtk.After("u") + 1], "1");
+  EXPECT_EQ(vtk.words[vtk.After("LOOKUP_TABLE")], "default");
+  EXPECT_EQ(vtk.Numbers("u", 4, 4), (std::vector<double>{0.1, 0.2, 0.3, 0.4}));
+  EXPECT_EQ(vtk.Numbers("is_data", 4, 4), (std::vector<double>{0, 0, 0, 1}));
+  EXPECT_EQ(vtk.words[vtk.After("VECTORS")], "residual");
+  EXPECT_EQ(vtk.words[vtk.After("residual")], "double");
+  EXPECT_EQ(vtk.Numbers("residual", 1, 12),
+            (std::vector<double>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, -2, 3}));
+  EXPECT_EQ(vtk.words.size(), vtk.After("residual") + 13);
+}
+
+TEST(VtkWriterTest, WritesNineSignificantDigits) {
+  VtkPolyData data;
+  data.points = {{1.0 / 3.0, -123456.789012, 1e-20}};
+  data.point_scalars = {{"s", {2.0 / 3.0}}};
+  const ParsedVtk vtk = Parse(ToLegacyVtk(data, "t"));
+  EXPECT_EQ(vtk.words[vtk.After("POINTS") + 2], "0.333333333");
+  EXPECT_EQ(vtk.words[vtk.After("POINTS") + 3], "-123456.789");
+  EXPECT_EQ(vtk.words[vtk.After("POINTS") + 4], "1e-20");
+  EXPECT_EQ(vtk.words.back(), "0.666666667");
+}
+
+TEST(VtkWriterTest, LeavesOutEmptySections) {
+  VtkPolyData data;
+  data.points = {{1, 2, 3}};
+  const ParsedVtk vtk = Parse(ToLegacyVtk(data, "points only"));
+  EXPECT_FALSE(vtk.Has("VERTICES"));
+  EXPECT_FALSE(vtk.Has("POLYGONS"));
+  EXPECT_FALSE(vtk.Has("POINT_DATA"));
+  EXPECT_EQ(vtk.words,
+            (std::vector<std::string>{"ASCII", "DATASET", "POLYDATA", "POINTS",
+                                      "1", "double", "1", "2", "3"}));
+}
+
+TEST(VtkWriterDeathTest, MismatchedArraysAndBadIndicesAreProgrammingErrors) {
+  VtkPolyData data = Sample();
+  data.point_scalars[0].second.pop_back();
+  EXPECT_DEATH(ToLegacyVtk(data, "t"), "u");
+  data = Sample();
+  data.point_vectors[0].second.push_back(Eigen::Vector3d::Zero());
+  EXPECT_DEATH(ToLegacyVtk(data, "t"), "residual");
+  data = Sample();
+  data.triangles.push_back({0, 1, 4});
+  EXPECT_DEATH(ToLegacyVtk(data, "t"), "Check failed");
+  data = Sample();
+  data.vertices.push_back(-1);
+  EXPECT_DEATH(ToLegacyVtk(data, "t"), "Check failed");
+  data = Sample();
+  data.point_scalars[0].first = "two words";
+  EXPECT_DEATH(ToLegacyVtk(data, "t"), "two words");
+  EXPECT_DEATH(ToLegacyVtk(Sample(), "two\nlines"), "Check failed");
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,23 @@
+// VTK XML polydata (.vtp) and ParaView collections (.pvd): ParaView's PVD
+// reader only opens XML files, so a time series needs .vtp frames.
+#ifndef PFDM_IO_VTP_WRITER_H_
+#define PFDM_IO_VTP_WRITER_H_
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pfdm/io/vtk_writer.h"
+
+namespace pfdm {
+
+// The same content as ToLegacyVtk, as ASCII VTK XML PolyData.
+std::string ToVtkXmlPolyData(const VtkPolyData& data);
+
+// A collection of (time, file) pairs, files relative to the .pvd's folder.
+std::string PvdCollection(
+    const std::vector<std::pair<double, std::string>>& timesteps);
+
+}  // namespace pfdm
+
+#endif  // PFDM_IO_VTP_WRITER_H_

@@ -1,0 +1,51 @@
+// A model point: parameter functions interpolated at u, the reference shape
+// s = T_o(T_twist(T_b(e))) and the pose x = c + R s.
+#ifndef PFDM_MODEL_MODEL_POINT_H_
+#define PFDM_MODEL_MODEL_POINT_H_
+
+#include <cstdint>
+
+#include "Eigen/Core"
+#include "ceres/rotation.h"
+#include "pfdm/model/global_deformations.h"
+#include "pfdm/model/parameter_function.h"
+#include "pfdm/model/superellipsoid.h"
+
+namespace pfdm {
+
+// Bit f set: function f is piecewise linear over the knots; clear: it takes
+// its one value from the global block (fitted constant, or held).
+using FunctionMask = std::uint32_t;
+
+// f = (1 - w) knot0 + w knot1 for the functions in free_mask, globals
+// otherwise.  Only the two knots around u enter, which keeps the Jacobian
+// sparse.
+template <typename T, typename W>
+void InterpolateFunctions(FunctionMask free_mask, const T* globals,
+                          const T* knot0, const T* knot1, const W& weight,
+                          T* f) {
+  for (int i = 0; i < kNumFunctions; ++i) {
+    f[i] = (free_mask >> i) & 1u ? (1.0 - weight) * knot0[i] + weight * knot1[i]
+                                 : globals[i];
+  }
+}
+
+template <typename T, typename A>
+Eigen::Matrix<T, 3, 1> ReferenceShape(const T* f, const Angles<A>& angles,
+                                      bool unit_exponents) {
+  return Offset(f,
+                Twist(f, Bend(f, Superellipsoid(f, angles, unit_exponents))));
+}
+
+// x = c + R(q) p with q = (w, x, y, z) a unit quaternion.
+template <typename T>
+Eigen::Matrix<T, 3, 1> WorldFromModel(const T* center, const T* quaternion,
+                                      const Eigen::Matrix<T, 3, 1>& p) {
+  Eigen::Matrix<T, 3, 1> x;
+  ceres::UnitQuaternionRotatePoint(quaternion, p.data(), x.data());
+  return x + Eigen::Map<const Eigen::Matrix<T, 3, 1>>(center);
+}
+
+}  // namespace pfdm
+
+#endif  // PFDM_MODEL_MODEL_POINT_H_

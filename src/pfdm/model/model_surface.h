@@ -1,0 +1,39 @@
+// The fitted model as a triangle mesh, and the cavity volume it encloses.
+#ifndef PFDM_MODEL_MODEL_SURFACE_H_
+#define PFDM_MODEL_MODEL_SURFACE_H_
+
+#include <optional>
+#include <vector>
+
+#include "pfdm/model/base_plane.h"
+#include "pfdm/model/model.h"
+#include "pfdm/util/triangle_mesh.h"
+
+namespace pfdm {
+
+// A (u, v) grid of the model surface in world coordinates: `rings` latitudes
+// equally spaced in u from u_min to u_max, `meridians` longitudes from -pi.
+// A ring at the apex pole (cos u = 0) is one vertex, so the only open
+// boundary is the base rim.  Triangles face outward.
+struct ModelSurface {
+  TriangleMesh mesh;
+  std::vector<double> u;  // Per vertex.
+  std::vector<double> v;
+};
+
+// u_end > u_max continues the surface past the base rim with every
+// function held at its base value; u_end = pi/2 closes it at a top pole.
+ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
+                              std::optional<double> u_end = std::nullopt);
+
+// Volume (ml) of the cavity.  Without a base plane: the model surface
+// closed at the base by a fan of triangles around the rim's centroid (a
+// flat lid for a planar rim).  With one: the model continued past its rim
+// (see MakeModelSurface) and cut by the plane, keeping the apex's side, so a
+// tilted annulus is followed where the flat lid would cut across it.
+// Sampled finely enough that a sphere comes out within 0.1 %.
+double CavityVolumeMl(const Model& model, const BasePlane* base = nullptr);
+
+}  // namespace pfdm
+
+#endif  // PFDM_MODEL_MODEL_SURFACE_H_

@@ -1,0 +1,95 @@
+#include "pfdm/model/model_surface.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// a0 = 50 mm with radii 30 and 25 mm and half-length 40 mm: an ellipsoid cut
+// at the base rim, z = 40 sin(pi/6) = 20 mm.
+Model Ellipsoid() {
+  FunctionValues values = DefaultFunctionValues();
+  values[kA0] = 50.0;
+  values[kA1] = 0.6;
+  values[kA2] = 0.5;
+  values[kA3] = 0.8;
+  return Model::Uniform(ModelConfig::Paper(17), values);
+}
+
+// Volume of the ellipsoid with semi-axes a, b, c below z = s c: the unit
+// ball's below z = s, pi (1 + s)^2 (2 - s) / 3, scaled by abc.  ml.
+double EllipsoidVolumeBelow(double a, double b, double c, double s) {
+  return kPi * a * b * c * (1 + s) * (1 + s) * (2 - s) / 3.0 / 1000.0;
+}
+
+TEST(ModelSurfaceTest, ApexIsOneVertexAndTheRimTheOnlyBoundary) {
+  const ModelSurface surface = MakeModelSurface(Ellipsoid(), 9, 12);
+  EXPECT_EQ(surface.mesh.points.size(), 1u + 8u * 12u);
+  const auto loops = BoundaryLoops(surface.mesh);
+  ASSERT_EQ(loops.size(), 1u);
+  EXPECT_EQ(loops[0].size(), 12u);
+  for (int i : loops[0]) EXPECT_NEAR(surface.u[i], kPi / 6, 1e-12);
+  // Triangles face outward: the capped surface's signed sum is positive.
+  const TriangleMesh closed = CapBoundaryLoops(surface.mesh);
+  double six_volume = 0.0;
+  for (const auto& t : closed.triangles) {
+    six_volume +=
+        closed.points[t[0]].dot(closed.points[t[1]].cross(closed.points[t[2]]));
+  }
+  EXPECT_GT(six_volume, 0.0);
+}
+
+TEST(ModelSurfaceTest, CappedEllipsoidMatchesTheAnalyticVolume) {
+  const double expected = EllipsoidVolumeBelow(30, 25, 40, 0.5);  // 106.0 ml
+  EXPECT_NEAR(CavityVolumeMl(Ellipsoid()), expected, 0.005 * expected);
+  // A sphere too (a1 = a2 = a3): 1.125 pi r^3.
+  Model sphere = Ellipsoid();
+  for (auto& knot : sphere.state.knots) knot[kA1] = knot[kA2] = knot[kA3] = 0.8;
+  const double sphere_volume = EllipsoidVolumeBelow(40, 40, 40, 0.5);
+  EXPECT_NEAR(CavityVolumeMl(sphere), sphere_volume, 0.005 * sphere_volume);
+}
+
+TEST(ModelSurfaceTest, TwistOffsetsAndPoseKeepTheVolume) {
+  // Twist turns and offsets shift each ring within its own plane, which
+  // keeps every cross-section's area (Cavalieri); the pose moves it rigidly.
+  const double plain = CavityVolumeMl(Ellipsoid());
+  Model moved = Ellipsoid();
+  const int k = moved.config.num_knots;
+  for (int i = 0; i < k; ++i) {
+    moved.state.knots[i][kTau] = 0.3 * i / (k - 1) - 0.1;
+    moved.state.knots[i][kE1o] = 3.0 * std::sin(i);
+    moved.state.knots[i][kE2o] = -2.0 * i / (k - 1);
+  }
+  EXPECT_NEAR(CavityVolumeMl(moved), plain, 0.002 * plain);
+  moved.state.center = {10.0, -20.0, 30.0};
+  const double half = std::sqrt(0.5);
+  moved.state.quaternion = {half, half, 0.0, 0.0};
+  EXPECT_NEAR(CavityVolumeMl(moved), plain, 0.002 * plain);
+}
+
+TEST(ModelSurfaceTest, BasePlaneCutsTheContinuedSurface) {
+  const Model model = Ellipsoid();
+  // At the rim, across the axis: the flat lid's volume.
+  BasePlane rim{{0, 0, 20}, {0, 0, 1}, 3};
+  EXPECT_NEAR(CavityVolumeMl(model, &rim), CavityVolumeMl(model),
+              0.003 * CavityVolumeMl(model));
+  // Through the centre at any tilt: half the whole ellipsoid, the part past
+  // the rim being the surface continued with its base values.
+  const double half = EllipsoidVolumeBelow(30, 25, 40, 0.0);
+  BasePlane tilted{{0, 0, 0}, Eigen::Vector3d(0.3, -0.2, 1).normalized(), 3};
+  EXPECT_NEAR(CavityVolumeMl(model, &tilted), half, 0.005 * half);
+  // The normal's sign does not matter: the apex side is kept.
+  tilted.normal = -tilted.normal;
+  EXPECT_NEAR(CavityVolumeMl(model, &tilted), half, 0.005 * half);
+  // Above the rim, by 10 mm: more than the flat lid.
+  BasePlane high{{0, 0, 30}, {0, 0, 1}, 3};
+  EXPECT_NEAR(CavityVolumeMl(model, &high),
+              EllipsoidVolumeBelow(30, 25, 40, 0.75), 0.005 * 120.0);
+}
+
+}  // namespace
+}  // namespace pfdm

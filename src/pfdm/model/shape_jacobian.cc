@@ -1,0 +1,114 @@
+#include "pfdm/model/shape_jacobian.h"
+
+#include <cmath>
+
+namespace pfdm {
+namespace {
+
+constexpr double kHalfPi = 1.57079632679489661923;
+
+enum ShapeAngle { kPhase1, kBend1, kPhase2, kBend2, kTwist };
+
+// SignedPower and its derivative in the exponent:
+// d/de [x (x^2 + d^2)^((e-1)/2)] = SignedPower(x, e) ln(x^2 + d^2) / 2.
+Power PowerOf(double x, double e, bool unit_exponents) {
+  if (unit_exponents) return {x, 0.0};
+  const double base = x * x + kSignedPowerDelta * kSignedPowerDelta;
+  const double value = SignedPower(x, e);
+  return {value, 0.5 * value * std::log(base)};
+}
+
+}  // namespace
+
+ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
+                          bool unit_exponents) {
+  ShapePrelude prelude;
+  prelude.cu = PowerOf(angles.cos_u, f[kEps1], unit_exponents);
+  prelude.su = PowerOf(angles.sin_u, f[kEps1], unit_exponents);
+  prelude.cv = PowerOf(angles.cos_v, f[kEps2], unit_exponents);
+  prelude.sv = PowerOf(angles.sin_v, f[kEps2], unit_exponents);
+  const double x1 = f[kA1] * prelude.cu.value * prelude.cv.value;
+  const double x2 = f[kA2] * prelude.cu.value * prelude.sv.value;
+  prelude.angles[kPhase1] = kHalfPi * (x1 - f[kB1]);
+  prelude.angles[kBend1] = kHalfPi * f[kB1];
+  prelude.angles[kPhase2] = kHalfPi * (x2 - f[kB3]);
+  prelude.angles[kBend2] = kHalfPi * f[kB3];
+  prelude.angles[kTwist] = f[kTau];
+  return prelude;
+}
+
+Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
+                                 bool unit_exponents, ShapeJacobian* jacobian) {
+  const ShapePrelude prelude = PrepareShape(f, angles, unit_exponents);
+  double sines[kNumShapeAngles], cosines[kNumShapeAngles];
+  for (int i = 0; i < kNumShapeAngles; ++i) {
+    sines[i] = std::sin(prelude.angles[i]);
+    cosines[i] = std::cos(prelude.angles[i]);
+  }
+  return ShapeAndJacobian(f, prelude, sines, cosines, jacobian);
+}
+
+// With e the primitive, b = T_b(e), t = Rz(tau) b and s = t + o:
+//   ds/df = Rz (B_e de/df + db/df|_e) + dt/dtau + do/df,
+// B_e = I + e3 (beta1, beta2, 0)^T, beta_i = b_{2i-2} g_x(e_i / a0, b_{2i-1}) /
+// a0, g(x, b) = cos(pi/2 (x - b)) - cos(pi/2 b).
+Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
+                                 const double* sines, const double* cosines,
+                                 ShapeJacobian* jacobian) {
+  const Power &cu = prelude.cu, &su = prelude.su, &cv = prelude.cv,
+              &sv = prelude.sv;
+  const double a0 = f[kA0];
+  const Eigen::Vector3d e(a0 * f[kA1] * cu.value * cv.value,
+                          a0 * f[kA2] * cu.value * sv.value,
+                          a0 * f[kA3] * su.value);
+
+  const double x1 = f[kA1] * cu.value * cv.value;
+  const double x2 = f[kA2] * cu.value * sv.value;
+  const double g1 = cosines[kPhase1] - cosines[kBend1];
+  const double g2 = cosines[kPhase2] - cosines[kBend2];
+  const Eigen::Vector3d b(e[0], e[1], e[2] + f[kB0] * g1 + f[kB2] * g2);
+
+  const double c = cosines[kTwist], s = sines[kTwist];
+  const Eigen::Vector3d t(c * b[0] - s * b[1], s * b[0] + c * b[1], b[2]);
+  const Eigen::Vector3d shape = t + Eigen::Vector3d(f[kE1o], f[kE2o], f[kE3o]);
+  if (jacobian == nullptr) return shape;
+
+  // de/df: only a0, a1..a3 and the exponents enter the primitive.
+  Eigen::Matrix<double, 3, kNumFunctions> de =
+      Eigen::Matrix<double, 3, kNumFunctions>::Zero();
+  de.col(kA0) = e / a0;
+  de(0, kA1) = a0 * cu.value * cv.value;
+  de(1, kA2) = a0 * cu.value * sv.value;
+  de(2, kA3) = a0 * su.value;
+  de(0, kEps1) = a0 * f[kA1] * cu.d_exponent * cv.value;
+  de(1, kEps1) = a0 * f[kA2] * cu.d_exponent * sv.value;
+  de(2, kEps1) = a0 * f[kA3] * su.d_exponent;
+  de(0, kEps2) = a0 * f[kA1] * cu.value * cv.d_exponent;
+  de(1, kEps2) = a0 * f[kA2] * cu.value * sv.d_exponent;
+
+  // db/df = B_e de/df + the bend's own dependence on a0 and b0..b3.
+  const double gx1 = -kHalfPi * sines[kPhase1];
+  const double gx2 = -kHalfPi * sines[kPhase2];
+  const double beta1 = f[kB0] * gx1 / a0, beta2 = f[kB2] * gx2 / a0;
+  Eigen::Matrix<double, 3, kNumFunctions> db = de;
+  db.row(2) += beta1 * de.row(0) + beta2 * de.row(1);
+  db(2, kA0) -= beta1 * x1 + beta2 * x2;  // x_i = e_i / a0 with e_i held.
+  db(2, kB0) += g1;
+  db(2, kB1) += f[kB0] * kHalfPi * (sines[kPhase1] + sines[kBend1]);
+  db(2, kB2) += g2;
+  db(2, kB3) += f[kB2] * kHalfPi * (sines[kPhase2] + sines[kBend2]);
+
+  // Twist rotates the first two rows; tau itself turns b; offsets add.
+  ShapeJacobian& ds = *jacobian;
+  ds.row(0) = c * db.row(0) - s * db.row(1);
+  ds.row(1) = s * db.row(0) + c * db.row(1);
+  ds.row(2) = db.row(2);
+  ds(0, kTau) += -s * b[0] - c * b[1];
+  ds(1, kTau) += c * b[0] - s * b[1];
+  ds(0, kE1o) += 1.0;
+  ds(1, kE2o) += 1.0;
+  ds(2, kE3o) += 1.0;
+  return shape;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,46 @@
+// The reference shape s(f; u, v) and its Jacobian ds/df in closed form: the
+// chain J = dT_o/dt dT_twist/db dT_b/de de/df of the paper, term by term.
+#ifndef PFDM_MODEL_SHAPE_JACOBIAN_H_
+#define PFDM_MODEL_SHAPE_JACOBIAN_H_
+
+#include "Eigen/Core"
+#include "pfdm/model/parameter_function.h"
+#include "pfdm/model/superellipsoid.h"
+
+namespace pfdm {
+
+using ShapeJacobian = Eigen::Matrix<double, 3, kNumFunctions>;
+
+// A signed power (superellipsoid.h) and its derivative in the exponent.
+struct Power {
+  double value;
+  double d_exponent;
+};
+
+// What the shape needs before any sine or cosine of fitted functions: the
+// primitive's powers and the five angles (the two bends' phases and shapes,
+// the twist) whose sines and cosines follow.  Split off so that a group of
+// points can take its trigonometry in one batch (batch_trig.h).
+constexpr int kNumShapeAngles = 5;
+struct ShapePrelude {
+  Power cu, su, cv, sv;
+  double angles[kNumShapeAngles];
+};
+ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
+                          bool unit_exponents);
+
+// The shape and, when jacobian is not null, ds/df, from the prelude and the
+// sines and cosines of its angles.
+Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
+                                 const double* sines, const double* cosines,
+                                 ShapeJacobian* jacobian);
+
+// Returns s = T_o(T_twist(T_b(e))) for the function values f at the
+// material point with the given angles and, when jacobian is not null,
+// ds/df (3 x 14, one column per function).  Matches ReferenceShape.
+Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
+                                 bool unit_exponents, ShapeJacobian* jacobian);
+
+}  // namespace pfdm
+
+#endif  // PFDM_MODEL_SHAPE_JACOBIAN_H_

@@ -1,0 +1,62 @@
+#include "pfdm/phantom/phantom.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/correspondence.h"
+
+namespace pfdm {
+namespace {
+
+TEST(PhantomTest, NoiseFreeTagsLieOnTheTruthAndKeepTheirIds) {
+  PhantomOptions options;
+  options.noise_mm = 0.0;
+  options.num_points = 300;
+  const Phantom phantom = MakePhantom(options);
+  ASSERT_EQ(phantom.points.frames.size(), 5u);
+  for (size_t t = 0; t < 5; ++t) {
+    const Frame& frame = phantom.points.frames[t];
+    ASSERT_EQ(frame.points.size(), 300u);
+    EXPECT_EQ(frame.index, static_cast<int>(t));
+    std::vector<Eigen::Vector3d> positions;
+    for (size_t i = 0; i < frame.points.size(); ++i) {
+      EXPECT_EQ(frame.points[i].id, static_cast<int>(i));
+      positions.push_back(frame.points[i].position);
+    }
+    const auto material = ClosestMaterialPoints(phantom.truth[t], positions);
+    for (size_t i = 0; i < positions.size(); ++i) {
+      EXPECT_LT((phantom.truth[t].WorldPoint(material[i].u, material[i].v) -
+                 positions[i])
+                    .norm(),
+                1e-6);
+    }
+  }
+}
+
+TEST(PhantomTest, NoiseHasTheRequestedSpread) {
+  PhantomOptions clean, noisy;
+  clean.noise_mm = 0.0;
+  noisy.noise_mm = 0.5;
+  const Phantom a = MakePhantom(clean), b = MakePhantom(noisy);
+  double sum_squared = 0.0;
+  int count = 0;
+  for (size_t i = 0; i < a.points.frames[2].points.size(); ++i) {
+    sum_squared += (a.points.frames[2].points[i].position -
+                    b.points.frames[2].points[i].position)
+                       .squaredNorm();
+    count += 3;
+  }
+  EXPECT_NEAR(std::sqrt(sum_squared / count), 0.5, 0.03);
+}
+
+TEST(PhantomTest, SizeMatchesThePaper) {
+  const Phantom phantom = MakePhantom(PhantomOptions());
+  const Model& ed = phantom.truth[0];
+  const double length =
+      (ed.WorldPoint(ed.config.u_max, 0.0) - ed.WorldPoint(-M_PI / 2, 0.0))
+          .dot(ed.Rotation().col(2));
+  EXPECT_NEAR(length, 110.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace pfdm

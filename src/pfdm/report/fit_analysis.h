@@ -1,0 +1,33 @@
+// Everything derived from a fitted sequence that the outputs report.
+#ifndef PFDM_REPORT_FIT_ANALYSIS_H_
+#define PFDM_REPORT_FIT_ANALYSIS_H_
+
+#include <vector>
+
+#include "pfdm/fit/fitter.h"
+#include "pfdm/model/base_plane.h"
+#include "pfdm/model/model.h"
+#include "pfdm/report/clinical_summary.h"
+#include "pfdm/report/wall_motion.h"
+
+namespace pfdm {
+
+struct FitAnalysis {
+  std::vector<Model> models;              // Per frame.
+  std::vector<BasePlane> base_planes;     // Empty: flat lid at the rim.
+  std::vector<ClinicalSummary> clinical;  // Per frame, against frame 0.
+  EjectionFraction ejection_fraction;
+  RegionLayout layout;
+  std::vector<WallRegion> regions;
+  std::vector<std::vector<RegionMotion>> region_motion;  // [frame][region]
+};
+
+// base_planes: one per frame to close the cavity there (see
+// CavityVolumeMl), or empty for the flat lid at the base rim.
+FitAnalysis AnalyzeFit(const SequenceFit& fit,
+                       const std::vector<BasePlane>& base_planes = {},
+                       const RegionLayout& layout = RegionLayout());
+
+}  // namespace pfdm
+
+#endif  // PFDM_REPORT_FIT_ANALYSIS_H_

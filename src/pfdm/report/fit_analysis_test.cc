@@ -1,0 +1,65 @@
+#include "pfdm/report/fit_analysis.h"
+
+#include "gtest/gtest.h"
+#include "pfdm/model/model_surface.h"
+#include "pfdm/phantom/phantom.h"
+
+namespace pfdm {
+namespace {
+
+SequenceFit TruthAsFit(const Phantom& phantom) {
+  SequenceFit fit;
+  fit.config = phantom.truth[0].config;
+  for (size_t t = 0; t < phantom.truth.size(); ++t) {
+    FrameFit frame;
+    frame.frame = static_cast<int>(t);
+    frame.state = phantom.truth[t].state;
+    fit.frames.push_back(frame);
+  }
+  return fit;
+}
+
+TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  const FitAnalysis analysis = AnalyzeFit(TruthAsFit(phantom));
+  ASSERT_EQ(analysis.clinical.size(), 5u);
+  EXPECT_TRUE(analysis.base_planes.empty());
+  EXPECT_NEAR(analysis.clinical[4].net_twist_deg, 7.0 - 7.0 / 16.0, 1e-9);
+  EXPECT_EQ(analysis.ejection_fraction.es_frame, 4);
+  ASSERT_EQ(analysis.region_motion.size(), 5u);
+  ASSERT_EQ(analysis.region_motion[4].size(), 16u);
+  // The phantom's a1 shrinks 20 % everywhere and a2 by 20 % at the apex to
+  // 10 % at the base: every segment contracts by 10-20 %.
+  for (const RegionMotion& m : analysis.region_motion[4]) {
+    EXPECT_GT(m.radial_contraction_percent, 9.0);
+    EXPECT_LT(m.radial_contraction_percent, 21.0);
+  }
+  // Apical segments turn clockwise (tau < 0), basal ones counter-clockwise.
+  EXPECT_LT(analysis.region_motion[4][15].twist_deg, -2.0);
+  EXPECT_GT(analysis.region_motion[4][0].twist_deg, 0.5);
+}
+
+TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  // A plane across the axis 10 mm below each frame's centre.
+  std::vector<BasePlane> planes;
+  for (const Model& model : phantom.truth) {
+    const Eigen::Vector3d axis = model.Rotation().col(2);
+    planes.push_back(
+        {Eigen::Vector3d(model.state.center.data()) - 10.0 * axis, axis, 6});
+  }
+  const FitAnalysis analysis = AnalyzeFit(TruthAsFit(phantom), planes);
+  ASSERT_EQ(analysis.base_planes.size(), 5u);
+  for (size_t t = 0; t < 5; ++t) {
+    EXPECT_DOUBLE_EQ(analysis.clinical[t].volume_ml,
+                     CavityVolumeMl(phantom.truth[t], &planes[t]));
+    EXPECT_LT(analysis.clinical[t].volume_ml, CavityVolumeMl(phantom.truth[t]));
+  }
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,174 @@
+#include "pfdm/report/fit_plots.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "pfdm/report/gnuplot.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
+
+// Frame t of n on a dark-blue to orange ramp, so systole reads as a
+// progression without a legend lookup; "#rrggbb".
+std::string FrameColor(int t, int n) {
+  static const double kStops[][3] = {{0.12, 0.16, 0.45},
+                                     {0.15, 0.55, 0.62},
+                                     {0.55, 0.75, 0.30},
+                                     {0.95, 0.55, 0.10}};
+  const double x = n > 1 ? 3.0 * t / (n - 1) : 0.0;
+  const int i = std::min(2, static_cast<int>(x));
+  const double w = x - i;
+  char color[8];
+  int rgb[3];
+  for (int c = 0; c < 3; ++c) {
+    rgb[c] = static_cast<int>(
+        std::lround(255.0 * ((1 - w) * kStops[i][c] + w * kStops[i + 1][c])));
+  }
+  std::snprintf(color, sizeof(color), "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
+  return color;
+}
+
+}  // namespace
+
+std::string RenderSvgText(const std::string& what,
+                          const std::vector<PlotData>& data,
+                          const std::string& script, int width, int height) {
+  // Unique per process and call: batch fits render from several threads.
+  static std::atomic<int> counter{0};
+  const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     ("pfdm_plot_" + std::to_string(getpid()) +
+                                      "_" + std::to_string(counter++) + ".svg");
+  try {
+    RenderSvg(data, script, path.string(), width, height);
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    throw InputError(what + message.substr(message.find(':')));
+  }
+  std::ostringstream text;
+  {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) throw InputError(what + ": gnuplot wrote nothing");
+    char buffer[65536];
+    size_t read;
+    while ((read = std::fread(buffer, 1, sizeof(buffer), file)) > 0) {
+      text.write(buffer, read);
+    }
+    std::fclose(file);
+  }
+  std::filesystem::remove(path);
+  return text.str();
+}
+
+std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
+  const int n = static_cast<int>(frames.size());
+  const int knots = frames.front().config.num_knots;
+  const KnotGrid grid = frames.front().config.Grid();
+  const Model& ed = frames.front();
+  // One block per frame, separated by two blank lines (gnuplot's "index").
+  PlotData block{"knots", {}};
+  for (int t = 0; t < n; ++t) {
+    if (t > 0) block.rows.insert(block.rows.end(), 2, {});
+    for (int k = 0; k < knots; ++k) {
+      const double u = grid.KnotU(k);
+      const Model& m = frames[t];
+      block.rows.push_back({static_cast<double>(k),
+                            m.FunctionAt(kA1, u) / ed.FunctionAt(kA1, u),
+                            m.FunctionAt(kA2, u) / ed.FunctionAt(kA2, u),
+                            m.FunctionAt(kA3, u) / ed.FunctionAt(kA3, u),
+                            m.FunctionAt(kTau, u) * kDegreesPerRadian,
+                            m.FunctionAt(kB0, u), m.FunctionAt(kB2, u)});
+    }
+  }
+  std::ostringstream colors;
+  for (int t = 0; t < n; ++t) colors << (t ? " " : "") << FrameColor(t, n);
+  std::ostringstream script;
+  script << "colors = '" << colors.str() << "'\n"
+         << "set multiplot layout 2,3 margins 0.05,0.9,0.09,0.92 "
+            "spacing 0.06,0.13 title 'Parameter functions, apex to base, "
+            "one line per frame' font 'sans,15'\n"
+         << "set grid lc rgb '#dddddd'\n"
+         << "set xrange [0:" << knots - 1 << "]\n"
+         << "set xtics 0," << std::max(1, (knots - 1) / 4) << "\n"
+         << "set xlabel 'knot (0 = apex, " << knots - 1 << " = base)'\n"
+         << "set style data linespoints\n"
+         << "set pointsize 0.5\n";
+  struct Panel {
+    int column;
+    const char* title;
+    const char* reference;  // A dashed line where no motion would be.
+  };
+  const Panel panels[] = {
+      {2, "radial: a1 / a1 at frame 0", "1"},
+      {3, "radial: a2 / a2 at frame 0", "1"},
+      {4, "longitudinal: a3 / a3 at frame 0", "1"},
+      {5, "twist tau (degrees)", "0"},
+      {6, "bending b0 (mm)", "0"},
+      {7, "bending b2 (mm)", "0"},
+  };
+  bool first = true;
+  for (const Panel& p : panels) {
+    script << "set title '" << p.title << "'\n";
+    if (first) {
+      script << "set key at screen 0.995,0.92 top right Left reverse "
+                "samplen 2 spacing 0.9 font 'sans,10' title 'frame'\n";
+    } else {
+      script << "unset key\n";
+    }
+    script << "plot " << p.reference
+           << " notitle with lines dt 2 lc rgb '#888888', "
+           << "for [t=0:" << n - 1 << "] $knots index t using 1:" << p.column
+           << " lc rgb word(colors, t + 1) pt 7 title sprintf('%d', t)\n";
+    first = false;
+  }
+  script << "unset multiplot\n";
+  return RenderSvgText("parameters.svg", {block}, script.str(), 1200, 760);
+}
+
+std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries) {
+  PlotData block{"cycle", {}};
+  for (const ClinicalSummary& s : summaries) {
+    block.rows.push_back(
+        {static_cast<double>(s.frame), s.volume_ml, s.apex_rotation_deg,
+         s.base_rotation_deg, s.net_twist_deg, s.radial_contraction_x_percent,
+         s.radial_contraction_y_percent, s.longitudinal_shortening_percent});
+  }
+  const EjectionFraction ef = EjectionFractionOf(summaries);
+  std::ostringstream script;
+  script.precision(4);
+  script << "set multiplot layout 1,3 margins 0.06,0.98,0.14,0.8 "
+            "spacing 0.07,0.1 title 'Over the cycle' font 'sans,15'\n"
+         << "set grid lc rgb '#dddddd'\nset xlabel 'frame'\n"
+         << "set style data linespoints\nset pointsize 0.6\n"
+         << "unset key\n"
+         << "set title sprintf('cavity volume, EF %.1f %%', "
+         << 100.0 * ef.ratio << ")\nset ylabel 'ml'\n"
+         << "set label 1 'ED' at " << ef.ed_frame << ',' << ef.edv_ml
+         << " offset 0.5,0.8\n"
+         << "set label 2 'ES' at " << ef.es_frame << ',' << ef.esv_ml
+         << " offset 0,-1\n"
+         << "plot $cycle using 1:2 lc rgb '#1f3f8f' pt 7 title 'volume'\n"
+         << "unset label 1\nunset label 2\n"
+         << "set key top right opaque font 'sans,10' samplen 2\n"
+         << "set title 'rotation about the LV axis'\nset ylabel 'degrees'\n"
+         << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
+            "$cycle using 1:3 lc rgb '#c0392b' pt 7 title 'apex', "
+            "'' using 1:4 lc rgb '#2471a3' pt 7 title 'base', "
+            "'' using 1:5 lc rgb '#222222' pt 5 lw 2 title 'net twist'\n"
+         << "set title 'contraction'\nset ylabel 'percent'\n"
+         << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
+            "$cycle using 1:6 lc rgb '#c0392b' pt 7 title 'radial x (a1)', "
+            "'' using 1:7 lc rgb '#e67e22' pt 7 title 'radial y (a2)', "
+            "'' using 1:8 lc rgb '#2471a3' pt 5 title 'longitudinal'\n"
+         << "unset multiplot\n";
+  return RenderSvgText("cycle.svg", {block}, script.str(), 1200, 380);
+}
+
+}  // namespace pfdm

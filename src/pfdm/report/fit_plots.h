@@ -1,0 +1,31 @@
+// The plots a physician reads a fit from, rendered by gnuplot as SVG text.
+#ifndef PFDM_REPORT_FIT_PLOTS_H_
+#define PFDM_REPORT_FIT_PLOTS_H_
+
+#include <string>
+#include <vector>
+
+#include "pfdm/model/model.h"
+#include "pfdm/report/clinical_summary.h"
+#include "pfdm/report/gnuplot.h"
+
+namespace pfdm {
+
+// The paper's Fig. 5 for every frame: a1, a2, a3 as ratios to frame 0, twist
+// tau in degrees, bending b0 and b2 in mm, each against the knot index from
+// apex to base, one line per frame (dark early, light late) with a legend.
+std::string ParameterPlotsSvg(const std::vector<Model>& frames);
+
+// Over the frames: cavity volume (ED and ES marked), apex and base rotation
+// with net twist, and radial and longitudinal contraction.
+std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries);
+
+// RenderSvg into a private temporary file, returned as text.  Throws
+// InputError(what + ": gnuplot failed ...") when gnuplot fails.
+std::string RenderSvgText(const std::string& what,
+                          const std::vector<PlotData>& data,
+                          const std::string& script, int width, int height);
+
+}  // namespace pfdm
+
+#endif  // PFDM_REPORT_FIT_PLOTS_H_

@@ -1,0 +1,78 @@
+#include "pfdm/report/fit_plots.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "gtest/gtest.h"
+#include "pfdm/phantom/phantom.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos;
+       at = text.find(what, at + 1)) {
+    ++n;
+  }
+  return n;
+}
+
+bool TemporaryPlotsLeft() {
+  const std::string prefix = "pfdm_plot_" + std::to_string(getpid()) + "_";
+  for (const auto& entry : std::filesystem::directory_iterator(
+           std::filesystem::temp_directory_path())) {
+    if (entry.path().filename().string().rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  const std::string svg = ParameterPlotsSvg(phantom.truth);
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  for (const char* title :
+       {"radial: a1 / a1 at frame 0", "radial: a2 / a2 at frame 0",
+        "longitudinal: a3 / a3 at frame 0", "twist tau (degrees)",
+        "bending b0 (mm)", "bending b2 (mm)"}) {
+    EXPECT_EQ(Count(svg, title), 1) << title;
+  }
+  // gnuplot writes a key entry as <text><tspan ...>N</tspan>; five frames.
+  for (int t = 0; t < 5; ++t) {
+    EXPECT_GE(Count(svg, ">" + std::to_string(t) + "</tspan>"), 1) << t;
+  }
+  EXPECT_FALSE(TemporaryPlotsLeft());
+}
+
+TEST(FitPlotsTest, CycleCurvesNameTheEjectionFraction) {
+  std::vector<ClinicalSummary> summaries(3);
+  const double volumes[] = {150, 60, 120};
+  for (int t = 0; t < 3; ++t) {
+    summaries[t].frame = t;
+    summaries[t].volume_ml = volumes[t];
+  }
+  const std::string svg = CycleCurvesSvg(summaries);
+  EXPECT_NE(svg.find("EF 60.0 %"), std::string::npos);
+  EXPECT_NE(svg.find("net twist"), std::string::npos);
+  EXPECT_FALSE(TemporaryPlotsLeft());
+}
+
+TEST(FitPlotsTest, GnuplotFailureNamesTheOutput) {
+  try {
+    RenderSvgText("parameters.svg", {}, "plot $nothing using 1:2", 400, 300);
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(
+        std::string(error.what()).rfind("parameters.svg: gnuplot failed", 0),
+        0u)
+        << error.what();
+  }
+  EXPECT_FALSE(TemporaryPlotsLeft());
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,205 @@
+#include "pfdm/report/fit_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+namespace pfdm {
+namespace {
+
+std::string Fixed(double value, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", digits, value);
+  return text;
+}
+
+// A background tint for a value in [-scale, scale]: orange for positive,
+// blue for negative, white at zero, so a table reads like a map.
+std::string Tint(double value, double scale) {
+  const double x = std::clamp(value / scale, -1.0, 1.0);
+  const int fade = static_cast<int>(std::lround(255 - 110 * std::abs(x)));
+  char style[64];
+  if (x >= 0) {
+    std::snprintf(style, sizeof(style), " style=\"background:#ff%02x%02x\"",
+                  std::min(255, fade + 40), fade);
+  } else {
+    std::snprintf(style, sizeof(style), " style=\"background:#%02x%02xff\"",
+                  fade, std::min(255, fade + 40));
+  }
+  return style;
+}
+
+// Whether some point id occurs in more than one frame.
+bool Tracked(const PointSequence& points) {
+  std::set<std::int64_t> seen;
+  for (const Frame& frame : points.frames) {
+    std::set<std::int64_t> here;
+    for (const DataPoint& p : frame.points) {
+      if (seen.count(p.id) > 0) return true;
+      here.insert(p.id);
+    }
+    seen.insert(here.begin(), here.end());
+  }
+  return false;
+}
+
+constexpr const char* kStyle =
+    "body{font-family:sans-serif;margin:24px;color:#222;max-width:1250px}"
+    "h1{font-size:22px}h2{font-size:18px;margin-top:28px}"
+    "table{border-collapse:collapse;font-size:13px}"
+    "td,th{border:1px solid #ccc;padding:3px 7px;text-align:right}"
+    "th{background:#f0f0f0}td.l,th.l{text-align:left}"
+    ".key{display:flex;gap:14px;flex-wrap:wrap}"
+    ".key div{border:1px solid #ccc;border-radius:6px;padding:8px 14px}"
+    ".key b{display:block;font-size:22px}"
+    "p.note{font-size:13px;color:#555;max-width:1100px}"
+    "svg{max-width:100%;height:auto}";
+
+}  // namespace
+
+std::string HtmlEscape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string InlineSvg(const std::string& svg_document) {
+  const size_t start = svg_document.find("<svg");
+  return start == std::string::npos ? "" : svg_document.substr(start);
+}
+
+std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
+                          const FitAnalysis& analysis,
+                          const std::string& parameters_svg,
+                          const std::string& cycle_svg) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  const ClinicalSummary& es = analysis.clinical[ef.es_frame];
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+    << "<title>pfdm fit: " << HtmlEscape(points.source) << "</title>"
+    << "<style>" << kStyle << "</style></head><body>\n"
+    << "<h1>Left-ventricular motion from a parameter-function fit</h1>\n"
+    << "<p>Data <code>" << HtmlEscape(points.source) << "</code>, "
+    << fit.frames.size() << " frames; model <code>"
+    << HtmlEscape(fit.config.name) << "</code> with " << fit.config.num_knots
+    << " knots from apex to base. End-diastole (ED) is frame " << ef.ed_frame
+    << ", end-systole (ES) the frame of least cavity volume, frame "
+    << ef.es_frame << ".</p>\n";
+
+  h << "<div class=\"key\">"
+    << "<div>ejection fraction<b>" << Fixed(100 * ef.ratio, 1) << " %</b>"
+    << "EDV " << Fixed(ef.edv_ml, 1) << " ml, ESV " << Fixed(ef.esv_ml, 1)
+    << " ml</div>"
+    << "<div>net twist at ES<b>" << Fixed(es.net_twist_deg, 1) << "&deg;</b>"
+    << "apex " << Fixed(es.apex_rotation_deg, 1) << "&deg;, base "
+    << Fixed(es.base_rotation_deg, 1) << "&deg;</div>"
+    << "<div>radial contraction at ES<b>"
+    << Fixed(0.5 * (es.radial_contraction_x_percent +
+                    es.radial_contraction_y_percent),
+             1)
+    << " %</b>x " << Fixed(es.radial_contraction_x_percent, 1) << " %, y "
+    << Fixed(es.radial_contraction_y_percent, 1) << " %</div>"
+    << "<div>longitudinal shortening at ES<b>"
+    << Fixed(es.longitudinal_shortening_percent, 1) << " %</b>"
+    << "apex to base-ring centre</div></div>\n";
+  h << "<p class=\"note\">Twist is rotation about the LV long axis (apex to "
+       "base) relative to ED, right-handed: seen from the apex a normal apex "
+       "turns counter-clockwise (negative) and the base clockwise "
+       "(positive), so net twist = base &minus; apex is positive, about "
+       "10&ndash;15&deg; at a normal ES. Volumes close the fitted surface "
+    << (analysis.base_planes.empty()
+            ? "with a flat lid at the base rim"
+            : "at each frame's mitral valve plane (through the MITRAL_VALVE "
+              "guide points)")
+    << ".</p>\n";
+
+  if (!Tracked(points)) {
+    h << "<p class=\"note\"><b>No tracked points:</b> no point id occurs "
+         "in more than one frame (contours, not tags), so rotation about the "
+         "axis cannot be seen and twist is held at 0; a1..a3 and bending "
+         "then describe the shape of each frame rather than the motion of "
+         "material points. Volumes and contraction of the shape still "
+         "hold.</p>\n";
+  }
+  h << "<h2>Parameter functions</h2>\n"
+    << InlineSvg(parameters_svg) << "\n"
+    << "<p class=\"note\">a1, a2: radii along the model's x and y axes; "
+       "a3: the ring's distance along the axis; each as a ratio to ED, so "
+       "0.8 is 20 % contraction. Knot 0 is the apex pole, where the data "
+       "cannot see a1, a2 or tau: its value is the smoothness "
+       "prior's extrapolation.</p>\n";
+  h << "<h2>Over the cycle</h2>\n" << InlineSvg(cycle_svg) << "\n";
+
+  h << "<h2>Per frame</h2>\n<table><tr><th>frame</th><th>points</th>"
+    << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>volume ml</th>"
+    << "<th>net twist &deg;</th><th>apex &deg;</th><th>base &deg;</th>"
+    << "<th>radial x %</th><th>radial y %</th><th>longitudinal %</th>"
+    << "<th class=\"l\">solver</th></tr>\n";
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    const FrameFit& f = fit.frames[t];
+    const ClinicalSummary& c = analysis.clinical[t];
+    h << "<tr><td>" << f.frame
+      << (static_cast<int>(t) == ef.es_frame ? " ES"
+          : t == 0                           ? " ED"
+                                             : "")
+      << "</td><td>" << f.residuals.size() << "</td><td>" << Fixed(f.rms_mm, 2)
+      << "</td><td>" << Fixed(f.mean_distance_mm, 2) << "</td><td>"
+      << Fixed(f.max_distance_mm, 2) << "</td><td>" << Fixed(c.volume_ml, 1)
+      << "</td><td>" << Fixed(c.net_twist_deg, 1) << "</td><td>"
+      << Fixed(c.apex_rotation_deg, 1) << "</td><td>"
+      << Fixed(c.base_rotation_deg, 1) << "</td><td>"
+      << Fixed(c.radial_contraction_x_percent, 1) << "</td><td>"
+      << Fixed(c.radial_contraction_y_percent, 1) << "</td><td>"
+      << Fixed(c.longitudinal_shortening_percent, 1) << "</td><td class=\"l\">"
+      << HtmlEscape(f.termination) << "</td></tr>\n";
+  }
+  h << "</table>\n";
+
+  const std::vector<RegionMotion>& motion = analysis.region_motion[ef.es_frame];
+  h << "<h2>Regional wall motion at ES (frame " << ef.es_frame << ")</h2>\n"
+    << "<table><tr><th>segment</th><th class=\"l\">region</th>"
+    << "<th>longitude v, &deg;</th><th>twist &deg;</th>"
+    << "<th>radial contraction %</th></tr>\n";
+  for (size_t r = 0; r < analysis.regions.size(); ++r) {
+    const WallRegion& region = analysis.regions[r];
+    constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+    h << "<tr><td>" << region.segment << "</td><td class=\"l\">"
+      << region.Name() << "</td><td>" << Fixed(region.v_begin * kDegrees, 0)
+      << " to " << Fixed(region.v_end * kDegrees, 0) << "</td><td"
+      << Tint(motion[r].twist_deg, 15.0) << ">" << Fixed(motion[r].twist_deg, 1)
+      << "</td><td" << Tint(motion[r].radial_contraction_percent, 40.0) << ">"
+      << Fixed(motion[r].radial_contraction_percent, 1) << "</td></tr>\n";
+  }
+  h << "</table>\n<p class=\"note\">Segments: thirds of the ED axis (basal, "
+       "mid, apical) cut into "
+    << analysis.layout.basal_sectors << ", " << analysis.layout.mid_sectors
+    << " and " << analysis.layout.apical_sectors
+    << " sectors of longitude, counted counter-clockwise seen from the base "
+       "from the model's &minus;x axis (AHA numbering, but anchored to the "
+       "model's axes, not to the RV insertion, which point data do not "
+       "show). Twist: mean rotation of the segment; radial contraction: "
+       "mean of 1 &minus; r/r<sub>ED</sub>, r the distance from the "
+       "axis.</p>\n</body></html>\n";
+  return h.str();
+}
+
+}  // namespace pfdm

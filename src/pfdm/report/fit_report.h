@@ -1,0 +1,30 @@
+// report.html: one self-contained page a clinician reads a fit from.
+#ifndef PFDM_REPORT_FIT_REPORT_H_
+#define PFDM_REPORT_FIT_REPORT_H_
+
+#include <string>
+
+#include "pfdm/fit/fitter.h"
+#include "pfdm/report/fit_analysis.h"
+#include "pfdm/util/point_data.h"
+
+namespace pfdm {
+
+// The key numbers (EF, twist and contraction at end-systole), the plots
+// (SVG documents, inlined), the per-frame error and clinical table and the
+// regional wall motion at end-systole.  No external resources.
+std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
+                          const FitAnalysis& analysis,
+                          const std::string& parameters_svg,
+                          const std::string& cycle_svg);
+
+// text with & < > " escaped.
+std::string HtmlEscape(const std::string& text);
+
+// An SVG document's <svg> element, without the XML prolog and doctype that
+// may not stand inside HTML.
+std::string InlineSvg(const std::string& svg_document);
+
+}  // namespace pfdm
+
+#endif  // PFDM_REPORT_FIT_REPORT_H_

@@ -1,0 +1,65 @@
+#include "pfdm/report/fit_report.h"
+
+#include "gtest/gtest.h"
+#include "pfdm/phantom/phantom.h"
+
+namespace pfdm {
+namespace {
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos;
+       at = text.find(what, at + 1)) {
+    ++n;
+  }
+  return n;
+}
+
+TEST(FitReportTest, EscapesAndInlinesSvg) {
+  EXPECT_EQ(HtmlEscape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+  EXPECT_EQ(InlineSvg("<?xml version=\"1.0\"?>\n<!DOCTYPE svg>\n<svg a='1'/>"),
+            "<svg a='1'/>");
+  EXPECT_EQ(InlineSvg("not a plot"), "");
+}
+
+TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
+  PhantomOptions options;
+  options.num_points = 50;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit;
+  fit.config = phantom.truth[0].config;
+  for (size_t t = 0; t < phantom.truth.size(); ++t) {
+    FrameFit frame;
+    frame.frame = static_cast<int>(t);
+    frame.state = phantom.truth[t].state;
+    frame.rms_mm = 0.5 + t;
+    frame.termination = "CONVERGENCE";
+    fit.frames.push_back(frame);
+  }
+  PointSequence points = phantom.points;
+  points.source = "tags<1>.csv";
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  const std::string html = FitReportHtml(
+      points, fit, analysis, "<?xml?><svg id='p'></svg>", "<svg id='c'></svg>");
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("tags&lt;1&gt;.csv"), std::string::npos);
+  EXPECT_NE(html.find("<svg id='p'></svg>"), std::string::npos);
+  EXPECT_NE(html.find("<svg id='c'></svg>"), std::string::npos);
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);
+  char ef[32];
+  std::snprintf(ef, sizeof(ef), "%.1f %%",
+                100 * analysis.ejection_fraction.ratio);
+  EXPECT_NE(html.find(ef), std::string::npos) << ef;
+  EXPECT_NE(html.find("4 ES"), std::string::npos);
+  EXPECT_NE(html.find("<td>4.50</td>"), std::string::npos);  // RMS frame 4.
+  // 5 frame rows and 16 segment rows, each a <tr> after its table's head.
+  EXPECT_EQ(Count(html, "<tr>"), 2 + 5 + 16);
+  EXPECT_NE(html.find("apical 4"), std::string::npos);
+  EXPECT_EQ(html.find("No tracked points"), std::string::npos);  // Tags.
+  for (const char* external : {"src=", "href=", "<link", "@import"}) {
+    EXPECT_EQ(html.find(external), std::string::npos) << external;
+  }
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,122 @@
+#include "pfdm/report/wall_motion.h"
+
+#include <cmath>
+
+namespace pfdm {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegreesPerRadian = 180.0 / kPi;
+// Samples per axis of the whole surface: a few hundred per segment.
+constexpr int kLatitudeSamples = 60;
+constexpr int kLongitudeSamples = 120;
+
+int SectorsOf(const RegionLayout& layout, RegionLevel level) {
+  return level == kBasal ? layout.basal_sectors
+         : level == kMid ? layout.mid_sectors
+                         : layout.apical_sectors;
+}
+
+// Axial height of ring u on the model, without bending (frame 0 has none).
+double RingHeight(const Model& model, double u) {
+  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
+         model.FunctionAt(kE3o, u);
+}
+
+// Distance of material point (u, v) from its ring's centre, model frame.
+double RingRadius(const Model& model, double u, double v) {
+  const Eigen::Vector3d p = model.ModelPoint(u, v);
+  return std::hypot(p.x() - model.FunctionAt(kE1o, u),
+                    p.y() - model.FunctionAt(kE2o, u));
+}
+
+// Surface area per unit of sin u and v at (u, v) on the model: the
+// weight of a sample on a grid equally spaced in sin u and v.
+double AreaWeight(const Model& model, double u, double v) {
+  constexpr double h = 1e-5;
+  const Eigen::Vector3d xu =
+      (model.ModelPoint(u + h, v) - model.ModelPoint(u - h, v)) / (2 * h);
+  const Eigen::Vector3d xv =
+      (model.ModelPoint(u, v + h) - model.ModelPoint(u, v - h)) / (2 * h);
+  return xu.cross(xv).norm() / std::cos(u);
+}
+
+}  // namespace
+
+std::string WallRegion::Name() const {
+  static const char* const kLevels[] = {"basal", "mid", "apical"};
+  return std::string(kLevels[level]) + " " + std::to_string(sector + 1);
+}
+
+std::vector<WallRegion> Regions(const RegionLayout& layout) {
+  std::vector<WallRegion> regions;
+  for (RegionLevel level : {kBasal, kMid, kApical}) {
+    const int sectors = SectorsOf(layout, level);
+    for (int s = 0; s < sectors; ++s) {
+      WallRegion region;
+      region.segment = static_cast<int>(regions.size()) + 1;
+      region.level = level;
+      region.sector = s;
+      region.v_begin = -kPi + 2.0 * kPi * s / sectors;
+      region.v_end = -kPi + 2.0 * kPi * (s + 1) / sectors;
+      regions.push_back(region);
+    }
+  }
+  return regions;
+}
+
+int AssignRegion(const Model& reference, double u, double v,
+                 const RegionLayout& layout) {
+  const double apex = RingHeight(reference, reference.config.u_min);
+  const double base = RingHeight(reference, reference.config.u_max);
+  const double fraction = (RingHeight(reference, u) - apex) / (base - apex);
+  const RegionLevel level = fraction >= 2.0 / 3.0   ? kBasal
+                            : fraction >= 1.0 / 3.0 ? kMid
+                                                    : kApical;
+  const int sectors = SectorsOf(layout, level);
+  const double turn = (v + kPi) / (2.0 * kPi);
+  const int sector =
+      static_cast<int>(std::floor((turn - std::floor(turn)) * sectors)) %
+      sectors;
+  int first = 0;
+  for (RegionLevel before = kBasal; before < level;
+       before = static_cast<RegionLevel>(before + 1)) {
+    first += SectorsOf(layout, before);
+  }
+  return first + sector;
+}
+
+std::vector<RegionMotion> SummarizeRegions(const Model& reference,
+                                           const Model& current,
+                                           const RegionLayout& layout) {
+  const size_t count = Regions(layout).size();
+  std::vector<RegionMotion> motion(count);
+  std::vector<double> weight(count, 0.0);
+  // Cell centres equally spaced in sin u and v (equal areas on a sphere),
+  // weighted by the reference surface's area; the pole is never sampled.
+  const double s_min = std::sin(reference.config.u_min);
+  const double s_max = std::sin(reference.config.u_max);
+  for (int i = 0; i < kLatitudeSamples; ++i) {
+    const double u =
+        std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudeSamples);
+    const double twist = current.FunctionAt(kTau, u) * kDegreesPerRadian;
+    for (int j = 0; j < kLongitudeSamples; ++j) {
+      const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
+      const int r = AssignRegion(reference, u, v, layout);
+      const double w = AreaWeight(reference, u, v);
+      motion[r].twist_deg += w * twist;
+      motion[r].radial_contraction_percent +=
+          w * 100.0 *
+          (1.0 - RingRadius(current, u, v) / RingRadius(reference, u, v));
+      weight[r] += w;
+    }
+  }
+  for (size_t r = 0; r < count; ++r) {
+    if (weight[r] == 0.0) continue;
+    motion[r].twist_deg /= weight[r];
+    motion[r].radial_contraction_percent /= weight[r];
+  }
+  return motion;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,58 @@
+// Regional wall motion: twist and radial contraction per AHA-style segment.
+#ifndef PFDM_REPORT_WALL_MOTION_H_
+#define PFDM_REPORT_WALL_MOTION_H_
+
+#include <string>
+#include <vector>
+
+#include "pfdm/model/model.h"
+
+namespace pfdm {
+
+// Levels are thirds of the reference (frame 0) model's axis from apex to
+// base rim; each level is cut into equal sectors of longitude v, counted
+// counter-clockwise about +z (seen from the base) from v = -pi.  The AHA
+// layout has 6 basal, 6 mid and 4 apical segments, numbered 1-6 basal,
+// 7-12 mid, 13-16 apical; it anchors sector 1 at the anterior RV insertion,
+// which point data do not show, so here sector 1 starts at the model's -x.
+struct RegionLayout {
+  int basal_sectors = 6;
+  int mid_sectors = 6;
+  int apical_sectors = 4;
+};
+
+enum RegionLevel : int { kBasal = 0, kMid = 1, kApical = 2 };
+
+struct WallRegion {
+  int segment = 0;  // 1-based, basal first.
+  RegionLevel level = kBasal;
+  int sector = 0;  // 0-based within the level.
+  double v_begin = 0.0;
+  double v_end = 0.0;
+  std::string Name() const;  // e.g. "basal 2".
+};
+
+std::vector<WallRegion> Regions(const RegionLayout& layout);
+
+// Index into Regions(layout) of the material point (u, v), by the axial
+// position of its ring on the reference model.
+int AssignRegion(const Model& reference, double u, double v,
+                 const RegionLayout& layout);
+
+struct RegionMotion {
+  // Mean of tau over the region's surface, degrees (frame 0 is 0).
+  double twist_deg = 0.0;
+  // Mean of 1 - rho / rho0, percent, with rho a material point's distance
+  // from its ring's centre (the axis offsets) in the model frame.
+  double radial_contraction_percent = 0.0;
+};
+
+// One entry per region of Regions(layout), each an area-weighted mean over
+// samples of the region (equal steps in sin u and v).
+std::vector<RegionMotion> SummarizeRegions(const Model& reference,
+                                           const Model& current,
+                                           const RegionLayout& layout);
+
+}  // namespace pfdm
+
+#endif  // PFDM_REPORT_WALL_MOTION_H_

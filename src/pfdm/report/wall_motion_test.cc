@@ -1,0 +1,81 @@
+#include "pfdm/report/wall_motion.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Model Sphere(double radius_fraction) {
+  FunctionValues values = DefaultFunctionValues();
+  values[kA0] = 50.0;
+  values[kA1] = values[kA2] = values[kA3] = radius_fraction;
+  return Model::Uniform(ModelConfig::Paper(17), values);
+}
+
+TEST(WallMotionTest, AhaLayoutHasSixteenSegmentsBasalFirst) {
+  const std::vector<WallRegion> regions = Regions(RegionLayout());
+  ASSERT_EQ(regions.size(), 16u);
+  EXPECT_EQ(regions[0].Name(), "basal 1");
+  EXPECT_EQ(regions[6].Name(), "mid 1");
+  EXPECT_EQ(regions[15].Name(), "apical 4");
+  EXPECT_EQ(regions[15].segment, 16);
+  EXPECT_NEAR(regions[13].v_begin, -kPi / 2, 1e-12);
+  EXPECT_NEAR(regions[13].v_end, 0.0, 1e-12);
+  RegionLayout quarters;
+  quarters.basal_sectors = quarters.mid_sectors = 4;
+  EXPECT_EQ(Regions(quarters).size(), 12u);
+}
+
+TEST(WallMotionTest, AssignsByThirdsOfTheAxisAndSectorsOfLongitude) {
+  // Rings at sin u from -1 (apex) to 0.5 (rim): thirds end at -0.5 and 0.
+  const Model reference = Sphere(0.8);
+  const RegionLayout layout;
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.8), -3.0, layout), 12);
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.8), 0.1, layout), 14);
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.45), 0.1, layout), 6 + 3);
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.05), -0.1, layout), 6 + 2);
+  EXPECT_EQ(AssignRegion(reference, std::asin(0.3), 3.1, layout), 5);
+  EXPECT_EQ(AssignRegion(reference, std::asin(0.3), kPi, layout), 0);  // Wraps.
+  EXPECT_EQ(AssignRegion(reference, reference.config.u_min, 0.0, layout), 14);
+  EXPECT_EQ(AssignRegion(reference, reference.config.u_max, -kPi, layout), 0);
+  // A longer basal half moves the thirds up: the axis, not u, decides.
+  Model stretched = reference;
+  for (int k = 9; k < 17; ++k) stretched.state.knots[k][kA3] = 1.0;
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.48), 0.1, layout), 9);
+  EXPECT_EQ(AssignRegion(stretched, std::asin(-0.48), 0.1, layout), 14);
+}
+
+TEST(WallMotionTest, UniformContractionAndLinearTwistPerSegment) {
+  const Model reference = Sphere(0.8);
+  Model current = Sphere(0.64);  // Every radius 20 % shorter.
+  const int k = current.config.num_knots;
+  for (int i = 0; i < k; ++i) {
+    // -5 degrees at the apex to +2 at the base, linear along the axis.
+    current.state.knots[i][kTau] = (-5.0 + 7.0 * i / (k - 1)) * kPi / 180.0;
+  }
+  const std::vector<RegionMotion> motion =
+      SummarizeRegions(reference, current, RegionLayout());
+  ASSERT_EQ(motion.size(), 16u);
+  for (const RegionMotion& m : motion) {
+    EXPECT_NEAR(m.radial_contraction_percent, 20.0, 1e-6);
+  }
+  // A sphere's area is uniform in sin u: each level's mean twist is tau at
+  // the middle of its third, sin u = 0.25, -0.25, -0.75.
+  auto tau_at = [](double s) { return -5.0 + 7.0 * (s + 1.0) / 1.5; };
+  EXPECT_NEAR(motion[0].twist_deg, tau_at(0.25), 0.05);
+  EXPECT_NEAR(motion[8].twist_deg, tau_at(-0.25), 0.05);
+  EXPECT_NEAR(motion[15].twist_deg, tau_at(-0.75), 0.05);
+  // No motion, no numbers.
+  for (const RegionMotion& m :
+       SummarizeRegions(reference, reference, RegionLayout())) {
+    EXPECT_NEAR(m.twist_deg, 0.0, 1e-12);
+    EXPECT_NEAR(m.radial_contraction_percent, 0.0, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,462 @@
+// The paper's mass-free Lagrangian dynamics D qdot = -dE/dq, E = 1/2 |r|^2
+// over every residual of the problem (the data springs f_q = -J^T r and the
+// stiffness K q of the regularizers alike), integrated two ways; see
+// docs/dynamics.md.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ceres/crs_matrix.h"
+#include "ceres/iteration_callback.h"
+#include "ceres/manifold.h"
+#include "ceres/solver.h"
+#include "pfdm/solvers/solver.h"
+
+namespace pfdm {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Forward Euler runs at this fraction of its stability limit: the power
+// iteration underestimates lambda_max, and at the limit itself the stiffest
+// mode would only oscillate.
+constexpr double kStabilitySafety = 0.9;
+// Pseudo-time step of the damped mode when none is given.  With
+// D = diag(J^T J) the explicit limit is about 1; at 1,000 the slow modes of
+// a frame fit (lambda ~ 1e-4) lose a tenth or more of their amplitude per
+// step and a frame rests in tens of steps.
+constexpr double kDefaultDampedStep = 1e3;
+// Halvings of an explicit step before the integrator gives up.
+constexpr int kMaxRefusals = 50;
+// Relative energy changes this small are the rounding of the sum.
+constexpr double kRounding = 1e-13;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The problem's free parameter blocks and their places in the tangent
+// vector that Problem::Evaluate returns.
+struct State {
+  std::vector<double*> blocks;
+  std::vector<int> sizes, offsets;
+  int tangent_size = 0;
+};
+
+State FreeBlocks(const ceres::Problem& problem) {
+  State state;
+  std::vector<double*> all;
+  problem.GetParameterBlocks(&all);
+  for (double* block : all) {
+    if (problem.IsParameterBlockConstant(block)) continue;
+    state.blocks.push_back(block);
+    state.sizes.push_back(problem.ParameterBlockSize(block));
+    state.offsets.push_back(state.tangent_size);
+    state.tangent_size += problem.ParameterBlockTangentSize(block);
+  }
+  return state;
+}
+
+struct Evaluation {
+  double cost = 0.0;
+  std::vector<double> gradient;
+  ceres::CRSMatrix jacobian;
+};
+
+// The cost and its tangent-space gradient (and the Jacobian if asked), all
+// finite.  Ceres computes the Jacobian blocks for a gradient anyway; asking
+// for the CRS matrix only adds its assembly.
+bool Evaluate(ceres::Problem* problem, const State& state, int num_threads,
+              bool jacobian, Evaluation* evaluation) {
+  ceres::Problem::EvaluateOptions options;
+  options.parameter_blocks = state.blocks;
+  options.num_threads = num_threads;
+  if (!problem->Evaluate(options, &evaluation->cost, nullptr,
+                         &evaluation->gradient,
+                         jacobian ? &evaluation->jacobian : nullptr)) {
+    return false;
+  }
+  return std::isfinite(evaluation->cost) &&
+         std::all_of(evaluation->gradient.begin(), evaluation->gradient.end(),
+                     [](double g) { return std::isfinite(g); });
+}
+
+double Norm(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (double x : v) sum += x * x;
+  return std::sqrt(sum);
+}
+
+// diag(J^T J), floored so that directions the residuals barely see are
+// weakly damped instead of dividing by zero.
+std::vector<double> JacobiDamping(const ceres::CRSMatrix& j) {
+  std::vector<double> d(j.num_cols, 0.0);
+  for (size_t k = 0; k < j.values.size(); ++k) {
+    d[j.cols[k]] += j.values[k] * j.values[k];
+  }
+  const double largest = *std::max_element(d.begin(), d.end());
+  for (double& x : d) x = std::max(x, 1e-12 * std::max(largest, 1e-300));
+  return d;
+}
+
+// The integrator's D: the chosen base times the caller's per-coordinate
+// scales.  A scale that is not positive and finite would stop or reverse
+// the motion, so it is refused.
+std::optional<std::vector<double>> Damping(const ceres::Problem& problem,
+                                           const State& state,
+                                           const ceres::CRSMatrix& j,
+                                           const SolverOptions& options,
+                                           std::string* error) {
+  std::vector<double> d = options.damping == DampingKind::kJacobi
+                              ? JacobiDamping(j)
+                              : std::vector<double>(j.num_cols, 1.0);
+  for (size_t b = 0; b < state.blocks.size(); ++b) {
+    const auto scale = options.damping_scale.find(state.blocks[b]);
+    if (scale == options.damping_scale.end()) continue;
+    const int tangent_size = problem.ParameterBlockTangentSize(state.blocks[b]);
+    if (static_cast<int>(scale->second.size()) != tangent_size) {
+      *error = "a damping scale lists " + std::to_string(scale->second.size()) +
+               " entries for a block of tangent size " +
+               std::to_string(tangent_size);
+      return std::nullopt;
+    }
+    for (int i = 0; i < tangent_size; ++i) {
+      const double s = scale->second[i];
+      if (!(s > 0.0) || !std::isfinite(s)) {
+        *error = "damping scales must be positive and finite, got " +
+                 std::to_string(s);
+        return std::nullopt;
+      }
+      d[state.offsets[b] + i] *= s;
+    }
+  }
+  return d;
+}
+
+// lambda_max of D^-1/2 J^T J D^-1/2 by power iteration on the CRS Jacobian,
+// from a start vector with no symmetry that could hide the top mode.
+double LargestEigenvalue(const ceres::CRSMatrix& j,
+                         const std::vector<double>& d) {
+  std::vector<double> x(j.num_cols), y(j.num_rows), z(j.num_cols);
+  for (int c = 0; c < j.num_cols; ++c) x[c] = 1.0 + 0.5 * std::sin(c + 1.0);
+  double lambda = 0.0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double norm = Norm(x);
+    if (norm == 0.0) break;
+    for (int c = 0; c < j.num_cols; ++c) x[c] /= norm * std::sqrt(d[c]);
+    for (int r = 0; r < j.num_rows; ++r) {
+      y[r] = 0.0;
+      for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
+        y[r] += j.values[k] * x[j.cols[k]];
+      }
+    }
+    std::fill(z.begin(), z.end(), 0.0);
+    for (int r = 0; r < j.num_rows; ++r) {
+      for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
+        z[j.cols[k]] += j.values[k] * y[r];
+      }
+    }
+    for (int c = 0; c < j.num_cols; ++c) z[c] /= std::sqrt(d[c]);
+    const double next = Norm(z);
+    const bool settled = std::abs(next - lambda) <= 1e-4 * next;
+    lambda = next;
+    x.swap(z);
+    if (settled) break;
+  }
+  return lambda;
+}
+
+// out = x [+] delta through the block's manifold, then into its bounds, as
+// Ceres moves a block.
+bool PlusInBounds(const ceres::Problem& problem, double* block, int size,
+                  const double* x, const double* delta, double* out) {
+  if (const ceres::Manifold* manifold = problem.GetManifold(block)) {
+    if (!manifold->Plus(x, delta, out)) return false;
+  } else {
+    for (int i = 0; i < size; ++i) out[i] = x[i] + delta[i];
+  }
+  for (int i = 0; i < size; ++i) {
+    out[i] = std::clamp(out[i], problem.GetParameterLowerBound(block, i),
+                        problem.GetParameterUpperBound(block, i));
+  }
+  return true;
+}
+
+// Moves every free block by its part of the tangent step.
+bool Move(ceres::Problem* problem, const State& state,
+          const std::vector<double>& step) {
+  std::vector<double> moved;
+  for (size_t b = 0; b < state.blocks.size(); ++b) {
+    double* x = state.blocks[b];
+    moved.resize(state.sizes[b]);
+    if (!PlusInBounds(*problem, x, state.sizes[b], x,
+                      step.data() + state.offsets[b], moved.data())) {
+      return false;
+    }
+    std::copy(moved.begin(), moved.end(), x);
+  }
+  return true;
+}
+
+// |x - (x [+] -g)| with the bounds applied, Ceres' gradient_norm: the force
+// that is free to move the model, so that the three solvers' traces report
+// the same quantity.
+double ProjectedGradientNorm(const ceres::Problem& problem, const State& state,
+                             const std::vector<double>& gradient) {
+  std::vector<double> minus_g, moved;
+  double sum = 0.0;
+  for (size_t b = 0; b < state.blocks.size(); ++b) {
+    const double* g = gradient.data() + state.offsets[b];
+    const int tangent_size = problem.ParameterBlockTangentSize(state.blocks[b]);
+    minus_g.assign(g, g + tangent_size);
+    for (double& x : minus_g) x = -x;
+    moved.resize(state.sizes[b]);
+    if (!PlusInBounds(problem, state.blocks[b], state.sizes[b], state.blocks[b],
+                      minus_g.data(), moved.data())) {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+    for (int i = 0; i < state.sizes[b]; ++i) {
+      sum += std::pow(moved[i] - state.blocks[b][i], 2);
+    }
+  }
+  return std::sqrt(sum);
+}
+
+std::vector<double> Snapshot(const State& state) {
+  std::vector<double> values;
+  for (size_t b = 0; b < state.blocks.size(); ++b) {
+    values.insert(values.end(), state.blocks[b],
+                  state.blocks[b] + state.sizes[b]);
+  }
+  return values;
+}
+
+void Restore(const State& state, const std::vector<double>& values) {
+  auto from = values.begin();
+  for (size_t b = 0; b < state.blocks.size(); ++b) {
+    std::copy(from, from + state.sizes[b], state.blocks[b]);
+    from += state.sizes[b];
+  }
+}
+
+// Rest: the power the damping dissipates, dE/dt = -qdot^T D qdot =
+// -|f|^2_{D^-1}, has fallen below rest_tolerance^2 of the initial energy per
+// unit pseudo-time, i.e. the force in the damping metric below
+// rest_tolerance of sqrt(E_0).  Measured from the energy itself so that
+// both dynamics solvers stop by the same rule, and, unlike |J^T r|, blind
+// to forces that a bound holds and to the units of the parameters.
+class RestTest {
+ public:
+  RestTest(double initial_energy, double rest_tolerance)
+      : threshold_(rest_tolerance * rest_tolerance * initial_energy) {}
+  bool AtRest(double dt, double energy_before, double energy_after) const {
+    return std::abs(energy_before - energy_after) <= threshold_ * dt;
+  }
+
+ private:
+  double threshold_;
+};
+
+// Records the damped trajectory and stops the solve once the model rests.
+// The step of iteration k was taken with the radius that iteration k - 1
+// reported; a rejected step does not move the model and takes no time.
+class DampedCallback : public ceres::IterationCallback {
+ public:
+  DampedCallback(const SolverOptions& options, SolverReport* report)
+      : options_(options), report_(report) {}
+
+  ceres::CallbackReturnType operator()(
+      const ceres::IterationSummary& summary) override {
+    const double dt = radius_;
+    radius_ = summary.trust_region_radius;
+    if (summary.iteration == 0) {
+      rest_test_.emplace(summary.cost, options_.rest_tolerance);
+    } else if (!summary.step_is_successful) {
+      return ceres::SOLVER_CONTINUE;
+    } else {
+      time_ += dt;
+    }
+    report_->trace.push_back({summary.iteration, time_,
+                              summary.cumulative_time_in_seconds, summary.cost,
+                              summary.gradient_norm});
+    if (options_.on_step) options_.on_step(report_->trace.back());
+    const double before = energy_;
+    energy_ = summary.cost;
+    if (summary.iteration > 0 && rest_test_->AtRest(dt, before, energy_)) {
+      at_rest_ = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    return ceres::SOLVER_CONTINUE;
+  }
+  bool at_rest() const { return at_rest_; }
+
+ private:
+  const SolverOptions& options_;
+  SolverReport* report_;
+  std::optional<RestTest> rest_test_;
+  double radius_ = 0.0, time_ = 0.0, energy_ = 0.0;
+  bool at_rest_ = false;
+};
+
+void Fail(const std::string& message, SolverReport* report) {
+  report->usable = false;
+  report->converged = false;
+  report->termination = "FAILURE";
+  report->message = message;
+}
+
+}  // namespace
+
+// Forward Euler in the tangent space: q_{n+1} = q_n [+] (-dt D^-1 J^T r),
+// projected into the bounds.  A step that raises the energy (the stability
+// bound was estimated once, at the start) or leaves the residuals
+// non-finite is undone and dt halved for good.
+SolverReport SolveIntegrator(ceres::Problem* problem,
+                             const SolverOptions& options) {
+  const Clock::time_point start = Clock::now();
+  SolverReport report;
+  const State state = FreeBlocks(*problem);
+  Evaluation now;
+  report.residual_evaluations = report.jacobian_evaluations = 1;
+  if (!Evaluate(problem, state, options.num_threads, true, &now)) {
+    Fail("the residuals or their Jacobian are not finite at the start",
+         &report);
+    return report;
+  }
+  const RestTest rest_test(now.cost, options.rest_tolerance);
+  std::vector<double> d;
+  double dt = options.time_step;
+  if (state.tangent_size > 0) {
+    std::string error;
+    std::optional<std::vector<double>> damping =
+        Damping(*problem, state, now.jacobian, options, &error);
+    if (!damping) {
+      Fail(error, &report);
+      return report;
+    }
+    d = std::move(*damping);
+    if (dt <= 0.0) {
+      dt = kStabilitySafety * 2.0 / LargestEigenvalue(now.jacobian, d);
+    }
+  }
+  now.jacobian = ceres::CRSMatrix();
+  double time = 0.0;
+  report.trace.push_back(
+      {0, 0.0, SecondsSince(start), now.cost,
+       ProjectedGradientNorm(*problem, state, now.gradient)});
+  if (options.on_step) options.on_step(report.trace.back());
+  report.termination = "NO_CONVERGENCE";
+  if (state.tangent_size == 0 || Norm(now.gradient) == 0.0) {
+    report.termination = "REST";
+    report.converged = true;
+    return report;
+  }
+  std::vector<double> step(state.tangent_size), before;
+  Evaluation next;
+  int refusals = 0;
+  while (report.iterations < options.max_steps) {
+    for (int i = 0; i < state.tangent_size; ++i) {
+      step[i] = -dt * now.gradient[i] / d[i];
+    }
+    before = Snapshot(state);
+    const bool moved = Move(problem, state, step);
+    ++report.residual_evaluations;
+    ++report.jacobian_evaluations;
+    const bool finite =
+        moved && Evaluate(problem, state, options.num_threads, false, &next);
+    if (!finite || next.cost > now.cost) {
+      Restore(state, before);
+      if (finite && next.cost - now.cost <= kRounding * now.cost) {
+        report.termination = "REST";  // Flat to rounding: nowhere to go.
+        report.converged = true;
+        break;
+      }
+      if (++refusals > kMaxRefusals) {
+        Fail(
+            "no stable step: the energy rises or the residuals are not "
+            "finite even at dt = " +
+                std::to_string(dt),
+            &report);
+        break;
+      }
+      dt *= 0.5;
+      continue;
+    }
+    refusals = 0;
+    time += dt;
+    ++report.iterations;
+    const bool at_rest = rest_test.AtRest(dt, now.cost, next.cost);
+    std::swap(now, next);
+    report.trace.push_back(
+        {report.iterations, time, SecondsSince(start), now.cost,
+         ProjectedGradientNorm(*problem, state, now.gradient)});
+    if (options.on_step) options.on_step(report.trace.back());
+    if (at_rest) {
+      report.termination = "REST";
+      report.converged = true;
+      break;
+    }
+  }
+  report.minimizer_seconds = SecondsSince(start);
+  return report;
+}
+
+// Levenberg-Marquardt with the trust region pinned at dt: Ceres solves
+// (J^T J + diag(J^T J) / radius) dq = -J^T r (Jacobi scaling cancels), the
+// linearly implicit Euler step of D qdot = -J^T r with D = diag(J^T J) and
+// step radius.  The radius cannot grow past its maximum; a rejected step
+// would halve it, so steps are judged against the initial energy
+// (unbounded non-monotonic steps) and none is line-searched.
+SolverReport SolveDamped(ceres::Problem* problem,
+                         const SolverOptions& options) {
+  const double dt =
+      options.time_step > 0.0 ? options.time_step : kDefaultDampedStep;
+  SolverReport report;
+  DampedCallback callback(options, &report);
+  ceres::Solver::Options solver_options;
+  solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  solver_options.initial_trust_region_radius = dt;
+  solver_options.max_trust_region_radius = dt;
+  solver_options.min_trust_region_radius = std::min(1e-32, dt);
+  solver_options.use_nonmonotonic_steps = true;
+  solver_options.max_consecutive_nonmonotonic_steps =
+      std::numeric_limits<int>::max();
+  solver_options.min_relative_decrease = 0.0;
+  solver_options.max_num_line_search_step_size_iterations = 0;
+  solver_options.linear_solver_type = options.linear_solver;
+  solver_options.num_threads = options.num_threads;
+  solver_options.max_num_iterations = options.max_steps;
+  // Rest is the callback's to decide; Ceres stops only on a step lost in
+  // rounding.
+  solver_options.function_tolerance = 0.0;
+  solver_options.gradient_tolerance = 0.0;
+  solver_options.parameter_tolerance = 1e-15;
+  solver_options.logging_type = ceres::SILENT;
+  solver_options.callbacks.push_back(&callback);
+  solver_options.update_state_every_iteration = bool(options.on_step);
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, problem, &summary);
+
+  report.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  report.usable =
+      summary.IsSolutionUsable() && summary.termination_type != ceres::FAILURE;
+  report.converged =
+      callback.at_rest() || summary.termination_type == ceres::CONVERGENCE;
+  report.termination =
+      callback.at_rest()
+          ? "REST"
+          : ceres::TerminationTypeToString(summary.termination_type);
+  report.message = summary.message;
+  report.residual_evaluations = summary.num_residual_evaluations;
+  report.jacobian_evaluations = summary.num_jacobian_evaluations;
+  report.jacobian_seconds = summary.jacobian_evaluation_time_in_seconds;
+  report.linear_solver_seconds = summary.linear_solver_time_in_seconds;
+  report.minimizer_seconds = summary.minimizer_time_in_seconds;
+  return report;
+}
+
+}  // namespace pfdm

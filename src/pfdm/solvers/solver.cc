@@ -1,0 +1,110 @@
+#include "pfdm/solvers/solver.h"
+
+#include "ceres/solver.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+
+SolverKind SolverFromName(const std::string& name) {
+  if (name == "direct") return SolverKind::kDirect;
+  if (name == "damped") return SolverKind::kDamped;
+  if (name == "integrator") return SolverKind::kIntegrator;
+  throw InputError("unknown --solver '" + name +
+                   "' (expected direct, damped or integrator)");
+}
+
+const char* SolverName(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::kDirect:
+      return "direct";
+    case SolverKind::kDamped:
+      return "damped";
+    case SolverKind::kIntegrator:
+      return "integrator";
+  }
+  return "";
+}
+
+DampingKind DampingFromName(const std::string& name) {
+  if (name == "jacobi") return DampingKind::kJacobi;
+  if (name == "unit") return DampingKind::kUnit;
+  throw InputError("unknown --damping '" + name +
+                   "' (expected jacobi or unit)");
+}
+
+SolverReport SolveProblem(ceres::Problem* problem,
+                          const SolverOptions& options) {
+  switch (options.kind) {
+    case SolverKind::kDirect:
+      return SolveDirect(problem, options);
+    case SolverKind::kDamped:
+      return SolveDamped(problem, options);
+    case SolverKind::kIntegrator:
+      return SolveIntegrator(problem, options);
+  }
+  return {};
+}
+
+namespace {
+
+// Hands each iteration to SolverOptions::on_step with the parameter blocks
+// at that iterate.
+class StepObserver : public ceres::IterationCallback {
+ public:
+  explicit StepObserver(const SolverOptions& options) : options_(options) {}
+  ceres::CallbackReturnType operator()(
+      const ceres::IterationSummary& summary) override {
+    options_.on_step({summary.iteration, 0.0,
+                      summary.cumulative_time_in_seconds, summary.cost,
+                      summary.gradient_norm});
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const SolverOptions& options_;
+};
+
+}  // namespace
+
+SolverReport SolveDirect(ceres::Problem* problem,
+                         const SolverOptions& options) {
+  ceres::Solver::Options solver_options;
+  StepObserver observer(options);
+  if (options.on_step) {
+    solver_options.callbacks.push_back(&observer);
+    solver_options.update_state_every_iteration = true;
+  }
+  solver_options.linear_solver_type = options.linear_solver;
+  solver_options.max_num_iterations = options.max_iterations;
+  solver_options.num_threads = options.num_threads;
+  solver_options.function_tolerance = 1e-9;
+  // With bounds Ceres line-searches along every step, bound in sight or
+  // not: one more evaluation per iteration (a whole Jacobian with cubic
+  // interpolation).  Ours (0 < a <= 1, the exponents' range) are seldom
+  // active, and a step past one is clipped to it all the same.
+  solver_options.max_num_line_search_step_size_iterations = 0;
+  solver_options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, problem, &summary);
+
+  SolverReport report;
+  report.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  report.usable =
+      summary.IsSolutionUsable() && summary.termination_type != ceres::FAILURE;
+  report.converged = summary.termination_type == ceres::CONVERGENCE;
+  report.termination = ceres::TerminationTypeToString(summary.termination_type);
+  report.message = summary.message;
+  report.residual_evaluations = summary.num_residual_evaluations;
+  report.jacobian_evaluations = summary.num_jacobian_evaluations;
+  report.jacobian_seconds = summary.jacobian_evaluation_time_in_seconds;
+  report.linear_solver_seconds = summary.linear_solver_time_in_seconds;
+  report.minimizer_seconds = summary.minimizer_time_in_seconds;
+  for (const ceres::IterationSummary& iteration : summary.iterations) {
+    report.trace.push_back({iteration.iteration, 0.0,
+                            iteration.cumulative_time_in_seconds,
+                            iteration.cost, iteration.gradient_norm});
+  }
+  return report;
+}
+
+}  // namespace pfdm

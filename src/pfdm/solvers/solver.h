@@ -1,0 +1,89 @@
+// The three ways pfdm drives a built frame problem to rest: the direct
+// Ceres solve, damped stepping inside Ceres, and the explicit Lagrangian
+// integrator.  All share the problem's residuals.
+#ifndef PFDM_SOLVERS_SOLVER_H_
+#define PFDM_SOLVERS_SOLVER_H_
+
+#include <functional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "ceres/problem.h"
+#include "ceres/types.h"
+
+namespace pfdm {
+
+enum class SolverKind { kDirect, kDamped, kIntegrator };
+
+// The integrator's damping matrix D before the per-coordinate scales:
+// diag(J^T J) at the start (each parameter moves at the rate the residuals
+// hold it, pseudo-time dimensionless) or the identity (the paper's constant
+// damping; then pseudo-time carries the units of the parameters).
+enum class DampingKind { kJacobi, kUnit };
+
+// "direct", "damped" or "integrator"; throws InputError otherwise.
+SolverKind SolverFromName(const std::string& name);
+const char* SolverName(SolverKind kind);
+// "jacobi" or "unit"; throws InputError otherwise.
+DampingKind DampingFromName(const std::string& name);
+
+// One iteration (direct, damped) or step (integrator).
+struct SolverTracePoint {
+  int iteration = 0;
+  double pseudo_time = 0.0;  // 0 for the direct solve.
+  double wall_seconds = 0.0;
+  double cost = 0.0;           // 1/2 sum of squared residuals.
+  double gradient_norm = 0.0;  // Projected |J^T r|, as Ceres reports it.
+};
+
+struct SolverOptions {
+  SolverKind kind = SolverKind::kDirect;
+  int max_iterations = 100;
+  int num_threads = 1;
+  ceres::LinearSolverType linear_solver = ceres::SPARSE_NORMAL_CHOLESKY;
+  // Dynamics (damped and integrator): pseudo-time step, 0 = the default
+  // (integrator: 0.9 of the stability bound; damped: 1,000); rest when the
+  // energy dissipated per unit pseudo-time falls below rest_tolerance^2 of
+  // the initial energy (docs/dynamics.md).
+  double time_step = 0.0;
+  double rest_tolerance = 1e-6;
+  int max_steps = 20000;
+  // Integrator only: D = diag(scale) x base.  Per free parameter block, a
+  // multiplier for each tangent coordinate (a block not listed: all 1), so
+  // that a caller can make parameter groups move at different rates.  The
+  // damped mode's D is Ceres' Levenberg-Marquardt diagonal, diag(J^T J).
+  DampingKind damping = DampingKind::kJacobi;
+  std::unordered_map<const double*, std::vector<double>> damping_scale;
+  // Called with each point of SolverReport::trace as it is recorded, while
+  // the parameter blocks hold that iterate: lets a caller keep the path.
+  std::function<void(const SolverTracePoint&)> on_step;
+};
+
+struct SolverReport {
+  int iterations = 0;
+  bool usable = true;
+  bool converged = false;
+  std::string termination;  // e.g. "CONVERGENCE", "NO_CONVERGENCE", "REST".
+  std::string message;
+  int residual_evaluations = 0;
+  int jacobian_evaluations = 0;
+  double jacobian_seconds = 0.0;
+  double linear_solver_seconds = 0.0;
+  // Iterating, without the set-up (Ceres' preprocessing) or the summary.
+  double minimizer_seconds = 0.0;
+  std::vector<SolverTracePoint> trace;
+};
+
+// Dispatches on options.kind.
+SolverReport SolveProblem(ceres::Problem* problem,
+                          const SolverOptions& options);
+
+SolverReport SolveDirect(ceres::Problem* problem, const SolverOptions& options);
+SolverReport SolveDamped(ceres::Problem* problem, const SolverOptions& options);
+SolverReport SolveIntegrator(ceres::Problem* problem,
+                             const SolverOptions& options);
+
+}  // namespace pfdm
+
+#endif  // PFDM_SOLVERS_SOLVER_H_

@@ -1,0 +1,36 @@
+// Fits to the real third-party LV data in ../shared/data; skipped without it.
+#include "gtest/gtest.h"
+#include "pfdm/fit/fitter.h"
+#include "pfdm/io/point_reader.h"
+#include "pfdm/testing/test_util.h"
+
+namespace pfdm {
+namespace {
+
+// biv-me patient 1: SAX and LAX endocardial contours of 25 frames, no
+// correspondence between frames.  The paper's model fits each frame to
+// within 2 mm RMS.
+TEST(RealDataTest, BivMePatientContoursFitWithinTwoMillimetres) {
+  const std::string shared = SharedDataDirectory();
+  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
+  const PointSequence points = ReadGpFiles(
+      shared + "/biv-me-patient1/guidepoints", ExpandContourAlias("lv-endo"));
+  const SequenceFit fit =
+      FitSequence(points, ModelConfig::Paper(17), FitOptions());
+  ASSERT_EQ(fit.frames.size(), 25u);
+  for (const FrameFit& frame : fit.frames) {
+    EXPECT_LT(frame.rms_mm, 2.0) << "frame " << frame.frame;
+    EXPECT_GT(frame.rms_mm, 0.3) << "frame " << frame.frame;  // Not degenerate.
+    // The bending gauge: shape functions' means in [0, 2).
+    for (int shape : {kB1, kB3}) {
+      double mean = 0.0;
+      for (const FunctionValues& knot : frame.state.knots) mean += knot[shape];
+      mean /= frame.state.knots.size();
+      EXPECT_GE(mean, 0.0) << FunctionName(shape) << " frame " << frame.frame;
+      EXPECT_LT(mean, 2.0) << FunctionName(shape) << " frame " << frame.frame;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pfdm

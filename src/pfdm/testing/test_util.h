@@ -1,0 +1,32 @@
+// Helpers shared by the tests: scratch folders and running the pfdm binary.
+#ifndef PFDM_TESTING_TEST_UTIL_H_
+#define PFDM_TESTING_TEST_UTIL_H_
+
+#include <string>
+
+namespace pfdm {
+
+// A fresh empty folder, <temp dir>/pfdm_tests/<Suite.Test>/<name>_<n>,
+// unique per call within a test; kept after the test so that its files
+// (plots, reports, meshes) can be looked at, replaced when the test reruns.
+std::string ScratchDirectory(const std::string& name);
+
+void WriteText(const std::string& path, const std::string& text);
+std::string ReadText(const std::string& path);
+
+struct CommandResult {
+  int exit_code = 0;
+  std::string output;  // stdout
+  std::string error;   // stderr
+};
+
+// Runs the built pfdm binary with the given arguments (shell-quoted by the
+// caller where needed).
+CommandResult RunPfdm(const std::string& arguments);
+
+// ../shared/data beside the source tree, or "" when it is absent.
+std::string SharedDataDirectory();
+
+}  // namespace pfdm
+
+#endif  // PFDM_TESTING_TEST_UTIL_H_

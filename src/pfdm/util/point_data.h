@@ -1,0 +1,35 @@
+// Material points over time: the data a fit consumes.
+#ifndef PFDM_UTIL_POINT_DATA_H_
+#define PFDM_UTIL_POINT_DATA_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "Eigen/Core"
+
+namespace pfdm {
+
+struct DataPoint {
+  // The same id in several frames is the same material point (a tracked
+  // tag); an id seen in one frame only is an untracked surface sample.
+  std::int64_t id = 0;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // mm
+};
+
+struct Frame {
+  int index = 0;
+  std::vector<DataPoint> points;
+};
+
+struct PointSequence {
+  std::string source;         // File or folder the points came from.
+  std::vector<Frame> frames;  // frames[i].index == i.
+  // Guide points: the contour types kept; empty when all were, or for
+  // other inputs.
+  std::vector<std::string> contour_types;
+};
+
+}  // namespace pfdm
+
+#endif  // PFDM_UTIL_POINT_DATA_H_

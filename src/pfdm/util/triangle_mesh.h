@@ -1,0 +1,42 @@
+// Triangle meshes: closing open boundaries and the volume they enclose.
+#ifndef PFDM_UTIL_TRIANGLE_MESH_H_
+#define PFDM_UTIL_TRIANGLE_MESH_H_
+
+#include <array>
+#include <vector>
+
+#include "Eigen/Core"
+
+namespace pfdm {
+
+struct TriangleMesh {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3>> triangles;  // Indices into points.
+};
+
+// The closed loops of boundary edges (edges used by one triangle only), each
+// as vertex indices in the direction the triangles run along them.  Throws
+// InputError when the boundary is not a set of simple loops (a non-manifold
+// or inconsistently oriented mesh).
+std::vector<std::vector<int>> BoundaryLoops(const TriangleMesh& mesh);
+
+// Closes every boundary loop with a fan of triangles around the loop's
+// vertex centroid, oriented like the surface, so that the divergence
+// theorem applies.  The LV's basal cap: a flat lid where the rim is planar.
+TriangleMesh CapBoundaryLoops(const TriangleMesh& mesh);
+
+// |sum over triangles of p0 . (p1 x p2) / 6| in mm^3: the enclosed volume of
+// a closed, consistently oriented mesh, whatever the origin.
+double EnclosedVolume(const TriangleMesh& mesh);
+
+// Volume (mm^3) of the part of a closed, consistently oriented mesh on the
+// side of the plane through `point` that `normal` points away from: each
+// triangle clipped to that side; the cut needs no lid, since with the
+// origin on the plane a lid's terms vanish.
+double VolumeBelowPlane(const TriangleMesh& closed,
+                        const Eigen::Vector3d& point,
+                        const Eigen::Vector3d& normal);
+
+}  // namespace pfdm
+
+#endif  // PFDM_UTIL_TRIANGLE_MESH_H_
