@@ -3,6 +3,7 @@
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/util/error.h"
 
 DEFINE_string(base_plane, "auto",

@@ -1,10 +1,6 @@
 #include "pfdm/model/base_plane.h"
 
-#include <filesystem>
-
 #include "Eigen/Eigenvalues"
-#include "pfdm/io/point_reader.h"
-#include "pfdm/util/error.h"
 
 namespace pfdm {
 
@@ -22,29 +18,6 @@ std::optional<BasePlane> FitBasePlane(
     return std::nullopt;
   return BasePlane{mean, eigen.eigenvectors().col(0),
                    static_cast<int>(points.size())};
-}
-
-std::vector<BasePlane> MitralValvePlanes(const std::string& gp_path) {
-  const std::filesystem::path path(gp_path);
-  if (!std::filesystem::is_directory(path) &&
-      path.filename().string().rfind("GPFile", 0) != 0) {
-    return {};
-  }
-  PointSequence valve;
-  try {
-    valve = ReadGpFiles(gp_path, {"MITRAL_VALVE"});
-  } catch (const InputError&) {
-    return {};  // Some frame has none: keep the flat lid for all.
-  }
-  std::vector<BasePlane> planes;
-  for (const Frame& frame : valve.frames) {
-    std::vector<Eigen::Vector3d> points;
-    for (const DataPoint& p : frame.points) points.push_back(p.position);
-    const std::optional<BasePlane> plane = FitBasePlane(points);
-    if (!plane) return {};
-    planes.push_back(*plane);
-  }
-  return planes;
 }
 
 }  // namespace pfdm

@@ -4,7 +4,6 @@
 #define PFDM_MODEL_BASE_PLANE_H_
 
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "Eigen/Core"
@@ -21,13 +20,6 @@ struct BasePlane {
 // points that lie nearly on a line (no plane is defined).
 std::optional<BasePlane> FitBasePlane(
     const std::vector<Eigen::Vector3d>& points);
-
-// Per frame, the plane through the MITRAL_VALVE points of biv-me guide
-// point files (path as for ReadGpFiles); empty when the input is not guide
-// points or some frame has no such plane.  biv-me closes its own LV meshes
-// at the valves, and a flat lid at the highest contour point overestimates
-// the cavity by the tilt of the annulus (by up to 19 % on biv-me's patient 1).
-std::vector<BasePlane> MitralValvePlanes(const std::string& gp_path);
 
 }  // namespace pfdm
 

@@ -1,0 +1,41 @@
+// How a sequence is fitted: regularizer, loss, correspondence, solver.
+#ifndef PFDM_FIT_FIT_OPTIONS_H_
+#define PFDM_FIT_FIT_OPTIONS_H_
+
+#include <optional>
+#include <string>
+
+#include "pfdm/fit/data_cost.h"
+#include "pfdm/fit/initialization.h"
+#include "pfdm/solvers/damping_groups.h"
+#include "pfdm/solvers/solver.h"
+
+namespace pfdm {
+
+struct FitOptions {
+  // Regularizer weights, each relative to one knot's share of the data
+  // (N / K points).  Smoothness: 1 penalizes a knot bent 1 mm off the line
+  // through its neighbours like one more data point 1 mm off; it mostly
+  // steers knots the data barely see (the apex, where cos u = 0).
+  double smoothness_weight = 1.0;
+  double prior_weight = 0.001;
+  // "none", "huber" or "cauchy"; scale in mm.
+  std::string loss = "none";
+  double loss_scale_mm = 1.0;
+  int max_correspondence_rounds = 10;
+  // Rounds stop when no material point's model position moves more.
+  double correspondence_tolerance_mm = 0.05;
+  SolverOptions solver;
+  DampingGroups damping_groups;
+  JacobianKind jacobian = JacobianKind::kAnalytic;
+  std::optional<AxisHint> hint;
+  int min_points = 10;
+  // Model states kept along each frame's solver path, log-spaced in the
+  // iteration count at this many per decade, plus the start and the end;
+  // 0 keeps none (FrameFit::trajectory).
+  int trajectory_per_decade = 0;
+};
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_FIT_OPTIONS_H_

@@ -1,0 +1,63 @@
+// One frame's parameter blocks in a ceres::Problem: the pose as it is, and
+// the globals and each knot as their free entries (gauge.h says which), or
+// whole and constant when none is free.
+#ifndef PFDM_FIT_FRAME_BLOCKS_H_
+#define PFDM_FIT_FRAME_BLOCKS_H_
+
+#include <memory>
+#include <vector>
+
+#include "ceres/ceres.h"
+#include "pfdm/fit/free_entries.h"
+#include "pfdm/fit/gauge.h"
+#include "pfdm/model/model.h"
+
+namespace pfdm {
+
+class FrameBlocks {
+ public:
+  // Adds the blocks to `problem`; on frames after the reference the pose is
+  // held.  Both must outlive this.
+  FrameBlocks(FrameKind kind, Model* model, ceres::Problem* problem);
+
+  // The free entries of a block (kGlobalsBlock or a knot index); null when
+  // the block is constant.
+  const FreeEntries* entries(int block) const {
+    return blocks_[block + 1].entries.get();
+  }
+
+  // Adds `cost` over the pose (when with_pose) and then the listed blocks,
+  // each as the problem holds it.  A cost over whole blocks is wrapped in
+  // FreeEntriesCost; one that takes the blocks as they are says so.
+  enum class Takes { kWholeBlocks, kProblemBlocks };
+  void AddResidual(ceres::CostFunction* cost, ceres::LossFunction* loss,
+                   bool with_pose, const std::vector<int>& blocks,
+                   Takes takes = Takes::kWholeBlocks);
+
+  // Calls f(parameter block, its free functions) for each free block.
+  template <typename F>
+  void ForEachFree(F f) const {
+    for (const Block& block : blocks_) {
+      if (block.entries) f(block.parameters, block.entries->free());
+    }
+  }
+
+  // Copies the free entries into the model state.
+  void Store() const;
+
+ private:
+  struct Block {
+    double* parameters = nullptr;
+    std::unique_ptr<FreeEntries> entries;  // Null when the block is constant.
+  };
+
+  void Add(double* values, const std::vector<int>& held);
+
+  Model* model_;
+  ceres::Problem* problem_;
+  std::vector<Block> blocks_;  // The globals, then the knots.
+};
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_FRAME_BLOCKS_H_

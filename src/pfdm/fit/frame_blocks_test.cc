@@ -1,0 +1,50 @@
+#include "pfdm/fit/frame_blocks.h"
+
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+Model UniformModel() {
+  FunctionValues values = DefaultFunctionValues();
+  values[kA0] = 50.0;
+  values[kA1] = values[kA2] = 0.5;
+  values[kA3] = 0.8;
+  return Model::Uniform(ModelConfig::Paper(5), values);
+}
+
+TEST(FrameBlocksTest, ReferenceFrameVariesThePoseAndTheGaugeFreeEntries) {
+  Model model = UniformModel();
+  ceres::Problem problem;
+  FrameBlocks blocks(FrameKind::kReference, &model, &problem);
+  EXPECT_FALSE(problem.IsParameterBlockConstant(model.state.center.data()));
+  EXPECT_EQ(blocks.entries(kGlobalsBlock), nullptr);  // a0 is held.
+  ASSERT_NE(blocks.entries(2), nullptr);
+  // a1, a2, e1o, e2o: the rest are held on frame 0 (gauge.h).
+  EXPECT_EQ(blocks.entries(2)->size(), 4);
+  EXPECT_EQ(blocks.entries(2)->IndexOf(kTau), -1);
+  // The pose, the globals and five knots.
+  EXPECT_EQ(problem.NumParameterBlocks(), 2 + 1 + 5);
+}
+
+TEST(FrameBlocksTest, TrackedFrameHoldsThePoseAndStoresItsEntries) {
+  Model model = UniformModel();
+  ceres::Problem problem;
+  FrameBlocks blocks(FrameKind::kTracked, &model, &problem);
+  EXPECT_TRUE(problem.IsParameterBlockConstant(model.state.center.data()));
+  EXPECT_TRUE(problem.IsParameterBlockConstant(model.state.quaternion.data()));
+  const FreeEntries* knot = blocks.entries(1);
+  ASSERT_NE(knot, nullptr);
+  const int tau = knot->IndexOf(kTau);
+  ASSERT_GE(tau, 0);
+  const_cast<FreeEntries*>(knot)->parameters()[tau] = 0.25;
+  EXPECT_EQ(model.state.knots[1][kTau], 0.0);
+  blocks.Store();
+  EXPECT_EQ(model.state.knots[1][kTau], 0.25);
+  int free_blocks = 0;
+  blocks.ForEachFree([&](double*, const std::vector<int>&) { ++free_blocks; });
+  EXPECT_EQ(free_blocks, 5);
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,191 @@
+#include "pfdm/fit/frame_problem.h"
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "ceres/ceres.h"
+#include "pfdm/fit/correspondence.h"
+#include "pfdm/fit/data_cost.h"
+#include "pfdm/fit/frame_blocks.h"
+#include "pfdm/fit/point_group_residual.h"
+#include "pfdm/fit/point_residual.h"
+#include "pfdm/fit/regularizer.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+// Points per grouped residual block: enough to amortize Ceres' per-block
+// work, few enough to leave blocks for every thread.
+constexpr size_t kPointsPerGroup = 512;
+
+// Millimetres of model-point motion per unit of each function, for the
+// regularizers.  Everything scales with the data, so scaled data get scaled
+// lengths.  tau is weighted as if at radius a0, about four times the LV's:
+// near the apex the rings are too small for the data to pin the twist, and
+// twist varies slowly along the axis, so its smoothness carries more.
+FunctionValues FunctionScales(const Model& model,
+                              const std::vector<int>& held) {
+  const double a0 = model.state.globals[kA0];
+  const double radius =
+      a0 * 0.5 * (model.FunctionAt(kA1, 0.0) + model.FunctionAt(kA2, 0.0));
+  FunctionValues scales{};
+  scales[kA0] = 1.0;
+  scales[kA1] = scales[kA2] = scales[kA3] = a0;
+  scales[kEps1] = scales[kEps2] = radius;
+  scales[kTau] = a0;
+  scales[kB0] = scales[kB2] = scales[kE1o] = scales[kE2o] = scales[kE3o] = 1.0;
+  scales[kB1] = scales[kB3] = radius;
+  for (int f : held) scales[f] = 0.0;
+  return scales;
+}
+
+// The groups' multipliers per free entry of each free block, and for the
+// pose when it is free.
+void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
+                      const DampingGroups& groups, Model* model,
+                      SolverOptions* solver) {
+  blocks.ForEachFree([&](double* block, const std::vector<int>& free) {
+    std::vector<double>& scales = solver->damping_scale[block];
+    for (int f : free) scales.push_back(groups.Of(Function(f)));
+  });
+  for (double* pose :
+       {model->state.center.data(), model->state.quaternion.data()}) {
+    if (problem.IsParameterBlockConstant(pose)) continue;
+    solver->damping_scale[pose].assign(problem.ParameterBlockTangentSize(pose),
+                                       groups.pose);
+  }
+}
+
+ceres::LossFunction* MakeLoss(const FitOptions& options) {
+  if (options.loss == "none") return nullptr;
+  if (options.loss == "huber")
+    return new ceres::HuberLoss(options.loss_scale_mm);
+  if (options.loss == "cauchy") {
+    return new ceres::CauchyLoss(options.loss_scale_mm);
+  }
+  throw InputError("unknown --loss '" + options.loss +
+                   "' (expected none, huber or cauchy)");
+}
+
+}  // namespace
+
+SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
+                        const std::vector<MaterialPoint>& material,
+                        const std::vector<bool>& sliding,
+                        std::optional<double> rim_height, FrameKind kind,
+                        const ModelState& prior, const FitOptions& options,
+                        Model* model) {
+  const ModelConfig& config = model->config;
+  const KnotGrid grid = config.Grid();
+  ceres::Problem problem;
+  FrameBlocks blocks(kind, model, &problem);
+  const bool reference = kind == FrameKind::kReference;
+
+  ceres::LossFunction* loss = MakeLoss(options);
+  const FunctionMask free_mask = config.FreeMask();
+  const bool unit_exponents = model->UnitExponents();
+  // Analytic points go into PointGroupResidual blocks, which take the
+  // problem's blocks as they are: many points between the same two knots,
+  // or one each when every point carries its own robust loss.
+  const bool analytic = options.jacobian == JacobianKind::kAnalytic;
+  const size_t group_size = loss == nullptr ? kPointsPerGroup : 1;
+  std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
+  auto add_group = [&](int k0) {
+    const std::array<const FreeEntries*, 3> entries = {
+        blocks.entries(kGlobalsBlock), blocks.entries(k0),
+        blocks.entries(k0 + 1)};
+    const std::array<bool, 5> varied = {
+        reference, reference, entries[0] != nullptr, entries[1] != nullptr,
+        entries[2] != nullptr};
+    blocks.AddResidual(new PointGroupResidual(std::move(groups[k0]), free_mask,
+                                              unit_exponents, entries, varied),
+                       loss, true, {kGlobalsBlock, k0, k0 + 1},
+                       FrameBlocks::Takes::kProblemBlocks);
+    groups[k0].clear();
+  };
+  for (size_t i = 0; i < points.size(); ++i) {
+    const KnotSpan span = grid.Span(material[i].u);
+    const double u = material[i].u, v = material[i].v;
+    const bool plane = sliding[i] && u < config.u_max;
+    if (analytic) {
+      groups[span.k0].push_back(
+          plane ? PointSample(points[i], u, v, span.weight,
+                              SurfaceNormal(*model, u, v))
+                : PointSample(points[i], u, v, span.weight));
+      if (groups[span.k0].size() == group_size) add_group(span.k0);
+      continue;
+    }
+    ceres::CostFunction* cost =
+        plane ? MakeSurfaceCost(points[i], u, v, span.weight, free_mask,
+                                unit_exponents, SurfaceNormal(*model, u, v),
+                                options.jacobian)
+              : MakePointCost(points[i], u, v, span.weight, free_mask,
+                              unit_exponents, options.jacobian);
+    blocks.AddResidual(cost, loss, true, {kGlobalsBlock, span.k0, span.k0 + 1});
+  }
+  for (int k0 = 0; k0 + 1 < config.num_knots; ++k0) {
+    if (!groups[k0].empty()) add_group(k0);
+  }
+
+  const double points_per_knot =
+      static_cast<double>(points.size()) / config.num_knots;
+  const FunctionValues knot_scales =
+      FunctionScales(*model, HeldEntries(config, FrameKind::kTracked, 0));
+  if (options.smoothness_weight > 0.0) {
+    const double sqrt_weight =
+        std::sqrt(options.smoothness_weight * points_per_knot);
+    for (int k = 1; k + 1 < config.num_knots; ++k) {
+      blocks.AddResidual(SmoothnessResidual::Create(sqrt_weight, knot_scales),
+                         nullptr, false, {k - 1, k, k + 1});
+    }
+  }
+  if (rim_height) {
+    blocks.AddResidual(
+        RimResidual::Create(std::sqrt(points_per_knot), std::sin(config.u_max),
+                            *rim_height, free_mask),
+        nullptr, false, {kGlobalsBlock, config.num_knots - 1});
+  }
+  if (reference && config.modes[kE1o] == FunctionMode::kFree) {
+    std::vector<int> knots;
+    for (int k = 0; k < config.num_knots; ++k) knots.push_back(k);
+    blocks.AddResidual(
+        new AxisGaugeResidual(config.num_knots,
+                              kGaugeWeight * std::sqrt(points.size())),
+        nullptr, false, knots);
+  }
+  if (options.prior_weight > 0.0) {
+    const double sqrt_weight =
+        std::sqrt(options.prior_weight * points_per_knot);
+    for (int k = 0; k < config.num_knots; ++k) {
+      blocks.AddResidual(
+          PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
+          nullptr, false, {k});
+    }
+    blocks.AddResidual(
+        PriorResidual::Create(
+            std::sqrt(options.prior_weight * points.size()),
+            FunctionScales(*model, HeldEntries(config, kind, kGlobalsBlock)),
+            prior.globals),
+        nullptr, false, {kGlobalsBlock});
+  }
+
+  SolverOptions solver = options.solver;
+  if (solver.kind == SolverKind::kIntegrator) {
+    AddDampingScales(problem, blocks, options.damping_groups, model, &solver);
+  }
+  if (solver.on_step) {
+    solver.on_step = [&blocks,
+                      observe = solver.on_step](const SolverTracePoint& point) {
+      blocks.Store();
+      observe(point);
+    };
+  }
+  SolverReport report = SolveProblem(&problem, solver);
+  blocks.Store();
+  return report;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,33 @@
+// One frame's problem for fixed material points: the data residuals, the
+// regularizer and the gauge terms over the frame's blocks, solved by the
+// chosen solver.
+#ifndef PFDM_FIT_FRAME_PROBLEM_H_
+#define PFDM_FIT_FRAME_PROBLEM_H_
+
+#include <optional>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/fit/correspondence.h"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/gauge.h"
+#include "pfdm/model/model.h"
+#include "pfdm/solvers/solver.h"
+
+namespace pfdm {
+
+// Points listed in `sliding` get the point-to-plane residual, except where
+// they lie past the base rim: there the plane says nothing about how far,
+// so they pull with the whole distance.  rim_height, when given, is where
+// the base rim must sit (RimResidual).  `prior` is the previous frame's
+// state, which the prior term pulls toward.  Leaves the solution in *model.
+SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
+                        const std::vector<MaterialPoint>& material,
+                        const std::vector<bool>& sliding,
+                        std::optional<double> rim_height, FrameKind kind,
+                        const ModelState& prior, const FitOptions& options,
+                        Model* model);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_FRAME_PROBLEM_H_

@@ -1,0 +1,46 @@
+#include "pfdm/fit/frame_problem.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+// A tracked frame whose points are the model's own material points after a
+// known change of a1 and tau: one solve recovers the change.
+TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
+  FunctionValues values = DefaultFunctionValues();
+  values[kA0] = 50.0;
+  values[kA1] = values[kA2] = 0.5;
+  values[kA3] = 0.8;
+  Model model = Model::Uniform(ModelConfig::Paper(5), values);
+  Model truth = model;
+  for (FunctionValues& knot : truth.state.knots) {
+    knot[kA1] = 0.42;
+    knot[kTau] = 0.1;
+  }
+  std::vector<Eigen::Vector3d> points;
+  std::vector<MaterialPoint> material;
+  for (double u = -1.3; u < 0.5; u += 0.1) {
+    for (double v = -M_PI; v < M_PI; v += 0.2) {
+      material.push_back({u, v});
+      points.push_back(truth.WorldPoint(u, v));
+    }
+  }
+  FitOptions options;
+  options.prior_weight = 0.0;
+  const SolverReport report = SolveFrame(
+      points, material, std::vector<bool>(points.size(), false), std::nullopt,
+      FrameKind::kTracked, model.state, options, &model);
+  ASSERT_TRUE(report.usable);
+  for (int k = 1; k < 5; ++k) {
+    EXPECT_NEAR(model.state.knots[k][kA1], 0.42, 1e-6) << k;
+    EXPECT_NEAR(model.state.knots[k][kTau], 0.1, 1e-6) << k;
+  }
+  EXPECT_NEAR((model.WorldPoint(0.2, 1.0) - truth.WorldPoint(0.2, 1.0)).norm(),
+              0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace pfdm
