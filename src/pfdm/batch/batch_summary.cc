@@ -45,8 +45,7 @@ CaseSummary SummaryFromFitJson(const std::string& name,
     summary.longitudinal_shortening_percent =
         es.at("longitudinal_shortening_percent").get<double>();
     summary.radial_contraction_percent =
-        0.5 * (es.at("radial_contraction_x_percent").get<double>() +
-               es.at("radial_contraction_y_percent").get<double>());
+        es.at("radial_contraction_percent").get<double>();
   } catch (const nlohmann::json::exception& error) {
     throw InputError(where + ": not a pfdm fit.json: " + error.what());
   }

@@ -12,16 +12,13 @@ constexpr const char* kFitJson = R"({
   "frames": [
     {"rms_mm": 0.5, "clinical": {"net_twist_deg": 0.0,
       "longitudinal_shortening_percent": 0.0,
-      "radial_contraction_x_percent": 0.0,
-      "radial_contraction_y_percent": 0.0}},
+      "radial_contraction_percent": 0.0}},
     {"rms_mm": 1.25, "clinical": {"net_twist_deg": 12.5,
       "longitudinal_shortening_percent": 15.0,
-      "radial_contraction_x_percent": 30.0,
-      "radial_contraction_y_percent": 20.0}},
+      "radial_contraction_percent": 25.0}},
     {"rms_mm": 0.75, "clinical": {"net_twist_deg": 3.0,
       "longitudinal_shortening_percent": 5.0,
-      "radial_contraction_x_percent": 5.0,
-      "radial_contraction_y_percent": 5.0}}]})";
+      "radial_contraction_percent": 5.0}}]})";
 
 TEST(BatchSummaryTest, ReadsTheNumbersAtEndSystoleFromFitJson) {
   const CaseSummary s = SummaryFromFitJson("p1", kFitJson, "p1/fit.json");

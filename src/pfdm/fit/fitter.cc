@@ -121,6 +121,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
   Model model =
       InitializeModel(config, Positions(sequence.frames[0]), options.hint);
   ModelState prior = model.state;
+  // Frame 0's pose, which later frames may tilt and move but not spin.
+  std::array<double, 4> reference_quaternion = model.state.quaternion;
+  ModelState reference_state = model.state;
   std::unordered_map<std::int64_t, MaterialPoint> tracked_material;
 
   for (const Frame& frame : sequence.frames) {
@@ -166,8 +169,10 @@ SequenceFit FitSequence(const PointSequence& sequence,
                         last.pseudo_time + point.pseudo_time);
         };
       }
-      report = SolveFrame(points, fit.material, sliding, rim_height, kind,
-                          prior, round_options, &model);
+      report =
+          SolveFrame(points, fit.material, sliding, rim_height, kind,
+                     kind == FrameKind::kUntracked ? reference_state : prior,
+                     reference_quaternion, round_options, &model);
       fit.iterations += report.iterations;
       fit.residual_evaluations += report.residual_evaluations;
       fit.jacobian_evaluations += report.jacobian_evaluations;
@@ -212,6 +217,10 @@ SequenceFit FitSequence(const PointSequence& sequence,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
             .count();
     prior = model.state;
+    if (reference) {
+      reference_quaternion = model.state.quaternion;
+      reference_state = model.state;
+    }
     result.frames.push_back(std::move(fit));
   }
   return result;

@@ -105,11 +105,26 @@ TEST(FitterTest, FrameZeroHonoursTheGaugeConvention) {
   }
   EXPECT_NEAR(mean_e1o, 0.0, 1e-3);
   EXPECT_NEAR(trend_e1o, 0.0, 1e-3);
-  // Later frames keep frame 0's pose and scale.
+  // Later frames keep frame 0's scale and its spin about the long axis (the
+  // z component of q0* q), and their axes are their ring centres' line too.
+  const Eigen::Quaterniond q0(state.quaternion[0], state.quaternion[1],
+                              state.quaternion[2], state.quaternion[3]);
   for (const FrameFit& frame : fit.frames) {
-    EXPECT_EQ(frame.state.center, state.center);
-    EXPECT_EQ(frame.state.quaternion, state.quaternion);
+    const Eigen::Quaterniond q(
+        frame.state.quaternion[0], frame.state.quaternion[1],
+        frame.state.quaternion[2], frame.state.quaternion[3]);
+    EXPECT_NEAR((q0.conjugate() * q).z(), 0.0, 1e-4) << frame.frame;
     EXPECT_EQ(frame.state.globals[kA0], state.globals[kA0]);
+    for (int f : {kE1o, kE2o}) {
+      double mean = 0.0, trend = 0.0;
+      for (int k = 0; k < num_knots; ++k) {
+        mean += frame.state.knots[k][f] / num_knots;
+        trend +=
+            (k - 0.5 * (num_knots - 1)) * frame.state.knots[k][f] / num_knots;
+      }
+      EXPECT_NEAR(mean, 0.0, 1e-3) << frame.frame;
+      EXPECT_NEAR(trend, 0.0, 1e-3) << frame.frame;
+    }
   }
 }
 

@@ -18,10 +18,6 @@ FrameBlocks::FrameBlocks(FrameKind kind, Model* model, ceres::Problem* problem)
   problem->AddParameterBlock(state.center.data(), 3);
   problem->AddParameterBlock(state.quaternion.data(), 4,
                              new ceres::QuaternionManifold);
-  if (kind != FrameKind::kReference) {
-    problem->SetParameterBlockConstant(state.center.data());
-    problem->SetParameterBlockConstant(state.quaternion.data());
-  }
   Add(state.globals.data(), HeldEntries(model->config, kind, kGlobalsBlock));
   for (int k = 0; k < model->config.num_knots; ++k) {
     Add(state.knots[k].data(), HeldEntries(model->config, kind, k));

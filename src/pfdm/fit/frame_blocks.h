@@ -16,8 +16,8 @@ namespace pfdm {
 
 class FrameBlocks {
  public:
-  // Adds the blocks to `problem`; on frames after the reference the pose is
-  // held.  Both must outlive this.
+  // Adds the blocks to `problem`, the pose free in every frame (its spin
+  // after frame 0 is held by SpinGaugeResidual).  Both must outlive this.
   FrameBlocks(FrameKind kind, Model* model, ceres::Problem* problem);
 
   // The free entries of a block (kGlobalsBlock or a knot index); null when

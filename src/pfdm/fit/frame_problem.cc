@@ -9,9 +9,11 @@
 #include "pfdm/fit/correspondence.h"
 #include "pfdm/fit/data_cost.h"
 #include "pfdm/fit/frame_blocks.h"
+#include "pfdm/fit/meridian_gauge_residual.h"
 #include "pfdm/fit/point_group_residual.h"
 #include "pfdm/fit/point_residual.h"
 #include "pfdm/fit/regularizer.h"
+#include "pfdm/fit/spin_gauge_residual.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -76,8 +78,9 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<MaterialPoint>& material,
                         const std::vector<bool>& sliding,
                         std::optional<double> rim_height, FrameKind kind,
-                        const ModelState& prior, const FitOptions& options,
-                        Model* model) {
+                        const ModelState& prior,
+                        const std::array<double, 4>& reference_quaternion,
+                        const FitOptions& options, Model* model) {
   const ModelConfig& config = model->config;
   const KnotGrid grid = config.Grid();
   ceres::Problem problem;
@@ -97,9 +100,9 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     const std::array<const FreeEntries*, 3> entries = {
         blocks.entries(kGlobalsBlock), blocks.entries(k0),
         blocks.entries(k0 + 1)};
-    const std::array<bool, 5> varied = {
-        reference, reference, entries[0] != nullptr, entries[1] != nullptr,
-        entries[2] != nullptr};
+    const std::array<bool, 5> varied = {true, true, entries[0] != nullptr,
+                                        entries[1] != nullptr,
+                                        entries[2] != nullptr};
     blocks.AddResidual(new PointGroupResidual(std::move(groups[k0]), free_mask,
                                               unit_exponents, entries, varied),
                        loss, true, {kGlobalsBlock, k0, k0 + 1},
@@ -143,12 +146,31 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     }
   }
   if (rim_height) {
+    // The rim's target in world terms, along the axis the solve starts from.
+    const Eigen::Vector3d axis = model->Rotation().col(2);
+    const double top =
+        axis.dot(Eigen::Vector3d(model->state.center.data())) + *rim_height;
     blocks.AddResidual(
         RimResidual::Create(std::sqrt(points_per_knot), std::sin(config.u_max),
-                            *rim_height, free_mask),
-        nullptr, false, {kGlobalsBlock, config.num_knots - 1});
+                            axis, top, free_mask),
+        nullptr, true, {kGlobalsBlock, config.num_knots - 1});
   }
-  if (reference && config.modes[kE1o] == FunctionMode::kFree) {
+  if (!reference) {
+    problem.AddResidualBlock(SpinGaugeResidual::Create(
+                                 kGaugeWeight * std::sqrt(points.size()),
+                                 SpinGaugeLength(*model), reference_quaternion),
+                             nullptr, model->state.quaternion.data());
+  }
+  if (kind == FrameKind::kUntracked &&
+      config.modes[kA3] == FunctionMode::kFree) {
+    for (int k = 0; k + 1 < config.num_knots; ++k) {
+      blocks.AddResidual(
+          MeridianGaugeResidual::Create(kGaugeWeight * std::sqrt(points.size()),
+                                        model->state.globals[kA0]),
+          nullptr, false, {k, k + 1});
+    }
+  }
+  if (config.modes[kE1o] == FunctionMode::kFree) {
     std::vector<int> knots;
     for (int k = 0; k < config.num_knots; ++k) knots.push_back(k);
     blocks.AddResidual(
@@ -156,9 +178,11 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                               kGaugeWeight * std::sqrt(points.size())),
         nullptr, false, knots);
   }
-  if (options.prior_weight > 0.0) {
-    const double sqrt_weight =
-        std::sqrt(options.prior_weight * points_per_knot);
+  const double prior_weight = kind == FrameKind::kUntracked
+                                  ? options.untracked_prior_weight
+                                  : options.prior_weight;
+  if (prior_weight > 0.0) {
+    const double sqrt_weight = std::sqrt(prior_weight * points_per_knot);
     for (int k = 0; k < config.num_knots; ++k) {
       blocks.AddResidual(
           PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
@@ -166,7 +190,7 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     }
     blocks.AddResidual(
         PriorResidual::Create(
-            std::sqrt(options.prior_weight * points.size()),
+            std::sqrt(prior_weight * points.size()),
             FunctionScales(*model, HeldEntries(config, kind, kGlobalsBlock)),
             prior.globals),
         nullptr, false, {kGlobalsBlock});

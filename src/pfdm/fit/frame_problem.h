@@ -4,6 +4,7 @@
 #ifndef PFDM_FIT_FRAME_PROBLEM_H_
 #define PFDM_FIT_FRAME_PROBLEM_H_
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -19,14 +20,19 @@ namespace pfdm {
 // Points listed in `sliding` get the point-to-plane residual, except where
 // they lie past the base rim: there the plane says nothing about how far,
 // so they pull with the whole distance.  rim_height, when given, is where
-// the base rim must sit (RimResidual).  `prior` is the previous frame's
-// state, which the prior term pulls toward.  Leaves the solution in *model.
+// the base rim must sit (RimResidual), along the model's axis from its
+// centre as the solve starts.  `prior` is the state the prior term pulls
+// toward (the previous frame's; frame 0's for untracked frames, with
+// FitOptions::untracked_prior_weight); reference_quaternion frame 0's pose,
+// which later frames may not spin away from (SpinGaugeResidual).  Leaves the
+// solution in *model.
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<MaterialPoint>& material,
                         const std::vector<bool>& sliding,
                         std::optional<double> rim_height, FrameKind kind,
-                        const ModelState& prior, const FitOptions& options,
-                        Model* model);
+                        const ModelState& prior,
+                        const std::array<double, 4>& reference_quaternion,
+                        const FitOptions& options, Model* model);
 
 }  // namespace pfdm
 

@@ -8,7 +8,8 @@ namespace pfdm {
 namespace {
 
 // A tracked frame whose points are the model's own material points after a
-// known change of a1 and tau: one solve recovers the change.
+// known change of a1 and tau and a shift of the whole: one solve recovers
+// the change, the shift in the pose and the twist in tau (not the pose).
 TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
   FunctionValues values = DefaultFunctionValues();
   values[kA0] = 50.0;
@@ -20,6 +21,7 @@ TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
     knot[kA1] = 0.42;
     knot[kTau] = 0.1;
   }
+  truth.state.center = {3.0, -2.0, 5.0};
   std::vector<Eigen::Vector3d> points;
   std::vector<MaterialPoint> material;
   for (double u = -1.3; u < 0.5; u += 0.1) {
@@ -30,14 +32,20 @@ TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
   }
   FitOptions options;
   options.prior_weight = 0.0;
-  const SolverReport report = SolveFrame(
-      points, material, std::vector<bool>(points.size(), false), std::nullopt,
-      FrameKind::kTracked, model.state, options, &model);
+  const SolverReport report =
+      SolveFrame(points, material, std::vector<bool>(points.size(), false),
+                 std::nullopt, FrameKind::kTracked, model.state,
+                 model.state.quaternion, options, &model);
   ASSERT_TRUE(report.usable);
   for (int k = 1; k < 5; ++k) {
     EXPECT_NEAR(model.state.knots[k][kA1], 0.42, 1e-6) << k;
     EXPECT_NEAR(model.state.knots[k][kTau], 0.1, 1e-6) << k;
   }
+  EXPECT_NEAR((Eigen::Vector3d(model.state.center.data()) -
+               Eigen::Vector3d(3.0, -2.0, 5.0))
+                  .norm(),
+              0.0, 1e-6);
+  EXPECT_NEAR(model.state.quaternion[3], 0.0, 1e-9);
   EXPECT_NEAR((model.WorldPoint(0.2, 1.0) - truth.WorldPoint(0.2, 1.0)).norm(),
               0.0, 1e-6);
 }

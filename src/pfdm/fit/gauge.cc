@@ -26,12 +26,17 @@ std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
       hold = hold ||
              std::find(std::begin(kReferenceHeld), std::end(kReferenceHeld),
                        f) != std::end(kReferenceHeld);
-      hold = hold || ((f == kE1o || f == kE2o) && block == kGlobalsBlock);
     }
+    hold = hold || ((f == kE1o || f == kE2o) && block == kGlobalsBlock);
     if (kind == FrameKind::kUntracked) hold = hold || f == kTau;
     if (hold) held.push_back(f);
   }
   return held;
+}
+
+double SpinGaugeLength(const Model& model) {
+  return model.state.globals[kA0] * 0.5 *
+         (model.FunctionAt(kA1, 0.0) + model.FunctionAt(kA2, 0.0));
 }
 
 double TopHeight(const std::vector<Eigen::Vector3d>& points,

@@ -31,15 +31,19 @@ constexpr double kGaugeWeight = 1e1;
 // twist or bending by definition; a3 is held (at the value initialization
 // gave, with a0 spanning the data: see SpanAxialExtent), since a surface
 // seen only through distances fixes the meridian's shape but not how u runs
-// along it; its axis is the least-squares line of the ring centres
-// (AxisGaugeResidual), which leaves the pose to carry the rigid motion.
-// With offsets constant in u they are simply held at zero.  A later frame
+// along it.  In every frame the axis is the least-squares line of the ring
+// centres (AxisGaugeResidual), which leaves the pose to carry translation
+// and tilt; offsets constant in u are simply held at zero.  Later frames fit
+// the pose too, but not its spin about the long axis (SpinGaugeResidual),
+// so tau is rotation about the axis relative to frame 0.  A later frame
 // with no tracked point holds tau: without material points a turn of a
-// ring about the axis is invisible, and the fit would only drift.  Later
-// frames also hold the pose (FrameBlocks), so tau is rotation relative to
-// frame 0.
+// ring about the axis is invisible, and the fit would only drift.
 std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
                              int block);
+
+// Length (mm per radian) that converts the spin gauge's angle to motion at
+// the model's radius: a0 times the mean of a1 and a2 at the equator.
+double SpinGaugeLength(const Model& model);
 
 // Height along the model axis of the highest data point that is not an
 // outlier: with a robust loss, points farther than three loss scales from

@@ -101,40 +101,50 @@ class SurfaceResidual {
   Eigen::Vector3d data_;
 };
 
-// r = sqrt(w) (a0 a3(u_max) sin(u_max) + e3o(u_max) - z_top): the base rim,
-// whose axial height this is in the model frame, at the highest data point.
-// Contours say where the wall is, not which latitude a point has, so
-// without it nothing stops an open model from reaching past the data.
+// r = sqrt(w) (n . (c + R m) - top), m = (e1o, e2o, a0 a3 sin(u_max) + e3o)
+// at u_max: the centre of the base rim (bending leaves a ring's mean height
+// alone) at the highest data point along the world axis n, top being that
+// point's n . x.  Contours say where the wall is, not which latitude a point
+// has, so without it nothing stops an open model from reaching past the
+// data; in world terms, since later frames move the pose.
 class RimResidual {
  public:
-  RimResidual(double sqrt_weight, double sin_u_max, double z_top,
-              FunctionMask free_mask)
+  RimResidual(double sqrt_weight, double sin_u_max, const Eigen::Vector3d& axis,
+              double top, FunctionMask free_mask)
       : sqrt_weight_(sqrt_weight),
         sin_u_max_(sin_u_max),
-        z_top_(z_top),
+        axis_(axis),
+        top_(top),
         free_mask_(free_mask) {}
 
   template <typename T>
-  bool operator()(const T* globals, const T* last_knot, T* residual) const {
+  bool operator()(const T* center, const T* quaternion, const T* globals,
+                  const T* last_knot, T* residual) const {
     auto value = [&](int f) {
       return (free_mask_ >> f) & 1u ? last_knot[f] : globals[f];
     };
-    residual[0] = sqrt_weight_ *
-                  (value(kA0) * value(kA3) * sin_u_max_ + value(kE3o) - z_top_);
+    const Eigen::Matrix<T, 3, 1> rim_centre(
+        value(kE1o), value(kE2o),
+        value(kA0) * value(kA3) * sin_u_max_ + value(kE3o));
+    const Eigen::Matrix<T, 3, 1> x =
+        WorldFromModel(center, quaternion, rim_centre);
+    residual[0] = sqrt_weight_ * (axis_.cast<T>().dot(x) - top_);
     return true;
   }
 
   static ceres::CostFunction* Create(double sqrt_weight, double sin_u_max,
-                                     double z_top, FunctionMask free_mask) {
-    return new ceres::AutoDiffCostFunction<RimResidual, 1, kNumFunctions,
+                                     const Eigen::Vector3d& axis, double top,
+                                     FunctionMask free_mask) {
+    return new ceres::AutoDiffCostFunction<RimResidual, 1, 3, 4, kNumFunctions,
                                            kNumFunctions>(
-        new RimResidual(sqrt_weight, sin_u_max, z_top, free_mask));
+        new RimResidual(sqrt_weight, sin_u_max, axis, top, free_mask));
   }
 
  private:
   double sqrt_weight_;
   double sin_u_max_;
-  double z_top_;
+  Eigen::Vector3d axis_;
+  double top_;
   FunctionMask free_mask_;
 };
 

@@ -54,12 +54,14 @@ TEST(PointResidualTest, ResidualIsModelPointMinusData) {
                                 s.knot0.data(), s.knot1.data()};
   double residual[3];
   ASSERT_TRUE(cost->Evaluate(parameters, residual, nullptr));
-  // u = v = 0: e = (a0 a1, 0, 0); the tilt bend lifts it by
-  // b0 (cos(pi/2 (a1 - b1)) - cos(pi/2 b1)); twist and offsets follow.
+  // u = v = 0: e = (a0 a1, 0, 0) on a ring of half extent a1; the bend
+  // lifts it by b0 (cos(pi/2 (a1 - b1)) - J0(pi/2 a1) cos(pi/2 b1)); twist
+  // and offsets follow.
   const FunctionValues& f = s.globals;
   const double e1 = f[kA0] * f[kA1];
   const double z = f[kB0] * (std::cos(M_PI / 2 * (e1 / f[kA0] - f[kB1])) -
-                             std::cos(M_PI / 2 * f[kB1]));
+                             std::cyl_bessel_j(0.0, M_PI / 2 * f[kA1]) *
+                                 std::cos(M_PI / 2 * f[kB1]));
   const Eigen::Vector3d expected(e1 * std::cos(f[kTau]) + f[kE1o],
                                  e1 * std::sin(f[kTau]) + f[kE2o], z + f[kE3o]);
   EXPECT_NEAR(residual[0], expected.x() - data.x(), 1e-12);

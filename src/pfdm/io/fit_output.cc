@@ -24,14 +24,15 @@ constexpr int kSurfaceMeridians = 48;
 constexpr const char* kGaugeConvention =
     "a0 (scale) is set on frame 0 so that the model, a3 = 0.8 there, spans "
     "the data from its fitted apex to the highest point along the axis, and "
-    "is held afterwards; the pose is fitted on frame 0 with tau = 0 and no "
-    "bending, the axis being the least-squares line of the ring centres "
-    "(offsets e1o, e2o with zero mean and zero linear trend over the knots), "
-    "and held in later frames, so tau(u, t) is rotation about the LV axis "
-    "relative to frame 0 and offsets, bending and a1..a3 are motion relative "
-    "to frame 0's axis; b1 and b3 are shifted by multiples of 2 (negating b0 "
-    "or b2 for odd ones, the same bend) until their knot means lie in "
-    "[0, 2).";
+    "is held afterwards; frame 0 fits the pose with tau = 0 and no bending; "
+    "in every frame the axis is the least-squares line of the ring centres "
+    "(offsets e1o, e2o with zero mean and zero linear trend over the knots; "
+    "e3o = 0), so translation and tilt are the pose's; later frames fit the "
+    "pose but not its spin about frame 0's long axis, so tau(u, t) is "
+    "rotation about the LV axis relative to frame 0; bending has zero mean "
+    "over every ring, so a ring's axial position is a3's and the pose's; b1 "
+    "and b3 are shifted by multiples of 2 (negating b0 or b2 for odd ones, "
+    "the same bend) until their knot means lie in [0, 2).";
 
 constexpr const char* kEjectionDefinition =
     "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; "
@@ -42,9 +43,26 @@ constexpr const char* kRegionsConvention =
     "apex (segments 1-6 basal, 7-12 mid, 13-16 apical), each cut into equal "
     "sectors of longitude v counted counter-clockwise about +z (seen from "
     "the base) from v = -180 degrees, the model's -x axis, not the RV "
-    "insertion; per frame, twist_deg is the segment's mean tau and "
-    "radial_contraction_percent the mean of 1 - r / r(frame 0), r the "
-    "distance from the ring centre.";
+    "insertion; per frame, rotation_deg is the mean turn of the segment's "
+    "material points about frame 0's long axis (about their ring's "
+    "centroid) and radial_contraction_percent the mean of 1 - r / r(frame "
+    "0), r a material point's distance from its ring's centroid.";
+
+constexpr const char* kClinicalDefinition =
+    "Measured on the fitted model's material points against frame 0's, "
+    "whatever share of the motion the pose and the functions carry: "
+    "apex_rotation_deg and base_rotation_deg, the mean turn about frame 0's "
+    "long axis (right-handed, apex to base) of the material rings at 0.2 and "
+    "0.85 of frame 0's length from the apex pole to the base rim; "
+    "net_twist_deg = base - apex; torsion_deg_per_cm, net twist over frame "
+    "0's distance between the two rings; shear_angle_deg, the "
+    "circumferential-longitudinal shear angle atan(twist (r_apex + r_base) / "
+    "(2 D)) on frame 0's geometry; radial_contraction_percent, the mean over "
+    "ten rings (0.05 to 0.95 of the length) of 1 - r / r0, r the mean "
+    "distance of a ring's material points from their centroid; "
+    "longitudinal_shortening_percent, 1 - L / L0, L from the apex pole to the "
+    "centroid of the base rim's material points.  The *_per_knot ratios are "
+    "a1, a2, a3 against frame 0 (the paper's Fig. 5).";
 
 std::string CavityClosure(const FitAnalysis& analysis) {
   if (analysis.base_planes.empty()) {
@@ -186,10 +204,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
           {{"net_twist_deg", summary.net_twist_deg},
            {"apex_rotation_deg", summary.apex_rotation_deg},
            {"base_rotation_deg", summary.base_rotation_deg},
-           {"radial_contraction_x_percent",
-            summary.radial_contraction_x_percent},
-           {"radial_contraction_y_percent",
-            summary.radial_contraction_y_percent},
+           {"torsion_deg_per_cm", summary.torsion_deg_per_cm},
+           {"shear_angle_deg", summary.shear_angle_deg},
+           {"radial_contraction_percent", summary.radial_contraction_percent},
            {"longitudinal_shortening_percent",
             summary.longitudinal_shortening_percent},
            {"radial_ratio_x_per_knot", summary.radial_ratio_x},
@@ -207,9 +224,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   json regions = json::array();
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
     const WallRegion& region = analysis.regions[r];
-    std::vector<double> twist, radial;
+    std::vector<double> rotation, radial;
     for (const auto& motion : analysis.region_motion) {
-      twist.push_back(motion[r].twist_deg);
+      rotation.push_back(motion[r].rotation_deg);
       radial.push_back(motion[r].radial_contraction_percent);
     }
     regions.push_back({{"segment", region.segment},
@@ -217,13 +234,14 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                        {"v_range_deg",
                         {region.v_begin * kDegreesPerRadian,
                          region.v_end * kDegreesPerRadian}},
-                       {"twist_deg", twist},
+                       {"rotation_deg", rotation},
                        {"radial_contraction_percent", radial}});
   }
   json document = {{"pfdm_version", "0.1.0"},
                    {"settings", settings},
                    {"model", model},
                    {"gauge_convention", kGaugeConvention},
+                   {"clinical_definition", kClinicalDefinition},
                    {"ejection_fraction", ejection},
                    {"regions_convention", kRegionsConvention},
                    {"regions", regions},

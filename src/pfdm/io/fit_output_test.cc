@@ -56,9 +56,9 @@ TEST(FitOutputTest, JsonHasVolumesEjectionFractionAndRegions) {
             std::string::npos);
   ASSERT_EQ(json["regions"].size(), 16u);
   EXPECT_EQ(json["regions"][0]["name"], "basal 1");
-  EXPECT_EQ(json["regions"][15]["twist_deg"].size(), 3u);
-  EXPECT_EQ(json["regions"][15]["twist_deg"][0].get<double>(), 0.0);
-  EXPECT_LT(json["regions"][15]["twist_deg"][2].get<double>(), -1.0);
+  EXPECT_EQ(json["regions"][15]["rotation_deg"].size(), 3u);
+  EXPECT_EQ(json["regions"][15]["rotation_deg"][0].get<double>(), 0.0);
+  EXPECT_LT(json["regions"][15]["rotation_deg"][2].get<double>(), -1.0);
   EXPECT_EQ(json["settings"]["points"], f.phantom.points.source);
   EXPECT_FALSE(json["settings"].contains("contour_types"));
 }

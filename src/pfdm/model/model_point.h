@@ -33,8 +33,8 @@ void InterpolateFunctions(FunctionMask free_mask, const T* globals,
 template <typename T, typename A>
 Eigen::Matrix<T, 3, 1> ReferenceShape(const T* f, const Angles<A>& angles,
                                       bool unit_exponents) {
-  return Offset(f,
-                Twist(f, Bend(f, Superellipsoid(f, angles, unit_exponents))));
+  return Offset(f, Twist(f, Bend(f, Superellipsoid(f, angles, unit_exponents),
+                                 RingHalfExtents(f, angles, unit_exponents))));
 }
 
 // x = c + R(q) p with q = (w, x, y, z) a unit quaternion.

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ceres/jet.h"
+
 namespace pfdm {
 namespace {
 
@@ -34,6 +36,11 @@ ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
   prelude.angles[kPhase2] = kHalfPi * (x2 - f[kB3]);
   prelude.angles[kBend2] = kHalfPi * f[kB3];
   prelude.angles[kTwist] = f[kTau];
+  for (int i = 0; i < 2; ++i) {
+    const double ring = kHalfPi * f[i == 0 ? kA1 : kA2] * prelude.cu.value;
+    prelude.j0[i] = ceres::BesselJ0(ring);
+    prelude.j1[i] = ceres::BesselJ1(ring);
+  }
   return prelude;
 }
 
@@ -51,7 +58,9 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
 // With e the primitive, b = T_b(e), t = Rz(tau) b and s = t + o:
 //   ds/df = Rz (B_e de/df + db/df|_e) + dt/dtau + do/df,
 // B_e = I + e3 (beta1, beta2, 0)^T, beta_i = b_{2i-2} g_x(e_i / a0, b_{2i-1}) /
-// a0, g(x, b) = cos(pi/2 (x - b)) - cos(pi/2 b).
+// a0, g(x, b, r) = cos(pi/2 (x - b)) - J0(pi/2 r) cos(pi/2 b), and the ring
+// half extents r1 = a1 Cu^e1, r2 = a2 Cu^e1 bring in
+// dg/dr = pi/2 J1(pi/2 r) cos(pi/2 b) (J0' = -J1).
 Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
                                  const double* sines, const double* cosines,
                                  ShapeJacobian* jacobian) {
@@ -64,8 +73,8 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
 
   const double x1 = f[kA1] * cu.value * cv.value;
   const double x2 = f[kA2] * cu.value * sv.value;
-  const double g1 = cosines[kPhase1] - cosines[kBend1];
-  const double g2 = cosines[kPhase2] - cosines[kBend2];
+  const double g1 = cosines[kPhase1] - prelude.j0[0] * cosines[kBend1];
+  const double g2 = cosines[kPhase2] - prelude.j0[1] * cosines[kBend2];
   const Eigen::Vector3d b(e[0], e[1], e[2] + f[kB0] * g1 + f[kB2] * g2);
 
   const double c = cosines[kTwist], s = sines[kTwist];
@@ -94,9 +103,17 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
   db.row(2) += beta1 * de.row(0) + beta2 * de.row(1);
   db(2, kA0) -= beta1 * x1 + beta2 * x2;  // x_i = e_i / a0 with e_i held.
   db(2, kB0) += g1;
-  db(2, kB1) += f[kB0] * kHalfPi * (sines[kPhase1] + sines[kBend1]);
+  db(2, kB1) +=
+      f[kB0] * kHalfPi * (sines[kPhase1] + prelude.j0[0] * sines[kBend1]);
   db(2, kB2) += g2;
-  db(2, kB3) += f[kB2] * kHalfPi * (sines[kPhase2] + sines[kBend2]);
+  db(2, kB3) +=
+      f[kB2] * kHalfPi * (sines[kPhase2] + prelude.j0[1] * sines[kBend2]);
+  // The ring means through r1 = a1 Cu^e1 and r2 = a2 Cu^e1.
+  const double gr1 = f[kB0] * kHalfPi * prelude.j1[0] * cosines[kBend1];
+  const double gr2 = f[kB2] * kHalfPi * prelude.j1[1] * cosines[kBend2];
+  db(2, kA1) += gr1 * cu.value;
+  db(2, kA2) += gr2 * cu.value;
+  db(2, kEps1) += (gr1 * f[kA1] + gr2 * f[kA2]) * cu.d_exponent;
 
   // Twist rotates the first two rows; tau itself turns b; offsets add.
   ShapeJacobian& ds = *jacobian;

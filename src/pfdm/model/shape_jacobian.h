@@ -25,6 +25,8 @@ constexpr int kNumShapeAngles = 5;
 struct ShapePrelude {
   Power cu, su, cv, sv;
   double angles[kNumShapeAngles];
+  // J0 and J1 at pi/2 times each ring half extent (the bends' ring means).
+  double j0[2], j1[2];
 };
 ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
                           bool unit_exponents);

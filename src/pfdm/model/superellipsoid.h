@@ -45,6 +45,16 @@ Eigen::Matrix<T, 3, 1> Superellipsoid(const T* f, const Angles<A>& angles,
                                 f[kA0] * f[kA3] * su);
 }
 
+// The ring's half extents across the axis in units of a0, (a1 Cu^e1,
+// a2 Cu^e1): the amplitudes of e1 / a0 and e2 / a0 around the ring at u.
+template <typename T, typename A>
+Eigen::Matrix<T, 2, 1> RingHalfExtents(const T* f, const Angles<A>& angles,
+                                       bool unit_exponents) {
+  const T cu =
+      unit_exponents ? T(angles.cos_u) : SignedPower(T(angles.cos_u), f[kEps1]);
+  return Eigen::Matrix<T, 2, 1>(f[kA1] * cu, f[kA2] * cu);
+}
+
 }  // namespace pfdm
 
 #endif  // PFDM_MODEL_SUPERELLIPSOID_H_

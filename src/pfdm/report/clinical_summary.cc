@@ -3,42 +3,45 @@
 #include <cmath>
 
 #include "pfdm/model/model_surface.h"
+#include "pfdm/report/material_rings.h"
 
 namespace pfdm {
 namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
-double AxialLength(const Model& model) {
-  const double a0 = model.state.globals[kA0];
-  const double u_min = model.config.u_min, u_max = model.config.u_max;
-  return a0 * (model.FunctionAt(kA3, u_max) * std::sin(u_max) -
-               model.FunctionAt(kA3, u_min) * std::sin(u_min)) +
-         model.FunctionAt(kE3o, u_max) - model.FunctionAt(kE3o, u_min);
+double ApexToBaseRim(const Model& model) {
+  const Eigen::Vector3d apex = model.WorldPoint(model.config.u_min, 0.0);
+  return (SampleRing(model, model.config.u_max).centroid - apex).norm();
 }
 
 }  // namespace
 
-int ApicalKnot(const ModelConfig& config) {
-  const KnotGrid grid = config.Grid();
-  for (int k = 0; k < grid.num_knots(); ++k) {
-    if (std::cos(grid.KnotU(k)) > 1e-6) return k;
-  }
-  return 0;
-}
-
 ClinicalSummary SummarizeFrame(int frame, const Model& reference,
                                const Model& current) {
   const KnotGrid grid = current.config.Grid();
-  const int apical = ApicalKnot(current.config);
+  const Eigen::Vector3d axis = LongAxis(reference);
   ClinicalSummary summary;
   summary.frame = frame;
+
+  const double u_apex = RingAtHeightFraction(reference, kApicalRingFraction);
+  const double u_base = RingAtHeightFraction(reference, kBasalRingFraction);
+  const MaterialRing apex0 = SampleRing(reference, u_apex);
+  const MaterialRing base0 = SampleRing(reference, u_base);
   summary.apex_rotation_deg =
-      current.FunctionAt(kTau, grid.KnotU(apical)) * kDegreesPerRadian;
+      MeanRotation(apex0, SampleRing(current, u_apex), axis) *
+      kDegreesPerRadian;
   summary.base_rotation_deg =
-      current.FunctionAt(kTau, grid.u_max()) * kDegreesPerRadian;
+      MeanRotation(base0, SampleRing(current, u_base), axis) *
+      kDegreesPerRadian;
   summary.net_twist_deg = summary.base_rotation_deg - summary.apex_rotation_deg;
-  int counted = 0;
+  const double distance_mm = (base0.centroid - apex0.centroid).norm();
+  summary.torsion_deg_per_cm = summary.net_twist_deg / (0.1 * distance_mm);
+  summary.shear_angle_deg =
+      std::atan(summary.net_twist_deg / kDegreesPerRadian *
+                (MeanRadius(apex0) + MeanRadius(base0)) / (2.0 * distance_mm)) *
+      kDegreesPerRadian;
+
   for (int k = 0; k < grid.num_knots(); ++k) {
     const double u = grid.KnotU(k);
     auto ratio = [&](int f) {
@@ -47,15 +50,18 @@ ClinicalSummary SummarizeFrame(int frame, const Model& reference,
     summary.radial_ratio_x.push_back(ratio(kA1));
     summary.radial_ratio_y.push_back(ratio(kA2));
     summary.longitudinal_ratio.push_back(ratio(kA3));
-    if (k < apical) continue;
-    summary.radial_contraction_x_percent += 100.0 * (1.0 - ratio(kA1));
-    summary.radial_contraction_y_percent += 100.0 * (1.0 - ratio(kA2));
-    ++counted;
   }
-  summary.radial_contraction_x_percent /= counted;
-  summary.radial_contraction_y_percent /= counted;
+  for (int i = 0; i < kContractionRings; ++i) {
+    const double u =
+        RingAtHeightFraction(reference, (i + 0.5) / kContractionRings);
+    summary.radial_contraction_percent +=
+        100.0 *
+        (1.0 - MeanRadius(SampleRing(current, u)) /
+                   MeanRadius(SampleRing(reference, u))) /
+        kContractionRings;
+  }
   summary.longitudinal_shortening_percent =
-      100.0 * (1.0 - AxialLength(current) / AxialLength(reference));
+      100.0 * (1.0 - ApexToBaseRim(current) / ApexToBaseRim(reference));
   summary.volume_ml = CavityVolumeMl(current);
   return summary;
 }

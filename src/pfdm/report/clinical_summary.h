@@ -8,22 +8,43 @@
 
 namespace pfdm {
 
+// Where the summary's rings sit: height fractions of frame 0's length from
+// the apex pole (0) to the base rim (1), in the apical and basal thirds and
+// clear of the apex cap and the rim, where tags are sparse.
+constexpr double kApicalRingFraction = 0.2;
+constexpr double kBasalRingFraction = 0.85;
+// Radial contraction is the mean over rings at h = 0.05, 0.15, ..., 0.95.
+constexpr int kContractionRings = 10;
+
+// Every number but the per-knot ratios is measured on the fitted model's
+// material points (world coordinates) against frame 0's, so it means the
+// same whatever share of the motion the pose, a3, bending or the offsets
+// carry (report/material_rings.h).
 struct ClinicalSummary {
   int frame = 0;
-  // tau at the most apical ring (the first knot with a non-zero radius) and
-  // at the base, in degrees, right-handed about the apex-to-base axis: seen
-  // from the apex a normal apex turns counter-clockwise, i.e. tau < 0.
+  // Rotation of the apical and basal material rings (kApicalRingFraction,
+  // kBasalRingFraction) about frame 0's long axis, degrees, right-handed
+  // about the apex-to-base axis: seen from the apex a normal apex turns
+  // counter-clockwise, i.e. apex rotation < 0.  The mean turn of the ring's
+  // points about its centroid.
   double apex_rotation_deg = 0.0;
   double base_rotation_deg = 0.0;
   double net_twist_deg = 0.0;  // base minus apex: about +10..15 at normal ES.
-  // Per knot, a1, a2, a3 relative to frame 0.
+  // Net twist over frame 0's distance between the two rings' centroids.
+  double torsion_deg_per_cm = 0.0;
+  // Circumferential-longitudinal shear angle on frame 0's geometry:
+  // atan(net twist (rad) (r_apex + r_base) / (2 D)), r the rings' mean
+  // radii and D their distance.
+  double shear_angle_deg = 0.0;
+  // Per knot, a1, a2, a3 relative to frame 0 (the paper's Fig. 5).
   std::vector<double> radial_ratio_x;
   std::vector<double> radial_ratio_y;
   std::vector<double> longitudinal_ratio;
-  // Means over the knots with a non-zero radius of 1 - ratio, in percent.
-  double radial_contraction_x_percent = 0.0;
-  double radial_contraction_y_percent = 0.0;
-  // 1 - L / L0 with L the axial distance from apex to base-ring centre.
+  // Mean over kContractionRings rings of 1 - r / r0, percent, r the mean
+  // distance of a ring's material points from their centroid.
+  double radial_contraction_percent = 0.0;
+  // 1 - L / L0, percent, L the distance from the apex pole's material point
+  // to the centroid of the base rim's material points.
   double longitudinal_shortening_percent = 0.0;
   // The cavity closed at the base rim (CavityVolumeMl).
   double volume_ml = 0.0;
@@ -50,9 +71,6 @@ std::vector<ClinicalSummary> SummarizeSequence(
 // From the summaries' volumes; all zero for an empty list.
 EjectionFraction EjectionFractionOf(
     const std::vector<ClinicalSummary>& summaries);
-
-// Index of the first knot whose ring has a non-zero radius.
-int ApicalKnot(const ModelConfig& config);
 
 }  // namespace pfdm
 

@@ -17,16 +17,24 @@ TEST(ClinicalSummaryTest, PhantomTruthReadsAsDesigned) {
 
   const ClinicalSummary es =
       SummarizeFrame(4, phantom.truth[0], phantom.truth[4]);
-  // Twist -5 degrees at the apex knot, +2 at the base: the apical ring is
-  // knot 1, 1/16 of the way up.
-  EXPECT_NEAR(es.base_rotation_deg, 2.0, 1e-9);
-  EXPECT_NEAR(es.apex_rotation_deg, -5.0 + 7.0 / 16.0, 1e-9);
-  EXPECT_NEAR(es.net_twist_deg, 7.0 - 7.0 / 16.0, 1e-9);
-  EXPECT_NEAR(es.longitudinal_shortening_percent, 20.0, 1e-9);
-  EXPECT_NEAR(es.radial_contraction_x_percent, 20.0, 1e-9);
+  // tau = -5 + 7 h degrees at height fraction h (knots are uniform in h on
+  // frame 0), and rings turn about their centres: the apical ring (h = 0.2)
+  // and the basal one (h = 0.85).  The rings are ellipses that shrink more
+  // along x than y, which turns their points' angles by up to 0.005 degree.
+  EXPECT_NEAR(es.apex_rotation_deg, -5.0 + 7.0 * 0.2, 0.01);
+  EXPECT_NEAR(es.base_rotation_deg, -5.0 + 7.0 * 0.85, 0.01);
+  EXPECT_NEAR(es.net_twist_deg, 7.0 * 0.65, 0.01);
+  // a3 x 0.8 everywhere; the base rim's centre also drifts 1.5 mm across.
+  EXPECT_NEAR(es.longitudinal_shortening_percent, 20.0, 0.05);
+  // a1 x 0.8 and a2 x 0.8 to 0.9 from apex to base.
+  EXPECT_GT(es.radial_contraction_percent, 17.0);
+  EXPECT_LT(es.radial_contraction_percent, 20.0);
   for (double ratio : es.radial_ratio_x) EXPECT_NEAR(ratio, 0.8, 1e-12);
   EXPECT_NEAR(es.radial_ratio_y.back(), 0.9, 1e-12);  // Base: 10 % along y.
-  EXPECT_EQ(ApicalKnot(phantom.truth[0].config), 1);
+  // Torsion over the rings' distance, 0.65 of the 110 mm length.
+  EXPECT_NEAR(es.torsion_deg_per_cm, es.net_twist_deg / (0.65 * 11.0), 1e-3);
+  EXPECT_GT(es.shear_angle_deg, 0.0);
+  EXPECT_LT(es.shear_angle_deg, es.net_twist_deg);
 }
 
 }  // namespace

@@ -135,10 +135,10 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
 std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries) {
   PlotData block{"cycle", {}};
   for (const ClinicalSummary& s : summaries) {
-    block.rows.push_back(
-        {static_cast<double>(s.frame), s.volume_ml, s.apex_rotation_deg,
-         s.base_rotation_deg, s.net_twist_deg, s.radial_contraction_x_percent,
-         s.radial_contraction_y_percent, s.longitudinal_shortening_percent});
+    block.rows.push_back({static_cast<double>(s.frame), s.volume_ml,
+                          s.apex_rotation_deg, s.base_rotation_deg,
+                          s.net_twist_deg, s.radial_contraction_percent,
+                          s.longitudinal_shortening_percent});
   }
   const EjectionFraction ef = EjectionFractionOf(summaries);
   std::ostringstream script;
@@ -164,9 +164,8 @@ std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries) {
             "'' using 1:5 lc rgb '#222222' pt 5 lw 2 title 'net twist'\n"
          << "set title 'contraction'\nset ylabel 'percent'\n"
          << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
-            "$cycle using 1:6 lc rgb '#c0392b' pt 7 title 'radial x (a1)', "
-            "'' using 1:7 lc rgb '#e67e22' pt 7 title 'radial y (a2)', "
-            "'' using 1:8 lc rgb '#2471a3' pt 5 title 'longitudinal'\n"
+            "$cycle using 1:6 lc rgb '#c0392b' pt 7 title 'radial', "
+            "'' using 1:7 lc rgb '#2471a3' pt 5 title 'longitudinal'\n"
          << "unset multiplot\n";
   return RenderSvgText("cycle.svg", {block}, script.str(), 1200, 380);
 }

@@ -112,20 +112,26 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     << "<div>net twist at ES<b>" << Fixed(es.net_twist_deg, 1) << "&deg;</b>"
     << "apex " << Fixed(es.apex_rotation_deg, 1) << "&deg;, base "
     << Fixed(es.base_rotation_deg, 1) << "&deg;</div>"
+    << "<div>torsion at ES<b>" << Fixed(es.torsion_deg_per_cm, 2)
+    << "&deg;/cm</b>shear angle " << Fixed(es.shear_angle_deg, 1)
+    << "&deg;</div>"
     << "<div>radial contraction at ES<b>"
-    << Fixed(0.5 * (es.radial_contraction_x_percent +
-                    es.radial_contraction_y_percent),
-             1)
-    << " %</b>x " << Fixed(es.radial_contraction_x_percent, 1) << " %, y "
-    << Fixed(es.radial_contraction_y_percent, 1) << " %</div>"
+    << Fixed(es.radial_contraction_percent, 1) << " %</b>"
+    << "mean over ten rings</div>"
     << "<div>longitudinal shortening at ES<b>"
     << Fixed(es.longitudinal_shortening_percent, 1) << " %</b>"
-    << "apex to base-ring centre</div></div>\n";
-  h << "<p class=\"note\">Twist is rotation about the LV long axis (apex to "
-       "base) relative to ED, right-handed: seen from the apex a normal apex "
-       "turns counter-clockwise (negative) and the base clockwise "
-       "(positive), so net twist = base &minus; apex is positive, about "
-       "10&ndash;15&deg; at a normal ES. Volumes close the fitted surface "
+    << "apex to base-rim centroid</div></div>\n";
+  h << "<p class=\"note\">Every number here is measured on the fitted "
+       "model's material points against ED. Rotation is about the ED long "
+       "axis (apex to base), right-handed, of the material rings at 20 % "
+       "(apex) and 85 % (base) of the ED length from the apex: seen from the "
+       "apex a normal apex turns counter-clockwise (negative) and the base "
+       "clockwise (positive), so net twist = base &minus; apex is positive, "
+       "about 10&ndash;15&deg; at a normal ES; torsion is net twist over the "
+       "ED distance between those rings. Radial contraction: 1 &minus; r/r"
+       "<sub>ED</sub>, r the mean distance of a ring's material points from "
+       "their centroid; longitudinal shortening: of the distance from the "
+       "apex to the base rim's centroid. Volumes close the fitted surface "
     << (analysis.base_planes.empty()
             ? "with a flat lid at the base rim"
             : "at each frame's mitral valve plane (through the MITRAL_VALVE "
@@ -152,7 +158,7 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   h << "<h2>Per frame</h2>\n<table><tr><th>frame</th><th>points</th>"
     << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>volume ml</th>"
     << "<th>net twist &deg;</th><th>apex &deg;</th><th>base &deg;</th>"
-    << "<th>radial x %</th><th>radial y %</th><th>longitudinal %</th>"
+    << "<th>torsion &deg;/cm</th><th>radial %</th><th>longitudinal %</th>"
     << "<th class=\"l\">solver</th></tr>\n";
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& f = fit.frames[t];
@@ -167,8 +173,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
       << "</td><td>" << Fixed(c.net_twist_deg, 1) << "</td><td>"
       << Fixed(c.apex_rotation_deg, 1) << "</td><td>"
       << Fixed(c.base_rotation_deg, 1) << "</td><td>"
-      << Fixed(c.radial_contraction_x_percent, 1) << "</td><td>"
-      << Fixed(c.radial_contraction_y_percent, 1) << "</td><td>"
+      << Fixed(c.torsion_deg_per_cm, 2) << "</td><td>"
+      << Fixed(c.radial_contraction_percent, 1) << "</td><td>"
       << Fixed(c.longitudinal_shortening_percent, 1) << "</td><td class=\"l\">"
       << HtmlEscape(f.termination) << "</td></tr>\n";
   }
@@ -177,7 +183,7 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   const std::vector<RegionMotion>& motion = analysis.region_motion[ef.es_frame];
   h << "<h2>Regional wall motion at ES (frame " << ef.es_frame << ")</h2>\n"
     << "<table><tr><th>segment</th><th class=\"l\">region</th>"
-    << "<th>longitude v, &deg;</th><th>twist &deg;</th>"
+    << "<th>longitude v, &deg;</th><th>rotation &deg;</th>"
     << "<th>radial contraction %</th></tr>\n";
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
     const WallRegion& region = analysis.regions[r];
@@ -185,8 +191,9 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     h << "<tr><td>" << region.segment << "</td><td class=\"l\">"
       << region.Name() << "</td><td>" << Fixed(region.v_begin * kDegrees, 0)
       << " to " << Fixed(region.v_end * kDegrees, 0) << "</td><td"
-      << Tint(motion[r].twist_deg, 15.0) << ">" << Fixed(motion[r].twist_deg, 1)
-      << "</td><td" << Tint(motion[r].radial_contraction_percent, 40.0) << ">"
+      << Tint(motion[r].rotation_deg, 15.0) << ">"
+      << Fixed(motion[r].rotation_deg, 1) << "</td><td"
+      << Tint(motion[r].radial_contraction_percent, 40.0) << ">"
       << Fixed(motion[r].radial_contraction_percent, 1) << "</td></tr>\n";
   }
   h << "</table>\n<p class=\"note\">Segments: thirds of the ED axis (basal, "
@@ -196,9 +203,10 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     << " sectors of longitude, counted counter-clockwise seen from the base "
        "from the model's &minus;x axis (AHA numbering, but anchored to the "
        "model's axes, not to the RV insertion, which point data do not "
-       "show). Twist: mean rotation of the segment; radial contraction: "
-       "mean of 1 &minus; r/r<sub>ED</sub>, r the distance from the "
-       "axis.</p>\n</body></html>\n";
+       "show). Rotation: mean turn of the segment's material points about "
+       "the ED long axis; radial contraction: mean of 1 &minus; "
+       "r/r<sub>ED</sub>, r a material point's distance from its ring's "
+       "centroid.</p>\n</body></html>\n";
   return h.str();
 }
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "pfdm/report/material_rings.h"
+
 namespace pfdm {
 namespace {
 
@@ -15,19 +17,6 @@ int SectorsOf(const RegionLayout& layout, RegionLevel level) {
   return level == kBasal ? layout.basal_sectors
          : level == kMid ? layout.mid_sectors
                          : layout.apical_sectors;
-}
-
-// Axial height of ring u on the model, without bending (frame 0 has none).
-double RingHeight(const Model& model, double u) {
-  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
-         model.FunctionAt(kE3o, u);
-}
-
-// Distance of material point (u, v) from its ring's centre, model frame.
-double RingRadius(const Model& model, double u, double v) {
-  const Eigen::Vector3d p = model.ModelPoint(u, v);
-  return std::hypot(p.x() - model.FunctionAt(kE1o, u),
-                    p.y() - model.FunctionAt(kE2o, u));
 }
 
 // Surface area per unit of sin u and v at (u, v) on the model: the
@@ -96,24 +85,28 @@ std::vector<RegionMotion> SummarizeRegions(const Model& reference,
   // weighted by the reference surface's area; the pole is never sampled.
   const double s_min = std::sin(reference.config.u_min);
   const double s_max = std::sin(reference.config.u_max);
+  const Eigen::Vector3d axis = LongAxis(reference);
   for (int i = 0; i < kLatitudeSamples; ++i) {
     const double u =
         std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudeSamples);
-    const double twist = current.FunctionAt(kTau, u) * kDegreesPerRadian;
+    const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
+    const MaterialRing after = SampleRing(current, u, kLongitudeSamples);
     for (int j = 0; j < kLongitudeSamples; ++j) {
       const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
       const int r = AssignRegion(reference, u, v, layout);
       const double w = AreaWeight(reference, u, v);
-      motion[r].twist_deg += w * twist;
+      const Eigen::Vector3d from = before.points[j] - before.centroid;
+      const Eigen::Vector3d to = after.points[j] - after.centroid;
+      motion[r].rotation_deg +=
+          w * AngleAbout(from, to, axis) * kDegreesPerRadian;
       motion[r].radial_contraction_percent +=
-          w * 100.0 *
-          (1.0 - RingRadius(current, u, v) / RingRadius(reference, u, v));
+          w * 100.0 * (1.0 - to.norm() / from.norm());
       weight[r] += w;
     }
   }
   for (size_t r = 0; r < count; ++r) {
     if (weight[r] == 0.0) continue;
-    motion[r].twist_deg /= weight[r];
+    motion[r].rotation_deg /= weight[r];
     motion[r].radial_contraction_percent /= weight[r];
   }
   return motion;

@@ -1,4 +1,5 @@
-// Regional wall motion: twist and radial contraction per AHA-style segment.
+// Regional wall motion: rotation and radial contraction per AHA-style
+// segment.
 #ifndef PFDM_REPORT_WALL_MOTION_H_
 #define PFDM_REPORT_WALL_MOTION_H_
 
@@ -39,11 +40,13 @@ std::vector<WallRegion> Regions(const RegionLayout& layout);
 int AssignRegion(const Model& reference, double u, double v,
                  const RegionLayout& layout);
 
+// Measured on material points in world coordinates (material_rings.h).
 struct RegionMotion {
-  // Mean of tau over the region's surface, degrees (frame 0 is 0).
-  double twist_deg = 0.0;
-  // Mean of 1 - rho / rho0, percent, with rho a material point's distance
-  // from its ring's centre (the axis offsets) in the model frame.
+  // Mean turn of the region's material points about frame 0's long axis
+  // (about their ring's centroid), degrees, right-handed apex to base.
+  double rotation_deg = 0.0;
+  // Mean of 1 - rho / rho0, percent, rho a material point's distance from
+  // its ring's centroid.
   double radial_contraction_percent = 0.0;
 };
 

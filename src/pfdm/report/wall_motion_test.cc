@@ -66,13 +66,13 @@ TEST(WallMotionTest, UniformContractionAndLinearTwistPerSegment) {
   // A sphere's area is uniform in sin u: each level's mean twist is tau at
   // the middle of its third, sin u = 0.25, -0.25, -0.75.
   auto tau_at = [](double s) { return -5.0 + 7.0 * (s + 1.0) / 1.5; };
-  EXPECT_NEAR(motion[0].twist_deg, tau_at(0.25), 0.05);
-  EXPECT_NEAR(motion[8].twist_deg, tau_at(-0.25), 0.05);
-  EXPECT_NEAR(motion[15].twist_deg, tau_at(-0.75), 0.05);
+  EXPECT_NEAR(motion[0].rotation_deg, tau_at(0.25), 0.05);
+  EXPECT_NEAR(motion[8].rotation_deg, tau_at(-0.25), 0.05);
+  EXPECT_NEAR(motion[15].rotation_deg, tau_at(-0.75), 0.05);
   // No motion, no numbers.
   for (const RegionMotion& m :
        SummarizeRegions(reference, reference, RegionLayout())) {
-    EXPECT_NEAR(m.twist_deg, 0.0, 1e-12);
+    EXPECT_NEAR(m.rotation_deg, 0.0, 1e-12);
     EXPECT_NEAR(m.radial_contraction_percent, 0.0, 1e-9);
   }
 }

@@ -62,14 +62,33 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
     std::printf("frame %2d  fit %6.1f ml  biv-me mesh %6.1f ml  %+5.1f %%\n", t,
                 analysis.clinical[t].volume_ml, mesh[t], 100 * deviation);
     EXPECT_LT(std::abs(deviation), 0.10) << "frame " << t;
-    // Over all points, the two valve points of each frame included.
-    EXPECT_LT(fit.frames[t].rms_mm, 2.0) << "frame " << t;
+    // Over all points, the two valve points of each frame included.  The
+    // pull toward frame 0 of frames without tracked points costs up to
+    // 0.35 mm here (frames 6 and 13) against a free drift.
+    EXPECT_LT(fit.frames[t].rms_mm, 2.5) << "frame " << t;
   }
   EXPECT_LT(sum_deviation / 25, 0.03);
-  // The surface is unbiased against the points: the mean signed distance
-  // of the data along the surface normal is within 0.15 mm on every frame,
-  // so where the volumes part most (frames 6-11, up to 9 % low) it is not
-  // a fit pulled inward by its regularizer.  At frames 10 and 11 biv-me's
+  // Frame 24 is end-diastole again (the meshes: +2.6 % volume): the cycle
+  // closes, with no drift of the functions or of what they say.
+  const ClinicalSummary& last = analysis.clinical[24];
+  std::printf("frame 24: shortening %.2f %%, radial contraction %.2f %%\n",
+              last.longitudinal_shortening_percent,
+              last.radial_contraction_percent);
+  EXPECT_NEAR(last.longitudinal_shortening_percent, 0.0, 3.0);
+  EXPECT_NEAR(last.radial_contraction_percent, 0.0, 3.0);
+  for (size_t k = 1; k < last.radial_ratio_x.size(); ++k) {
+    EXPECT_NEAR(last.radial_ratio_x[k], 1.0, 0.1) << "knot " << k;
+    EXPECT_NEAR(last.radial_ratio_y[k], 1.0, 0.1) << "knot " << k;
+    EXPECT_NEAR(last.longitudinal_ratio[k], 1.0, 0.05) << "knot " << k;
+    EXPECT_LT(std::abs(fit.frames[24].state.knots[k][kB0]), 3.0) << k;
+    EXPECT_LT(std::abs(fit.frames[24].state.knots[k][kB2]), 3.0) << k;
+  }
+  // The surface is nearly unbiased against the points: the mean signed
+  // distance of the data along the surface normal is within 0.25 mm on
+  // every frame (0.02 mm before frames without tracked points were pulled
+  // toward frame 0; the pull costs up to 0.23 mm), so where the volumes
+  // part most (frames 6-11, up to 9 % low) it is not a fit pulled inward by
+  // its regularizer.  At frames 10 and 11 biv-me's
   // mesh lies 0.5-0.6 mm outside these contours, 1.6-2.1 mm in the basal
   // 20 mm.
   for (int t = 0; t < 25; ++t) {
@@ -82,7 +101,7 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
     }
     const double bias = sum / frame.residuals.size();
     if (t >= 9 && t <= 11) std::printf("frame %d bias %+.3f mm\n", t, bias);
-    EXPECT_LT(std::abs(bias), 0.15) << "frame " << t;
+    EXPECT_LT(std::abs(bias), 0.25) << "frame " << t;
   }
   const double mesh_ef = 1.0 - mesh[9] / mesh[0];
   EXPECT_NEAR(analysis.ejection_fraction.ratio, mesh_ef, 0.05);
@@ -109,8 +128,7 @@ TEST(RealDataReportTest, BivMeMeshVerticesGiveTwistAndContraction) {
         t, fit.frames[t].rms_mm, c.volume_ml, direct[t].volume_ml,
         c.net_twist_deg, c.apex_rotation_deg, c.base_rotation_deg,
         c.longitudinal_shortening_percent,
-        direct[t].longitudinal_shortening_percent,
-        0.5 * (c.radial_contraction_x_percent + c.radial_contraction_y_percent),
+        direct[t].longitudinal_shortening_percent, c.radial_contraction_percent,
         direct[t].radial_contraction_percent);
     EXPECT_LT(fit.frames[t].rms_mm, 3.0) << t;
     EXPECT_NEAR(c.volume_ml, direct[t].volume_ml, 0.06 * direct[t].volume_ml)
@@ -121,8 +139,7 @@ TEST(RealDataReportTest, BivMeMeshVerticesGiveTwistAndContraction) {
   const ClinicalSummary& at_es = analysis.clinical[es];
   EXPECT_NEAR(at_es.longitudinal_shortening_percent,
               direct[es].longitudinal_shortening_percent, 3.0);
-  EXPECT_NEAR(0.5 * (at_es.radial_contraction_x_percent +
-                     at_es.radial_contraction_y_percent),
+  EXPECT_NEAR(at_es.radial_contraction_percent,
               direct[es].radial_contraction_percent, 3.0);
   // The base turns and the apex barely: net twist of a few degrees, of the
   // normal sign (base minus apex > 0).
@@ -160,7 +177,7 @@ TEST(RealDataReportTest, CapMeanShapeContractionAgainstTheMeshes) {
   std::printf(
       "CAP mean: rms %.2f / %.2f mm; volumes %.1f -> %.1f ml (mesh %.1f -> "
       "%.1f); EF %.3f (mesh %.3f)\n  longitudinal: model %.1f %%, model at "
-      "the vertices %.1f %%, mesh %.1f %%\n  radial: model x %.1f y %.1f %%, "
+      "the vertices %.1f %%, mesh %.1f %%\n  radial: model %.1f %%, "
       "model at the vertices %.1f %%, mesh %.1f %%; net twist %.1f deg\n",
       fit.frames[0].rms_mm, fit.frames[1].rms_mm,
       analysis.clinical[0].volume_ml, es.volume_ml, direct[0].volume_ml,
@@ -168,8 +185,7 @@ TEST(RealDataReportTest, CapMeanShapeContractionAgainstTheMeshes) {
       1.0 - direct[1].volume_ml / direct[0].volume_ml,
       es.longitudinal_shortening_percent,
       fitted[1].longitudinal_shortening_percent,
-      direct[1].longitudinal_shortening_percent,
-      es.radial_contraction_x_percent, es.radial_contraction_y_percent,
+      direct[1].longitudinal_shortening_percent, es.radial_contraction_percent,
       fitted[1].radial_contraction_percent,
       direct[1].radial_contraction_percent, es.net_twist_deg);
   EXPECT_LT(fit.frames[0].rms_mm, 1.0);

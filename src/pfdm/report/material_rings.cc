@@ -1,0 +1,66 @@
+#include "pfdm/report/material_rings.h"
+
+#include <cmath>
+
+namespace pfdm {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+MaterialRing SampleRing(const Model& model, double u, int samples) {
+  MaterialRing ring;
+  for (int j = 0; j < samples; ++j) {
+    const double v = -kPi + 2.0 * kPi * (j + 0.5) / samples;
+    ring.points.push_back(model.WorldPoint(u, v));
+    ring.centroid += ring.points.back();
+  }
+  ring.centroid /= samples;
+  return ring;
+}
+
+double MeanRadius(const MaterialRing& ring) {
+  double sum = 0.0;
+  for (const Eigen::Vector3d& p : ring.points)
+    sum += (p - ring.centroid).norm();
+  return sum / ring.points.size();
+}
+
+double AngleAbout(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                  const Eigen::Vector3d& axis) {
+  const Eigen::Vector3d pa = a - a.dot(axis) * axis;
+  const Eigen::Vector3d pb = b - b.dot(axis) * axis;
+  return std::atan2(pa.cross(pb).dot(axis), pa.dot(pb));
+}
+
+double MeanRotation(const MaterialRing& from, const MaterialRing& to,
+                    const Eigen::Vector3d& axis) {
+  double sum = 0.0;
+  for (size_t j = 0; j < from.points.size(); ++j) {
+    sum += AngleAbout(from.points[j] - from.centroid,
+                      to.points[j] - to.centroid, axis);
+  }
+  return sum / from.points.size();
+}
+
+double RingHeight(const Model& model, double u) {
+  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
+         model.FunctionAt(kE3o, u);
+}
+
+double RingAtHeightFraction(const Model& reference, double h) {
+  double low = reference.config.u_min, high = reference.config.u_max;
+  const double apex = RingHeight(reference, low);
+  const double target = apex + h * (RingHeight(reference, high) - apex);
+  // The height rises monotonically from apex to base on a fitted frame 0.
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (low + high);
+    (RingHeight(reference, mid) < target ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+Eigen::Vector3d LongAxis(const Model& model) { return model.Rotation().col(2); }
+
+}  // namespace pfdm

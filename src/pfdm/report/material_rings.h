@@ -1,0 +1,52 @@
+// Rings of material points (u fixed, v sampled) of fitted frames, measured
+// in world coordinates: what a clinical number means does not depend on how
+// the parameter functions and the pose share the motion.
+#ifndef PFDM_REPORT_MATERIAL_RINGS_H_
+#define PFDM_REPORT_MATERIAL_RINGS_H_
+
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/model/model.h"
+
+namespace pfdm {
+
+// Samples per material ring: equal steps of v.
+constexpr int kRingSamples = 72;
+
+struct MaterialRing {
+  std::vector<Eigen::Vector3d> points;  // At v = -pi + 2 pi (j + 0.5) / n.
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+};
+
+MaterialRing SampleRing(const Model& model, double u,
+                        int samples = kRingSamples);
+
+// Mean distance of the ring's points from its centroid.
+double MeanRadius(const MaterialRing& ring);
+
+// Mean over the ring's points of the angle (radians), right-handed about
+// `axis` (unit), by which each point turned about its ring's centroid from
+// `from` to `to`, both projected on the plane normal to the axis.
+double MeanRotation(const MaterialRing& from, const MaterialRing& to,
+                    const Eigen::Vector3d& axis);
+
+// The signed angle, right-handed about `axis`, from a to b projected on the
+// plane normal to the axis.
+double AngleAbout(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                  const Eigen::Vector3d& axis);
+
+// Height of ring u along the reference model's axis in its model frame:
+// a0 a3 sin u + e3o, which bending does not move (its ring mean is zero).
+double RingHeight(const Model& model, double u);
+
+// The u of the material ring at height fraction h (0 apex, 1 base rim) of
+// the reference model's apex-to-base length.
+double RingAtHeightFraction(const Model& reference, double h);
+
+// The reference frame's long axis in world coordinates (apex to base).
+Eigen::Vector3d LongAxis(const Model& model);
+
+}  // namespace pfdm
+
+#endif  // PFDM_REPORT_MATERIAL_RINGS_H_
