@@ -71,6 +71,11 @@ TEST(LvPhantomTest, SystoleTruthIsTheDesign) {
     }
   }
   const LvFrameTruth& es = phantom.truth.back();
+  EXPECT_NEAR(es.apex_rotation_deg, -10.0, 0.01);
+  EXPECT_NEAR(es.base_rotation_deg, 3.0, 0.01);
+  EXPECT_NEAR(es.net_twist_deg, 13.0, 0.01);
+  // c_mid(h) = 24 - 4 h % averaged over h = 0.05 ... 1.00.
+  EXPECT_NEAR(es.mean_radial_contraction_percent, 24.0 - 4.0 * 0.525, 1e-9);
   EXPECT_NEAR(es.midwall.rotation_deg[3], -7.4, 0.01);                // h = 0.2
   EXPECT_NEAR(es.midwall.rotation_deg[17], 1.7, 0.01);                // h = 0.9
   EXPECT_NEAR(es.midwall.radial_contraction_percent[9], 22.0, 1e-9);  // 0.5

@@ -174,6 +174,14 @@ LvFrameTruth LvTruthMeter::Measure(const Points& world0,
     }
   }
 
+  const std::vector<double>& rotation = truth.midwall.rotation_deg;
+  truth.apex_rotation_deg = 2.0 * rotation[0] - rotation[1];
+  truth.base_rotation_deg = rotation.back();
+  truth.net_twist_deg = truth.base_rotation_deg - truth.apex_rotation_deg;
+  for (double c : truth.midwall.radial_contraction_percent) {
+    truth.mean_radial_contraction_percent += c / kRings;
+  }
+
   double volumes[3];
   for (int layer = 0; layer < 3; ++layer) {
     const Grid& grid = surface_[layer];

@@ -16,6 +16,11 @@
 //   the axis reads fully, a translation not at all and a tilt a little.
 //   radial_contraction_percent: 100 (1 - r / r0), r the mean distance of
 //   the ring's points from their centroid.
+// - apex_rotation_deg: the mid-wall rings' rotation extrapolated linearly
+//   to h = 0 from h = 0.05 and 0.10 (the pole itself turns no ring);
+//   base_rotation_deg: the ring at h = 1; net_twist_deg = base - apex.
+//   mean_radial_contraction_percent: the mid-wall rings' mean (equal
+//   weights, h = 0.05 ... 1.00).
 // - volume_ml: inside the mid-wall surface closed by the plane of its base
 //   ring (a closed triangulation, divergence theorem); endo_volume_ml the
 //   endocardial cavity likewise, epi_volume_ml the epicardium's,
@@ -61,6 +66,10 @@ struct LvFrameTruth {
   // Measured:
   double length_mm = 0.0;  // L
   double longitudinal_shortening_percent = 0.0;
+  double apex_rotation_deg = 0.0;
+  double base_rotation_deg = 0.0;
+  double net_twist_deg = 0.0;
+  double mean_radial_contraction_percent = 0.0;
   double volume_ml = 0.0;
   double endo_volume_ml = 0.0;
   double epi_volume_ml = 0.0;

@@ -32,6 +32,11 @@ Json FrameJson(const LvFrameTruth& truth) {
   frame["length_mm"] = truth.length_mm;
   frame["longitudinal_shortening_percent"] =
       truth.longitudinal_shortening_percent;
+  frame["apex_rotation_deg"] = truth.apex_rotation_deg;
+  frame["base_rotation_deg"] = truth.base_rotation_deg;
+  frame["net_twist_deg"] = truth.net_twist_deg;
+  frame["mean_radial_contraction_percent"] =
+      truth.mean_radial_contraction_percent;
   frame["volume_ml"] = truth.volume_ml;
   frame["endo_volume_ml"] = truth.endo_volume_ml;
   frame["epi_volume_ml"] = truth.epi_volume_ml;

@@ -14,7 +14,9 @@ namespace pfdm {
 //  cavity; ES the frame of least cavity volume), and "frames": per frame
 //  the fields of LvFrameTruth (lv_truth.h): "progress", "rigid",
 //  "world_from_body" (4 x 4, rows), "length_mm",
-//  "longitudinal_shortening_percent", the volumes, "rings" {"midwall",
+//  "longitudinal_shortening_percent", "apex_rotation_deg",
+//  "base_rotation_deg", "net_twist_deg", "mean_radial_contraction_percent",
+//  the volumes, "rings" {"midwall",
 //  "endo", "epi"} each {"rotation_deg", "radial_contraction_percent"} per
 //  ring height, and "segments" (16, with "segment" and "name")}.
 std::string LvTruthJson(const LvPhantom& phantom);

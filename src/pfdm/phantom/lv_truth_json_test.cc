@@ -29,6 +29,9 @@ TEST(LvPhantomJsonTest, WritesEveryFramesTruth) {
   EXPECT_EQ(es["frame"], 4);
   EXPECT_NEAR(es["longitudinal_shortening_percent"].get<double>(), 17.0, 1e-9);
   EXPECT_EQ(es["rigid"]["axial_shift_mm"].get<double>(), 4.0);
+  EXPECT_EQ(es["net_twist_deg"].get<double>(), phantom.truth[4].net_twist_deg);
+  EXPECT_EQ(es["mean_radial_contraction_percent"].get<double>(),
+            phantom.truth[4].mean_radial_contraction_percent);
   for (const char* layer : {"midwall", "endo", "epi"}) {
     EXPECT_EQ(es["rings"][layer]["rotation_deg"].size(), 20u) << layer;
     EXPECT_EQ(es["rings"][layer]["radial_contraction_percent"].size(), 20u);
