@@ -71,7 +71,22 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
     phantom.options.num_frames = DefaultFrameCount(options.kinematics);
   }
   const int num_frames = phantom.options.num_frames;
-  const LvShape shape(options.shape);
+  const LvShapeSize& size = options.shape;
+  if (!(size.radius_mm > 0 && size.wall_mm > 0 &&
+        size.wall_mm < size.radius_mm && size.base_nu_deg > 90 &&
+        size.base_nu_deg < 180 &&
+        size.length_mm / (1 - std::cos(size.base_nu_deg * kPi / 180)) >
+            size.radius_mm)) {
+    throw InputError(
+        "lv phantom shape: needs 0 < wall < radius < a and "
+        "90 < base_nu_deg < 180");
+  }
+  const LvShape shape(size);
+  if (shape.ApexZ(-1.0) >= LvRingHeights().front() * shape.base_z()) {
+    throw InputError(
+        "lv phantom shape: the endocardial apex lies above "
+        "the first truth ring");
+  }
   const LvTruthMeter meter(shape);
   phantom.tag_material = PlaceTags(shape, options);
   phantom.points.source = "lv-phantom";

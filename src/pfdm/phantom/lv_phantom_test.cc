@@ -321,6 +321,12 @@ TEST(LvPhantomTest, RejectsBadOptions) {
   options.num_tags = 10;
   options.noise_mm = -1;
   EXPECT_THROW(MakeLvPhantom(options), InputError);
+  options.noise_mm = 0;
+  options.shape.wall_mm = 40.0;  // Thicker than the radius.
+  EXPECT_THROW(MakeLvPhantom(options), InputError);
+  options.shape.wall_mm = 10.0;
+  options.shape.base_nu_deg = 80.0;  // Widest at the base.
+  EXPECT_THROW(MakeLvPhantom(options), InputError);
 }
 
 }  // namespace

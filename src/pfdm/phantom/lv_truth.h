@@ -30,6 +30,11 @@
 //   counter-clockwise about +z from the body's -x): area-weighted means
 //   (ED mid-wall area) of each point's rotation as above and of
 //   100 (1 - rho / rho0), rho its distance from its ring's centroid.
+//   A lesion pulls its rings' centroids ~0.6 mm toward itself by
+//   end-systole, so, by these definitions, the other mid segments read up
+//   to 2 points of contraction and 1.3 degrees of rotation away from the
+//   design (a fitted ring centre moves likewise; a fitted ring twist does
+//   not vary around the ring).
 #ifndef PFDM_PHANTOM_LV_TRUTH_H_
 #define PFDM_PHANTOM_LV_TRUTH_H_
 
