@@ -48,6 +48,14 @@ TEST(LvPhantomCliTest, WritesPointsAndTruth) {
   const nlohmann::json spin =
       nlohmann::json::parse(ReadText(dir + "/spin_truth.json"));
   EXPECT_EQ(spin["frames"][2]["rigid"]["spin_deg"].get<double>(), 10.0);
+
+  run = RunPfdm("simulate --phantom lv --nobreathing --tags 20 --out " + dir +
+                "/still.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json still =
+      nlohmann::json::parse(ReadText(dir + "/still_truth.json"));
+  EXPECT_EQ(still["breathing"], false);
+  EXPECT_EQ(still["frames"][4]["rigid"]["axial_shift_mm"].get<double>(), 0.0);
 }
 
 TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
@@ -65,6 +73,7 @@ TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
            Case{"--phantom lv --frames 0", "--frames >= 1"},
            Case{"--kinematics cycle", "need --phantom lv"},
            Case{"--lesion", "need --phantom lv"},
+           Case{"--nobreathing", "need --phantom lv"},
        }) {
     const CommandResult run = RunPfdm(std::string("simulate ") + c.flags + out);
     EXPECT_NE(run.exit_code, 0) << c.flags;

@@ -26,6 +26,9 @@ DEFINE_string(kinematics, "systole",
               "rigid-lateral, rigid-tilt, rigid-spin or static");
 DEFINE_string(wall_tags, "midwall",
               "simulate --phantom lv: tags on the midwall or through the wall");
+DEFINE_bool(breathing, true,
+            "simulate --phantom lv: rigid breathing motion in systole and "
+            "cycle (--nobreathing: none)");
 DEFINE_bool(lesion, false,
             "simulate --phantom lv: mid segment 2 contracts 70 % less");
 
@@ -88,6 +91,7 @@ int RunLvPhantom() {
   options.noise_mm = FLAGS_noise;
   options.seed = FLAGS_seed;
   options.deformation.lesion = FLAGS_lesion;
+  options.breathing = FLAGS_breathing;
   if (!IsDefault("frames") && FLAGS_frames < 1) {
     throw InputError("simulate needs --frames >= 1");
   }
@@ -116,9 +120,10 @@ int RunSimulate() {
     throw InputError("unknown --phantom '" + FLAGS_phantom + "' (model, lv)");
   }
   if (!IsDefault("kinematics") || !IsDefault("wall_tags") ||
-      !IsDefault("lesion")) {
+      !IsDefault("lesion") || !IsDefault("breathing")) {
     throw InputError(
-        "--kinematics, --wall_tags and --lesion need --phantom lv");
+        "--kinematics, --wall_tags, --lesion and --breathing need --phantom "
+        "lv");
   }
   return RunModelPhantom();
 }
