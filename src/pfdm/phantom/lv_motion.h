@@ -32,7 +32,8 @@ namespace pfdm {
 // With these defaults the myocardium (epi minus endo volume) loses 26 % of
 // its volume by end-systole, where a real one keeps it within a few
 // percent: radial_epi_less = 0.155 keeps it within 1 % (the epicardium then
-// contracts 6.5 % at mid-height, as measured in real hearts).
+// contracts 6.5 % at mid-height and the equatorial wall thickens from 10
+// to 14.6 mm, against 11.5 mm with the defaults).
 struct LvDeformation {
   double longitudinal_shortening = 0.17;
   double radial_apex = 0.24;        // c_mid at h = 0; 0.22 at mid-ventricle.
