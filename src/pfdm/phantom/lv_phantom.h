@@ -20,6 +20,12 @@
 // points more, epicardium 6 less; rotation -10 deg at the apex to +3 deg at
 // the base (net twist 13 deg); breathing 4 mm along the axis, 2 mm across
 // it and 2 deg of tilt by end-systole; the body in an oblique world pose.
+// Segments at end-systole (contraction %, rotation deg): basal 20.68, 0.79;
+// mid 21.99, -3.46; apical 23.26, -7.61 (+-0.02 deg from the tilt). With
+// the lesion (mid 2 = segment 8): mid 1..6 contract 22.96, 11.05, 22.96,
+// 20.98, 20.01, 20.98 % and turn -4.74, -3.45, -2.20, -2.22, -3.45, -4.71
+// deg; basal and apical segments are unchanged (lv_truth.h says why the
+// other mid segments move).
 //
 // Tags: each a fixed material point, id = index, in every frame; half on
 // short-axis planes (height uniform, longitude uniform), half on long-axis

@@ -278,6 +278,46 @@ TEST(LvPhantomTest, NoiseHasTheRequestedSpread) {
   EXPECT_NEAR(std::sqrt(squares / count), 0.5, 0.01);
 }
 
+// Area-weighted mean height fraction of the mid-wall between h0 and h1.
+double MeanHeight(const LvShape& shape, double h0, double h1) {
+  constexpr int kSlices = 3000;
+  double area = 0.0, moment = 0.0;
+  for (int i = 0; i < kSlices; ++i) {
+    const double a = h0 + (h1 - h0) * i / kSlices;
+    const double b = h0 + (h1 - h0) * (i + 1) / kSlices;
+    const Eigen::Vector3d pa =
+        shape.Position(shape.NuAtHeight(a * shape.base_z(), 0.0), 0.0, 0.0);
+    const Eigen::Vector3d pb =
+        shape.Position(shape.NuAtHeight(b * shape.base_z(), 0.0), 0.0, 0.0);
+    const double band = (pa.x() + pb.x()) * (pb - pa).norm();  // / pi
+    area += band;
+    moment += band * 0.5 * (a + b);
+  }
+  return moment / area;
+}
+
+TEST(LvPhantomTest, SegmentsAverageTheDesignOverTheirArea) {
+  const LvPhantom phantom = Make(LvKinematics::kSystole, 0.0, 10);
+  const LvShape shape;
+  const LvDeformation design;
+  // c and theta are linear in h: a segment's mean is their value at its
+  // area-weighted mean height.
+  const double mean_h[3] = {MeanHeight(shape, 2.0 / 3.0, 1.0),
+                            MeanHeight(shape, 1.0 / 3.0, 2.0 / 3.0),
+                            MeanHeight(shape, 0.0, 1.0 / 3.0)};
+  for (const LvSegmentTruth& segment : phantom.truth.back().segments) {
+    const double h = mean_h[segment.segment <= 6    ? 0
+                            : segment.segment <= 12 ? 1
+                                                    : 2];
+    EXPECT_NEAR(segment.radial_contraction_percent,
+                100.0 * DesignedRadialContraction(design, h, 0.0), 0.01)
+        << segment.name;
+    // The breathing tilt reads as a few hundredths of a degree.
+    EXPECT_NEAR(segment.rotation_deg, DesignedRotationDeg(design, h), 0.05)
+        << segment.name;
+  }
+}
+
 TEST(LvPhantomTest, LesionWeakensMidSegmentTwoOnly) {
   LvPhantomOptions options;
   options.num_tags = 10;
