@@ -1,5 +1,6 @@
 #include "pfdm/phantom/lv_truth.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pfdm {
@@ -65,6 +66,15 @@ std::vector<double> LvRingHeights() {
   std::vector<double> heights;
   for (int i = 1; i <= kRings; ++i) heights.push_back(i / 20.0);
   return heights;
+}
+
+double LvRingValueAt(const std::vector<double>& values, double h) {
+  // Rings at h = (i + 1) / kRings; segment i runs from ring i to ring i + 1.
+  const double position = std::clamp(h, 0.0, 1.0) * kRings - 1.0;
+  const int i =
+      std::clamp(static_cast<int>(std::floor(position)), 0, kRings - 2);
+  const double t = position - i;
+  return (1.0 - t) * values[i] + t * values[i + 1];
 }
 
 LvTruthMeter::LvTruthMeter(const LvShape& shape) {
@@ -175,7 +185,7 @@ LvFrameTruth LvTruthMeter::Measure(const Points& world0,
   }
 
   const std::vector<double>& rotation = truth.midwall.rotation_deg;
-  truth.apex_rotation_deg = 2.0 * rotation[0] - rotation[1];
+  truth.apex_rotation_deg = LvRingValueAt(rotation, 0.0);
   truth.base_rotation_deg = rotation.back();
   truth.net_twist_deg = truth.base_rotation_deg - truth.apex_rotation_deg;
   for (double c : truth.midwall.radial_contraction_percent) {

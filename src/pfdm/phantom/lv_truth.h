@@ -51,6 +51,11 @@ namespace pfdm {
 // 0.05, 0.10, ..., 1.00.
 std::vector<double> LvRingHeights();
 
+// A ring array's value at height fraction h: linear between the rings,
+// extrapolated linearly from the two nearest below 0.05 (exact for the
+// default design, linear in h), 0 <= h <= 1.
+double LvRingValueAt(const std::vector<double>& values, double h);
+
 struct LvLayerRings {  // One entry per LvRingHeights().
   std::vector<double> rotation_deg;
   std::vector<double> radial_contraction_percent;

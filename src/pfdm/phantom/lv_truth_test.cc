@@ -73,5 +73,16 @@ TEST(LvPhantomTruthTest, SpinAboutTheAxisReadsAsRotationShiftsDoNot) {
   }
 }
 
+TEST(LvPhantomTruthTest, RingValuesInterpolateAndExtrapolateToTheApex) {
+  std::vector<double> values;
+  for (double h : LvRingHeights()) values.push_back(3.0 - 2.0 * h);
+  for (double h : {0.0, 0.01, 0.05, 0.333, 0.5, 0.97, 1.0}) {
+    EXPECT_NEAR(LvRingValueAt(values, h), 3.0 - 2.0 * h, 1e-12) << h;
+  }
+  values[9] = 10.0;  // h = 0.5
+  EXPECT_NEAR(LvRingValueAt(values, 0.5), 10.0, 1e-12);
+  EXPECT_NEAR(LvRingValueAt(values, 0.475), 0.5 * (3.0 - 0.9 + 10.0), 1e-12);
+}
+
 }  // namespace
 }  // namespace pfdm
