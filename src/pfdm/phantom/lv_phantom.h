@@ -14,7 +14,10 @@
 // 27 mm radius at the equator (nu = 90 deg; the base plane at nu = 120 deg,
 // radius 23.4 mm), wall 10 mm thick at the equator (about 4 mm at the
 // apex); mid-wall volume 163 ml, endocardial cavity 107 ml (44 ml at
-// end-systole: ejection fraction 59 %).
+// end-systole: ejection fraction 59 %). The mid-wall at ED is an
+// ellipsoid cut at latitude 30 degrees above its equator, which the paper
+// model (u up to pi/6) can take exactly: its frame-0 fit should sit at
+// the noise floor, so what it misses later is motion.
 // Default systole (p = 1): longitudinal shortening 17 % about the apex,
 // mid-wall radial contraction 24 % (apex) to 20 % (base), endocardium 8
 // points more, epicardium 6 less; rotation -10 deg at the apex to +3 deg at
