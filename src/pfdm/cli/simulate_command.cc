@@ -1,24 +1,52 @@
-// pfdm simulate: the synthetic SPAMM-like LV phantom and its ground truth.
+// pfdm simulate: a synthetic LV with tracked tags and its ground truth;
+// --phantom model (the model's own equations) or lv (the analytic LV).
 #include <cstdio>
 #include <filesystem>
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/point_writer.h"
+#include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/phantom/lv_truth_json.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
 
-DEFINE_int32(frames, 5, "simulate: systolic frames");
+DEFINE_int32(frames, 5,
+             "simulate: frames (--phantom lv: 5, or 9 for --kinematics cycle)");
 DEFINE_int32(tags, 2000, "simulate: tracked tags");
 DEFINE_double(noise, 0.5, "simulate: Gaussian noise per coordinate, mm");
 DEFINE_double(outliers, 0.0, "simulate: fraction of outlier points");
 DEFINE_int32(seed, 1, "simulate: random seed");
+DEFINE_string(phantom, "model",
+              "simulate: model (the model's own equations) or lv (the "
+              "analytic LV, independent of the model)");
+DEFINE_string(kinematics, "systole",
+              "simulate --phantom lv: systole, cycle, rigid-axial, "
+              "rigid-lateral, rigid-tilt, rigid-spin or static");
+DEFINE_string(wall_tags, "midwall",
+              "simulate --phantom lv: tags on the midwall or through the wall");
+DEFINE_bool(breathing, true,
+            "simulate --phantom lv: rigid breathing motion in systole and "
+            "cycle (--nobreathing: none)");
+DEFINE_bool(lesion, false,
+            "simulate --phantom lv: mid segment 2 contracts 70 % less");
 
 namespace pfdm {
+namespace {
 
-int RunSimulate() {
-  if (FLAGS_out.empty()) throw InputError("simulate needs --out FILE.csv");
+bool IsDefault(const char* flag) {
+  return gflags::GetCommandLineFlagInfoOrDie(flag).is_default;
+}
+
+// NAME.csv -> NAME_truth.<extension>
+std::filesystem::path TruthPath(const char* extension) {
+  std::filesystem::path truth(FLAGS_out);
+  truth.replace_filename(truth.stem().string() + "_truth." + extension);
+  return truth;
+}
+
+int RunModelPhantom() {
   PhantomOptions options;
   options.num_frames = FLAGS_frames;
   options.num_points = FLAGS_tags;
@@ -33,8 +61,7 @@ int RunSimulate() {
         "0 <= --outliers <= 1");
   }
   const Phantom phantom = MakePhantom(options);
-  std::filesystem::path truth(FLAGS_out);
-  truth.replace_filename(truth.stem().string() + "_truth.csv");
+  const std::filesystem::path truth = TruthPath("csv");
   const std::string points_csv = ToPointsCsv(phantom.points);
   const std::string truth_csv = ParametersCsv(phantom.truth);
   if (truth.has_parent_path()) EnsureDirectory(truth.parent_path().string());
@@ -43,6 +70,62 @@ int RunSimulate() {
   std::printf("wrote %s (%d frames x %d tags) and %s\n", FLAGS_out.c_str(),
               options.num_frames, options.num_points, truth.c_str());
   return 0;
+}
+
+int RunLvPhantom() {
+  LvPhantomOptions options;
+  if (!ParseLvKinematics(FLAGS_kinematics, &options.kinematics)) {
+    throw InputError("unknown --kinematics '" + FLAGS_kinematics +
+                     "' (systole, cycle, rigid-axial, rigid-lateral, "
+                     "rigid-tilt, rigid-spin, static)");
+  }
+  if (!ParseLvTagLayer(FLAGS_wall_tags, &options.tags)) {
+    throw InputError("unknown --wall_tags '" + FLAGS_wall_tags +
+                     "' (midwall, wall)");
+  }
+  if (FLAGS_outliers != 0.0) {
+    throw InputError("--outliers is for --phantom model only");
+  }
+  options.num_frames = IsDefault("frames") ? 0 : FLAGS_frames;
+  options.num_tags = FLAGS_tags;
+  options.noise_mm = FLAGS_noise;
+  options.seed = FLAGS_seed;
+  options.deformation.lesion = FLAGS_lesion;
+  options.breathing = FLAGS_breathing;
+  if (!IsDefault("frames") && FLAGS_frames < 1) {
+    throw InputError("simulate needs --frames >= 1");
+  }
+  if (options.num_tags < 1 || !(options.noise_mm >= 0)) {
+    throw InputError("simulate needs --tags >= 1 and --noise >= 0");
+  }
+  const LvPhantom phantom = MakeLvPhantom(options);
+  const std::filesystem::path truth = TruthPath("json");
+  const std::string points_csv = ToPointsCsv(phantom.points);
+  const std::string truth_json = LvTruthJson(phantom);
+  if (truth.has_parent_path()) EnsureDirectory(truth.parent_path().string());
+  WriteFileAtomically(FLAGS_out, points_csv);
+  WriteFileAtomically(truth.string(), truth_json);
+  std::printf("wrote %s (lv %s, %d frames x %d tags) and %s\n",
+              FLAGS_out.c_str(), FLAGS_kinematics.c_str(),
+              phantom.options.num_frames, options.num_tags, truth.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int RunSimulate() {
+  if (FLAGS_out.empty()) throw InputError("simulate needs --out FILE.csv");
+  if (FLAGS_phantom == "lv") return RunLvPhantom();
+  if (FLAGS_phantom != "model") {
+    throw InputError("unknown --phantom '" + FLAGS_phantom + "' (model, lv)");
+  }
+  if (!IsDefault("kinematics") || !IsDefault("wall_tags") ||
+      !IsDefault("lesion") || !IsDefault("breathing")) {
+    throw InputError(
+        "--kinematics, --wall_tags, --lesion and --breathing need --phantom "
+        "lv");
+  }
+  return RunModelPhantom();
 }
 
 }  // namespace pfdm
