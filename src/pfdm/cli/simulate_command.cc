@@ -25,13 +25,7 @@ int RunSimulate() {
   options.noise_mm = FLAGS_noise;
   options.outlier_fraction = FLAGS_outliers;
   options.seed = FLAGS_seed;
-  if (options.num_frames < 1 || options.num_points < 1 ||
-      options.noise_mm < 0 || options.outlier_fraction < 0 ||
-      options.outlier_fraction > 1) {
-    throw InputError(
-        "simulate needs --frames >= 1, --tags >= 1, --noise >= 0 and "
-        "0 <= --outliers <= 1");
-  }
+  CheckPhantomOptions(options);
   const Phantom phantom = MakePhantom(options);
   std::filesystem::path truth(FLAGS_out);
   truth.replace_filename(truth.stem().string() + "_truth.csv");
