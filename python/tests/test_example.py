@@ -1,4 +1,5 @@
 """examples/python_phantom.py runs, with or without matplotlib."""
+import importlib.util
 import os
 import subprocess
 import sys
@@ -16,3 +17,6 @@ def test_the_python_example_fits_and_writes_the_outputs():
     assert (out / "fit" / "fit.json").exists()
     assert "frame 2: rms" in done.stdout
     assert "ejection fraction 0." in done.stdout
+    plotted = importlib.util.find_spec("matplotlib") is not None
+    for name in ("functions.png", "surface.png"):
+        assert (out / name).exists() == plotted, name
