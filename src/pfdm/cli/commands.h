@@ -4,6 +4,7 @@
 
 #include "gflags/gflags.h"
 #include "pfdm/fit/fitter.h"
+#include "pfdm/io/fit_settings.h"
 #include "pfdm/model/base_plane.h"
 #include "pfdm/model/model.h"
 #include "pfdm/util/point_data.h"
@@ -23,11 +24,14 @@ int RunBatch();
 int RunMeshPoints();
 
 // From the shared flags (--points --format --contours; --model --knots;
-// --smoothness --prior --loss --loss_scale --threads --apex --base --solver).
+// --smoothness --prior --loss --loss_scale --threads --apex --base --solver
+// ...; --base_plane), all of them FitSettings' (fit_flags.cc).
+FitSettings FitSettingsFromFlags();
 PointSequence PointsFromFlags();
 ModelConfig ModelConfigFromFlags();
 FitOptions FitOptionsFromFlags();
-// Per frame, the plane closing the cavity for --base_plane (fit_command.cc).
+// Per frame, the plane closing the cavity for --base_plane; "" only checks
+// the flag.
 std::vector<BasePlane> BasePlanesFromFlags(const std::string& points);
 
 }  // namespace pfdm

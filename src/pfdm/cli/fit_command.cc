@@ -3,25 +3,9 @@
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/io/fit_output.h"
-#include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/util/error.h"
 
-DEFINE_string(base_plane, "auto",
-              "fit, batch: where the cavity volume is "
-              "closed: auto (the mitral valve plane when biv-me guide points "
-              "have MITRAL_VALVE points in every frame, else rim) or rim "
-              "(a flat lid at the base rim)");
-
 namespace pfdm {
-
-std::vector<BasePlane> BasePlanesFromFlags(const std::string& points) {
-  if (FLAGS_base_plane == "rim") return {};
-  if (FLAGS_base_plane != "auto") {
-    throw InputError("unknown --base_plane '" + FLAGS_base_plane +
-                     "' (expected auto or rim)");
-  }
-  return MitralValvePlanes(points);
-}
 
 int RunFit() {
   if (FLAGS_out.empty()) throw InputError("fit needs --out DIR");

@@ -1,66 +1,85 @@
-// Flags shared by the commands that read points and fit.
-#include <cmath>
-#include <sstream>
-
-#include "ceres/types.h"
+// Flags shared by the commands that read points and fit; their names,
+// defaults and checks are FitSettings' (io/fit_settings.h).
 #include "pfdm/cli/commands.h"
+#include "pfdm/io/fit_settings.h"
 #include "pfdm/io/point_source.h"
-#include "pfdm/solvers/solver.h"
 #include "pfdm/util/error.h"
+
+namespace {
+const pfdm::FitSettings kDefaults;
+}  // namespace
 
 DEFINE_string(points, "",
               "input points: a frame,id,x,y,z CSV, or a biv-me "
               "GPFile_*.txt or a folder of them");
-DEFINE_string(format, "auto", "csv, gpfile or auto (by name)");
-DEFINE_string(contours, "lv-cavity",
+DEFINE_string(format, kDefaults.format.c_str(),
+              "csv, gpfile or auto (by name)");
+DEFINE_string(contours, kDefaults.contours.c_str(),
               "GPFile contour types to keep, comma-separated; lv-endo, "
               "lv-epi and lv-cavity (lv-endo and AORTA_VALVE) are aliases");
 DEFINE_string(out, "", "output folder (simulate: output CSV)");
-DEFINE_string(model, "paper", "paper or superellipsoid");
-DEFINE_int32(knots, 17, "knots per parameter function");
-DEFINE_double(smoothness, 1.0,
+DEFINE_string(model, kDefaults.model.c_str(), "paper or superellipsoid");
+DEFINE_int32(knots, kDefaults.knots, "knots per parameter function");
+DEFINE_double(smoothness, kDefaults.smoothness,
               "smoothness weight, relative to one knot's data");
-DEFINE_double(prior, 0.001, "pull toward the previous frame, same units");
-DEFINE_string(loss, "none", "none, huber or cauchy");
-DEFINE_double(loss_scale, 1.0, "robust loss scale, mm");
-DEFINE_int32(threads, 1, "Ceres threads");
+DEFINE_double(prior, kDefaults.prior,
+              "pull toward the previous frame, same units");
+DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
+DEFINE_double(loss_scale, kDefaults.loss_scale, "robust loss scale, mm");
+DEFINE_int32(threads, kDefaults.threads, "Ceres threads");
 DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
-DEFINE_string(solver, "direct", "direct, damped or integrator");
-DEFINE_string(linear_solver, "SPARSE_NORMAL_CHOLESKY",
+DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
+DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
               "Ceres linear solver, e.g. SPARSE_NORMAL_CHOLESKY, "
               "DENSE_NORMAL_CHOLESKY, DENSE_QR");
-DEFINE_double(time_step, 0.0,
+DEFINE_double(time_step, kDefaults.time_step,
               "damped and integrator: pseudo-time step; 0 = default "
               "(integrator: 0.9 of its stability bound, damped: 1000)");
-DEFINE_double(rest_tolerance, pfdm::SolverOptions().rest_tolerance,
+DEFINE_double(rest_tolerance, kDefaults.rest_tolerance,
               "damped and integrator: at rest when the energy dissipated per "
               "unit pseudo-time is below rest_tolerance^2 of the initial");
-DEFINE_int32(max_steps, pfdm::SolverOptions().max_steps,
+DEFINE_int32(max_steps, kDefaults.max_steps,
              "damped and integrator: most steps per solve");
-DEFINE_string(damping, "jacobi",
+DEFINE_string(damping, kDefaults.damping.c_str(),
               "integrator: damping D = jacobi (diag J^T J) or unit");
 DEFINE_string(damping_scale, "",
               "integrator: multipliers of D per group, e.g. "
               "twist=10,offsets=2 (groups pose shape twist bending offsets)");
-DEFINE_string(jacobian, "analytic", "analytic, autodiff or numeric");
+DEFINE_string(jacobian, kDefaults.jacobian.c_str(),
+              "analytic, autodiff or numeric");
+DEFINE_string(base_plane, kDefaults.base_plane.c_str(),
+              "fit, batch: where the cavity volume is "
+              "closed: auto (the mitral valve plane when biv-me guide points "
+              "have MITRAL_VALVE points in every frame, else rim) or rim "
+              "(a flat lid at the base rim)");
 
 namespace pfdm {
-namespace {
 
-Eigen::Vector3d ParsePoint(const std::string& flag, const std::string& text) {
-  Eigen::Vector3d point;
-  std::istringstream in(text);
-  char comma1 = 0, comma2 = 0;
-  in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z();
-  if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
-      !point.allFinite()) {
-    throw InputError("--" + flag + " must be x,y,z in mm, got '" + text + "'");
-  }
-  return point;
+FitSettings FitSettingsFromFlags() {
+  FitSettings s;
+  s.format = FLAGS_format;
+  s.contours = FLAGS_contours;
+  s.base_plane = FLAGS_base_plane;
+  s.model = FLAGS_model;
+  s.knots = FLAGS_knots;
+  s.smoothness = FLAGS_smoothness;
+  s.prior = FLAGS_prior;
+  s.loss = FLAGS_loss;
+  s.loss_scale = FLAGS_loss_scale;
+  s.threads = FLAGS_threads;
+  s.apex = FLAGS_apex;
+  s.base = FLAGS_base;
+  s.solver = FLAGS_solver;
+  s.linear_solver = FLAGS_linear_solver;
+  s.time_step = FLAGS_time_step;
+  s.rest_tolerance = FLAGS_rest_tolerance;
+  s.max_steps = FLAGS_max_steps;
+  s.damping = FLAGS_damping;
+  s.damping_scale = FLAGS_damping_scale;
+  s.jacobian = FLAGS_jacobian;
+  return s;
 }
-
-}  // namespace
 
 PointSequence PointsFromFlags() {
   if (FLAGS_points.empty()) throw InputError("--points FILE is required");
@@ -68,42 +87,15 @@ PointSequence PointsFromFlags() {
 }
 
 ModelConfig ModelConfigFromFlags() {
-  return ModelConfig::FromName(FLAGS_model, FLAGS_knots);
+  return ModelConfigFrom(FitSettingsFromFlags());
 }
 
 FitOptions FitOptionsFromFlags() {
-  FitOptions options;
-  options.smoothness_weight = FLAGS_smoothness;
-  options.prior_weight = FLAGS_prior;
-  options.loss = FLAGS_loss;
-  options.loss_scale_mm = FLAGS_loss_scale;
-  options.solver.num_threads = FLAGS_threads;
-  options.solver.kind = SolverFromName(FLAGS_solver);
-  if (!ceres::StringToLinearSolverType(FLAGS_linear_solver,
-                                       &options.solver.linear_solver)) {
-    throw InputError("unknown --linear_solver '" + FLAGS_linear_solver + "'");
-  }
-  if (!(FLAGS_time_step >= 0.0) || !std::isfinite(FLAGS_time_step)) {
-    throw InputError("--time_step must be 0 (default) or positive");
-  }
-  options.solver.time_step = FLAGS_time_step;
-  if (!(FLAGS_rest_tolerance > 0.0) || !std::isfinite(FLAGS_rest_tolerance)) {
-    throw InputError("--rest_tolerance must be positive");
-  }
-  options.solver.rest_tolerance = FLAGS_rest_tolerance;
-  if (FLAGS_max_steps < 1) throw InputError("--max_steps must be at least 1");
-  options.solver.max_steps = FLAGS_max_steps;
-  options.solver.damping = DampingFromName(FLAGS_damping);
-  options.damping_groups = DampingGroupsFromText(FLAGS_damping_scale);
-  options.jacobian = JacobianFromName(FLAGS_jacobian);
-  if (FLAGS_apex.empty() != FLAGS_base.empty()) {
-    throw InputError("--apex and --base go together");
-  }
-  if (!FLAGS_apex.empty()) {
-    options.hint = AxisHint{ParsePoint("apex", FLAGS_apex),
-                            ParsePoint("base", FLAGS_base)};
-  }
-  return options;
+  return FitOptionsFrom(FitSettingsFromFlags());
+}
+
+std::vector<BasePlane> BasePlanesFromFlags(const std::string& points) {
+  return BasePlanesFrom(FitSettingsFromFlags(), points);
 }
 
 }  // namespace pfdm

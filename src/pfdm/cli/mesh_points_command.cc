@@ -1,17 +1,19 @@
 // pfdm mesh-points: corresponding mesh vertices over frames as tracked
 // points (id = vertex index), and the contraction measured on the meshes.
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/io/mesh_reader.h"
+#include "pfdm/io/mesh_source.h"
 #include "pfdm/io/point_writer.h"
 #include "pfdm/report/mesh_motion.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
+
+namespace {
+const pfdm::MeshSettings kDefaults;
+}  // namespace
 
 DEFINE_string(mesh, "",
               "mesh-points: an .obj or legacy .vtk file, a folder "
@@ -20,119 +22,29 @@ DEFINE_string(mesh, "",
 DEFINE_string(mesh_filter, "",
               "mesh-points: in a folder, only .obj files "
               "whose name contains this");
-DEFINE_string(mesh_format, "auto", "mesh-points: obj, vtk, cap-mean or auto");
+DEFINE_string(mesh_format, kDefaults.mesh_format.c_str(),
+              "mesh-points: obj, vtk, cap-mean or auto");
 DEFINE_string(label, "",
               "mesh-points: VTK only, keep the points whose point "
               "scalar equals this (e.g. 0 = endocardium in the UK Digital "
               "Heart mesh)");
-DEFINE_string(cap_surfaces, "ED-endo,ES-endo",
+DEFINE_string(cap_surfaces, kDefaults.cap_surfaces.c_str(),
               "mesh-points: CAP surfaces "
               "to take as frames, from ED-endo, ED-epi, ES-endo, ES-epi");
 
 namespace pfdm {
-namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> Split(const std::string& list) {
-  std::vector<std::string> items;
-  std::istringstream in(list);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
-}
+namespace {
 
-// Keeps the points whose scalar equals `label` and the triangles among them.
-TriangleMesh KeepLabel(const VtkMesh& vtk, const std::string& path,
-                       const std::string& label) {
-  if (vtk.point_scalars.empty()) {
-    throw InputError(path +
-                     ": --label given but the file has no point scalars");
-  }
-  double wanted = 0.0;
-  std::istringstream in(label);
-  if (!(in >> wanted) || !(in >> std::ws).eof()) {
-    throw InputError("--label must be a number, got '" + label + "'");
-  }
-  const std::vector<double>& values = vtk.point_scalars.begin()->second;
-  std::vector<int> new_index(vtk.mesh.points.size(), -1);
-  TriangleMesh kept;
-  for (size_t i = 0; i < values.size() && i < vtk.mesh.points.size(); ++i) {
-    if (values[i] != wanted) continue;
-    new_index[i] = static_cast<int>(kept.points.size());
-    kept.points.push_back(vtk.mesh.points[i]);
-  }
-  if (kept.points.empty()) {
-    throw InputError(path + ": no point has label " + label);
-  }
-  for (const auto& t : vtk.mesh.triangles) {
-    if (new_index[t[0]] < 0 || new_index[t[1]] < 0 || new_index[t[2]] < 0)
-      continue;
-    kept.triangles.push_back(
-        {new_index[t[0]], new_index[t[1]], new_index[t[2]]});
-  }
-  return kept;
-}
-
-std::vector<TriangleMesh> LoadFrames(const std::string& path) {
-  std::string format = FLAGS_mesh_format;
-  const fs::path p(path);
-  if (format == "auto") {
-    format = fs::is_directory(p) || p.extension() == ".obj" ? "obj"
-             : p.extension() == ".vtk"                      ? "vtk"
-             : p.extension() == ".csv"                      ? "cap-mean"
-                                                            : "";
-    if (format.empty()) {
-      throw InputError(path + ": unknown mesh format (use --mesh_format)");
-    }
-  }
-  std::vector<TriangleMesh> frames;
-  if (format == "obj") {
-    std::vector<std::string> files;
-    if (fs::is_directory(p)) {
-      for (const auto& entry : fs::directory_iterator(p)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.path().extension() == ".obj" &&
-            name.find(FLAGS_mesh_filter) != std::string::npos) {
-          files.push_back(entry.path().string());
-        }
-      }
-      std::sort(files.begin(), files.end());
-      if (files.empty()) {
-        throw InputError(path + ": no .obj file matching '" +
-                         FLAGS_mesh_filter + "'");
-      }
-    } else {
-      files.push_back(path);
-    }
-    for (const std::string& file : files) frames.push_back(ReadObj(file));
-  } else if (format == "vtk") {
-    const VtkMesh vtk = ReadLegacyVtkPolyData(path);
-    frames.push_back(FLAGS_label.empty() ? vtk.mesh
-                                         : KeepLabel(vtk, path, FLAGS_label));
-  } else if (format == "cap-mean") {
-    const auto surfaces = ReadCapMeanShape(path);
-    const auto faces =
-        ReadCapFaces((p.parent_path() / "surface_face.csv").string(),
-                     static_cast<int>(surfaces.front().size()));
-    const std::vector<std::string> names = {"ED-endo", "ED-epi", "ES-endo",
-                                            "ES-epi"};
-    for (const std::string& wanted : Split(FLAGS_cap_surfaces)) {
-      const auto it = std::find(names.begin(), names.end(), wanted);
-      if (it == names.end()) {
-        throw InputError("--cap_surfaces: unknown surface '" + wanted +
-                         "' (expected ED-endo, ED-epi, ES-endo or ES-epi)");
-      }
-      frames.push_back({surfaces[it - names.begin()], faces});
-    }
-  } else {
-    throw InputError("unknown --mesh_format '" + format +
-                     "' (expected obj, vtk, cap-mean or auto)");
-  }
-  if (frames.empty()) throw InputError(path + ": no frames");
-  return frames;
+MeshSettings MeshSettingsFromFlags() {
+  MeshSettings settings;
+  settings.mesh_format = FLAGS_mesh_format;
+  settings.mesh_filter = FLAGS_mesh_filter;
+  settings.label = FLAGS_label;
+  settings.cap_surfaces = FLAGS_cap_surfaces;
+  return settings;
 }
 
 }  // namespace
@@ -140,7 +52,8 @@ std::vector<TriangleMesh> LoadFrames(const std::string& path) {
 int RunMeshPoints() {
   if (FLAGS_mesh.empty()) throw InputError("mesh-points needs --mesh PATH");
   if (FLAGS_out.empty()) throw InputError("mesh-points needs --out FILE.csv");
-  const std::vector<TriangleMesh> frames = LoadFrames(FLAGS_mesh);
+  const std::vector<TriangleMesh> frames =
+      ReadMeshFrames(FLAGS_mesh, MeshSettingsFromFlags());
   std::vector<std::vector<Eigen::Vector3d>> points;
   for (const TriangleMesh& mesh : frames) points.push_back(mesh.points);
   const std::string csv = ToPointsCsv(MeshPointSequence(FLAGS_mesh, points));

@@ -53,13 +53,7 @@ int RunModelPhantom() {
   options.noise_mm = FLAGS_noise;
   options.outlier_fraction = FLAGS_outliers;
   options.seed = FLAGS_seed;
-  if (options.num_frames < 1 || options.num_points < 1 ||
-      options.noise_mm < 0 || options.outlier_fraction < 0 ||
-      options.outlier_fraction > 1) {
-    throw InputError(
-        "simulate needs --frames >= 1, --tags >= 1, --noise >= 0 and "
-        "0 <= --outliers <= 1");
-  }
+  CheckPhantomOptions(options);
   const Phantom phantom = MakePhantom(options);
   const std::filesystem::path truth = TruthPath("csv");
   const std::string points_csv = ToPointsCsv(phantom.points);

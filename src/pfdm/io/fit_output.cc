@@ -18,8 +18,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegreesPerRadian = 180.0 / kPi;
-constexpr int kSurfaceRings = 33;
-constexpr int kSurfaceMeridians = 48;
 
 constexpr const char* kGaugeConvention =
     "a0 (scale) is set on frame 0 so that the model, a3 = 0.8 there, spans "
@@ -104,6 +102,10 @@ double ReportedValue(const Model& model, int f, double u) {
   return value;
 }
 
+const char* ReportedUnit(int f) {
+  return f == kTau ? "rad" : IsLength(f) ? "mm" : "1";
+}
+
 std::string ParametersCsv(const std::vector<Model>& frames) {
   std::ostringstream out;
   out.precision(10);
@@ -172,9 +174,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   json functions = json::object();
   for (int f = 0; f < kNumFunctions; ++f) {
     functions[FunctionName(f)] = {{"mode", ModeName(fit.config.modes[f])},
-                                  {"unit", f == kTau     ? "rad"
-                                           : IsLength(f) ? "mm"
-                                                         : "1"}};
+                                  {"unit", ReportedUnit(f)}};
   }
   json model = {{"name", fit.config.name},
                 {"knots", fit.config.num_knots},

@@ -16,6 +16,12 @@ namespace pfdm {
 
 // Function f at u in the unit ParametersCsv reports it in.
 double ReportedValue(const Model& model, int f, double u);
+// That unit: "mm", "rad" or "1".
+const char* ReportedUnit(int f);
+
+// The u, v grid of the surface in the VTK files.
+constexpr int kSurfaceRings = 33;
+constexpr int kSurfaceMeridians = 48;
 
 // One row per frame, function and knot: frame,function,knot,u,z_mm,value.
 // Lengths (a0, a1..a3 as a0 a_i, b0, b2, offsets) in mm, tau in radians,

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "Eigen/Geometry"
+#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
@@ -87,6 +88,16 @@ Phantom MakePhantom(const PhantomOptions& options) {
     phantom.points.frames.push_back(std::move(frame));
   }
   return phantom;
+}
+
+void CheckPhantomOptions(const PhantomOptions& options) {
+  if (options.num_frames < 1 || options.num_points < 1 ||
+      options.noise_mm < 0 || options.outlier_fraction < 0 ||
+      options.outlier_fraction > 1) {
+    throw InputError(
+        "simulate needs --frames >= 1, --tags >= 1, --noise >= 0 and "
+        "0 <= --outliers <= 1");
+  }
 }
 
 }  // namespace pfdm

@@ -31,6 +31,10 @@ struct Phantom {
 // a pose neither axis-aligned nor centred.
 Phantom MakePhantom(const PhantomOptions& options);
 
+// Throws InputError naming pfdm simulate's flags (--frames, --tags,
+// --noise, --outliers) when the options make no phantom.
+void CheckPhantomOptions(const PhantomOptions& options);
+
 }  // namespace pfdm
 
 #endif  // PFDM_PHANTOM_PHANTOM_H_

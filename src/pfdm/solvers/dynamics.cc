@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <string>
@@ -283,7 +284,14 @@ class DampedCallback : public ceres::IterationCallback {
     report_->trace.push_back({summary.iteration, time_,
                               summary.cumulative_time_in_seconds, summary.cost,
                               summary.gradient_norm});
-    if (options_.on_step) options_.on_step(report_->trace.back());
+    if (options_.on_step) {
+      try {  // An exception must not unwind through Ceres.
+        options_.on_step(report_->trace.back());
+      } catch (...) {
+        error_ = std::current_exception();
+        return ceres::SOLVER_ABORT;
+      }
+    }
     const double before = energy_;
     energy_ = summary.cost;
     if (summary.iteration > 0 && rest_test_->AtRest(dt, before, energy_)) {
@@ -293,6 +301,10 @@ class DampedCallback : public ceres::IterationCallback {
     return ceres::SOLVER_CONTINUE;
   }
   bool at_rest() const { return at_rest_; }
+  // What on_step threw, after the solve.
+  void RethrowError() const {
+    if (error_) std::rethrow_exception(error_);
+  }
 
  private:
   const SolverOptions& options_;
@@ -300,6 +312,7 @@ class DampedCallback : public ceres::IterationCallback {
   std::optional<RestTest> rest_test_;
   double radius_ = 0.0, time_ = 0.0, energy_ = 0.0;
   bool at_rest_ = false;
+  std::exception_ptr error_;
 };
 
 void Fail(const std::string& message, SolverReport* report) {
@@ -440,6 +453,7 @@ SolverReport SolveDamped(ceres::Problem* problem,
   solver_options.update_state_every_iteration = bool(options.on_step);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem, &summary);
+  callback.RethrowError();
 
   report.iterations = static_cast<int>(summary.iterations.size()) - 1;
   report.usable =

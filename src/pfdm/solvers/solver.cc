@@ -1,5 +1,7 @@
 #include "pfdm/solvers/solver.h"
 
+#include <exception>
+
 #include "ceres/solver.h"
 #include "pfdm/util/error.h"
 
@@ -48,20 +50,30 @@ SolverReport SolveProblem(ceres::Problem* problem,
 namespace {
 
 // Hands each iteration to SolverOptions::on_step with the parameter blocks
-// at that iterate.
+// at that iterate.  What on_step throws must not unwind through Ceres: it
+// is kept, the solve aborted, and rethrown after it.
 class StepObserver : public ceres::IterationCallback {
  public:
   explicit StepObserver(const SolverOptions& options) : options_(options) {}
   ceres::CallbackReturnType operator()(
       const ceres::IterationSummary& summary) override {
-    options_.on_step({summary.iteration, 0.0,
-                      summary.cumulative_time_in_seconds, summary.cost,
-                      summary.gradient_norm});
+    try {
+      options_.on_step({summary.iteration, 0.0,
+                        summary.cumulative_time_in_seconds, summary.cost,
+                        summary.gradient_norm});
+    } catch (...) {
+      error_ = std::current_exception();
+      return ceres::SOLVER_ABORT;
+    }
     return ceres::SOLVER_CONTINUE;
+  }
+  void RethrowError() const {
+    if (error_) std::rethrow_exception(error_);
   }
 
  private:
   const SolverOptions& options_;
+  std::exception_ptr error_;
 };
 
 }  // namespace
@@ -86,6 +98,7 @@ SolverReport SolveDirect(ceres::Problem* problem,
   solver_options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem, &summary);
+  observer.RethrowError();
 
   SolverReport report;
   report.iterations = static_cast<int>(summary.iterations.size()) - 1;

@@ -57,6 +57,9 @@ struct SolverOptions {
   std::unordered_map<const double*, std::vector<double>> damping_scale;
   // Called with each point of SolverReport::trace as it is recorded, while
   // the parameter blocks hold that iterate: lets a caller keep the path.
+  // It may throw to stop the solve (the Python module raises
+  // KeyboardInterrupt so): the exception reaches the solver's caller, and
+  // the parameter blocks hold some iterate.
   std::function<void(const SolverTracePoint&)> on_step;
 };
 

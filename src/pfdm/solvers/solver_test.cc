@@ -1,5 +1,6 @@
 #include "pfdm/solvers/solver.h"
 
+#include <cmath>
 #include <limits>
 
 #include "ceres/autodiff_cost_function.h"
@@ -87,6 +88,37 @@ TEST(SolverTest, SolveProblemDispatchesOnTheKind) {
       EXPECT_EQ(report.jacobian_evaluations, report.residual_evaluations);
       EXPECT_GE(report.residual_evaluations, report.iterations + 1);
     }
+  }
+}
+
+// What on_step throws stops every kind of solve at the step it was thrown
+// on and reaches the caller (how the Python module's Ctrl-C ends a fit).
+TEST(SolverTest, AnExceptionFromOnStepStopsTheSolveAndReachesTheCaller) {
+  struct Stop {
+    int iteration;
+  };
+  for (SolverKind kind :
+       {SolverKind::kDirect, SolverKind::kDamped, SolverKind::kIntegrator}) {
+    double x = 5.0;
+    ceres::Problem problem;
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<Quadratic, 1, 1>(new Quadratic),
+        nullptr, &x);
+    SolverOptions options;
+    options.kind = kind;
+    int steps = 0;
+    options.on_step = [&steps](const SolverTracePoint& point) {
+      ++steps;
+      if (point.iteration == 1) throw Stop{point.iteration};
+    };
+    try {
+      SolveProblem(&problem, options);
+      ADD_FAILURE() << SolverName(kind) << " finished";
+    } catch (const Stop& stop) {
+      EXPECT_EQ(stop.iteration, 1) << SolverName(kind);
+    }
+    EXPECT_EQ(steps, 2) << SolverName(kind);
+    EXPECT_GT(std::abs(x - 2.0), 1e-3) << SolverName(kind);  // Not solved.
   }
 }
 

@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""Fits the SPAMM-like phantom from Python and shows twist, a3 and the surface.
+
+    PYTHONPATH=build/python /usr/bin/python3 examples/python_phantom.py
+
+Writes out/examples/python-phantom/: the CLI's output files (fit/), and,
+where matplotlib is installed, functions.png (twist and a3 against the knot,
+one line per frame) and surface.png (the last frame's surface with its data
+points).  Without matplotlib it prints the numbers instead.
+"""
+import argparse
+import pathlib
+
+import numpy as np
+import pfdm
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--frames", type=int, default=5)
+    parser.add_argument("--tags", type=int, default=2000)
+    parser.add_argument("--out", default="out/examples/python-phantom")
+    args = parser.parse_args()
+    out = pathlib.Path(args.out)
+
+    points, _ = pfdm.simulate(frames=args.frames, tags=args.tags)
+    fit = pfdm.fit(points)  # The CLI's defaults; keywords as its flags.
+    fit.write(out / "fit")
+
+    tau = fit.function_names.index("tau")
+    a3 = fit.function_names.index("a3")
+    twist_deg = np.degrees(fit.functions[:, :, tau])  # (frames, knots)
+    a3_mm = fit.functions[:, :, a3]
+    for frame in fit.frames:
+        c = frame.clinical
+        print(f"frame {frame.frame}: rms {frame.stats['rms_mm']:.3f} mm, "
+              f"net twist {c['net_twist_deg']:+.2f} deg, "
+              f"longitudinal shortening {c['longitudinal_shortening_percent']:.1f} %, "
+              f"volume {c['volume_ml']:.1f} ml")
+    print(f"ejection fraction {fit.ejection_fraction['ratio']:.3f}")
+    vertices, faces = fit.frames[-1].surface()
+    print(f"last frame's surface: {len(vertices)} vertices, {len(faces)} "
+          f"triangles (pyvista.PolyData or trimesh.Trimesh take them)")
+
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not installed: twist (deg) per knot, last frame:",
+              np.array2string(twist_deg[-1], precision=2))
+        print(f"wrote {out}/fit")
+        return
+
+    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    knots = np.arange(twist_deg.shape[1])
+    for t in range(len(fit)):
+        left.plot(knots, twist_deg[t], label=f"frame {t}")
+        right.plot(knots, a3_mm[t] / a3_mm[0], label=f"frame {t}")
+    left.set(xlabel="knot (apex to base)", ylabel="twist tau (deg)")
+    right.set(xlabel="knot (apex to base)", ylabel="a3 / a3 at frame 0")
+    left.legend()
+    figure.tight_layout()
+    figure.savefig(out / "functions.png", dpi=120)
+
+    figure = plt.figure(figsize=(6, 6))
+    axes = figure.add_subplot(projection="3d")
+    axes.plot_trisurf(*vertices.T, triangles=faces, alpha=0.4)
+    data = fit.frames[-1].points
+    axes.scatter(*data.T, s=1, color="k")
+    axes.set_box_aspect(np.ptp(vertices, axis=0))
+    figure.savefig(out / "surface.png", dpi=120)
+    print(f"wrote {out}/fit, {out}/functions.png and {out}/surface.png")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,31 @@
+"""biv-me guide points through Python equal the CLI's fit (skips without ../shared/data)."""
+import json
+
+import pfdm
+import pytest
+from conftest import SOURCE_DIR, run_cli, scratch
+
+GUIDE_POINTS = SOURCE_DIR.parent / "shared" / "data" / "biv-me-patient1" / "guidepoints"
+
+
+@pytest.mark.skipif(not GUIDE_POINTS.is_dir(), reason="real data absent")
+def test_guide_points_fit_and_mitral_valve_volumes_equal_the_clis():
+    out = scratch("guide_points")
+    code, _, err = run_cli("fit", "--points", GUIDE_POINTS, "--out", out / "cli")
+    assert code == 0, err
+    cli = json.loads((out / "cli" / "fit.json").read_text())
+    fit = pfdm.fit(GUIDE_POINTS)
+    ours = fit.to_dict()
+    for document in (ours, cli):
+        for frame in document["frames"]:
+            frame.pop("solve_seconds")
+    assert ours == cli
+    assert fit.points.contour_types == cli["settings"]["contour_types"]
+    assert "mitral valve plane" in fit.ejection_fraction["cavity_closure"]
+    assert len(fit) == 25
+    assert fit[0].clinical["volume_ml"] == pytest.approx(174.9, abs=0.1)
+    # A flat lid at the rim instead: other volumes, same shapes.
+    rim = pfdm.fit(GUIDE_POINTS, base_plane="rim")
+    assert "flat lid" in rim.ejection_fraction["cavity_closure"]
+    assert rim[0].clinical["volume_ml"] != fit[0].clinical["volume_ml"]
+    assert (rim.functions == fit.functions).all()

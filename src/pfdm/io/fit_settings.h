@@ -1,0 +1,55 @@
+// pfdm fit's settings under their flag names, with the flags' defaults.
+// The CLI fills them from its flags and the Python module from keyword
+// arguments; both turn them into the library's options here, so that the
+// names, defaults, checks and messages are the same.
+#ifndef PFDM_IO_FIT_SETTINGS_H_
+#define PFDM_IO_FIT_SETTINGS_H_
+
+#include <string>
+#include <vector>
+
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/model/base_plane.h"
+#include "pfdm/model/model.h"
+#include "pfdm/solvers/solver.h"
+
+namespace pfdm {
+
+struct FitSettings {
+  // Reading the points (ReadPoints) and closing the cavity.
+  std::string format = "auto";
+  std::string contours = "lv-cavity";
+  std::string base_plane = "auto";
+  // The model.
+  std::string model = "paper";
+  int knots = 17;
+  // The fit.
+  double smoothness = 1.0;
+  double prior = 0.001;
+  std::string loss = "none";
+  double loss_scale = 1.0;
+  int threads = 1;
+  std::string apex;  // "x,y,z" in mm, with base; empty: from the data.
+  std::string base;
+  std::string solver = "direct";
+  std::string linear_solver = "SPARSE_NORMAL_CHOLESKY";
+  double time_step = 0.0;
+  double rest_tolerance = SolverOptions().rest_tolerance;
+  int max_steps = SolverOptions().max_steps;
+  std::string damping = "jacobi";
+  std::string damping_scale;
+  std::string jacobian = "analytic";
+};
+
+// Each throws InputError naming the flag at fault.
+ModelConfig ModelConfigFrom(const FitSettings& settings);
+FitOptions FitOptionsFrom(const FitSettings& settings);
+// Per frame, the plane closing the cavity: none for base_plane "rim", the
+// mitral valve planes of the guide points at `points` for "auto" (none
+// when they have none).  An empty `points` only checks base_plane.
+std::vector<BasePlane> BasePlanesFrom(const FitSettings& settings,
+                                      const std::string& points);
+
+}  // namespace pfdm
+
+#endif  // PFDM_IO_FIT_SETTINGS_H_

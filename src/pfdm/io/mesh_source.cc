@@ -1,0 +1,129 @@
+#include "pfdm/io/mesh_source.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "pfdm/io/mesh_reader.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> Split(const std::string& list) {
+  std::vector<std::string> items;
+  std::istringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+// Keeps the points whose scalar equals `label` and the triangles among them.
+TriangleMesh KeepLabel(const VtkMesh& vtk, const std::string& path,
+                       const std::string& label) {
+  if (vtk.point_scalars.empty()) {
+    throw InputError(path +
+                     ": --label given but the file has no point scalars");
+  }
+  double wanted = 0.0;
+  std::istringstream in(label);
+  if (!(in >> wanted) || !(in >> std::ws).eof()) {
+    throw InputError("--label must be a number, got '" + label + "'");
+  }
+  const std::vector<double>& values = vtk.point_scalars.begin()->second;
+  std::vector<int> new_index(vtk.mesh.points.size(), -1);
+  TriangleMesh kept;
+  for (size_t i = 0; i < values.size() && i < vtk.mesh.points.size(); ++i) {
+    if (values[i] != wanted) continue;
+    new_index[i] = static_cast<int>(kept.points.size());
+    kept.points.push_back(vtk.mesh.points[i]);
+  }
+  if (kept.points.empty()) {
+    throw InputError(path + ": no point has label " + label);
+  }
+  for (const auto& t : vtk.mesh.triangles) {
+    if (new_index[t[0]] < 0 || new_index[t[1]] < 0 || new_index[t[2]] < 0)
+      continue;
+    kept.triangles.push_back(
+        {new_index[t[0]], new_index[t[1]], new_index[t[2]]});
+  }
+  return kept;
+}
+
+}  // namespace
+
+std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
+                                         const MeshSettings& settings) {
+  std::string format = settings.mesh_format;
+  const fs::path p(path);
+  if (format == "auto") {
+    format = fs::is_directory(p) || p.extension() == ".obj" ? "obj"
+             : p.extension() == ".vtk"                      ? "vtk"
+             : p.extension() == ".csv"                      ? "cap-mean"
+                                                            : "";
+    if (format.empty()) {
+      throw InputError(path + ": unknown mesh format (use --mesh_format)");
+    }
+  }
+  std::vector<TriangleMesh> frames;
+  if (format == "obj") {
+    std::vector<std::string> files;
+    if (fs::is_directory(p)) {
+      for (const auto& entry : fs::directory_iterator(p)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() == ".obj" &&
+            name.find(settings.mesh_filter) != std::string::npos) {
+          files.push_back(entry.path().string());
+        }
+      }
+      std::sort(files.begin(), files.end());
+      if (files.empty()) {
+        throw InputError(path + ": no .obj file matching '" +
+                         settings.mesh_filter + "'");
+      }
+    } else {
+      files.push_back(path);
+    }
+    for (const std::string& file : files) frames.push_back(ReadObj(file));
+  } else if (format == "vtk") {
+    const VtkMesh vtk = ReadLegacyVtkPolyData(path);
+    frames.push_back(settings.label.empty()
+                         ? vtk.mesh
+                         : KeepLabel(vtk, path, settings.label));
+  } else if (format == "cap-mean") {
+    const auto surfaces = ReadCapMeanShape(path);
+    const auto faces =
+        ReadCapFaces((p.parent_path() / "surface_face.csv").string(),
+                     static_cast<int>(surfaces.front().size()));
+    const std::vector<std::string> names = {"ED-endo", "ED-epi", "ES-endo",
+                                            "ES-epi"};
+    for (const std::string& wanted : Split(settings.cap_surfaces)) {
+      const auto it = std::find(names.begin(), names.end(), wanted);
+      if (it == names.end()) {
+        throw InputError("--cap_surfaces: unknown surface '" + wanted +
+                         "' (expected ED-endo, ED-epi, ES-endo or ES-epi)");
+      }
+      frames.push_back({surfaces[it - names.begin()], faces});
+    }
+  } else {
+    throw InputError("unknown --mesh_format '" + format +
+                     "' (expected obj, vtk, cap-mean or auto)");
+  }
+  if (frames.empty()) throw InputError(path + ": no frames");
+  return frames;
+}
+
+PointSequence ReadMeshPoints(const std::string& path,
+                             const MeshSettings& settings) {
+  std::vector<std::vector<Eigen::Vector3d>> points;
+  for (const TriangleMesh& mesh : ReadMeshFrames(path, settings)) {
+    points.push_back(mesh.points);
+  }
+  return MeshPointSequence(path, points);
+}
+
+}  // namespace pfdm
