@@ -82,6 +82,11 @@ std::vector<std::pair<std::string, State>> States() {
                [](FunctionValues* f) { (*f)[kB0] = (*f)[kB2] = 0.0; });
   ForEachBlock(&add("zero bending on an axis", 0.2, kHalfPi),
                [](FunctionValues* f) { (*f)[kB0] = (*f)[kB2] = 0.0; });
+  // Cups: the ring-mean term J0(pi/2 r) cos(pi/2 b) at its largest.
+  ForEachBlock(&add("cup bends", -0.5, 1.3), [](FunctionValues* f) {
+    (*f)[kB1] = 0.0;
+    (*f)[kB3] = 2.0;
+  });
   State& identity = add("identity pose", -1.0, 0.5);
   identity.quaternion[0] = 1.0;
   identity.quaternion[1] = identity.quaternion[2] = identity.quaternion[3] = 0;
