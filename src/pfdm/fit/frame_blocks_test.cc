@@ -1,20 +1,13 @@
 #include "pfdm/fit/frame_blocks.h"
 
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
 
-Model UniformModel() {
-  FunctionValues values = DefaultFunctionValues();
-  values[kA0] = 50.0;
-  values[kA1] = values[kA2] = 0.5;
-  values[kA3] = 0.8;
-  return Model::Uniform(ModelConfig::Paper(5), values);
-}
-
 TEST(FrameBlocksTest, ReferenceFrameVariesThePoseAndTheGaugeFreeEntries) {
-  Model model = UniformModel();
+  Model model = TestSpheroid(5);
   ceres::Problem problem;
   FrameBlocks blocks(FrameKind::kReference, &model, &problem);
   EXPECT_FALSE(problem.IsParameterBlockConstant(model.state.center.data()));
@@ -28,7 +21,7 @@ TEST(FrameBlocksTest, ReferenceFrameVariesThePoseAndTheGaugeFreeEntries) {
 }
 
 TEST(FrameBlocksTest, TrackedFrameVariesThePoseAndStoresItsEntries) {
-  Model model = UniformModel();
+  Model model = TestSpheroid(5);
   ceres::Problem problem;
   FrameBlocks blocks(FrameKind::kTracked, &model, &problem);
   // Translation and tilt live in the pose (its spin is a gauge residual).

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
@@ -11,11 +12,7 @@ namespace {
 // known change of a1 and tau and a shift of the whole: one solve recovers
 // the change, the shift in the pose and the twist in tau (not the pose).
 TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
-  FunctionValues values = DefaultFunctionValues();
-  values[kA0] = 50.0;
-  values[kA1] = values[kA2] = 0.5;
-  values[kA3] = 0.8;
-  Model model = Model::Uniform(ModelConfig::Paper(5), values);
+  Model model = TestSpheroid(5);
   Model truth = model;
   for (FunctionValues& knot : truth.state.knots) {
     knot[kA1] = 0.42;

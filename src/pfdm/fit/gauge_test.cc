@@ -4,20 +4,13 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
 
 bool Holds(const std::vector<int>& held, int f) {
   return std::find(held.begin(), held.end(), f) != held.end();
-}
-
-Model UniformModel() {
-  FunctionValues values = DefaultFunctionValues();
-  values[kA0] = 50.0;
-  values[kA1] = values[kA2] = 0.5;
-  values[kA3] = 0.8;
-  return Model::Uniform(ModelConfig::Paper(9), values);
 }
 
 TEST(GaugeTest, ReferenceFrameHoldsTwistBendingAndA3) {
@@ -49,7 +42,7 @@ TEST(GaugeTest, LaterFramesFreeTwistOnlyWhenTracked) {
 }
 
 TEST(GaugeTest, SpanAxialExtentReachesTheTopPointKeepingApexAndRadii) {
-  Model model = UniformModel();
+  Model model = TestSpheroid(9);
   const double apex_before = model.WorldPoint(model.config.u_min, 0.0).z();
   const double radius_before = model.WorldPoint(0.0, 0.0).x();
   const std::vector<Eigen::Vector3d> points = {{0.0, 0.0, apex_before},
@@ -65,7 +58,7 @@ TEST(GaugeTest, SpanAxialExtentReachesTheTopPointKeepingApexAndRadii) {
 }
 
 TEST(GaugeTest, TopHeightIsNanWithoutPoints) {
-  const Model model = UniformModel();
+  const Model model = TestSpheroid(9);
   EXPECT_TRUE(std::isnan(TopHeight({}, FitOptions(), model)));
 }
 

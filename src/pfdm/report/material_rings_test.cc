@@ -4,20 +4,13 @@
 
 #include "Eigen/Geometry"
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
 
-Model Spheroid() {
-  FunctionValues values = DefaultFunctionValues();
-  values[kA0] = 50.0;
-  values[kA1] = values[kA2] = 0.5;
-  values[kA3] = 0.8;
-  return Model::Uniform(ModelConfig::Paper(9), values);
-}
-
 TEST(MaterialRingsTest, RingOfACircleHasItsRadiusAndCentre) {
-  Model model = Spheroid();
+  Model model = TestSpheroid(9);
   model.state.center = {1.0, -2.0, 3.0};
   const MaterialRing ring = SampleRing(model, 0.3);
   EXPECT_NEAR(MeanRadius(ring), 25.0 * std::cos(0.3), 1e-9);
@@ -32,7 +25,7 @@ TEST(MaterialRingsTest, AnglesAreRightHandedAboutTheAxis) {
 }
 
 TEST(MaterialRingsTest, TwistReadsAsRotationAndTranslationDoesNot) {
-  const Model reference = Spheroid();
+  const Model reference = TestSpheroid(9);
   Model moved = reference;
   for (FunctionValues& knot : moved.state.knots) knot[kTau] = 0.1;
   moved.state.center = {4.0, 5.0, -6.0};
@@ -50,7 +43,7 @@ TEST(MaterialRingsTest, TwistReadsAsRotationAndTranslationDoesNot) {
 }
 
 TEST(MaterialRingsTest, HeightFractionRunsFromApexToRim) {
-  const Model model = Spheroid();
+  const Model model = TestSpheroid(9);
   // sin u is flat at the pole: u is found there to the root of the step.
   EXPECT_NEAR(RingAtHeightFraction(model, 0.0), model.config.u_min, 1e-7);
   EXPECT_NEAR(RingAtHeightFraction(model, 1.0), model.config.u_max, 1e-9);
