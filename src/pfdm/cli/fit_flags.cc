@@ -7,6 +7,7 @@
 #include "pfdm/io/point_source.h"
 #include "pfdm/solvers/solver.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/input_file.h"
 
 DEFINE_string(points, "",
               "input points: a frame,id,x,y,z CSV, or a biv-me "
@@ -17,13 +18,14 @@ DEFINE_string(contours, "lv-cavity",
               "lv-epi and lv-cavity (lv-endo and AORTA_VALVE) are aliases");
 DEFINE_string(out, "", "output folder (simulate: output CSV)");
 DEFINE_string(model, "paper", "paper or superellipsoid");
-DEFINE_int32(knots, 17, "knots per parameter function");
+DEFINE_int32(knots, 17, "knots per parameter function, 2 to 100");
 DEFINE_double(smoothness, 1.0,
-              "smoothness weight, relative to one knot's data");
-DEFINE_double(prior, 0.001, "pull toward the previous frame, same units");
+              "smoothness weight, relative to one knot's data, 0 to 1e6");
+DEFINE_double(prior, 0.001,
+              "pull toward the previous frame, same units, 0 to 1e6");
 DEFINE_string(loss, "none", "none, huber or cauchy");
-DEFINE_double(loss_scale, 1.0, "robust loss scale, mm");
-DEFINE_int32(threads, 1, "Ceres threads");
+DEFINE_double(loss_scale, 1.0, "robust loss scale, mm, positive");
+DEFINE_int32(threads, 1, "Ceres threads, 1 to 256");
 DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
 DEFINE_string(solver, "direct", "direct, damped or integrator");
@@ -31,8 +33,9 @@ DEFINE_string(linear_solver, "SPARSE_NORMAL_CHOLESKY",
               "Ceres linear solver, e.g. SPARSE_NORMAL_CHOLESKY, "
               "DENSE_NORMAL_CHOLESKY, DENSE_QR");
 DEFINE_double(time_step, 0.0,
-              "damped and integrator: pseudo-time step; 0 = default "
-              "(integrator: 0.9 of its stability bound, damped: 1000)");
+              "damped and integrator: pseudo-time step, 1e-6 to 1e12; 0 = "
+              "default (integrator: 0.9 of its stability bound, damped: "
+              "1000)");
 DEFINE_double(rest_tolerance, pfdm::SolverOptions().rest_tolerance,
               "damped and integrator: at rest when the energy dissipated per "
               "unit pseudo-time is below rest_tolerance^2 of the initial");
@@ -54,10 +57,28 @@ Eigen::Vector3d ParsePoint(const std::string& flag, const std::string& text) {
   char comma1 = 0, comma2 = 0;
   in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z();
   if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
-      !point.allFinite()) {
-    throw InputError("--" + flag + " must be x,y,z in mm, got '" + text + "'");
+      !point.allFinite() || point.cwiseAbs().maxCoeff() > kMaxCoordinateMm) {
+    throw InputError("--" + flag + " must be x,y,z in mm, got '" + Clip(text) +
+                     "'");
   }
   return point;
+}
+
+// A number as typed, short (std::to_string gives 1e308 in 309 digits).
+std::string Show(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// A finite weight in [0, 1e6]: beyond that the square roots Ceres is given
+// overflow and the data no longer count.
+double Weight(const char* flag, double value) {
+  if (!(value >= 0.0 && value <= 1e6)) {
+    throw InputError(std::string("--") + flag +
+                     " must be between 0 and 1e6, got " + Show(value));
+  }
+  return value;
 }
 
 }  // namespace
@@ -73,18 +94,31 @@ ModelConfig ModelConfigFromFlags() {
 
 FitOptions FitOptionsFromFlags() {
   FitOptions options;
-  options.smoothness_weight = FLAGS_smoothness;
-  options.prior_weight = FLAGS_prior;
+  options.smoothness_weight = Weight("smoothness", FLAGS_smoothness);
+  options.prior_weight = Weight("prior", FLAGS_prior);
   options.loss = FLAGS_loss;
+  // Scale 0 once left the model unmoved with exit 0.
+  if (!(FLAGS_loss_scale > 0.0) || !std::isfinite(FLAGS_loss_scale)) {
+    throw InputError("--loss_scale must be a positive number of mm, got " +
+                     Show(FLAGS_loss_scale));
+  }
   options.loss_scale_mm = FLAGS_loss_scale;
+  if (FLAGS_threads < 1 || FLAGS_threads > 256) {
+    throw InputError("--threads must be between 1 and 256, got " +
+                     std::to_string(FLAGS_threads));
+  }
   options.solver.num_threads = FLAGS_threads;
   options.solver.kind = SolverFromName(FLAGS_solver);
   if (!ceres::StringToLinearSolverType(FLAGS_linear_solver,
                                        &options.solver.linear_solver)) {
     throw InputError("unknown --linear_solver '" + FLAGS_linear_solver + "'");
   }
-  if (!(FLAGS_time_step >= 0.0) || !std::isfinite(FLAGS_time_step)) {
-    throw InputError("--time_step must be 0 (default) or positive");
+  // 1e-300 once "converged" on a step lost in rounding, the model unmoved.
+  if (!(FLAGS_time_step == 0.0 ||
+        (FLAGS_time_step >= 1e-6 && FLAGS_time_step <= 1e12))) {
+    throw InputError(
+        "--time_step must be 0 (default) or between 1e-6 and 1e12, got " +
+        Show(FLAGS_time_step));
   }
   options.solver.time_step = FLAGS_time_step;
   if (!(FLAGS_rest_tolerance > 0.0) || !std::isfinite(FLAGS_rest_tolerance)) {
@@ -102,6 +136,9 @@ FitOptions FitOptionsFromFlags() {
   if (!FLAGS_apex.empty()) {
     options.hint = AxisHint{ParsePoint("apex", FLAGS_apex),
                             ParsePoint("base", FLAGS_base)};
+    if ((options.hint->apex - options.hint->base_center).norm() < 1.0) {
+      throw InputError("--apex and --base must be at least 1 mm apart");
+    }
   }
   return options;
 }
