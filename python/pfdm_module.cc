@@ -463,13 +463,14 @@ void BindFit(py::module_& m) {
           [](const FitResult& r) {
             return JsonMember(FromJson(r.json), "regions");
           },
-          "list of dict: the 16 AHA-style segments with twist_deg and "
+          "list of dict: the 16 AHA-style segments with rotation_deg and "
           "radial_contraction_percent per frame.")
       .def(
           "write",
           [](const FitResult& r, const py::object& out) {
             const std::string dir = PathString(out);
             py::gil_scoped_release release;
+            CheckFitOutputFolder(dir, r.points.source);
             WriteFitOutputs(dir, r.points, r.fit, r.options, r.base_planes);
           },
           py::arg("out"),

@@ -9,12 +9,18 @@
 #pragma GCC diagnostic ignored "-Wstringop-truncation"
 #include "libfccp/csv.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/input_file.h"
 
 namespace pfdm {
 namespace {
 
 bool PlainName(const std::string& name) {
   if (name.empty() || name[0] == '.') return false;
+  // The batch's own files beside the case folders, and their temporaries.
+  if (name.rfind("summary.csv", 0) == 0 ||
+      name.find(".tmp.") != std::string::npos) {
+    return false;
+  }
   for (char c : name) {
     const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
                     (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '-';
@@ -30,11 +36,12 @@ std::vector<BatchCase> ReadManifest(const std::string& path) {
   std::set<std::string> names;
   const std::filesystem::path folder =
       std::filesystem::path(path).parent_path();
+  const std::string text = ReadInputFile(path);
   try {
     io::CSVReader<3, io::trim_chars<' ', '\t'>,
                   io::double_quote_escape<',', '"'>, io::throw_on_overflow,
                   io::empty_line_comment>
-        in(path);
+        in(path, text.data(), text.data() + text.size());
     in.read_header(io::ignore_extra_column | io::ignore_missing_column, "case",
                    "points", "contours");
     for (const char* column : {"case", "points"}) {
@@ -46,15 +53,15 @@ std::vector<BatchCase> ReadManifest(const std::string& path) {
     while (in.read_row(name, points, contours)) {
       const std::string where = path + ":" + std::to_string(in.get_file_line());
       if (!PlainName(name)) {
-        throw InputError(where + ": case '" + name +
+        throw InputError(where + ": case '" + Clip(name) +
                          "' is not a plain folder name (letters, digits, "
-                         "'.', '_', '-')");
+                         "'.', '_', '-'; not summary.csv or *.tmp.*)");
       }
       if (!names.insert(name).second) {
-        throw InputError(where + ": case '" + name + "' appears twice");
+        throw InputError(where + ": case '" + Clip(name) + "' appears twice");
       }
       if (points.empty())
-        throw InputError(where + ": case '" + name + "' has no points");
+        throw InputError(where + ": case '" + Clip(name) + "' has no points");
       std::filesystem::path points_path(points);
       if (points_path.is_relative()) points_path = folder / points_path;
       cases.push_back({name, points_path.lexically_normal().string(), contours,
@@ -62,7 +69,7 @@ std::vector<BatchCase> ReadManifest(const std::string& path) {
     }
   } catch (const io::error::base& error) {
     // libfccp's own messages run over several clauses; say it in one.
-    std::string message = error.what();
+    std::string message = "not a valid CSV row";
     if (dynamic_cast<const io::error::can_not_open_file*>(&error)) {
       message = "cannot open the file";
     } else if (dynamic_cast<const io::error::header_missing*>(&error)) {

@@ -45,7 +45,16 @@ TEST(BatchManifestTest, BadManifestsSayWhereInOneLine) {
   EXPECT_EQ(ErrorOf(path),
             path +
                 ":3: case 'b/c' is not a plain folder name (letters, "
-                "digits, '.', '_', '-')");
+                "digits, '.', '_', '-'; not summary.csv or *.tmp.*)");
+  // Issue 14: the batch's own files beside the cases, and a folder read as
+  // an empty file.
+  for (const char* name : {"summary.csv", "summary.csv.tmp.7", "a.tmp.1"}) {
+    WriteText(path, "case,points\n" + std::string(name) + ",x.csv\n");
+    EXPECT_EQ(ErrorOf(path).rfind(path + ":2: case '" + name + "' is not", 0),
+              0u)
+        << name;
+  }
+  EXPECT_EQ(ErrorOf(dir), dir + ": is a folder, not a file");
   WriteText(path, "case,points\n..,x.csv\n");
   EXPECT_EQ(ErrorOf(path).rfind(path + ":2: case '..' is not", 0), 0u);
   WriteText(path, "case,points\na,x.csv\na,y.csv\n");

@@ -42,12 +42,20 @@ std::string ReadWhole(const std::string& path) {
 // error.txt does, pending otherwise.
 CaseSummary StatusOf(const BatchCase& c, const std::string& out) {
   const std::string dir = out + "/" + c.name;
-  if (fs::exists(dir + "/fit.json")) {
-    return SummaryFromFitJson(c.name, ReadWhole(dir + "/fit.json"),
-                              dir + "/fit.json");
-  }
   CaseSummary summary;
   summary.name = c.name;
+  if (fs::exists(dir + "/fit.json")) {
+    try {
+      return SummaryFromFitJson(c.name, ReadWhole(dir + "/fit.json"),
+                                dir + "/fit.json");
+    } catch (const InputError& error) {
+      // One unreadable case must not cost the cohort its summary; it is
+      // fitted again by the next run.
+      summary.status = "failed";
+      summary.error = error.what();
+      return summary;
+    }
+  }
   summary.status = "pending";
   if (fs::exists(dir + "/error.txt")) {
     summary.status = "failed";
@@ -63,9 +71,10 @@ CaseSummary StatusOf(const BatchCase& c, const std::string& out) {
 std::string RunCase(const BatchCase& c, const std::string& out,
                     const ModelConfig& config, const FitOptions& options) {
   const std::string dir = out + "/" + c.name;
-  if (fs::exists(dir + "/fit.json")) return "skipped, fit.json exists";
+  if (StatusOf(c, out).status == "done") return "skipped, fit.json exists";
   const auto start = std::chrono::steady_clock::now();
   try {
+    CheckFitOutputFolder(dir, c.points);
     const PointSequence points =
         ReadPoints(c.points, FLAGS_format,
                    c.contours.empty() ? FLAGS_contours : c.contours);
@@ -75,9 +84,18 @@ std::string RunCase(const BatchCase& c, const std::string& out,
   } catch (const std::exception& error) {
     // The case's error stays beside its (absent) outputs for the summary of
     // a later run, which retries the case.
-    EnsureDirectory(dir);
-    WriteFileAtomically(dir + "/error.txt", std::string(error.what()) + "\n");
-    return std::string("FAILED: ") + error.what();
+    // Recording it may fail too (DIR/<case> a plain file, a full disk);
+    // that must not end the worker, and with it the batch.
+    std::string message = error.what();
+    try {
+      EnsureDirectory(dir);
+      WriteFileAtomically(dir + "/error.txt", message + "\n");
+    } catch (const std::exception& also) {
+      if (message != also.what()) {
+        message += " (and " + std::string(also.what()) + ")";
+      }
+    }
+    return "FAILED: " + message;
   }
   const CaseSummary s = StatusOf(c, out);
   char line[200];
@@ -111,7 +129,12 @@ int RunBatch() {
   std::mutex print;
   auto worker = [&] {
     for (size_t i = next++; i < mine.size(); i = next++) {
-      const std::string result = RunCase(mine[i], FLAGS_out, config, options);
+      std::string result;
+      try {
+        result = RunCase(mine[i], FLAGS_out, config, options);
+      } catch (const std::exception& error) {  // An escape would terminate.
+        result = std::string("FAILED: ") + error.what();
+      }
       const bool bad = result.rfind("FAILED", 0) == 0;
       std::lock_guard<std::mutex> lock(print);
       failed += bad;

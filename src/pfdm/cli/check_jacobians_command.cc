@@ -1,9 +1,11 @@
 // pfdm check-jacobians: analytic and autodiff Jacobians against central
 // differences at ordinary and singular model states.
+#include <cmath>
 #include <cstdio>
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/jacobian_check.h"
+#include "pfdm/util/error.h"
 
 DEFINE_double(tolerance, 1e-6,
               "check-jacobians: largest relative error allowed");
@@ -11,6 +13,11 @@ DEFINE_double(tolerance, 1e-6,
 namespace pfdm {
 
 int RunCheckJacobians() {
+  // NaN once failed every comparison and printed nothing on stderr.
+  if (!(FLAGS_tolerance >= 0.0) || !std::isfinite(FLAGS_tolerance)) {
+    throw InputError("--tolerance must be a number >= 0, got " +
+                     std::to_string(FLAGS_tolerance));
+  }
   const std::vector<JacobianCheck> checks = CheckJacobians();
   std::printf("%-26s %-8s %-9s %10s %10s %10s %10s %10s\n", "state", "residual",
               "jacobian", "center", "quaternion", "globals", "knot0", "knot1");

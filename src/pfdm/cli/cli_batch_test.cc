@@ -118,7 +118,8 @@ TEST(CliBatchTest, BadManifestOrShardIsOneLineAndWritesNothing) {
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_EQ(run.error, "pfdm: error: " + dir +
                            "/cases.csv:2: case 'a b' is not a plain folder "
-                           "name (letters, digits, '.', '_', '-')\n");
+                           "name (letters, digits, '.', '_', '-'; not "
+                           "summary.csv or *.tmp.*)\n");
   EXPECT_FALSE(fs::exists(dir + "/out"));
   WriteText(dir + "/cases.csv", "case,points\na,x.csv\n");
   run = RunPfdm("batch --manifest " + dir + "/cases.csv --out " + dir +
@@ -127,6 +128,55 @@ TEST(CliBatchTest, BadManifestOrShardIsOneLineAndWritesNothing) {
   EXPECT_EQ(run.error,
             "pfdm: error: --shard must be i/n with 0 <= i < n, got '2/2'\n");
   EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+// Issue 14: DIR/<case> as a plain file ended the program in std::terminate
+// with no summary, a garbage DIR/<case>/fit.json stopped the whole batch,
+// and a case named summary.csv broke the summary.
+TEST(CliBatchTest, OneBrokenCaseCostsNeitherTheOthersNorTheSummary) {
+  const std::string dir = ScratchDirectory("batch");
+  CommandResult run =
+      RunPfdm("simulate --frames 2 --tags 200 --out " + dir + "/p.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  WriteText(dir + "/cases.csv",
+            "case,points\nalpha,p.csv\nbeta,p.csv\ngamma,p.csv\n");
+  const std::string out = dir + "/out";
+  fs::create_directories(out + "/beta");
+  WriteText(out + "/alpha", "a plain file");
+  WriteText(out + "/beta/fit.json", "{ not json");
+  run = RunPfdm("batch --manifest " + dir + "/cases.csv --out " + out);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error,
+            "pfdm: error: 1 of 3 cases failed, see " + out + "/summary.csv\n");
+  EXPECT_EQ(Lines(run.output,
+                  "] alpha: FAILED: " + out + "/alpha: cannot create folder"),
+            1)
+      << run.output;
+  EXPECT_EQ(Lines(run.output, "] beta: done, 2 frames"), 1) << run.output;
+  EXPECT_EQ(Lines(run.output, "] gamma: done, 2 frames"), 1) << run.output;
+  const std::string summary = ReadText(out + "/summary.csv");
+  EXPECT_EQ(Row(summary, "alpha").rfind("alpha,pending,", 0), 0u) << summary;
+  EXPECT_EQ(Row(summary, "beta").rfind("beta,done,2,", 0), 0u) << summary;
+  EXPECT_EQ(ReadText(out + "/alpha"), "a plain file");
+
+  // A fit.json spoilt after the fit: the summary says so, the rest stands.
+  WriteText(out + "/gamma/fit.json", "[]");
+  run = RunPfdm("batch --manifest " + dir + "/cases.csv --out " + out +
+                " --shard 0/3");
+  EXPECT_NE(Row(ReadText(out + "/summary.csv"), "gamma").find("gamma,failed,"),
+            std::string::npos)
+      << ReadText(out + "/summary.csv");
+  EXPECT_EQ(Row(ReadText(out + "/summary.csv"), "beta").rfind("beta,done,", 0),
+            0u);
+
+  WriteText(dir + "/cases.csv", "case,points\nsummary.csv,p.csv\n");
+  run =
+      RunPfdm("batch --manifest " + dir + "/cases.csv --out " + dir + "/out2");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error, "pfdm: error: " + dir +
+                           "/cases.csv:2: case 'summary.csv' is not a plain "
+                           "folder name (letters, digits, '.', '_', '-'; not "
+                           "summary.csv or *.tmp.*)\n");
 }
 
 }  // namespace

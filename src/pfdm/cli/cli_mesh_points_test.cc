@@ -54,5 +54,29 @@ TEST(CliMeshPointsTest, UnknownFormatIsOneLine) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/points.csv"));
 }
 
+// Issue 14: with two scalar arrays --label silently used the alphabetically
+// first.
+TEST(CliMeshPointsTest, LabelNamesItsArrayWhenThereAreSeveral) {
+  const std::string dir = ScratchDirectory("mesh_points");
+  WriteText(dir + "/m.vtk",
+            "# vtk DataFile Version 3.0\nm\nASCII\nDATASET POLYDATA\n"
+            "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n"
+            "POLYGONS 2 8\n3 0 1 2\n3 0 2 3\n"
+            "POINT_DATA 4\nSCALARS a float\nLOOKUP_TABLE default\n0 0 0 1\n"
+            "SCALARS b float\nLOOKUP_TABLE default\n1 1 0 0\n");
+  CommandResult run = RunPfdm("mesh-points --mesh " + dir +
+                              "/m.vtk --label 0 --out " + dir + "/points.csv");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error, "pfdm: error: " + dir +
+                           "/m.vtk: --label 0 is ambiguous, the file has point "
+                           "scalars a, b; give --label NAME=0\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/points.csv"));
+  run = RunPfdm("mesh-points --mesh " + dir + "/m.vtk --label b=1 --out " +
+                dir + "/points.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_EQ(ReadText(dir + "/points.csv"),
+            "frame,id,x,y,z\n0,0,0,0,0\n0,1,1,0,0\n");
+}
+
 }  // namespace
 }  // namespace pfdm

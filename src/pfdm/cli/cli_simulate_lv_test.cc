@@ -70,7 +70,7 @@ TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
                 "unknown --kinematics 'diastole'"},
            Case{"--phantom lv --wall_tags endo", "unknown --wall_tags 'endo'"},
            Case{"--phantom lv --outliers 0.1", "--outliers is for"},
-           Case{"--phantom lv --frames 0", "--frames >= 1"},
+           Case{"--phantom lv --frames 0", "1 <= --frames <= 1000"},
            Case{"--kinematics cycle", "need --phantom lv"},
            Case{"--lesion", "need --phantom lv"},
            Case{"--nobreathing", "need --phantom lv"},

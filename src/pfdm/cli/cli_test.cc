@@ -1,4 +1,5 @@
 // End-to-end runs of the pfdm binary: the README's example and bad input.
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -111,7 +112,53 @@ const BadInput kBadInputs[] = {
      "--linear_solver CHOLMOD", "unknown --linear_solver 'CHOLMOD'"},
     {"negative time step", "frame,id,x,y,z\n0,1,2,3,4\n",
      "--solver integrator --time_step -1",
-     "--time_step must be 0 (default) or positive"},
+     "--time_step must be 0 (default) or between 1e-6 and 1e12, got -1"},
+    // Issue 14: each of these crashed, dumped Ceres' log or ended 0.
+    {"huge coordinate", "frame,id,x,y,z\n0,1,1e308,3,4\n", "",
+     "tags.csv:2: column 'x' is out of range: '1e308' (more than 1e6 mm "
+     "from the origin)"},
+    {"points at one place",
+     "frame,id,x,y,z\n0,0,5,5,5\n0,1,5,5,5\n0,2,5,5,5\n0,3,5,5,5\n0,4,5,5,5\n0,"
+     "5,5,5,5\n0,6,5,5,5\n0,7,5,5,5\n0,8,5,5,5\n0,9,5,5,5\n0,10,5,5,5\n0,11,5,"
+     "5,5\n",
+     "",
+     "tags.csv: frame 0: the points lie all at one place; a surface needs "
+     "points that span space"},
+    {"collinear points",
+     "frame,id,x,y,z\n0,0,0,0,0\n0,1,1,2,3\n0,2,2,4,6\n0,3,3,6,9\n0,4,4,8,"
+     "12\n0,5,5,10,15\n0,6,6,12,18\n0,7,7,14,21\n0,8,8,16,24\n0,9,9,18,27\n0,"
+     "10,10,20,30\n0,11,11,22,33\n",
+     "",
+     "tags.csv: frame 0: the points lie on a line; a surface needs points "
+     "that span space"},
+    {"coplanar points",
+     "frame,id,x,y,z\n0,0,0,0,7\n0,1,1,0,7\n0,2,2,0,7\n0,3,3,0,7\n0,4,0,1,7\n0,"
+     "5,1,1,7\n0,6,2,1,7\n0,7,3,1,7\n0,8,0,2,7\n0,9,1,2,7\n0,10,2,2,7\n0,11,3,"
+     "2,7\n",
+     "",
+     "tags.csv: frame 0: the points lie in a plane; a surface needs points "
+     "that span space"},
+    {"zero loss scale", "frame,id,x,y,z\n0,1,2,3,4\n", "--loss_scale 0",
+     "--loss_scale must be a positive number of mm, got 0"},
+    {"nan loss scale", "frame,id,x,y,z\n0,1,2,3,4\n", "--loss_scale nan",
+     "--loss_scale must be a positive number of mm, got nan"},
+    {"negative smoothness", "frame,id,x,y,z\n0,1,2,3,4\n", "--smoothness -1",
+     "--smoothness must be between 0 and 1e6, got -1"},
+    {"nan smoothness", "frame,id,x,y,z\n0,1,2,3,4\n", "--smoothness nan",
+     "--smoothness must be between 0 and 1e6, got nan"},
+    {"huge smoothness", "frame,id,x,y,z\n0,1,2,3,4\n", "--smoothness 1e308",
+     "--smoothness must be between 0 and 1e6, got 1e+308"},
+    {"negative prior", "frame,id,x,y,z\n0,1,2,3,4\n", "--prior -1",
+     "--prior must be between 0 and 1e6, got -1"},
+    {"too many knots", "frame,id,x,y,z\n0,1,2,3,4\n", "--knots 2147483647",
+     "--knots must be between 2 and 100, got 2147483647"},
+    {"tiny time step", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--solver damped --time_step 1e-300",
+     "--time_step must be 0 (default) or between 1e-6 and 1e12, got 1e-300"},
+    {"no threads", "frame,id,x,y,z\n0,1,2,3,4\n", "--threads 0",
+     "--threads must be between 1 and 256, got 0"},
+    {"apex at base", "frame,id,x,y,z\n0,1,2,3,4\n", "--apex 1,2,3 --base 1,2,3",
+     "--apex and --base must be at least 1 mm apart"},
     {"no steps", "frame,id,x,y,z\n0,1,2,3,4\n", "--max_steps 0",
      "--max_steps must be at least 1"},
     {"unknown damping", "frame,id,x,y,z\n0,1,2,3,4\n", "--damping mass",
@@ -139,6 +186,52 @@ TEST(CliTest, BadInputGivesOneLineNonZeroExitAndNoOutput) {
     EXPECT_EQ(run.error.rfind("pfdm: error: ", 0), 0u) << bad.name;
     EXPECT_FALSE(fs::exists(dir + "/fit")) << bad.name;
   }
+}
+
+// Issue 14: NaN passed these checks; simulate wrote NaN rows with exit 0,
+// check-jacobians printed nothing on stderr.
+TEST(CliTest, SimulateAndCheckJacobiansRefuseNotANumber) {
+  const std::string dir = ScratchDirectory("nan");
+  CommandResult run = RunPfdm("simulate --noise nan --out " + dir + "/p.csv");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error,
+            "pfdm: error: simulate needs 1 <= --frames <= 1000, 1 <= --tags "
+            "<= 1e6, 0 <= --noise <= 1000 (mm) and 0 <= --outliers <= 1\n");
+  EXPECT_FALSE(fs::exists(dir + "/p.csv"));
+  run = RunPfdm("check-jacobians --tolerance nan");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error,
+            "pfdm: error: --tolerance must be a number >= 0, got nan\n");
+}
+
+// Issue 14: the folder was first tried after the whole fit.
+TEST(CliTest, TheOutputFolderIsCheckedBeforeTheInputIsRead) {
+  const std::string dir = ScratchDirectory("out_first");
+  WriteText(dir + "/file", "x");
+  const CommandResult run = RunPfdm("fit --points " + dir +
+                                    "/missing.csv --out " + dir + "/file/out");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error.rfind(
+                "pfdm: error: " + dir + "/file/out: cannot create folder: ", 0),
+            0u)
+      << run.error;
+  EXPECT_EQ(std::count(run.error.begin(), run.error.end(), '\n'), 1);
+}
+
+// Issue 14: `--points DIR/parameters.csv --out DIR` overwrote its input.
+TEST(CliTest, AnInputAmongTheOutputsIsRefused) {
+  const std::string dir = ScratchDirectory("self");
+  CommandResult run = RunPfdm("simulate --frames 2 --tags 200 --out " + dir +
+                              "/parameters.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const std::string before = ReadText(dir + "/parameters.csv");
+  run = RunPfdm("fit --points " + dir + "/parameters.csv --out " + dir);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error, "pfdm: error: " + dir +
+                           "/parameters.csv: the input is one of the outputs " +
+                           dir + " would be given; choose another --out\n");
+  EXPECT_EQ(ReadText(dir + "/parameters.csv"), before);
+  EXPECT_FALSE(fs::exists(dir + "/fit.json"));
 }
 
 TEST(CliTest, UnknownCommandIsAUsageError) {

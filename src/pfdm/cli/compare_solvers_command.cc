@@ -95,6 +95,7 @@ std::string PlotScript(const std::vector<PlotData>& plots, int frame) {
 
 int RunCompareSolvers() {
   if (FLAGS_out.empty()) throw InputError("compare-solvers needs --out DIR");
+  CheckFitOutputFolder(FLAGS_out, "");  // Before the fits, not after them.
   const ModelConfig config = ModelConfigFromFlags();
   FitOptions base = FitOptionsFromFlags();
   if (FLAGS_trajectory_per_decade < 1) {

@@ -12,6 +12,8 @@ int RunFit() {
   const ModelConfig config = ModelConfigFromFlags();
   const FitOptions options = FitOptionsFromFlags();
   BasePlanesFromFlags("");  // Checks the flag before the fit.
+  // Before the minutes of work, not after them.
+  CheckFitOutputFolder(FLAGS_out, FLAGS_points);
   const PointSequence points = PointsFromFlags();
   const SequenceFit fit = FitSequence(points, config, options);
   WriteFitOutputs(FLAGS_out, points, fit, options,

@@ -19,14 +19,14 @@ DEFINE_string(contours, kDefaults.contours.c_str(),
               "lv-epi and lv-cavity (lv-endo and AORTA_VALVE) are aliases");
 DEFINE_string(out, "", "output folder (simulate: output CSV)");
 DEFINE_string(model, kDefaults.model.c_str(), "paper or superellipsoid");
-DEFINE_int32(knots, kDefaults.knots, "knots per parameter function");
+DEFINE_int32(knots, kDefaults.knots, "knots per parameter function, 2 to 100");
 DEFINE_double(smoothness, kDefaults.smoothness,
-              "smoothness weight, relative to one knot's data");
+              "smoothness weight, relative to one knot's data, 0 to 1e6");
 DEFINE_double(prior, kDefaults.prior,
-              "pull toward the previous frame, same units");
+              "pull toward the previous frame, same units, 0 to 1e6");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
-DEFINE_double(loss_scale, kDefaults.loss_scale, "robust loss scale, mm");
-DEFINE_int32(threads, kDefaults.threads, "Ceres threads");
+DEFINE_double(loss_scale, kDefaults.loss_scale, "robust loss scale, mm, positive");
+DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
 DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
 DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
@@ -34,8 +34,9 @@ DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
               "Ceres linear solver, e.g. SPARSE_NORMAL_CHOLESKY, "
               "DENSE_NORMAL_CHOLESKY, DENSE_QR");
 DEFINE_double(time_step, kDefaults.time_step,
-              "damped and integrator: pseudo-time step; 0 = default "
-              "(integrator: 0.9 of its stability bound, damped: 1000)");
+              "damped and integrator: pseudo-time step, 1e-6 to 1e12; 0 = "
+              "default (integrator: 0.9 of its stability bound, damped: "
+              "1000)");
 DEFINE_double(rest_tolerance, kDefaults.rest_tolerance,
               "damped and integrator: at rest when the energy dissipated per "
               "unit pseudo-time is below rest_tolerance^2 of the initial");

@@ -10,6 +10,7 @@
 #include "pfdm/report/mesh_motion.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/input_file.h"
 
 namespace {
 const pfdm::MeshSettings kDefaults;
@@ -27,7 +28,7 @@ DEFINE_string(mesh_format, kDefaults.mesh_format.c_str(),
 DEFINE_string(label, "",
               "mesh-points: VTK only, keep the points whose point "
               "scalar equals this (e.g. 0 = endocardium in the UK Digital "
-              "Heart mesh)");
+              "Heart mesh); NAME=N picks the array when there are several");
 DEFINE_string(cap_surfaces, kDefaults.cap_surfaces.c_str(),
               "mesh-points: CAP surfaces "
               "to take as frames, from ED-endo, ED-epi, ES-endo, ES-epi");
@@ -58,7 +59,13 @@ int RunMeshPoints() {
   for (const TriangleMesh& mesh : frames) points.push_back(mesh.points);
   const std::string csv = ToPointsCsv(MeshPointSequence(FLAGS_mesh, points));
   std::vector<MeshFrameMotion> motion;
-  if (!frames.front().triangles.empty()) motion = MeasureMeshMotion(frames);
+  if (!frames.front().triangles.empty()) {
+    try {
+      motion = MeasureMeshMotion(frames);
+    } catch (const InputError& error) {  // Say which mesh.
+      throw InputError(FLAGS_mesh + ": " + error.what());
+    }
+  }
   const fs::path out(FLAGS_out);
   if (out.has_parent_path()) EnsureDirectory(out.parent_path().string());
   WriteFileAtomically(FLAGS_out, csv);

@@ -1,6 +1,7 @@
 // pfdm: fits deformable models with parameter functions to LV point data.
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 #include "pfdm/cli/commands.h"
@@ -54,6 +55,10 @@ int main(int argc, char** argv) {
     if (name != command.name) continue;
     try {
       return command.run();
+    } catch (const std::bad_alloc&) {  // Its what() is "std::bad_alloc".
+      std::fprintf(stderr,
+                   "pfdm: error: out of memory (is the input that large?)\n");
+      return 1;
     } catch (const std::exception& error) {
       std::fprintf(stderr, "pfdm: error: %s\n", error.what());
       return 1;

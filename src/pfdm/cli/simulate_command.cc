@@ -86,11 +86,14 @@ int RunLvPhantom() {
   options.seed = FLAGS_seed;
   options.deformation.lesion = FLAGS_lesion;
   options.breathing = FLAGS_breathing;
-  if (!IsDefault("frames") && FLAGS_frames < 1) {
-    throw InputError("simulate needs --frames >= 1");
+  // Written so that NaN fails every test.
+  if (!IsDefault("frames") && !(FLAGS_frames >= 1 && FLAGS_frames <= 1000)) {
+    throw InputError("simulate needs 1 <= --frames <= 1000");
   }
-  if (options.num_tags < 1 || !(options.noise_mm >= 0)) {
-    throw InputError("simulate needs --tags >= 1 and --noise >= 0");
+  if (!(options.num_tags >= 1 && options.num_tags <= 1000000 &&
+        options.noise_mm >= 0 && options.noise_mm <= 1000)) {
+    throw InputError(
+        "simulate needs 1 <= --tags <= 1e6 and 0 <= --noise <= 1000 (mm)");
   }
   const LvPhantom phantom = MakeLvPhantom(options);
   const std::filesystem::path truth = TruthPath("json");

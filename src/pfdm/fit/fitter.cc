@@ -7,6 +7,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "Eigen/Dense"
 #include "pfdm/fit/frame_problem.h"
 #include "pfdm/fit/gauge.h"
 #include "pfdm/util/error.h"
@@ -97,6 +98,55 @@ void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
 // Sets a0 so that the model, a3 held, reaches from its fitted apex to the
 // highest data point along its axis (the base rim), keeping the apex, the
 // radii in mm and the orientation where they are.
+// A surface is fitted to points that span space; identical, collinear or
+// coplanar points once reached Ceres as NaN (a CHECK dump) or "fitted" with
+// exit 0.  Spreads are the principal standard deviations, mm.
+void CheckSpansSpace(const std::string& source, const Frame& frame) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const DataPoint& p : frame.points) mean += p.position;
+  mean /= static_cast<double>(frame.points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const DataPoint& p : frame.points) {
+    covariance += (p.position - mean) * (p.position - mean).transpose();
+  }
+  covariance /= static_cast<double>(frame.points.size());
+  const Eigen::Vector3d spread =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance)
+          .eigenvalues()
+          .cwiseMax(0.0)
+          .cwiseSqrt();  // Ascending.
+  const char* what = nullptr;
+  if (!(spread[2] > 1e-6)) {
+    what = "all at one place";
+  } else if (spread[1] < 1e-3 * spread[2]) {
+    what = "on a line";
+  } else if (spread[0] < 1e-3 * spread[2]) {
+    what = "in a plane";
+  }
+  if (what != nullptr) {
+    throw InputError(source + ": frame " + std::to_string(frame.index) +
+                     ": the points lie " + what +
+                     "; a surface needs points that span space");
+  }
+}
+
+bool StateFinite(const ModelState& state) {
+  auto finite = [](const auto& values) {
+    for (double v : values) {
+      if (!std::isfinite(v)) return false;
+    }
+    return true;
+  };
+  if (!finite(state.center) || !finite(state.quaternion) ||
+      !finite(state.globals)) {
+    return false;
+  }
+  for (const FunctionValues& knot : state.knots) {
+    if (!finite(knot)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 SequenceFit FitSequence(const PointSequence& sequence,
@@ -114,6 +164,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
                        std::to_string(options.min_points) + " needed");
     }
     for (const DataPoint& p : frame.points) ++frames_per_id[p.id];
+    CheckSpansSpace(sequence.source, frame);
   }
 
   SequenceFit result;
@@ -213,6 +264,13 @@ SequenceFit FitSequence(const PointSequence& sequence,
       }
     }
     Summarize(model, points, &fit);
+    // Never a silent absurd fit: an infinite RMS once printed CONVERGENCE.
+    if (!std::isfinite(fit.rms_mm) || !std::isfinite(fit.max_distance_mm) ||
+        !StateFinite(model.state)) {
+      throw InputError(sequence.source + ": frame " +
+                       std::to_string(frame.index) +
+                       ": the fit diverged (its error is not finite)");
+    }
     fit.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
             .count();

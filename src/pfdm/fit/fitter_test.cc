@@ -222,6 +222,31 @@ TEST(FitterTest, RejectsFramesWithTooFewPoints) {
   }
 }
 
+// Issue 14: a later frame flattened into a plane "fitted" with exit 0, and
+// identical points reached Ceres as NaN.
+TEST(FitterTest, RejectsFramesThatDoNotSpanSpace) {
+  const PointSequence phantom = DefaultPhantom().points;
+  const std::pair<const char*, Eigen::Vector3d> cases[] = {
+      {"all at one place", Eigen::Vector3d::Zero()},
+      {"on a line", Eigen::Vector3d(0, 0, 1)},
+      {"in a plane", Eigen::Vector3d(1, 1, 0)}};
+  for (const auto& [what, keep] : cases) {
+    PointSequence sequence = phantom;
+    sequence.source = "tags.csv";
+    for (DataPoint& p : sequence.frames[3].points) {
+      p.position = p.position.cwiseProduct(keep) + Eigen::Vector3d(1, 2, 3);
+    }
+    try {
+      FitSequence(sequence, ModelConfig::Paper(17), FitOptions());
+      FAIL() << what;
+    } catch (const InputError& error) {
+      EXPECT_EQ(std::string(error.what()),
+                std::string("tags.csv: frame 3: the points lie ") + what +
+                    "; a surface needs points that span space");
+    }
+  }
+}
+
 TEST(FitterTest, RejectsAnUnknownLoss) {
   FitOptions options;
   options.loss = "tukey";

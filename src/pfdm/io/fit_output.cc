@@ -1,7 +1,14 @@
 #include "pfdm/io/fit_output.h"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "ceres/types.h"
@@ -12,6 +19,7 @@
 #include "pfdm/report/fit_plots.h"
 #include "pfdm/report/fit_report.h"
 #include "pfdm/util/atomic_file.h"
+#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
@@ -94,7 +102,105 @@ std::string ModeName(FunctionMode mode) {
   return "";
 }
 
+const std::regex& OutputNamePattern() {
+  static const std::regex pattern(
+      "(fit\\.json|parameters\\.csv|parameters\\.svg|report\\.html|"
+      "fit\\.pvd|frame_[0-9]+\\.vtk|frame_[0-9]+\\.vtp)(\\.tmp\\.[0-9]+)?");
+  return pattern;
+}
+
+// The names of the output files and temporaries in dir.
+std::vector<std::string> OutputNamesIn(const std::string& dir) {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+    const std::string name = entry.path().filename().string();
+    if (IsFitOutputName(name)) names.push_back(name);
+  }
+  if (error) {
+    throw InputError(dir + ": cannot list the folder: " + error.message());
+  }
+  return names;
+}
+
+// Removes dir/name if it is there; a folder or a failure is an error, as
+// the set could not be replaced whole.
+void RemoveOutputFile(const std::string& dir, const std::string& name) {
+  const std::string path = dir + "/" + name;
+  std::error_code error;
+  const auto status = std::filesystem::symlink_status(path, error);
+  if (!std::filesystem::exists(status)) return;
+  if (std::filesystem::is_directory(status)) {
+    throw InputError(path + ": is a folder where pfdm writes a file");
+  }
+  if (std::remove(path.c_str()) != 0 && errno != ENOENT) {
+    throw InputError(
+        path + ": cannot remove the older output: " + std::strerror(errno));
+  }
+}
+
 }  // namespace
+
+bool IsFitOutputName(const std::string& name) {
+  return std::regex_match(name, OutputNamePattern());
+}
+
+void CheckFitOutputFolder(const std::string& dir,
+                          const std::string& input_path) {
+  // The outermost folder this makes, removed again after the probe: a
+  // failed run should leave no trace, and the writer makes it anyway.
+  std::filesystem::path created;
+  std::error_code missing;
+  for (std::filesystem::path p = std::filesystem::absolute(dir, missing);
+       !p.empty() && !std::filesystem::exists(p, missing);
+       p = p.parent_path()) {
+    created = p;
+    if (p == p.parent_path()) break;
+  }
+  EnsureDirectory(dir);
+  const std::string probe = dir + "/fit.json.tmp." + std::to_string(getpid());
+  {
+    errno = 0;
+    std::ofstream out(probe, std::ios::binary | std::ios::trunc);
+    out << "{}\n";
+    out.close();
+    if (!out) {
+      std::remove(probe.c_str());
+      throw InputError(dir + ": cannot write in this folder: " +
+                       (errno != 0 ? std::strerror(errno) : "write failed"));
+    }
+  }
+  std::remove(probe.c_str());
+  if (!created.empty()) {
+    // Only empty folders go, innermost first.
+    for (std::filesystem::path p = std::filesystem::absolute(dir, missing);
+         std::filesystem::remove(p, missing) && p != created;
+         p = p.parent_path()) {
+    }
+    return;  // Nothing in it to check, and the input cannot be there.
+  }
+  for (const char* name : {"fit.json", "parameters.csv", "parameters.svg",
+                           "report.html", "fit.pvd"}) {
+    const std::string path = dir + "/" + name;
+    std::error_code error;
+    const auto status = std::filesystem::symlink_status(path, error);
+    if (std::filesystem::exists(status) &&
+        !std::filesystem::is_regular_file(status) &&
+        !std::filesystem::is_symlink(status)) {
+      throw InputError(path + ": is a folder or other non-file where pfdm " +
+                       "writes a file");
+    }
+  }
+  if (input_path.empty()) return;
+  std::error_code error;
+  const auto input = std::filesystem::weakly_canonical(input_path, error);
+  const auto folder = std::filesystem::weakly_canonical(dir, error);
+  if (!error && input.parent_path() == folder &&
+      IsFitOutputName(input.filename().string())) {
+    throw InputError(input_path + ": the input is one of the outputs " + dir +
+                     " would be given; choose another --out");
+  }
+}
 
 double ReportedValue(const Model& model, int f, double u) {
   const double value = model.FunctionAt(f, u);
@@ -312,9 +418,36 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      FitReportHtml(points, fit, analysis, parameters_svg,
                                    CycleCurvesSvg(analysis.clinical)));
   files.emplace_back("fit.json", FitJson(points, fit, options, analysis));
+
   EnsureDirectory(dir);
-  for (const auto& [name, contents] : files) {
-    WriteFileAtomically(dir + "/" + name, contents);
+  // A folder where a file goes stops the write before anything is touched.
+  std::vector<std::string> older = OutputNamesIn(dir);
+  for (const auto& [name, contents] : files) older.push_back(name);
+  for (const std::string& name : older) {
+    std::error_code error;
+    if (std::filesystem::is_directory(
+            std::filesystem::symlink_status(dir + "/" + name, error))) {
+      throw InputError(dir + "/" + name +
+                       ": is a folder where pfdm writes a file");
+    }
+  }
+  // No fit.json, no set: from here until the new one is in place a kill
+  // leaves a folder that says "not done".
+  RemoveOutputFile(dir, "fit.json");
+  for (const std::string& name : OutputNamesIn(dir)) {
+    RemoveOutputFile(dir, name);
+  }
+  std::vector<std::string> written;
+  try {
+    for (const auto& [name, contents] : files) {
+      WriteFileAtomically(dir + "/" + name, contents);
+      written.push_back(name);
+    }
+  } catch (const InputError&) {
+    for (const std::string& name : written) {
+      std::remove((dir + "/" + name).c_str());
+    }
+    throw;
   }
 }
 

@@ -44,9 +44,26 @@ VtkPolyData FramePolyData(const Model& model, const Frame& frame,
 std::string FrameVtk(const Model& model, const Frame& frame,
                      const FrameFit& fit);
 
-// Writes all of the above into dir, each file atomically, once everything
-// has been computed; fit.json last, so that its presence marks a complete
-// set (pfdm batch resumes on it).  base_planes as for AnalyzeFit.
+// Whether a file name in an output folder is one of the output set
+// (fit.json, parameters.csv, parameters.svg, report.html, fit.pvd,
+// frame_NNN.vtk, frame_NNN.vtp) or a temporary of one (NAME.tmp.PID).
+bool IsFitOutputName(const std::string& name);
+
+// Checks, before the minutes of a fit, that dir can take the output set:
+// creates it, writes and removes a file in it, refuses an output name held
+// by a folder or anything but a file, and refuses an input (input_path, ""
+// for none) that is one of the outputs, which the write would remove.
+// Throws InputError naming dir or the input.
+void CheckFitOutputFolder(const std::string& dir,
+                          const std::string& input_path);
+
+// Writes all of the above into dir once everything has been computed, so
+// that after any exit, a kill included, dir holds one complete set or none:
+// fit.json, whose presence marks a complete set (pfdm batch resumes on it),
+// is removed first, then every other file and temporary of an older set
+// (stale frames of a longer fit too), then the new files are written, each
+// atomically, and fit.json last.  A failed write removes what it wrote.
+// base_planes as for AnalyzeFit.
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
                      const std::vector<BasePlane>& base_planes = {});

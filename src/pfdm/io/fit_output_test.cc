@@ -1,5 +1,6 @@
 #include "pfdm/io/fit_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -131,6 +132,114 @@ TEST(FitOutputTest, NothingIsWrittenWhenAnOutputCannotBeMade) {
       WriteFitOutputs(dir + "/taken", f.phantom.points, f.fit, FitOptions()),
       InputError);
   EXPECT_EQ(ReadText(dir + "/taken"), "a file");
+}
+
+// The first two frames of the phantom fit: a shorter set to write over it.
+std::pair<PointSequence, SequenceFit> FirstTwoFrames() {
+  const Fitted& f = PhantomFit();
+  std::pair<PointSequence, SequenceFit> two{f.phantom.points, f.fit};
+  two.first.frames.resize(2);
+  two.second.frames.resize(2);
+  return two;
+}
+
+std::vector<std::string> Names(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A refit with fewer frames left the older frame_002 files beside the new
+// set, and a killed run's temporaries stayed for good (issue 14).
+TEST(FitOutputTest, ARefitReplacesTheWholeSetAndItsTemporaries) {
+  const Fitted& f = PhantomFit();
+  const std::string dir = ScratchDirectory("fit_output") + "/out";
+  WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
+  WriteText(dir + "/report.html.tmp.99999", "<html>half");
+  WriteText(dir + "/fit.json.tmp.12", "{");
+  WriteText(dir + "/notes.txt", "the user's own");
+  const auto [points, fit] = FirstTwoFrames();
+  WriteFitOutputs(dir, points, fit, FitOptions());
+  EXPECT_EQ(Names(dir),
+            (std::vector<std::string>{
+                "fit.json", "fit.pvd", "frame_000.vtk", "frame_000.vtp",
+                "frame_001.vtk", "frame_001.vtp", "notes.txt", "parameters.csv",
+                "parameters.svg", "report.html"}));
+  EXPECT_EQ(nlohmann::json::parse(ReadText(dir + "/fit.json"))["frames"].size(),
+            2u);
+  EXPECT_EQ(ReadText(dir + "/fit.pvd").find("frame_002"), std::string::npos);
+}
+
+// A failed write left the older fit.json beside new files: a folder that
+// looked complete (issue 14).  A folder in the way now stops the write
+// before anything is touched.
+TEST(FitOutputTest, AFolderInTheWayStopsTheWriteBeforeItStarts) {
+  const Fitted& f = PhantomFit();
+  const std::string dir = ScratchDirectory("fit_output") + "/out";
+  WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
+  fs::create_directory(dir + "/frame_007.vtp");
+  const std::vector<std::string> before = Names(dir);
+  const std::string json = ReadText(dir + "/fit.json");
+  const auto [points, fit] = FirstTwoFrames();
+  try {
+    WriteFitOutputs(dir, points, fit, FitOptions());
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              dir + "/frame_007.vtp: is a folder where pfdm writes a file");
+  }
+  EXPECT_EQ(Names(dir), before);
+  EXPECT_EQ(ReadText(dir + "/fit.json"), json);
+}
+
+TEST(FitOutputTest, OutputNamesAreTheSetAndItsTemporaries) {
+  for (const char* name :
+       {"fit.json", "parameters.csv", "parameters.svg", "report.html",
+        "fit.pvd", "frame_000.vtk", "frame_1234.vtp", "fit.json.tmp.77"}) {
+    EXPECT_TRUE(IsFitOutputName(name)) << name;
+  }
+  for (const char* name : {"points.csv", "fit.json.bak", "frame_.vtk",
+                           "error.txt", "frame_001.vtk.tmp.", "xfit.json"}) {
+    EXPECT_FALSE(IsFitOutputName(name)) << name;
+  }
+}
+
+TEST(FitOutputTest, TheFolderIsCheckedBeforeTheFitAndLeftAsItWas) {
+  const std::string dir = ScratchDirectory("fit_output");
+  // Absent: made, written to, and removed again.
+  CheckFitOutputFolder(dir + "/new/out", dir + "/points.csv");
+  EXPECT_FALSE(fs::exists(dir + "/new"));
+  WriteText(dir + "/file", "x");
+  EXPECT_THROW(CheckFitOutputFolder(dir + "/file/out", ""), InputError);
+  fs::create_directories(dir + "/out/report.html");
+  try {
+    CheckFitOutputFolder(dir + "/out", "");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              dir +
+                  "/out/report.html: is a folder or other non-file where "
+                  "pfdm writes a file");
+  }
+  // The input would be removed with the older set.
+  fs::create_directory(dir + "/in");
+  WriteText(dir + "/in/parameters.csv", "frame,id,x,y,z\n");
+  try {
+    CheckFitOutputFolder(dir + "/in", dir + "/in/../in/parameters.csv");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              dir +
+                  "/in/../in/parameters.csv: the input is one of the "
+                  "outputs " +
+                  dir +
+                  "/in would be given; choose another "
+                  "--out");
+  }
+  EXPECT_EQ(Names(dir + "/in"), std::vector<std::string>{"parameters.csv"});
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/solvers/damping_groups.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/input_file.h"
 
 namespace pfdm {
 namespace {
@@ -17,10 +18,28 @@ Eigen::Vector3d ParsePoint(const std::string& flag, const std::string& text) {
   char comma1 = 0, comma2 = 0;
   in >> point.x() >> comma1 >> point.y() >> comma2 >> point.z();
   if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
-      !point.allFinite()) {
-    throw InputError("--" + flag + " must be x,y,z in mm, got '" + text + "'");
+      !point.allFinite() || point.cwiseAbs().maxCoeff() > kMaxCoordinateMm) {
+    throw InputError("--" + flag + " must be x,y,z in mm, got '" + Clip(text) +
+                     "'");
   }
   return point;
+}
+
+// A number as typed, short (std::to_string gives 1e308 in 309 digits).
+std::string Show(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// A finite weight in [0, 1e6]: beyond that the square roots Ceres is given
+// overflow and the data no longer count.
+double Weight(const char* flag, double value) {
+  if (!(value >= 0.0 && value <= 1e6)) {
+    throw InputError(std::string("--") + flag +
+                     " must be between 0 and 1e6, got " + Show(value));
+  }
+  return value;
 }
 
 }  // namespace
@@ -31,18 +50,30 @@ ModelConfig ModelConfigFrom(const FitSettings& settings) {
 
 FitOptions FitOptionsFrom(const FitSettings& s) {
   FitOptions options;
-  options.smoothness_weight = s.smoothness;
-  options.prior_weight = s.prior;
+  options.smoothness_weight = Weight("smoothness", s.smoothness);
+  options.prior_weight = Weight("prior", s.prior);
   options.loss = s.loss;
+  // Scale 0 once left the model unmoved with exit 0.
+  if (!(s.loss_scale > 0.0) || !std::isfinite(s.loss_scale)) {
+    throw InputError("--loss_scale must be a positive number of mm, got " +
+                     Show(s.loss_scale));
+  }
   options.loss_scale_mm = s.loss_scale;
+  if (s.threads < 1 || s.threads > 256) {
+    throw InputError("--threads must be between 1 and 256, got " +
+                     std::to_string(s.threads));
+  }
   options.solver.num_threads = s.threads;
   options.solver.kind = SolverFromName(s.solver);
   if (!ceres::StringToLinearSolverType(s.linear_solver,
                                        &options.solver.linear_solver)) {
     throw InputError("unknown --linear_solver '" + s.linear_solver + "'");
   }
-  if (!(s.time_step >= 0.0) || !std::isfinite(s.time_step)) {
-    throw InputError("--time_step must be 0 (default) or positive");
+  // 1e-300 once "converged" on a step lost in rounding, the model unmoved.
+  if (!(s.time_step == 0.0 || (s.time_step >= 1e-6 && s.time_step <= 1e12))) {
+    throw InputError(
+        "--time_step must be 0 (default) or between 1e-6 and 1e12, got " +
+        Show(s.time_step));
   }
   options.solver.time_step = s.time_step;
   if (!(s.rest_tolerance > 0.0) || !std::isfinite(s.rest_tolerance)) {
@@ -60,6 +91,9 @@ FitOptions FitOptionsFrom(const FitSettings& s) {
   if (!s.apex.empty()) {
     options.hint =
         AxisHint{ParsePoint("apex", s.apex), ParsePoint("base", s.base)};
+    if ((options.hint->apex - options.hint->base_center).norm() < 1.0) {
+      throw InputError("--apex and --base must be at least 1 mm apart");
+    }
   }
   return options;
 }

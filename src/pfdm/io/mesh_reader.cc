@@ -7,14 +7,13 @@
 #include <sstream>
 
 #include "pfdm/util/error.h"
+#include "pfdm/util/input_file.h"
 
 namespace pfdm {
 namespace {
 
-std::ifstream Open(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the file");
-  return in;
+std::istringstream Open(const std::string& path) {
+  return std::istringstream(ReadInputFile(path));
 }
 
 double ToNumber(const std::string& where, const std::string& text) {
@@ -22,9 +21,18 @@ double ToNumber(const std::string& where, const std::string& text) {
   const char* end = text.data() + text.size();
   const auto [rest, error] = std::from_chars(text.data(), end, value);
   if (error != std::errc() || rest != end || text.empty()) {
-    throw InputError(where + ": '" + text + "' is not a number");
+    throw InputError(where + ": '" + Clip(text) + "' is not a number");
   }
   if (!std::isfinite(value)) throw InputError(where + ": not a finite number");
+  return value;
+}
+
+double ToCoordinate(const std::string& where, const std::string& text) {
+  const double value = ToNumber(where, text);
+  if (std::abs(value) > kMaxCoordinateMm) {
+    throw InputError(where + ": coordinate '" + Clip(text) +
+                     "' is out of range (more than 1e6 mm from the origin)");
+  }
   return value;
 }
 
@@ -33,7 +41,7 @@ long long ToInteger(const std::string& where, const std::string& text) {
   const char* end = text.data() + text.size();
   const auto [rest, error] = std::from_chars(text.data(), end, value);
   if (error != std::errc() || rest != end || text.empty()) {
-    throw InputError(where + ": '" + text + "' is not an integer");
+    throw InputError(where + ": '" + Clip(text) + "' is not an integer");
   }
   return value;
 }
@@ -74,11 +82,12 @@ class Tokens {
   }
   std::string Where() const { return path_ + ":" + std::to_string(line_); }
   double Number(const char* what) { return ToNumber(Where(), Need(what)); }
+  double Coordinate() { return ToCoordinate(Where(), Need("a coordinate")); }
   long long Integer(const char* what) { return ToInteger(Where(), Need(what)); }
 
  private:
   std::string path_;
-  std::ifstream in_;
+  std::istringstream in_;
   std::istringstream line_stream_;
   int line_ = 0;
 };
@@ -86,7 +95,7 @@ class Tokens {
 }  // namespace
 
 TriangleMesh ReadObj(const std::string& path) {
-  std::ifstream in = Open(path);
+  std::istringstream in = Open(path);
   TriangleMesh mesh;
   std::vector<std::pair<int, std::vector<long long>>> faces;  // Line, indices.
   std::string line;
@@ -99,8 +108,8 @@ TriangleMesh ReadObj(const std::string& path) {
       std::string x, y, z;
       if (!(fields >> x >> y >> z))
         throw InputError(where + ": vertex needs x y z");
-      mesh.points.emplace_back(ToNumber(where, x), ToNumber(where, y),
-                               ToNumber(where, z));
+      mesh.points.emplace_back(ToCoordinate(where, x), ToCoordinate(where, y),
+                               ToCoordinate(where, z));
     } else if (kind == "f") {
       std::vector<long long> polygon;
       std::string corner;
@@ -130,7 +139,7 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
   VtkMesh result;
   std::string line;
   {
-    std::ifstream in = Open(path);
+    std::istringstream in = Open(path);
     std::getline(in, line);
     if (line.rfind("# vtk DataFile", 0) != 0) {
       throw InputError(path + ":1: not a legacy VTK file");
@@ -153,9 +162,9 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
       const long long n = tokens.Integer("the point count");
       tokens.Need("the point type");
       for (long long i = 0; i < n; ++i) {
-        const double x = tokens.Number("a coordinate");
-        const double y = tokens.Number("a coordinate");
-        result.mesh.points.emplace_back(x, y, tokens.Number("a coordinate"));
+        const double x = tokens.Coordinate();
+        const double y = tokens.Coordinate();
+        result.mesh.points.emplace_back(x, y, tokens.Coordinate());
       }
     } else if (token == "POLYGONS" || token == "VERTICES" || token == "LINES" ||
                token == "TRIANGLE_STRIPS") {
@@ -171,7 +180,14 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
         }
       }
     } else if (token == "POINT_DATA") {
-      data_points = tokens.Integer("the point-data count");
+      const long long n = tokens.Integer("the point-data count");
+      // Scalars of another count would be paired with the wrong points.
+      if (n != static_cast<long long>(result.mesh.points.size())) {
+        throw InputError(tokens.Where() + ": POINT_DATA " + std::to_string(n) +
+                         " does not match POINTS " +
+                         std::to_string(result.mesh.points.size()));
+      }
+      data_points = static_cast<size_t>(n);
     } else if (token == "SCALARS") {
       const std::string name = tokens.Need("a scalar name");
       tokens.Need("a scalar type");
@@ -195,7 +211,7 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
                token == "VECTORS" || token == "TEXTURE_COORDINATES") {
       break;  // Nothing pfdm uses follows.
     } else {
-      throw InputError(tokens.Where() + ": unexpected '" + token + "'");
+      throw InputError(tokens.Where() + ": unexpected '" + Clip(token) + "'");
     }
   }
   if (result.mesh.points.empty()) throw InputError(path + ": no points");
@@ -204,15 +220,15 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
 
 std::vector<std::vector<Eigen::Vector3d>> ReadCapMeanShape(
     const std::string& path) {
-  std::ifstream in = Open(path);
+  std::istringstream in = Open(path);
   std::vector<double> values;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const size_t begin = line.find_first_not_of(" \t");
     const size_t end = line.find_last_not_of(" \t\r");
-    values.push_back(ToNumber(path + ":" + std::to_string(number),
-                              line.substr(begin, end - begin + 1)));
+    values.push_back(ToCoordinate(path + ":" + std::to_string(number),
+                                  line.substr(begin, end - begin + 1)));
   }
   if (values.empty() || values.size() % 12 != 0) {
     throw InputError(path + ": " + std::to_string(values.size()) +
@@ -231,7 +247,7 @@ std::vector<std::vector<Eigen::Vector3d>> ReadCapMeanShape(
 
 std::vector<std::array<int, 3>> ReadCapFaces(const std::string& path,
                                              int num_points) {
-  std::ifstream in = Open(path);
+  std::istringstream in = Open(path);
   std::vector<std::array<int, 3>> faces;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {

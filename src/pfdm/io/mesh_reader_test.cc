@@ -62,6 +62,29 @@ TEST(MeshReaderTest, LegacyVtkPointsPolygonsAndLabels) {
             path + ":7: 'zz' is not a number");
 }
 
+// Issue 14: scalars of another count than the points were paired with the
+// wrong points, and coordinates past 1e155 overflowed the fit.
+TEST(MeshReaderTest, PointDataMustMatchThePointsAndCoordinatesBeBounded) {
+  const std::string path = ScratchDirectory("vtk") + "/m.vtk";
+  WriteText(path,
+            "# vtk DataFile Version 3.0\nvtk output\nASCII\nDATASET POLYDATA\n"
+            "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+            "POINT_DATA 2\nSCALARS s float\nLOOKUP_TABLE default\n0 1\n");
+  EXPECT_EQ(ErrorOf([&] { ReadLegacyVtkPolyData(path); }),
+            path + ":7: POINT_DATA 2 does not match POINTS 3");
+  WriteText(path,
+            "# vtk DataFile Version 3.0\nvtk output\nASCII\nDATASET POLYDATA\n"
+            "POINTS 2 float\n0 0 0 1e200 0 0\n");
+  EXPECT_EQ(ErrorOf([&] { ReadLegacyVtkPolyData(path); }),
+            path +
+                ":6: coordinate '1e200' is out of range (more than 1e6 mm "
+                "from the origin)");
+  const std::string obj = ScratchDirectory("obj") + "/m.obj";
+  WriteText(obj, std::string("v 0 0 0\nv 1 0 0\nv 0 1") + '\0' + "\n");
+  EXPECT_EQ(ErrorOf([&] { ReadObj(obj); }),
+            obj + ":3: contains a NUL byte (not a text file?)");
+}
+
 TEST(MeshReaderTest, CapMeanShapeIsFourSurfacesOfXyzPoints) {
   const std::string dir = ScratchDirectory("cap");
   std::string values;

@@ -6,6 +6,7 @@
 
 #include "pfdm/io/mesh_reader.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/input_file.h"
 
 namespace pfdm {
 namespace {
@@ -29,12 +30,34 @@ TriangleMesh KeepLabel(const VtkMesh& vtk, const std::string& path,
     throw InputError(path +
                      ": --label given but the file has no point scalars");
   }
+  // NAME=N picks the array; a bare N only when there is one to pick.
+  const size_t equals = label.find('=');
+  const std::string array =
+      equals == std::string::npos ? "" : label.substr(0, equals);
+  const std::string number =
+      equals == std::string::npos ? label : label.substr(equals + 1);
   double wanted = 0.0;
-  std::istringstream in(label);
+  std::istringstream in(number);
   if (!(in >> wanted) || !(in >> std::ws).eof()) {
-    throw InputError("--label must be a number, got '" + label + "'");
+    throw InputError("--label must be N or NAME=N, N a number, got '" +
+                     Clip(label) + "'");
   }
-  const std::vector<double>& values = vtk.point_scalars.begin()->second;
+  auto chosen = vtk.point_scalars.begin();
+  if (!array.empty()) {
+    chosen = vtk.point_scalars.find(array);
+    if (chosen == vtk.point_scalars.end()) {
+      throw InputError(path + ": no point scalars named '" + Clip(array) + "'");
+    }
+  } else if (vtk.point_scalars.size() > 1) {
+    std::string names;
+    for (const auto& [name, values] : vtk.point_scalars) {
+      names += (names.empty() ? "" : ", ") + name;
+    }
+    throw InputError(path + ": --label " + Clip(label) +
+                     " is ambiguous, the file has point scalars " +
+                     Clip(names, 80) + "; give --label NAME=" + number);
+  }
+  const std::vector<double>& values = chosen->second;
   std::vector<int> new_index(vtk.mesh.points.size(), -1);
   TriangleMesh kept;
   for (size_t i = 0; i < values.size() && i < vtk.mesh.points.size(); ++i) {

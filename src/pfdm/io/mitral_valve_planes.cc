@@ -24,6 +24,14 @@ std::vector<BasePlane> MitralValvePlanes(const std::string& gp_path) {
     std::vector<Eigen::Vector3d> points;
     for (const DataPoint& p : frame.points) points.push_back(p.position);
     const std::optional<BasePlane> plane = FitBasePlane(points);
+    // Points that should be a valve ring but are not: say so rather than
+    // silently closing at the rim (or, before, at an arbitrary plane).
+    if (!plane && points.size() >= 3) {
+      throw InputError(gp_path + ": frame " + std::to_string(frame.index) +
+                       ": its " + std::to_string(points.size()) +
+                       " MITRAL_VALVE points lie at one place or on a line, "
+                       "no plane; --base_plane rim closes at the rim");
+    }
     if (!plane) return {};
     planes.push_back(*plane);
   }

@@ -12,9 +12,11 @@ namespace pfdm {
 
 // Per frame, the plane through the MITRAL_VALVE points of biv-me guide
 // point files (path as for ReadGpFiles); empty when the input is not guide
-// points or some frame has no such plane.  biv-me closes its own LV meshes
-// at the valves, and a flat lid at the highest contour point overestimates
-// the cavity by the tilt of the annulus (by up to 19 % on biv-me's patient 1).
+// points or some frame has fewer than 3 such points.  Throws InputError when
+// a frame's 3 or more points lie at one place or on a line.  biv-me closes its
+// own LV meshes at the valves, and a flat lid at the highest contour point
+// overestimates the cavity by the tilt of the annulus (by up to 19 % on
+// biv-me's patient 1).
 std::vector<BasePlane> MitralValvePlanes(const std::string& gp_path);
 
 }  // namespace pfdm

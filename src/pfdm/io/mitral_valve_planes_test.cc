@@ -2,6 +2,7 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/testing/test_util.h"
+#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
@@ -30,6 +31,24 @@ TEST(MitralValvePlanesTest, FromGuidePointFilesOrNone) {
             header + "5\t5\t-30\tSAX_LV_ENDOCARDIAL\t3\t1.0\t2\n");
   EXPECT_TRUE(MitralValvePlanes(dir).empty());
   EXPECT_TRUE(MitralValvePlanes(dir + "/tags.csv").empty());
+}
+
+// Six copies of one point were taken as a plane and changed the volume
+// (issue 14).
+TEST(MitralValvePlanesTest, PointsAtOnePlaceAreAnError) {
+  const std::string dir = ScratchDirectory("gp");
+  std::string text = "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n";
+  for (int i = 0; i < 6; ++i) text += "1\t2\t3\tMITRAL_VALVE\t1\t1.0\t0\n";
+  WriteText(dir + "/GPFile_000.txt", text);
+  try {
+    MitralValvePlanes(dir);
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              dir +
+                  ": frame 0: its 6 MITRAL_VALVE points lie at one place or "
+                  "on a line, no plane; --base_plane rim closes at the rim");
+  }
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 
 #include "libfccp/csv.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/input_file.h"
 
 namespace pfdm {
 namespace {
@@ -59,9 +60,10 @@ InputError Restate(const std::string& path, const io::error::base& error) {
     const auto* content =
         dynamic_cast<const io::error::with_column_content*>(&error);
     what = "column '" + column + "' is not a number" +
-           (content ? ": '" + std::string(content->column_content) + "'" : "");
+           (content ? ": '" + Clip(content->column_content) + "'" : "");
   } else {
-    what = error.what();
+    // libfccp's raw message escapes and repeats the file name; keep the gist.
+    what = "not a valid CSV row";
   }
   return InputError(where + ": " + what);
 }
@@ -79,13 +81,19 @@ double ParseCoordinate(const std::string& path, unsigned line, const char* name,
   const char* begin = text[0] == '+' && text[1] != '-' ? text + 1 : text;
   const auto [rest, error] = std::from_chars(begin, end, value);
   if (error == std::errc::result_out_of_range) {
-    throw InputError(where + " is out of range: '" + text + "'");
+    throw InputError(where + " is out of range: '" + Clip(text) + "'");
   }
   if (error != std::errc() || rest != end || rest == begin) {
-    throw InputError(where + " is not a number: '" + text + "'");
+    throw InputError(where + " is not a number: '" + Clip(text) + "'");
   }
   if (!std::isfinite(value)) {
     throw InputError(where + " is not a finite number");
+  }
+  // Squares of 1e155 overflow inside the solver (a Ceres CHECK aborted the
+  // program, issue 14); no heart lies a kilometre from the scanner origin.
+  if (std::abs(value) > kMaxCoordinateMm) {
+    throw InputError(where + " is out of range: '" + Clip(text) +
+                     "' (more than 1e6 mm from the origin)");
   }
   return value;
 }
@@ -111,10 +119,8 @@ PointSequence Assemble(const std::string& path,
 }  // namespace
 
 PointSequence ReadPointsCsv(const std::string& path) {
-  // fopen accepts a folder and reading it looks like an empty file.
-  if (std::filesystem::is_directory(path)) {
-    throw InputError(path + ": is a folder, not a CSV file");
-  }
+  // Read whole first: a folder, FIFO or NUL byte is refused up front.
+  const std::string text = ReadInputFile(path);
   std::map<long long, std::vector<DataPoint>> frames;
   std::map<long long, std::set<long long>> ids;
   try {
@@ -122,7 +128,7 @@ PointSequence ReadPointsCsv(const std::string& path) {
     io::CSVReader<5, io::trim_chars<' ', '\t'>,
                   io::double_quote_escape<',', '"'>, io::throw_on_overflow,
                   io::empty_line_comment>
-        in(path);
+        in(path, text.data(), text.data() + text.size());
     in.read_header(io::ignore_extra_column, "frame", "id", "x", "y", "z");
     long long frame, id;
     char *x = nullptr, *y = nullptr, *z = nullptr;
@@ -170,10 +176,11 @@ PointSequence ReadGpFiles(const std::string& path,
   for (size_t file_index = 0; file_index < files.size(); ++file_index) {
     const std::string& file = files[file_index];
     std::vector<DataPoint>& points = frames[file_index];
+    const std::string text = ReadInputFile(file);
     try {
       io::CSVReader<4, io::trim_chars<' '>, io::no_quote_escape<'\t'>,
                     io::throw_on_overflow, io::empty_line_comment>
-          in(file);
+          in(file, text.data(), text.data() + text.size());
       in.read_header(io::ignore_extra_column, "x", "y", "z", "contour type");
       char *x = nullptr, *y = nullptr, *z = nullptr, *type = nullptr;
       while (in.read_row(x, y, z, type)) {

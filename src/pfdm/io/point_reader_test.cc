@@ -1,11 +1,14 @@
 #include "pfdm/io/point_reader.h"
 
+#include <sys/stat.h>
+
 #include <cstdint>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "gtest/gtest.h"
+#include "pfdm/io/point_source.h"
 #include "pfdm/testing/test_util.h"
 #include "pfdm/util/error.h"
 
@@ -115,8 +118,42 @@ TEST(PointReaderTest, MissingFileOrFolderIsReported) {
     ReadPointsCsv(dir);
     FAIL();
   } catch (const InputError& error) {
-    EXPECT_EQ(std::string(error.what()), dir + ": is a folder, not a CSV file");
+    EXPECT_EQ(std::string(error.what()), dir + ": is a folder, not a file");
   }
+}
+
+// Issue 14: 1e308 aborted the fit through a Ceres CHECK, a NUL byte cut its
+// row short silently, and a 5 MB field came back in a 5 MB error line.
+TEST(PointReaderTest, HugeCoordinatesNulBytesAndLongFieldsAreOneLineErrors) {
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,1e308,3,4\n"),
+            "points.csv:2: column 'x' is out of range: '1e308' (more than "
+            "1e6 mm from the origin)");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,-1000001\n"),
+            "points.csv:2: column 'z' is out of range: '-1000001' (more than "
+            "1e6 mm from the origin)");
+  // Read as 0,2,2,3,4 before: the 9 after the NUL was silently lost.
+  EXPECT_EQ(ErrorOf(std::string("frame,id,x,y,z\n0,1,2,3,4\n0,2,2,3,4") + '\0' +
+                    "9\n"),
+            "points.csv:3: contains a NUL byte (not a text file?)");
+  const std::string field(5 << 20, '7');
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,4\n0,2,x" + field + ",3,4\n"),
+            "points.csv:3: column 'x' is not a number: 'x" +
+                std::string(39, '7') + "...'");
+}
+
+TEST(PointReaderTest, AFifoIsRefusedRatherThanWaitedOn) {
+  const std::string path = ScratchDirectory("fifo") + "/tags.csv";
+  ASSERT_EQ(mkfifo(path.c_str(), 0600), 0);
+  try {
+    ReadPoints(path, "auto", "");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              path + ": is not a regular file (a FIFO, socket or device?)");
+  }
+  const std::string gp = ScratchDirectory("fifo") + "/GPFile_000.txt";
+  ASSERT_EQ(mkfifo(gp.c_str(), 0600), 0);
+  EXPECT_THROW(ReadPoints(gp, "auto", ""), InputError);
 }
 
 TEST(PointReaderTest, GpFilesKeepTheChosenContoursAsUntrackedPoints) {

@@ -17,7 +17,7 @@ struct BasePlane {
 };
 
 // Least-squares plane through points; nullopt for fewer than 3 points or
-// points that lie nearly on a line (no plane is defined).
+// points that lie at one place or nearly on a line (no plane is defined).
 std::optional<BasePlane> FitBasePlane(
     const std::vector<Eigen::Vector3d>& points);
 

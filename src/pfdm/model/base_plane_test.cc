@@ -22,5 +22,16 @@ TEST(BasePlaneTest, LeastSquaresPlaneThroughPoints) {
   EXPECT_FALSE(FitBasePlane({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}).has_value());
 }
 
+// All eigenvalues 0 passed the relative test: six copies of one point were
+// a "plane" with an arbitrary normal (issue 14).
+TEST(BasePlaneTest, PointsAtOnePlaceDefineNoPlane) {
+  const std::vector<Eigen::Vector3d> same(6, Eigen::Vector3d(10, -20, 30));
+  EXPECT_FALSE(FitBasePlane(same).has_value());
+  std::vector<Eigen::Vector3d> nearly = same;
+  nearly[0].x() += 1e-9;
+  nearly[1].y() += 1e-9;
+  EXPECT_FALSE(FitBasePlane(nearly).has_value());
+}
+
 }  // namespace
 }  // namespace pfdm

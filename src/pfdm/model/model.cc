@@ -29,8 +29,11 @@ ModelConfig ModelConfig::Superellipsoid(int num_knots) {
 }
 
 ModelConfig ModelConfig::FromName(const std::string& name, int num_knots) {
-  if (num_knots < 2) {
-    throw InputError("--knots must be at least 2, got " +
+  // The cost of a fit grows with the knots (1000 took minutes; 2^31 ran
+  // out of memory); a few dozen already resolve more than the data.
+  if (num_knots < 2 || num_knots > kMaxKnots) {
+    throw InputError("--knots must be between 2 and " +
+                     std::to_string(kMaxKnots) + ", got " +
                      std::to_string(num_knots));
   }
   if (name == "paper") return Paper(num_knots);

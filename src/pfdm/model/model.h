@@ -33,7 +33,9 @@ struct ModelConfig {
   static ModelConfig Paper(int num_knots);
   // The paper's Fig. 2(b) baseline: the same functions, constant along u.
   static ModelConfig Superellipsoid(int num_knots);
-  // "paper" or "superellipsoid"; throws InputError otherwise.
+  // "paper" or "superellipsoid" with 2 to kMaxKnots knots; throws
+  // InputError otherwise.
+  static constexpr int kMaxKnots = 100;
   static ModelConfig FromName(const std::string& name, int num_knots);
 
   // The knots of this configuration; the reference stays valid until the

@@ -91,12 +91,14 @@ Phantom MakePhantom(const PhantomOptions& options) {
 }
 
 void CheckPhantomOptions(const PhantomOptions& options) {
-  if (options.num_frames < 1 || options.num_points < 1 ||
-      options.noise_mm < 0 || options.outlier_fraction < 0 ||
-      options.outlier_fraction > 1) {
+  // Written so that NaN fails every test (it once wrote NaN rows).
+  if (!(options.num_frames >= 1 && options.num_frames <= 1000 &&
+        options.num_points >= 1 && options.num_points <= 1000000 &&
+        options.noise_mm >= 0 && options.noise_mm <= 1000 &&
+        options.outlier_fraction >= 0 && options.outlier_fraction <= 1)) {
     throw InputError(
-        "simulate needs --frames >= 1, --tags >= 1, --noise >= 0 and "
-        "0 <= --outliers <= 1");
+        "simulate needs 1 <= --frames <= 1000, 1 <= --tags <= 1e6, "
+        "0 <= --noise <= 1000 (mm) and 0 <= --outliers <= 1");
   }
 }
 

@@ -1,11 +1,7 @@
 #include "pfdm/report/fit_plots.h"
 
-#include <unistd.h>
-
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <sstream>
 
 #include "pfdm/report/gnuplot.h"
@@ -37,35 +33,6 @@ std::string FrameColor(int t, int n) {
 }
 
 }  // namespace
-
-std::string RenderSvgText(const std::string& what,
-                          const std::vector<PlotData>& data,
-                          const std::string& script, int width, int height) {
-  // Unique per process and call: batch fits render from several threads.
-  static std::atomic<int> counter{0};
-  const std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                     ("pfdm_plot_" + std::to_string(getpid()) +
-                                      "_" + std::to_string(counter++) + ".svg");
-  try {
-    RenderSvg(data, script, path.string(), width, height);
-  } catch (const InputError& error) {
-    const std::string message = error.what();
-    throw InputError(what + message.substr(message.find(':')));
-  }
-  std::ostringstream text;
-  {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (file == nullptr) throw InputError(what + ": gnuplot wrote nothing");
-    char buffer[65536];
-    size_t read;
-    while ((read = std::fread(buffer, 1, sizeof(buffer), file)) > 0) {
-      text.write(buffer, read);
-    }
-    std::fclose(file);
-  }
-  std::filesystem::remove(path);
-  return text.str();
-}
 
 std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
   const int n = static_cast<int>(frames.size());
@@ -129,7 +96,7 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
     first = false;
   }
   script << "unset multiplot\n";
-  return RenderSvgText("parameters.svg", {block}, script.str(), 1200, 760);
+  return RenderSvgString("parameters.svg", {block}, script.str(), 1200, 760);
 }
 
 std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries) {
@@ -167,7 +134,7 @@ std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries) {
             "$cycle using 1:6 lc rgb '#c0392b' pt 7 title 'radial', "
             "'' using 1:7 lc rgb '#2471a3' pt 5 title 'longitudinal'\n"
          << "unset multiplot\n";
-  return RenderSvgText("cycle.svg", {block}, script.str(), 1200, 380);
+  return RenderSvgString("cycle.svg", {block}, script.str(), 1200, 380);
 }
 
 }  // namespace pfdm

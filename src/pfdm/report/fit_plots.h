@@ -20,12 +20,6 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames);
 // with net twist, and radial and longitudinal contraction.
 std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries);
 
-// RenderSvg into a private temporary file, returned as text.  Throws
-// InputError(what + ": gnuplot failed ...") when gnuplot fails.
-std::string RenderSvgText(const std::string& what,
-                          const std::vector<PlotData>& data,
-                          const std::string& script, int width, int height);
-
 }  // namespace pfdm
 
 #endif  // PFDM_REPORT_FIT_PLOTS_H_

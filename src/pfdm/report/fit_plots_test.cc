@@ -1,9 +1,5 @@
 #include "pfdm/report/fit_plots.h"
 
-#include <unistd.h>
-
-#include <filesystem>
-
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/util/error.h"
@@ -18,15 +14,6 @@ int Count(const std::string& text, const std::string& what) {
     ++n;
   }
   return n;
-}
-
-bool TemporaryPlotsLeft() {
-  const std::string prefix = "pfdm_plot_" + std::to_string(getpid()) + "_";
-  for (const auto& entry : std::filesystem::directory_iterator(
-           std::filesystem::temp_directory_path())) {
-    if (entry.path().filename().string().rfind(prefix, 0) == 0) return true;
-  }
-  return false;
 }
 
 TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
@@ -45,7 +32,6 @@ TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
   for (int t = 0; t < 5; ++t) {
     EXPECT_GE(Count(svg, ">" + std::to_string(t) + "</tspan>"), 1) << t;
   }
-  EXPECT_FALSE(TemporaryPlotsLeft());
 }
 
 TEST(FitPlotsTest, CycleCurvesNameTheEjectionFraction) {
@@ -58,20 +44,6 @@ TEST(FitPlotsTest, CycleCurvesNameTheEjectionFraction) {
   const std::string svg = CycleCurvesSvg(summaries);
   EXPECT_NE(svg.find("EF 60.0 %"), std::string::npos);
   EXPECT_NE(svg.find("net twist"), std::string::npos);
-  EXPECT_FALSE(TemporaryPlotsLeft());
-}
-
-TEST(FitPlotsTest, GnuplotFailureNamesTheOutput) {
-  try {
-    RenderSvgText("parameters.svg", {}, "plot $nothing using 1:2", 400, 300);
-    FAIL() << "no error";
-  } catch (const InputError& error) {
-    EXPECT_EQ(
-        std::string(error.what()).rfind("parameters.svg: gnuplot failed", 0),
-        0u)
-        << error.what();
-  }
-  EXPECT_FALSE(TemporaryPlotsLeft());
 }
 
 }  // namespace

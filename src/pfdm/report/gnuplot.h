@@ -14,9 +14,17 @@ struct PlotData {
 };
 
 // Runs `script` with the data blocks defined first and the terminal set to
-// SVG (width x height pixels) writing to a temporary file that is renamed
-// to svg_path when gnuplot succeeds.  Throws InputError naming svg_path if
-// gnuplot is missing or fails.
+// SVG (width x height pixels), and returns the SVG.  gnuplot is started
+// without a shell, the script on its standard input and the SVG on its
+// standard output, so no file name ever reaches a shell or the script.
+// Throws InputError(what + ": gnuplot failed: <gnuplot's error>") if gnuplot
+// is missing or fails.
+std::string RenderSvgString(const std::string& what,
+                            const std::vector<PlotData>& data,
+                            const std::string& script, int width = 900,
+                            int height = 600);
+
+// RenderSvgString written atomically to svg_path (named in errors).
 void RenderSvg(const std::vector<PlotData>& data, const std::string& script,
                const std::string& svg_path, int width = 900, int height = 600);
 

@@ -1,0 +1,17 @@
+// libFuzzer harness: ReadGpFiles, biv-me guide points (all contour types kept).
+// Any input must end in a result or an InputError, nothing else.
+#include <cstddef>
+#include <cstdint>
+
+#include "fuzz_input.h"
+#include "pfdm/io/point_reader.h"
+#include "pfdm/util/error.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string path = pfdm::FuzzFile(data, size, "GPFile_000.txt");
+  try {
+    pfdm::ReadGpFiles(path, {});
+  } catch (const pfdm::InputError&) {
+  }
+  return 0;
+}
