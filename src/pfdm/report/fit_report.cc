@@ -12,7 +12,13 @@ namespace {
 std::string Fixed(double value, int digits) {
   char text[64];
   std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  return text;
+  // "-0.0" from a value that rounds to zero reads as a sign that is not
+  // there (frame 0's strains, say).
+  const std::string out = text;
+  if (out[0] == '-' && out.find_first_not_of("-0.") == std::string::npos) {
+    return out.substr(1);
+  }
+  return out;
 }
 
 // A background tint for a value in [-scale, scale]: orange for positive,
