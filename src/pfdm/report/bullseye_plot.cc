@@ -29,17 +29,18 @@ double ScaleOf(const std::vector<double>& values) {
   return std::max(step, step * std::ceil(largest / step));
 }
 
+// Light ends, so that the black labels stay legible on every segment.
 const char* PaletteOf(BullseyePalette palette) {
   switch (palette) {
     case BullseyePalette::kShorteningRed:
-      return "set palette defined (0 '#b2182b', 0.25 '#ef8a62', 0.5 "
-             "'#f7f7f7', 0.75 '#67a9cf', 1 '#2166ac')\n";
+      return "set palette defined (0 '#d6604d', 0.25 '#f4a582', 0.5 "
+             "'#f7f7f7', 0.75 '#92c5de', 1 '#4393c3')\n";
     case BullseyePalette::kContractionRed:
-      return "set palette defined (0 '#2166ac', 0.25 '#67a9cf', 0.5 "
-             "'#f7f7f7', 0.75 '#ef8a62', 1 '#b2182b')\n";
+      return "set palette defined (0 '#4393c3', 0.25 '#92c5de', 0.5 "
+             "'#f7f7f7', 0.75 '#f4a582', 1 '#d6604d')\n";
     case BullseyePalette::kPurpleGreen:
-      return "set palette defined (0 '#762a83', 0.25 '#af8dc3', 0.5 "
-             "'#f7f7f7', 0.75 '#7fbf7b', 1 '#1b7837')\n";
+      return "set palette defined (0 '#9970ab', 0.25 '#c2a5cf', 0.5 "
+             "'#f7f7f7', 0.75 '#a6dba0', 1 '#5aae61')\n";
   }
   return "";
 }
@@ -102,7 +103,7 @@ std::string BullseyeSvg(const std::vector<WallRegion>& regions,
              << " center front font 'sans,10' offset 0,-0.35\n"
              << "set label '" << region.segment << "' at "
              << radius * std::cos(middle) << ',' << radius * std::sin(middle)
-             << " center front font 'sans,8' tc rgb '#555555' offset 0,0.55\n";
+             << " center front font 'sans,8' tc rgb '#333333' offset 0,0.55\n";
     }
     script << "set label 'apex' at 0,0 center front font 'sans,8' tc rgb "
               "'#777777'\n"

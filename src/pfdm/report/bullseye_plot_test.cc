@@ -36,7 +36,7 @@ TEST(BullseyePlotTest, SegmentsSitWhereTheAhaDrawsThem) {
 
 // Every segment drawn with its number and value, in each panel, with a
 // colour box; the most negative value of a shortening map takes the scale's
-// deep red, rgb(178, 24, 43).
+// red, rgb(214, 96, 77).
 TEST(BullseyePlotTest, PanelsLabelEverySegment) {
   const std::vector<WallRegion> regions = Regions(RegionLayout());
   BullseyeMap ecc{"peak Ecc, %", {}, BullseyePalette::kShorteningRed};
@@ -55,7 +55,7 @@ TEST(BullseyePlotTest, PanelsLabelEverySegment) {
   EXPECT_EQ(Count(svg, ">apex<"), 2);
   // Segment borders: 16 per panel.
   EXPECT_EQ(Count(svg, "stroke='rgb( 64,  64,  64)'"), 32);
-  EXPECT_NE(svg.find("rgb(178,  24,  43)"), std::string::npos);
+  EXPECT_NE(svg.find("rgb(214,  96,  77)"), std::string::npos);
 }
 
 TEST(BullseyePlotTest, StrainCurvesHaveGlobalAndLevels) {
