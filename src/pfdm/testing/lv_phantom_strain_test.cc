@@ -112,9 +112,11 @@ struct Fitted {
   std::vector<PhantomStrain> truth;
 };
 
-Fitted FitPhantom(bool lesion) {
+Fitted FitPhantom(bool lesion,
+                  LvKinematics kinematics = LvKinematics::kSystole) {
   LvPhantomOptions options;
   options.deformation.lesion = lesion;
+  options.kinematics = kinematics;
   Fitted f{MakeLvPhantom(options), {}, {}};
   f.analysis = AnalyzeFit(
       FitSequence(f.phantom.points, ModelConfig::Paper(17), FitOptions()));
@@ -195,6 +197,26 @@ TEST(LvPhantomStrainTest, NormalSystolePeaksAndUniformSegments) {
     }
     EXPECT_LT(high - low, 2.0) << "level from segment " << first + 1;
   }
+}
+
+// A full cycle (p = sin^2, 9 frames): every frame's GCS and GLS within 0.5
+// point of the truth (0.2 measured), the peaks at mid-cycle (frame 4) and
+// the strain back to 0 at the end.
+TEST(LvPhantomStrainTest, CyclePeaksAtEndSystoleAndReturns) {
+  const Fitted f = FitPhantom(/*lesion=*/false, LvKinematics::kCycle);
+  for (size_t t = 0; t < f.truth.size(); ++t) {
+    std::printf("frame %zu  GCS %6.2f (truth %6.2f)  GLS %6.2f (truth %6.2f)\n",
+                t, f.analysis.strain[t].gcs_percent, f.truth[t].gcs_percent,
+                f.analysis.strain[t].gls_percent, f.truth[t].gls_percent);
+    EXPECT_NEAR(f.analysis.strain[t].gcs_percent, f.truth[t].gcs_percent, 0.5)
+        << t;
+    EXPECT_NEAR(f.analysis.strain[t].gls_percent, f.truth[t].gls_percent, 0.5)
+        << t;
+  }
+  EXPECT_EQ(PeakGcs(f.analysis.strain).frame, 4);
+  EXPECT_EQ(PeakGls(f.analysis.strain).frame, 4);
+  EXPECT_NEAR(f.analysis.strain.back().gcs_percent, 0.0, 0.5);
+  EXPECT_NEAR(f.analysis.strain.back().gls_percent, 0.0, 0.5);
 }
 
 // The lesion (mid 2, segment 8) with the global functions alone: a
