@@ -46,6 +46,13 @@ CaseSummary SummaryFromFitJson(const std::string& name,
         es.at("longitudinal_shortening_percent").get<double>();
     summary.radial_contraction_percent =
         es.at("radial_contraction_percent").get<double>();
+    if (fit.contains("strain")) {
+      summary.has_strain = true;
+      summary.peak_gcs_percent =
+          fit["strain"].at("peak_gcs_percent").get<double>();
+      summary.peak_gls_percent =
+          fit["strain"].at("peak_gls_percent").get<double>();
+    }
   } catch (const nlohmann::json::exception& error) {
     throw InputError(where + ": not a pfdm fit.json: " + error.what());
   }
@@ -58,7 +65,8 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
   out << "case,status,frames,max_rms_mm,edv_ml,esv_ml,es_frame,"
          "ejection_fraction,net_twist_at_es_deg,"
          "longitudinal_shortening_at_es_percent,"
-         "radial_contraction_at_es_percent,error\n";
+         "radial_contraction_at_es_percent,peak_gcs_percent,"
+         "peak_gls_percent,error\n";
   for (const CaseSummary& c : cases) {
     out << CsvField(c.name) << ',' << c.status << ',';
     if (c.status == "done") {
@@ -66,8 +74,13 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
           << c.esv_ml << ',' << c.es_frame << ',' << c.ejection_fraction << ','
           << c.net_twist_deg << ',' << c.longitudinal_shortening_percent << ','
           << c.radial_contraction_percent << ',';
+      if (c.has_strain) {
+        out << c.peak_gcs_percent << ',' << c.peak_gls_percent << ',';
+      } else {
+        out << ",,";
+      }
     } else {
-      out << ",,,,,,,,,";
+      out << ",,,,,,,,,,,";
     }
     out << CsvField(c.error) << '\n';
   }

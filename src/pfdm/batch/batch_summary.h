@@ -20,7 +20,13 @@ struct CaseSummary {
   double net_twist_deg = 0.0;
   double longitudinal_shortening_percent = 0.0;
   double radial_contraction_percent = 0.0;  // Mean of x and y.
-  std::string error;                        // For a failed case.
+  // Peak (most negative over the frames) global circumferential and
+  // longitudinal Green-Lagrange strain, percent; has_strain is false for a
+  // fit.json written before strain was reported (empty columns).
+  bool has_strain = false;
+  double peak_gcs_percent = 0.0;
+  double peak_gls_percent = 0.0;
+  std::string error;  // For a failed case.
 };
 
 // The numbers of a finished case, read back from its fit.json text, so a

@@ -18,7 +18,9 @@ constexpr const char* kFitJson = R"({
       "radial_contraction_percent": 25.0}},
     {"rms_mm": 0.75, "clinical": {"net_twist_deg": 3.0,
       "longitudinal_shortening_percent": 5.0,
-      "radial_contraction_percent": 5.0}}]})";
+      "radial_contraction_percent": 5.0}}],
+  "strain": {"peak_gcs_percent": -18.5, "peak_gcs_frame": 1,
+             "peak_gls_percent": -14.25, "peak_gls_frame": 1}})";
 
 TEST(BatchSummaryTest, ReadsTheNumbersAtEndSystoleFromFitJson) {
   const CaseSummary s = SummaryFromFitJson("p1", kFitJson, "p1/fit.json");
@@ -30,12 +32,20 @@ TEST(BatchSummaryTest, ReadsTheNumbersAtEndSystoleFromFitJson) {
   EXPECT_EQ(s.net_twist_deg, 12.5);
   EXPECT_EQ(s.longitudinal_shortening_percent, 15.0);
   EXPECT_EQ(s.radial_contraction_percent, 25.0);
+  EXPECT_TRUE(s.has_strain);
+  EXPECT_EQ(s.peak_gcs_percent, -18.5);
+  EXPECT_EQ(s.peak_gls_percent, -14.25);
   EXPECT_THROW(SummaryFromFitJson("p1", "{\"frames\": []}", "p1/fit.json"),
                InputError);
 }
 
 TEST(BatchSummaryTest, CsvRowsQuoteWhatNeedsIt) {
   CaseSummary done = SummaryFromFitJson("p1", kFitJson, "x");
+  // A fit.json from before strain was reported: empty strain columns.
+  std::string old_json = kFitJson;
+  old_json = old_json.substr(0, old_json.find(",\n  \"strain\"")) + "}";
+  CaseSummary old = SummaryFromFitJson("p0", old_json, "x");
+  EXPECT_FALSE(old.has_strain);
   CaseSummary failed;
   failed.name = "p2";
   failed.status = "failed";
@@ -43,15 +53,17 @@ TEST(BatchSummaryTest, CsvRowsQuoteWhatNeedsIt) {
   CaseSummary pending;
   pending.name = "p3";
   pending.status = "pending";
-  EXPECT_EQ(SummaryCsv({done, failed, pending}),
+  EXPECT_EQ(SummaryCsv({old, done, failed, pending}),
             "case,status,frames,max_rms_mm,edv_ml,esv_ml,es_frame,"
             "ejection_fraction,net_twist_at_es_deg,"
             "longitudinal_shortening_at_es_percent,"
-            "radial_contraction_at_es_percent,error\n"
-            "p1,done,3,1.25,150,60,1,0.6,12.5,15,25,\n"
-            "p2,failed,,,,,,,,,,\"p2.csv:3: column 'x' is not a "
+            "radial_contraction_at_es_percent,peak_gcs_percent,"
+            "peak_gls_percent,error\n"
+            "p0,done,3,1.25,150,60,1,0.6,12.5,15,25,,,\n"
+            "p1,done,3,1.25,150,60,1,0.6,12.5,15,25,-18.5,-14.25,\n"
+            "p2,failed,,,,,,,,,,,,\"p2.csv:3: column 'x' is not a "
             "\"\"number\"\", sorry\"\n"
-            "p3,pending,,,,,,,,,,\n");
+            "p3,pending,,,,,,,,,,,,\n");
 }
 
 }  // namespace

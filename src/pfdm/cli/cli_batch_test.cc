@@ -103,7 +103,7 @@ TEST(CliBatchTest, ShardsSplitTheManifestAndTheSummaryCoversAll) {
   EXPECT_EQ(Lines(run.output, "[1/1] beta: done"), 1) << run.output;
   EXPECT_FALSE(fs::exists(out + "/alpha"));
   EXPECT_EQ(Row(ReadText(out + "/summary.csv"), "alpha"),
-            "alpha,pending,,,,,,,,,,");
+            "alpha,pending,,,,,,,,,,,,");
   run = RunPfdm("batch --manifest " + dir + "/cases.csv --out " + out +
                 " --shard 0/2");
   EXPECT_EQ(run.exit_code, 0) << run.error;

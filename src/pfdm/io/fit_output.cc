@@ -15,9 +15,11 @@
 #include "nlohmann/json.hpp"
 #include "pfdm/io/vtp_writer.h"
 #include "pfdm/model/model_surface.h"
+#include "pfdm/report/bullseye_plot.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/fit_plots.h"
 #include "pfdm/report/fit_report.h"
+#include "pfdm/report/global_strain.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
 
@@ -53,6 +55,18 @@ constexpr const char* kRegionsConvention =
     "material points about frame 0's long axis (about their ring's "
     "centroid) and radial_contraction_percent the mean of 1 - r / r(frame "
     "0), r a material point's distance from its ring's centroid.";
+
+constexpr const char* kStrainDefinition =
+    "Lagrangian (Green-Lagrange) surface strain of the fitted model's "
+    "material points against frame 0, percent: at each material point the "
+    "surface deformation gradient F maps frame 0's tangent plane to frame "
+    "t's, E = (F^T F - I) / 2 in frame 0's orthonormal basis e_c (along the "
+    "circle of latitude, v increasing) and e_l (in the plane, perpendicular "
+    "to e_c, apex to base): Ecc, Ell, Ecl.  Regions: area-weighted means "
+    "over each segment (frame 0's area).  gcs_percent and gls_percent (per "
+    "frame in clinical): area-weighted means of Ecc and Ell over the whole "
+    "surface from the apex pole to the base rim; the peaks are the most "
+    "negative over the frames; levels: the same means over each third.";
 
 constexpr const char* kClinicalDefinition =
     "Measured on the fitted model's material points against frame 0's, "
@@ -292,6 +306,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& frame = fit.frames[t];
     const ClinicalSummary& summary = analysis.clinical[t];
+    const GlobalStrain& strain = analysis.strain[t];
     frames.push_back(
         {{"frame", frame.frame},
          {"n_points", frame.residuals.size()},
@@ -315,6 +330,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
            {"radial_contraction_percent", summary.radial_contraction_percent},
            {"longitudinal_shortening_percent",
             summary.longitudinal_shortening_percent},
+           {"gcs_percent", strain.gcs_percent},
+           {"gls_percent", strain.gls_percent},
+           {"gcl_percent", strain.gcl_percent},
            {"radial_ratio_x_per_knot", summary.radial_ratio_x},
            {"radial_ratio_y_per_knot", summary.radial_ratio_y},
            {"longitudinal_ratio_per_knot", summary.longitudinal_ratio}}}});
@@ -327,22 +345,50 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                    {"esv_ml", ef.esv_ml},
                    {"definition", kEjectionDefinition},
                    {"cavity_closure", CavityClosure(analysis)}};
+  const std::vector<double> peak_ecc = PeakRegionEcc(analysis.region_motion);
   json regions = json::array();
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
     const WallRegion& region = analysis.regions[r];
-    std::vector<double> rotation, radial;
+    std::vector<double> rotation, radial, ecc, ell, ecl;
     for (const auto& motion : analysis.region_motion) {
       rotation.push_back(motion[r].rotation_deg);
       radial.push_back(motion[r].radial_contraction_percent);
+      ecc.push_back(motion[r].ecc_percent);
+      ell.push_back(motion[r].ell_percent);
+      ecl.push_back(motion[r].ecl_percent);
     }
-    regions.push_back({{"segment", region.segment},
-                       {"name", region.Name()},
-                       {"v_range_deg",
-                        {region.v_begin * kDegreesPerRadian,
-                         region.v_end * kDegreesPerRadian}},
-                       {"rotation_deg", rotation},
-                       {"radial_contraction_percent", radial}});
+    regions.push_back(
+        {{"segment", region.segment},
+         {"name", region.Name()},
+         {"v_range_deg",
+          {region.v_begin * kDegreesPerRadian,
+           region.v_end * kDegreesPerRadian}},
+         {"rotation_deg", rotation},
+         {"radial_contraction_percent", radial},
+         {"ecc_percent", ecc},
+         {"ell_percent", ell},
+         {"ecl_percent", ecl},
+         {"peak_ecc_percent", peak_ecc[r]},
+         {"area_mm2", analysis.region_motion.empty()
+                          ? 0.0
+                          : analysis.region_motion[0][r].area_mm2}});
   }
+  json levels = json::object();
+  static const char* const kLevelNames[] = {"basal", "mid", "apical"};
+  for (int level = 0; level < 3; ++level) {
+    std::vector<double> ecc, ell;
+    for (const GlobalStrain& g : analysis.strain) {
+      ecc.push_back(g.level_ecc_percent[level]);
+      ell.push_back(g.level_ell_percent[level]);
+    }
+    levels[kLevelNames[level]] = {{"ecc_percent", ecc}, {"ell_percent", ell}};
+  }
+  const StrainPeak gcs = PeakGcs(analysis.strain);
+  const StrainPeak gls = PeakGls(analysis.strain);
+  json strain = {
+      {"definition", kStrainDefinition}, {"peak_gcs_percent", gcs.percent},
+      {"peak_gcs_frame", gcs.frame},     {"peak_gls_percent", gls.percent},
+      {"peak_gls_frame", gls.frame},     {"levels", levels}};
   json document = {{"pfdm_version", "0.1.0"},
                    {"settings", settings},
                    {"model", model},
@@ -351,6 +397,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                    {"ejection_fraction", ejection},
                    {"regions_convention", kRegionsConvention},
                    {"regions", regions},
+                   {"strain", strain},
                    {"frames", frames}};
   return document.dump(2) + "\n";
 }
@@ -414,9 +461,12 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
   files.emplace_back("fit.pvd", PvdCollection(timesteps));
   const std::string parameters_svg = ParameterPlotsSvg(analysis.models);
   files.emplace_back("parameters.svg", parameters_svg);
-  files.emplace_back("report.html",
-                     FitReportHtml(points, fit, analysis, parameters_svg,
-                                   CycleCurvesSvg(analysis.clinical)));
+  files.emplace_back(
+      "report.html",
+      FitReportHtml(
+          points, fit, analysis, parameters_svg,
+          CycleCurvesSvg(analysis.clinical), StrainCurvesSvg(analysis.strain),
+          BullseyeSvg(analysis.regions, ClinicalBullseyeMaps(analysis))));
   files.emplace_back("fit.json", FitJson(points, fit, options, analysis));
 
   EnsureDirectory(dir);

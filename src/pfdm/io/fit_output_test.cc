@@ -64,6 +64,36 @@ TEST(FitOutputTest, JsonHasVolumesEjectionFractionAndRegions) {
   EXPECT_FALSE(json["settings"].contains("contour_types"));
 }
 
+// Strain per frame in the clinical block, per region and level, peaks in
+// the strain block: the model's phantom contracts, so the peaks are
+// negative, at a later frame, and frame 0 strains nothing.
+TEST(FitOutputTest, JsonHasStrainPerFrameRegionAndPeaks) {
+  const Fitted& f = PhantomFit();
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(f.phantom.points, f.fit, FitOptions()));
+  double least_gcs = 0.0, least_gls = 0.0;
+  for (const auto& frame : json["frames"]) {
+    least_gcs =
+        std::min(least_gcs, frame["clinical"]["gcs_percent"].get<double>());
+    least_gls =
+        std::min(least_gls, frame["clinical"]["gls_percent"].get<double>());
+  }
+  EXPECT_NEAR(json["frames"][0]["clinical"]["gcs_percent"].get<double>(), 0.0,
+              1e-9);
+  const auto& strain = json["strain"];
+  EXPECT_EQ(strain["peak_gcs_percent"].get<double>(), least_gcs);
+  EXPECT_EQ(strain["peak_gls_percent"].get<double>(), least_gls);
+  EXPECT_LT(least_gcs, -3.0);
+  EXPECT_GT(strain["peak_gcs_frame"].get<int>(), 0);
+  EXPECT_EQ(strain["levels"]["mid"]["ecc_percent"].size(), 3u);
+  const auto& region = json["regions"][7];
+  ASSERT_EQ(region["ecc_percent"].size(), 3u);
+  EXPECT_NEAR(region["ecc_percent"][0].get<double>(), 0.0, 1e-9);
+  EXPECT_LE(region["peak_ecc_percent"].get<double>(),
+            region["ecc_percent"][2].get<double>());
+  EXPECT_GT(region["area_mm2"].get<double>(), 100.0);
+}
+
 // Guide points name the contour types they kept, so a fit can be redone.
 TEST(FitOutputTest, JsonNamesTheContourTypesKept) {
   const Fitted& f = PhantomFit();

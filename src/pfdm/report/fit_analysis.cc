@@ -25,6 +25,8 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   for (const Model& model : analysis.models) {
     analysis.region_motion.push_back(
         SummarizeRegions(analysis.models.front(), model, layout));
+    analysis.strain.push_back(
+        SummarizeStrain(analysis.regions, analysis.region_motion.back()));
   }
   return analysis;
 }

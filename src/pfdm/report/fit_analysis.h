@@ -8,6 +8,7 @@
 #include "pfdm/model/base_plane.h"
 #include "pfdm/model/model.h"
 #include "pfdm/report/clinical_summary.h"
+#include "pfdm/report/global_strain.h"
 #include "pfdm/report/wall_motion.h"
 
 namespace pfdm {
@@ -20,6 +21,7 @@ struct FitAnalysis {
   RegionLayout layout;
   std::vector<WallRegion> regions;
   std::vector<std::vector<RegionMotion>> region_motion;  // [frame][region]
+  std::vector<GlobalStrain> strain;                      // Per frame.
 };
 
 // base_planes: one per frame to close the cavity there (see

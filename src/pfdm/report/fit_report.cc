@@ -12,7 +12,13 @@ namespace {
 std::string Fixed(double value, int digits) {
   char text[64];
   std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  return text;
+  // "-0.0" from a value that rounds to zero reads as a sign that is not
+  // there (frame 0's strains, say).
+  const std::string out = text;
+  if (out[0] == '-' && out.find_first_not_of("-0.") == std::string::npos) {
+    return out.substr(1);
+  }
+  return out;
 }
 
 // A background tint for a value in [-scale, scale]: orange for positive,
@@ -90,8 +96,12 @@ std::string InlineSvg(const std::string& svg_document) {
 std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const FitAnalysis& analysis,
                           const std::string& parameters_svg,
-                          const std::string& cycle_svg) {
+                          const std::string& cycle_svg,
+                          const std::string& strain_svg,
+                          const std::string& bullseye_svg) {
   const EjectionFraction& ef = analysis.ejection_fraction;
+  const StrainPeak gcs = PeakGcs(analysis.strain);
+  const StrainPeak gls = PeakGls(analysis.strain);
   const ClinicalSummary& es = analysis.clinical[ef.es_frame];
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
@@ -120,7 +130,11 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     << "mean over ten rings</div>"
     << "<div>longitudinal shortening at ES<b>"
     << Fixed(es.longitudinal_shortening_percent, 1) << " %</b>"
-    << "apex to base-rim centroid</div></div>\n";
+    << "apex to base-rim centroid</div>"
+    << "<div>peak GCS<b>" << Fixed(gcs.percent, 1) << " %</b>frame "
+    << gcs.frame << ", circumferential</div>"
+    << "<div>peak GLS<b>" << Fixed(gls.percent, 1) << " %</b>frame "
+    << gls.frame << ", longitudinal</div></div>\n";
   h << "<p class=\"note\">Every number here is measured on the fitted "
        "model's material points against ED. Rotation is about the ED long "
        "axis (apex to base), right-handed, of the material rings at 20 % "
@@ -154,11 +168,25 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
        "cannot see a1, a2 or tau: its value is the smoothness "
        "prior's extrapolation.</p>\n";
   h << "<h2>Over the cycle</h2>\n" << InlineSvg(cycle_svg) << "\n";
+  if (!strain_svg.empty()) {
+    h << InlineSvg(strain_svg) << "\n"
+      << "<p class=\"note\">Lagrangian (Green-Lagrange) strain of the "
+         "fitted surface against ED, E = (F<sup>T</sup>F &minus; I)/2 with F "
+         "the deformation gradient of the surface's tangent plane at each "
+         "material point: Ecc along the ED circle of latitude, Ell along the "
+         "ED meridian (apex to base), in percent; negative is shortening. "
+         "GCS and GLS are area-weighted means over the whole surface from "
+         "the apex to the base rim, the levels over their thirds of the ED "
+         "axis. Green-Lagrange strain reads a little smaller in magnitude "
+         "than engineering strain (&minus;20 % of length is &minus;18 % "
+         "Green-Lagrange).</p>\n";
+  }
 
   h << "<h2>Per frame</h2>\n<table><tr><th>frame</th><th>points</th>"
     << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>volume ml</th>"
     << "<th>net twist &deg;</th><th>apex &deg;</th><th>base &deg;</th>"
     << "<th>torsion &deg;/cm</th><th>radial %</th><th>longitudinal %</th>"
+    << "<th>GCS %</th><th>GLS %</th>"
     << "<th class=\"l\">solver</th></tr>\n";
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& f = fit.frames[t];
@@ -175,16 +203,37 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
       << Fixed(c.base_rotation_deg, 1) << "</td><td>"
       << Fixed(c.torsion_deg_per_cm, 2) << "</td><td>"
       << Fixed(c.radial_contraction_percent, 1) << "</td><td>"
-      << Fixed(c.longitudinal_shortening_percent, 1) << "</td><td class=\"l\">"
-      << HtmlEscape(f.termination) << "</td></tr>\n";
+      << Fixed(c.longitudinal_shortening_percent, 1) << "</td><td>"
+      << (t < analysis.strain.size() ? Fixed(analysis.strain[t].gcs_percent, 1)
+                                     : "")
+      << "</td><td>"
+      << (t < analysis.strain.size() ? Fixed(analysis.strain[t].gls_percent, 1)
+                                     : "")
+      << "</td><td class=\"l\">" << HtmlEscape(f.termination) << "</td></tr>\n";
   }
   h << "</table>\n";
 
   const std::vector<RegionMotion>& motion = analysis.region_motion[ef.es_frame];
-  h << "<h2>Regional wall motion at ES (frame " << ef.es_frame << ")</h2>\n"
-    << "<table><tr><th>segment</th><th class=\"l\">region</th>"
+  const std::vector<double> peak_ecc = PeakRegionEcc(analysis.region_motion);
+  h << "<h2>Regional wall motion at ES (frame " << ef.es_frame << ")</h2>\n";
+  if (!bullseye_svg.empty()) {
+    h << InlineSvg(bullseye_svg) << "\n"
+      << "<p class=\"note\">Bull's-eye maps in the AHA layout: basal ring "
+         "outside, mid, apical inside (the apex cap is not a segment here); "
+         "segment number above its value. As the AHA draws it, segment 1 "
+         "(and 7, 13) is at the top and numbers run counter-clockwise on the "
+         "page; but here sector 1 starts at the model's &minus;x axis, not "
+         "at the anterior RV insertion, which point data do not show, and "
+         "sectors run counter-clockwise about the long axis seen from the "
+         "base: the map is the LV seen from its base. Peak Ecc: the most "
+         "negative over the frames (red is shortening); radial contraction "
+         "(red is inward) and rotation (green counter-clockwise seen from "
+         "the base) at ES. Each scale is symmetric about 0.</p>\n";
+  }
+  h << "<table><tr><th>segment</th><th class=\"l\">region</th>"
     << "<th>longitude v, &deg;</th><th>rotation &deg;</th>"
-    << "<th>radial contraction %</th></tr>\n";
+    << "<th>radial contraction %</th><th>Ecc %</th><th>Ell %</th>"
+    << "<th>Ecl %</th><th>peak Ecc %</th></tr>\n";
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
     const WallRegion& region = analysis.regions[r];
     constexpr double kDegrees = 180.0 / 3.14159265358979323846;
@@ -194,7 +243,14 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
       << Tint(motion[r].rotation_deg, 15.0) << ">"
       << Fixed(motion[r].rotation_deg, 1) << "</td><td"
       << Tint(motion[r].radial_contraction_percent, 40.0) << ">"
-      << Fixed(motion[r].radial_contraction_percent, 1) << "</td></tr>\n";
+      << Fixed(motion[r].radial_contraction_percent, 1) << "</td><td"
+      << Tint(-motion[r].ecc_percent, 30.0) << ">"
+      << Fixed(motion[r].ecc_percent, 1) << "</td><td"
+      << Tint(-motion[r].ell_percent, 30.0) << ">"
+      << Fixed(motion[r].ell_percent, 1) << "</td><td>"
+      << Fixed(motion[r].ecl_percent, 1) << "</td><td"
+      << Tint(-peak_ecc[r], 30.0) << ">" << Fixed(peak_ecc[r], 1)
+      << "</td></tr>\n";
   }
   h << "</table>\n<p class=\"note\">Segments: thirds of the ED axis (basal, "
        "mid, apical) cut into "
@@ -206,7 +262,9 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
        "show). Rotation: mean turn of the segment's material points about "
        "the ED long axis; radial contraction: mean of 1 &minus; "
        "r/r<sub>ED</sub>, r a material point's distance from its ring's "
-       "centroid.</p>\n</body></html>\n";
+       "centroid; Ecc, Ell, Ecl: the segment's mean Green-Lagrange strains "
+       "at ES, peak Ecc the most negative over the frames.</p>\n"
+       "</body></html>\n";
   return h.str();
 }
 

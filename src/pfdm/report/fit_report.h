@@ -12,11 +12,15 @@ namespace pfdm {
 
 // The key numbers (EF, twist and contraction at end-systole), the plots
 // (SVG documents, inlined), the per-frame error and clinical table and the
-// regional wall motion at end-systole.  No external resources.
+// regional wall motion at end-systole, with the strain curves and the
+// bull's-eye maps where given (report/bullseye_plot.h).  No external
+// resources.
 std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const FitAnalysis& analysis,
                           const std::string& parameters_svg,
-                          const std::string& cycle_svg);
+                          const std::string& cycle_svg,
+                          const std::string& strain_svg = "",
+                          const std::string& bullseye_svg = "");
 
 // text with & < > " escaped.
 std::string HtmlEscape(const std::string& text);

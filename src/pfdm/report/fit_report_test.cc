@@ -1,5 +1,7 @@
 #include "pfdm/report/fit_report.h"
 
+#include <cstdio>
+
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
 
@@ -59,6 +61,21 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   for (const char* external : {"src=", "href=", "<link", "@import"}) {
     EXPECT_EQ(html.find(external), std::string::npos) << external;
   }
+  // Without strain plots no caption of theirs; with them, inlined and
+  // captioned; peak GCS among the key numbers, frame 0's strain unsigned.
+  EXPECT_EQ(html.find("Bull's-eye"), std::string::npos);
+  const std::string with_maps = FitReportHtml(
+      points, fit, analysis, "<svg id='p'></svg>", "<svg id='c'></svg>",
+      "<svg id='s'></svg>", "<?xml?><svg id='b'></svg>");
+  EXPECT_NE(with_maps.find("<svg id='s'></svg>"), std::string::npos);
+  EXPECT_NE(with_maps.find("<svg id='b'></svg>"), std::string::npos);
+  EXPECT_NE(with_maps.find("model's &minus;x axis"), std::string::npos);
+  const StrainPeak gcs = PeakGcs(analysis.strain);
+  EXPECT_LT(gcs.percent, -3.0);
+  char peak[64];
+  std::snprintf(peak, sizeof(peak), "peak GCS<b>%.1f %%", gcs.percent);
+  EXPECT_NE(with_maps.find(peak), std::string::npos) << peak;
+  EXPECT_EQ(with_maps.find(">-0.0<"), std::string::npos);
 }
 
 }  // namespace

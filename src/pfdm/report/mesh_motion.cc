@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "pfdm/report/surface_strain.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -68,6 +69,26 @@ std::vector<MeshFrameMotion> MeasureMeshMotion(
       ++counted;
     }
     m.radial_contraction_percent = 100.0 * sum / counted;
+    const Eigen::Vector3d axis = (base0 - ed.points[apex]).normalized();
+    double area = 0.0;
+    for (const auto& tri : ed.triangles) {
+      const Eigen::Vector3d& p0 = ed.points[tri[0]];
+      const Eigen::Vector3d a0 = ed.points[tri[1]] - p0;
+      const Eigen::Vector3d b0 = ed.points[tri[2]] - p0;
+      const Eigen::Vector3d turn =
+          axis.cross((p0 + (a0 + b0) / 3.0) - ed.points[apex]);
+      const double weight = 0.5 * a0.cross(b0).norm();
+      // At the apex vertex the turn has no direction.
+      if (turn.norm() < 1e-9 || weight == 0.0) continue;
+      const Eigen::Vector3d& p = mesh.points[tri[0]];
+      const SurfaceStrain e = PlaneStrain(a0, b0, mesh.points[tri[1]] - p,
+                                          mesh.points[tri[2]] - p, turn, axis);
+      m.gcs_percent += weight * 100.0 * e.ecc;
+      m.gls_percent += weight * 100.0 * e.ell;
+      area += weight;
+    }
+    m.gcs_percent /= area;
+    m.gls_percent /= area;
     motion.push_back(m);
   }
   return motion;

@@ -18,6 +18,13 @@ struct MeshFrameMotion {
   // own apex-to-rim-centre line; vertices with rho0 under a fifth of the
   // largest are left out (near the apex the ratio says little).
   double radial_contraction_percent = 0.0;
+  // Global circumferential and longitudinal Green-Lagrange strain, percent:
+  // per triangle, the deformation of its plane from frame 0 (PlaneStrain of
+  // two edges), in a basis of frame 0: e_c along the turn about frame 0's
+  // apex-to-rim-centre axis (right-handed, apex to base), e_l in the plane
+  // toward the base; the mean over triangles weighted by frame-0 area.
+  double gcs_percent = 0.0;
+  double gls_percent = 0.0;
 };
 
 // frames share frames[0]'s triangles; the apex is the vertex farthest from

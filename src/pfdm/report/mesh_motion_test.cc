@@ -36,6 +36,26 @@ TEST(MeshMotionTest, ScaledCopyReadsAsItsScales) {
   EXPECT_NEAR(motion[1].longitudinal_shortening_percent, 10.0, 1e-9);
   EXPECT_NEAR(motion[1].radial_contraction_percent, 20.0, 1e-9);
   EXPECT_NEAR(motion[1].volume_ml, 0.8 * 0.8 * 0.9 * motion[0].volume_ml, 1e-9);
+  // Triangles of latitude rings: e_c nearly horizontal, (0.8^2 - 1) / 2;
+  // along the meridians a mix of 0.8 (radial) and 0.9 (axial).
+  EXPECT_NEAR(motion[0].gcs_percent, 0.0, 1e-12);
+  EXPECT_NEAR(motion[1].gcs_percent, -18.0, 0.3);
+  EXPECT_LT(motion[1].gls_percent, 100 * (0.81 - 1) / 2);
+  EXPECT_GT(motion[1].gls_percent, -18.0);
+}
+
+// A twist about the axis growing toward the rim shears but barely
+// stretches: |GCS| and |GLS| well under the shear.
+TEST(MeshMotionTest, TwistBarelyStrains) {
+  const TriangleMesh ed = Cavity();
+  TriangleMesh twisted = ed;
+  for (Eigen::Vector3d& p : twisted.points) {
+    const double angle = 0.002 * (p.z() + 40.0);  // 0.12 rad at the rim.
+    p = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()) * p;
+  }
+  const std::vector<MeshFrameMotion> motion = MeasureMeshMotion({ed, twisted});
+  EXPECT_NEAR(motion[1].gcs_percent, 0.0, 0.2);
+  EXPECT_NEAR(motion[1].gls_percent, 0.0, 0.5);
 }
 
 TEST(MeshMotionTest, ClosedMeshHasNoRimToMeasureFrom) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "pfdm/report/material_rings.h"
+#include "pfdm/report/surface_strain.h"
 
 namespace pfdm {
 namespace {
@@ -101,6 +102,10 @@ std::vector<RegionMotion> SummarizeRegions(const Model& reference,
           w * AngleAbout(from, to, axis) * kDegreesPerRadian;
       motion[r].radial_contraction_percent +=
           w * 100.0 * (1.0 - to.norm() / from.norm());
+      const SurfaceStrain strain = StrainAt(reference, current, u, v);
+      motion[r].ecc_percent += w * 100.0 * strain.ecc;
+      motion[r].ell_percent += w * 100.0 * strain.ell;
+      motion[r].ecl_percent += w * 100.0 * strain.ecl;
       weight[r] += w;
     }
   }
@@ -108,6 +113,13 @@ std::vector<RegionMotion> SummarizeRegions(const Model& reference,
     if (weight[r] == 0.0) continue;
     motion[r].rotation_deg /= weight[r];
     motion[r].radial_contraction_percent /= weight[r];
+    motion[r].ecc_percent /= weight[r];
+    motion[r].ell_percent /= weight[r];
+    motion[r].ecl_percent /= weight[r];
+    // Each sample stands for a cell of (s_max - s_min) / kLatitudeSamples
+    // in sin u and 2 pi / kLongitudeSamples in v.
+    motion[r].area_mm2 = weight[r] * (s_max - s_min) / kLatitudeSamples * 2.0 *
+                         kPi / kLongitudeSamples;
   }
   return motion;
 }

@@ -48,6 +48,15 @@ struct RegionMotion {
   // Mean of 1 - rho / rho0, percent, rho a material point's distance from
   // its ring's centroid.
   double radial_contraction_percent = 0.0;
+  // Mean Green-Lagrange strains of the region's fitted surface, percent
+  // (report/surface_strain.h): circumferential, longitudinal and their
+  // shear.  Negative Ecc and Ell are shortening.
+  double ecc_percent = 0.0;
+  double ell_percent = 0.0;
+  double ecl_percent = 0.0;
+  // The region's area on the reference (frame 0) surface, mm^2: the weight
+  // of its means in a global one.
+  double area_mm2 = 0.0;
 };
 
 // One entry per region of Regions(layout), each an area-weighted mean over

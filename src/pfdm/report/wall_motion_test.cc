@@ -60,9 +60,22 @@ TEST(WallMotionTest, UniformContractionAndLinearTwistPerSegment) {
   const std::vector<RegionMotion> motion =
       SummarizeRegions(reference, current, RegionLayout());
   ASSERT_EQ(motion.size(), 16u);
+  // Green-Lagrange: (0.8^2 - 1) / 2 along the circles of latitude; along
+  // the meridians the twist, linear in sin u (dtau/du = c cos u, c = 7
+  // degrees over 1.5 of sin u), adds 0.64 (c cos^2 u)^2 / 2 < 0.22 points
+  // and a shear 0.64 c cos^2 u / 2 < 2.7 points.
+  double area = 0.0;
   for (const RegionMotion& m : motion) {
     EXPECT_NEAR(m.radial_contraction_percent, 20.0, 1e-6);
+    EXPECT_NEAR(m.ecc_percent, -18.0, 1e-5);
+    EXPECT_GE(m.ell_percent, -18.0);
+    EXPECT_LT(m.ell_percent, -18.0 + 0.22);
+    EXPECT_GT(m.ecl_percent, 0.0);
+    EXPECT_LT(m.ecl_percent, 2.7);
+    area += m.area_mm2;
   }
+  // A sphere of radius 40 mm from sin u = -1 to 0.5: 2 pi R^2 1.5.
+  EXPECT_NEAR(area, 2 * kPi * 1600.0 * 1.5, 1e-3);
   // A sphere's area is uniform in sin u: each level's mean twist is tau at
   // the middle of its third, sin u = 0.25, -0.25, -0.75.
   auto tau_at = [](double s) { return -5.0 + 7.0 * (s + 1.0) / 1.5; };
@@ -74,6 +87,8 @@ TEST(WallMotionTest, UniformContractionAndLinearTwistPerSegment) {
        SummarizeRegions(reference, reference, RegionLayout())) {
     EXPECT_NEAR(m.rotation_deg, 0.0, 1e-12);
     EXPECT_NEAR(m.radial_contraction_percent, 0.0, 1e-9);
+    EXPECT_NEAR(m.ecc_percent, 0.0, 1e-9);
+    EXPECT_NEAR(m.ell_percent, 0.0, 1e-9);
   }
 }
 

@@ -1,0 +1,173 @@
+#include "pfdm/report/bullseye_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "pfdm/report/fit_plots.h"
+
+namespace pfdm {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegreesPerRadian = 180.0 / kPi;
+// Ring radii on the page: the apex cap inside 1, then one unit per level.
+constexpr double kCapRadius = 1.0;
+// Arc points every this many degrees: smooth at the rendered size.
+constexpr double kArcStepDeg = 2.0;
+
+double InnerRadius(RegionLevel level) {
+  return level == kApical ? kCapRadius : level == kMid ? 2.0 : 3.0;
+}
+
+// A colour-scale half range holding every value, in round steps.
+double ScaleOf(const std::vector<double>& values) {
+  double largest = 0.0;
+  for (double v : values) largest = std::max(largest, std::abs(v));
+  const double step = largest > 20 ? 10.0 : largest > 4 ? 5.0 : 1.0;
+  return std::max(step, step * std::ceil(largest / step));
+}
+
+// Light ends, so that the black labels stay legible on every segment.
+const char* PaletteOf(BullseyePalette palette) {
+  switch (palette) {
+    case BullseyePalette::kShorteningRed:
+      return "set palette defined (0 '#d6604d', 0.25 '#f4a582', 0.5 "
+             "'#f7f7f7', 0.75 '#92c5de', 1 '#4393c3')\n";
+    case BullseyePalette::kContractionRed:
+      return "set palette defined (0 '#4393c3', 0.25 '#92c5de', 0.5 "
+             "'#f7f7f7', 0.75 '#f4a582', 1 '#d6604d')\n";
+    case BullseyePalette::kPurpleGreen:
+      return "set palette defined (0 '#9970ab', 0.25 '#c2a5cf', 0.5 "
+             "'#f7f7f7', 0.75 '#a6dba0', 1 '#5aae61')\n";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::pair<double, double> BullseyeSpanDeg(const WallRegion& region) {
+  const double width = (region.v_end - region.v_begin) * kDegreesPerRadian;
+  const double begin =
+      90.0 - width / 2 + (region.v_begin + kPi) * kDegreesPerRadian;
+  return {begin, begin + width};
+}
+
+std::string BullseyeSvg(const std::vector<WallRegion>& regions,
+                        const std::vector<BullseyeMap>& maps) {
+  const int panels = static_cast<int>(maps.size());
+  std::ostringstream script;
+  script.precision(5);
+  // The white dot at the centre makes gnuplot draw the colour box.
+  const PlotData centre{"centre", {{0.0, 0.0, 0.0}}};
+  script << "set multiplot layout 1," << panels
+         << " margins 0.01,0.97,0.04,0.88 spacing 0.05,0\n"
+         << "set size ratio -1\nunset border\nunset tics\nunset key\n"
+         << "set xrange [-4.2:4.2]\nset yrange [-4.2:4.2]\n";
+  for (int p = 0; p < panels; ++p) {
+    const BullseyeMap& map = maps[p];
+    const double scale = ScaleOf(map.values);
+    script << "unset object\nunset label\n"
+           << PaletteOf(map.palette) << "set cbrange [" << -scale << ':'
+           << scale << "]\n"
+           << "set cbtics " << scale / 2 << " font 'sans,9'\n"
+           << "set title '" << map.title << "' font 'sans,13'\n";
+    for (size_t r = 0; r < regions.size() && r < map.values.size(); ++r) {
+      const WallRegion& region = regions[r];
+      const auto [begin, end] = BullseyeSpanDeg(region);
+      const double inner = InnerRadius(region.level), outer = inner + 1.0;
+      const int steps =
+          std::max(2, static_cast<int>(std::ceil((end - begin) / kArcStepDeg)));
+      script << "set object polygon";
+      auto point = [&](double radius, double deg, const char* word) {
+        script << ' ' << word << ' '
+               << radius * std::cos(deg / kDegreesPerRadian) << ','
+               << radius * std::sin(deg / kDegreesPerRadian);
+      };
+      for (int i = 0; i <= steps; ++i) {
+        point(outer, begin + (end - begin) * i / steps, i == 0 ? "from" : "to");
+      }
+      for (int i = steps; i >= 0; --i) {
+        point(inner, begin + (end - begin) * i / steps, "to");
+      }
+      point(outer, begin, "to");
+      script << " fc palette cb " << map.values[r]
+             << " fs solid 1.0 border lc rgb '#404040' lw 1 front\n";
+      const double middle = (begin + end) / 2 / kDegreesPerRadian;
+      const double radius = inner + 0.5;
+      char value[32];
+      std::snprintf(value, sizeof(value), "%.1f", map.values[r]);
+      script << "set label '" << value << "' at " << radius * std::cos(middle)
+             << ',' << radius * std::sin(middle)
+             << " center front font 'sans,10' offset 0,-0.35\n"
+             << "set label '" << region.segment << "' at "
+             << radius * std::cos(middle) << ',' << radius * std::sin(middle)
+             << " center front font 'sans,8' tc rgb '#333333' offset 0,0.55\n";
+    }
+    script << "set label 'apex' at 0,0 center front font 'sans,8' tc rgb "
+              "'#777777'\n"
+           << "set colorbox vertical user origin " << (p + 1.0) / panels - 0.035
+           << ",0.18 size 0.012,0.6\n"
+           << "plot $centre using 1:2:3 with dots lc palette notitle\n";
+  }
+  script << "unset multiplot\n";
+  return RenderSvgText("bullseye.svg", {centre}, script.str(), 400 * panels,
+                       430);
+}
+
+std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
+  const int es = analysis.ejection_fraction.es_frame;
+  BullseyeMap ecc{"peak Ecc, %", PeakRegionEcc(analysis.region_motion),
+                  BullseyePalette::kShorteningRed};
+  BullseyeMap radial{
+      "radial contraction at ES, %", {}, BullseyePalette::kContractionRed};
+  BullseyeMap rotation{
+      "rotation at ES, degrees", {}, BullseyePalette::kPurpleGreen};
+  if (es < static_cast<int>(analysis.region_motion.size())) {
+    for (const RegionMotion& m : analysis.region_motion[es]) {
+      radial.values.push_back(m.radial_contraction_percent);
+      rotation.values.push_back(m.rotation_deg);
+    }
+  }
+  return {ecc, radial, rotation};
+}
+
+std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain) {
+  PlotData block{"strain", {}};
+  for (size_t t = 0; t < strain.size(); ++t) {
+    const GlobalStrain& g = strain[t];
+    block.rows.push_back(
+        {static_cast<double>(t), g.gcs_percent, g.level_ecc_percent[kBasal],
+         g.level_ecc_percent[kMid], g.level_ecc_percent[kApical], g.gls_percent,
+         g.level_ell_percent[kBasal], g.level_ell_percent[kMid],
+         g.level_ell_percent[kApical]});
+  }
+  std::ostringstream script;
+  script << "set multiplot layout 1,2 margins 0.06,0.98,0.14,0.82 "
+            "spacing 0.08,0.1 title 'Lagrangian strain over the cycle "
+            "(Green-Lagrange, against frame 0)' font 'sans,15'\n"
+         << "set grid lc rgb '#dddddd'\nset xlabel 'frame'\n"
+         << "set ylabel 'percent'\nset style data linespoints\n"
+         << "set pointsize 0.6\n"
+         << "set key bottom left opaque font 'sans,10' samplen 2\n";
+  const char* panels[][2] = {{"circumferential Ecc", "GCS"},
+                             {"longitudinal Ell", "GLS"}};
+  for (int p = 0; p < 2; ++p) {
+    const int first = 2 + 4 * p;
+    script << "set title '" << panels[p][0] << "'\n"
+           << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
+           << "$strain using 1:" << first << " lc rgb '#222222' pt 5 lw 2 "
+           << "title '" << panels[p][1] << " (global)', "
+           << "'' using 1:" << first + 1
+           << " lc rgb '#2471a3' pt 7 title 'basal', "
+           << "'' using 1:" << first + 2
+           << " lc rgb '#27ae60' pt 7 title 'mid', "
+           << "'' using 1:" << first + 3
+           << " lc rgb '#c0392b' pt 7 title 'apical'\n";
+  }
+  script << "unset multiplot\n";
+  return RenderSvgText("strain.svg", {block}, script.str(), 1200, 380);
+}
+
+}  // namespace pfdm

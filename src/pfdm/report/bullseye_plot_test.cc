@@ -1,0 +1,74 @@
+#include "pfdm/report/bullseye_plot.h"
+
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos;
+       at = text.find(what, at + 1)) {
+    ++n;
+  }
+  return n;
+}
+
+// The AHA's page layout: segment 1 (and 7) centred at the top, 2 upper
+// left, 4 at the bottom; the apical 13 at the top, 14 left, 16 right.
+TEST(BullseyePlotTest, SegmentsSitWhereTheAhaDrawsThem) {
+  const std::vector<WallRegion> regions = Regions(RegionLayout());
+  auto centre = [&](int segment) {
+    const auto [begin, end] = BullseyeSpanDeg(regions[segment - 1]);
+    EXPECT_GT(end, begin) << segment;
+    return (begin + end) / 2;
+  };
+  EXPECT_NEAR(centre(1), 90.0, 1e-9);
+  EXPECT_NEAR(centre(2), 150.0, 1e-9);
+  EXPECT_NEAR(centre(4), 270.0, 1e-9);
+  EXPECT_NEAR(centre(7), 90.0, 1e-9);
+  EXPECT_NEAR(centre(13), 90.0, 1e-9);
+  EXPECT_NEAR(centre(14), 180.0, 1e-9);
+  EXPECT_NEAR(centre(16), 360.0, 1e-9);
+  EXPECT_NEAR(BullseyeSpanDeg(regions[0]).first, 60.0, 1e-9);
+  EXPECT_NEAR(BullseyeSpanDeg(regions[12]).first, 45.0, 1e-9);
+}
+
+// Every segment drawn with its number and value, in each panel, with a
+// colour box; the most negative value of a shortening map takes the scale's
+// red, rgb(214, 96, 77).
+TEST(BullseyePlotTest, PanelsLabelEverySegment) {
+  const std::vector<WallRegion> regions = Regions(RegionLayout());
+  BullseyeMap ecc{"peak Ecc, %", {}, BullseyePalette::kShorteningRed};
+  BullseyeMap rotation{"rotation, degrees", {}, BullseyePalette::kPurpleGreen};
+  for (size_t r = 0; r < regions.size(); ++r) {
+    ecc.values.push_back(-20.0 + 0.25 * r);
+    rotation.values.push_back(-7.0 + r);
+  }
+  const std::string svg = BullseyeSvg(regions, {ecc, rotation});
+  EXPECT_NE(svg.find("peak Ecc, %"), std::string::npos);
+  EXPECT_NE(svg.find("rotation, degrees"), std::string::npos);
+  EXPECT_EQ(Count(svg, ">-20.0<"), 1);
+  EXPECT_EQ(Count(svg, ">-16.2<"), 1);  // Segment 16, -16.25.
+  EXPECT_EQ(Count(svg, ">8.0<"), 1);    // Rotation of segment 16.
+  EXPECT_EQ(Count(svg, ">16<"), 2);     // Its number, once per panel.
+  EXPECT_EQ(Count(svg, ">apex<"), 2);
+  // Segment borders: 16 per panel.
+  EXPECT_EQ(Count(svg, "stroke='rgb( 64,  64,  64)'"), 32);
+  EXPECT_NE(svg.find("rgb(214,  96,  77)"), std::string::npos);
+}
+
+TEST(BullseyePlotTest, StrainCurvesHaveGlobalAndLevels) {
+  std::vector<GlobalStrain> strain(3);
+  strain[1].gcs_percent = -10.0;
+  strain[2].gcs_percent = -18.0;
+  strain[2].level_ecc_percent = {-15.0, -18.0, -21.0};
+  const std::string svg = StrainCurvesSvg(strain);
+  for (const char* text : {"circumferential Ecc", "longitudinal Ell",
+                           "GCS (global)", "GLS (global)", "basal", "apical"}) {
+    EXPECT_NE(svg.find(text), std::string::npos) << text;
+  }
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,47 @@
+// Lagrangian strain of a deforming surface's tangent plane: the regional
+// strains Ecc, Ell and Ecl that tagged MRI reports, measured on material
+// points of the fitted model (or of any surface whose points are tracked).
+#ifndef PFDM_REPORT_SURFACE_STRAIN_H_
+#define PFDM_REPORT_SURFACE_STRAIN_H_
+
+#include "Eigen/Core"
+#include "pfdm/model/model.h"
+
+namespace pfdm {
+
+// Green-Lagrange strain components (fractions, not percent) in the
+// reference plane's circumferential / longitudinal basis.
+struct SurfaceStrain {
+  double ecc = 0.0;
+  double ell = 0.0;
+  double ecl = 0.0;
+};
+
+// Two reference tangent vectors a0, b0 (any pair spanning the plane, e.g.
+// X_u and X_v, or a triangle's edges) deform to a, b.  The strain is
+// reported in the orthonormal basis (e_c, e_l) of the reference plane:
+// e_c along `circumferential` projected on the plane, e_l perpendicular to
+// e_c in the plane, on the side of `longitudinal` (apex to base).
+//
+// With G the 2x2 matrix whose columns are a0 and b0 in (e_c, e_l), the
+// surface deformation gradient is F = [a b] G^-1 (3x2), so
+//   C = F^T F = G^-T g G^-1,  g = [a.a a.b; a.b b.b]  (frame t's metric),
+//   E = (C - I) / 2;  Ecc = E_00, Ell = E_11, Ecl = E_01.
+// Only the metric of the deformed vectors enters: a rigid motion of the
+// deformed surface changes nothing.
+SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
+                          const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                          const Eigen::Vector3d& circumferential,
+                          const Eigen::Vector3d& longitudinal);
+
+// The strain at material point (u, v) of `current` against `reference`
+// (frame 0): tangents X_u, X_v by central differences of WorldPoint;
+// e_c along X_v (v counter-clockwise about the model's +z), e_l toward
+// increasing u, from the apex to the base.  Not defined at the apex pole,
+// where X_v vanishes.
+SurfaceStrain StrainAt(const Model& reference, const Model& current, double u,
+                       double v);
+
+}  // namespace pfdm
+
+#endif  // PFDM_REPORT_SURFACE_STRAIN_H_

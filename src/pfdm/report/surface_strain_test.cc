@@ -1,0 +1,108 @@
+#include "pfdm/report/surface_strain.h"
+
+#include <cmath>
+
+#include "Eigen/Geometry"
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+Model Sphere(double radius_fraction) {
+  FunctionValues values = DefaultFunctionValues();
+  values[kA0] = 50.0;
+  values[kA1] = values[kA2] = values[kA3] = radius_fraction;
+  return Model::Uniform(ModelConfig::Paper(17), values);
+}
+
+// Central differences of a piecewise-linear model: 1e-8 is their error.
+constexpr double kTolerance = 1e-7;
+
+TEST(SurfaceStrainTest, ScalingASphereStrainsBothWaysAlike) {
+  const Model reference = Sphere(0.8);
+  const double s = 0.85;
+  const Model scaled = Sphere(0.8 * s);
+  for (double u : {-1.2, -0.4, 0.0, 0.45}) {
+    for (double v : {-2.9, 0.3, 1.7}) {
+      const SurfaceStrain e = StrainAt(reference, scaled, u, v);
+      EXPECT_NEAR(e.ecc, (s * s - 1) / 2, kTolerance) << u << " " << v;
+      EXPECT_NEAR(e.ell, (s * s - 1) / 2, kTolerance) << u << " " << v;
+      EXPECT_NEAR(e.ecl, 0.0, kTolerance) << u << " " << v;
+    }
+  }
+}
+
+// tau(u) = c u turns a ring of the sphere by c u about its axis: the
+// longitudinal line element e_l gains cos(u) c along e_c, so
+// C_cc = 1, C_ll = 1 + (c cos u)^2, C_cl = c cos u.
+TEST(SurfaceStrainTest, ATwistGradientShearsCircumferentialLongitudinal) {
+  const Model reference = Sphere(0.8);
+  Model twisted = reference;
+  const double c = 0.2;
+  const KnotGrid& grid = twisted.config.Grid();
+  for (int k = 0; k < twisted.config.num_knots; ++k) {
+    twisted.state.knots[k][kTau] = c * grid.KnotU(k);
+  }
+  for (double u : {-0.9, 0.1, 0.4}) {
+    const SurfaceStrain e = StrainAt(reference, twisted, u, 0.7);
+    const double shear = c * std::cos(u);
+    EXPECT_NEAR(e.ecc, 0.0, kTolerance) << u;
+    EXPECT_NEAR(e.ell, shear * shear / 2, kTolerance) << u;
+    EXPECT_NEAR(e.ecl, shear / 2, kTolerance) << u;
+  }
+}
+
+TEST(SurfaceStrainTest, RigidMotionStrainsNothing) {
+  FunctionValues values = DefaultFunctionValues();
+  values[kA0] = 50.0;
+  values[kA1] = 0.5;
+  values[kA2] = 0.45;
+  values[kA3] = 0.9;
+  const Model reference = Model::Uniform(ModelConfig::Paper(17), values);
+  Model moved = reference;
+  moved.state.center = {12.0, -7.0, 30.0};
+  const Eigen::Quaterniond q(
+      Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 2, -0.5).normalized()));
+  moved.state.quaternion = {q.w(), q.x(), q.y(), q.z()};
+  for (double u : {-1.3, -0.2, 0.5}) {
+    const SurfaceStrain e = StrainAt(reference, moved, u, 2.2);
+    EXPECT_NEAR(e.ecc, 0.0, kTolerance) << u;
+    EXPECT_NEAR(e.ell, 0.0, kTolerance) << u;
+    EXPECT_NEAR(e.ecl, 0.0, kTolerance) << u;
+  }
+}
+
+// A triangle in an oblique plane stretched by 10 % along the
+// circumferential direction and rotated: Ecc = (1.1^2 - 1) / 2, whichever
+// edges span it.
+TEST(SurfaceStrainTest, PlaneStrainOfATriangleIsInItsOwnBasis) {
+  const Eigen::Matrix3d tilt =
+      Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 1, 0).normalized())
+          .toRotationMatrix();
+  const Eigen::Vector3d c = tilt * Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d l = tilt * Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d a0 = 3 * c + 1 * l, b0 = -1 * c + 2 * l;
+  const Eigen::Matrix3d spin =
+      Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.2, -1, 0.4).normalized())
+          .toRotationMatrix();
+  auto deform = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    return spin * (x + 0.1 * x.dot(c) * c);
+  };
+  const SurfaceStrain e =
+      PlaneStrain(a0, b0, deform(a0), deform(b0), c + 0.3 * c.cross(l), l);
+  EXPECT_NEAR(e.ecc, (1.1 * 1.1 - 1) / 2, 1e-12);
+  EXPECT_NEAR(e.ell, 0.0, 1e-12);
+  EXPECT_NEAR(e.ecl, 0.0, 1e-12);
+  // e_l on the side of `longitudinal`: flipping it flips the shear only.
+  auto shear = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    return x + 0.2 * x.dot(l) * c;
+  };
+  const SurfaceStrain up = PlaneStrain(a0, b0, shear(a0), shear(b0), c, l);
+  const SurfaceStrain down = PlaneStrain(a0, b0, shear(a0), shear(b0), c, -l);
+  EXPECT_NEAR(up.ecl, 0.1, 1e-12);
+  EXPECT_NEAR(down.ecl, -0.1, 1e-12);
+  EXPECT_NEAR(up.ell, down.ell, 1e-12);
+}
+
+}  // namespace
+}  // namespace pfdm
