@@ -112,8 +112,8 @@ std::string BullseyeSvg(const std::vector<WallRegion>& regions,
            << "plot $centre using 1:2:3 with dots lc palette notitle\n";
   }
   script << "unset multiplot\n";
-  return RenderSvgText("bullseye.svg", {centre}, script.str(), 400 * panels,
-                       430);
+  return RenderSvgString("bullseye.svg", {centre}, script.str(), 400 * panels,
+                         430);
 }
 
 std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
@@ -167,7 +167,7 @@ std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain) {
            << " lc rgb '#c0392b' pt 7 title 'apical'\n";
   }
   script << "unset multiplot\n";
-  return RenderSvgText("strain.svg", {block}, script.str(), 1200, 380);
+  return RenderSvgString("strain.svg", {block}, script.str(), 1200, 380);
 }
 
 }  // namespace pfdm
