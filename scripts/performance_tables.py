@@ -172,14 +172,22 @@ def cost_table(document):
     rows = []
     for key, b in medians(document).items():
         if key in names:
-            rows.append([names[key], number(b["ns_per_point"], 1)])
+            # Counters with kInvert come out in seconds per point.
+            rows.append([names[key], number(1e9 * b["ns_per_point"], 1)])
     return table(["cost function", "ns per point"], rows)
 
 
 def job_table(document, batch):
     rows = []
+    closest = []
     for key, b in medians(document).items():
         a = args(key)
+        if key.startswith("BM_ClosestMaterialPoints"):
+            closest.append([
+                "exhaustive" if a["exhaustive"] else "early stop",
+                str(a["threads"]), number(b["real_time"]),
+                number(1e6 * b["us_per_point"], 2)])
+            continue
         case = ("phantom, {:,} tags x 5 frames".format(a["tags"])
                 if key.startswith("BM_PhantomJob") else
                 "biv-me patient 1, LV endo contours, 25 frames")
@@ -196,6 +204,11 @@ def job_table(document, batch):
                   "frame 0 ms (closest points)",
                   "later frame ms (minimizer)", "outputs ms",
                   "frame 0 / later frame", "outputs share"], rows)
+    if closest:
+        text += ("\n\nFrame 0's first closest-point search alone (20,000 "
+                 "tags against the initialized model):\n\n")
+        text += table(["search", "threads", "ms", "CPU us per point"],
+                      closest)
     if batch:
         text += "\n\n`pfdm batch` on %d phantom cases of {:,} tags x 5 " \
                 "frames (%s):\n\n".format(batch["tags"]) % (
@@ -217,11 +230,14 @@ def solvers_table(document):
             "%s (%s)" % ("{:,}".format(int(b["jacobian_evals_to_rms"])),
                          number(b["evals_to_rms_vs_direct"])),
             number(b["time_to_rms_vs_direct"], 2),
-            number(b["time_vs_direct"], 2)]))
+            number(b["time_vs_direct"], 2),
+            "yes" if b["at_rest"] else "no (step cap)",
+            "%.4f" % b["rms_vs_direct"]]))
     rows.sort(key=lambda r: r[:2])
-    return table(["points", "solver", "steps to rest",
+    return table(["points", "solver", "steps",
                   "Jacobian evals to RMS (vs direct)",
-                  "time to RMS vs direct", "time to rest vs direct"],
+                  "time to RMS vs direct", "time to the end vs direct",
+                  "at rest", "final RMS vs direct"],
                  [r[-1] for r in rows])
 
 
