@@ -1,7 +1,8 @@
 // ns per data point for the residual alone, the autodiff Jacobian and the
 // analytic Jacobian.  Arg(0): residual only; Arg(1): with Jacobians.
 // BM_PointGroup: the same per point of a 512-point group as a tracked frame
-// uses it (two knots' free entries varied, square-root form).
+// uses it (two knots' free entries varied, square-root form); Arg(2): the
+// pose (centre and quaternion) varied as well, as tracked frames now fit it.
 #include <memory>
 #include <random>
 #include <vector>
@@ -90,22 +91,33 @@ void BM_PointGroup(benchmark::State& state) {
   std::mt19937 random(1);
   std::uniform_real_distribution<double> u(-1.5, 0.5), v(-3.1, 3.1),
       weight(0.0, 1.0);
+  // Data spread about the centre: data at the centre itself would make
+  // the residual parallel to the quaternion's radial column (R(q) s is
+  // quadratic in q), a rank-deficient [J r] that only the QR fallback of
+  // square_root_form.cc takes, and no fit poses.
+  std::uniform_real_distribution<double> offset(-40.0, 40.0);
   std::vector<PointSample> samples;
   for (int i = 0; i < kGroup; ++i) {
-    samples.emplace_back(Eigen::Vector3d(1, 2, 3), u(random), v(random),
-                         weight(random));
+    const Eigen::Vector3d data(1 + offset(random), 2 + offset(random),
+                               3 + offset(random));
+    samples.emplace_back(data, u(random), v(random), weight(random));
   }
+  // Arg 2: the pose varies too, as on every frame since the gauge fix.
+  const bool pose = state.range(0) == 2;
   const PointGroupResidual group(std::move(samples), config.FreeMask(), true,
                                  {nullptr, &knot0, &knot1},
-                                 {false, false, false, true, true});
+                                 {pose, pose, false, true, true});
   const double* parameters[] = {fixture.center, fixture.quaternion,
                                 fixture.globals.data(), knot0.parameters(),
                                 knot1.parameters()};
   std::vector<double> residuals(group.num_residuals());
   std::vector<double> jacobian0(group.num_residuals() * knot0.size());
   std::vector<double> jacobian1(jacobian0.size());
-  double* jacobians[] = {nullptr, nullptr, nullptr, jacobian0.data(),
-                         jacobian1.data()};
+  std::vector<double> jacobian_center(group.num_residuals() * 3);
+  std::vector<double> jacobian_quaternion(group.num_residuals() * 4);
+  double* jacobians[] = {pose ? jacobian_center.data() : nullptr,
+                         pose ? jacobian_quaternion.data() : nullptr, nullptr,
+                         jacobian0.data(), jacobian1.data()};
   for (auto _ : state) {
     group.Evaluate(parameters, residuals.data(),
                    state.range(0) ? jacobians : nullptr);
@@ -120,7 +132,7 @@ void BM_PointGroup(benchmark::State& state) {
 }
 
 BENCHMARK(BM_Analytic)->Arg(0)->Arg(1);
-BENCHMARK(BM_PointGroup)->Arg(0)->Arg(1);
+BENCHMARK(BM_PointGroup)->Arg(0)->Arg(1)->Arg(2);
 BENCHMARK(BM_Autodiff)->Arg(0)->Arg(1);
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "Eigen/Dense"
 #include "ceres/jet.h"
@@ -48,8 +49,11 @@ double LongitudeAround(const Model& model, const Eigen::Vector3d& point,
   return std::atan2(std::sin(angle) / f[kA2], std::cos(angle) / f[kA1]);
 }
 
+// Gauss-Newton converges linearly here (the data sit off the surface), at a
+// rate near distance / radius of curvature, so once a step is shorter than
+// step_tolerance_mm what is left is a few percent of that.
 MaterialPoint Refine(const Model& model, const Eigen::Vector3d& target,
-                     MaterialPoint start) {
+                     MaterialPoint start, double step_tolerance_mm) {
   using Jet2 = ceres::Jet<double, 2>;
   MaterialPoint best = start;
   double best_cost =
@@ -68,6 +72,7 @@ MaterialPoint Refine(const Model& model, const Eigen::Vector3d& target,
     const Eigen::Vector2d gradient = jacobian.transpose() * residual;
     if (gradient.norm() < 1e-12) break;
     bool improved = false;
+    double step_mm = 0.0;
     for (int attempt = 0; attempt < 8 && !improved; ++attempt) {
       Eigen::Matrix2d damped = normal;
       damped.diagonal() += lambda * (normal.diagonal().array() + 1e-9).matrix();
@@ -82,11 +87,15 @@ MaterialPoint Refine(const Model& model, const Eigen::Vector3d& target,
         best_cost = cost;
         lambda = std::max(lambda * 0.3, 1e-9);
         improved = true;
+        step_mm = (jacobian * delta).norm();
       } else {
         lambda *= 10.0;
       }
     }
-    if (!improved) break;
+    // Converged: further steps would only be rejected (each costing up to
+    // eight evaluations) or move the point by less than anything downstream
+    // can see.
+    if (!improved || step_mm < step_tolerance_mm) break;
   }
   return best;
 }
@@ -146,7 +155,8 @@ Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v) {
 }
 
 std::vector<MaterialPoint> ClosestMaterialPoints(
-    const Model& model, const std::vector<Eigen::Vector3d>& points) {
+    const Model& model, const std::vector<Eigen::Vector3d>& points,
+    const CorrespondenceOptions& options) {
   SampleCloud cloud;
   std::vector<MaterialPoint> samples;
   cloud.points.reserve(kGridU * kGridV);
@@ -164,16 +174,34 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
   tree.buildIndex();
 
   std::vector<MaterialPoint> result(points.size());
-  for (size_t i = 0; i < points.size(); ++i) {
-    unsigned int nearest = 0;
-    double distance_squared = 0.0;
-    tree.knnSearch(points[i].data(), 1, &nearest, &distance_squared);
-    MaterialPoint start = samples[nearest];
-    if (nearest < static_cast<unsigned int>(kGridV)) {
-      start.v = LongitudeAround(model, points[i], start.u);
+  const auto refine_range = [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      unsigned int nearest = 0;
+      double distance_squared = 0.0;
+      tree.knnSearch(points[i].data(), 1, &nearest, &distance_squared);
+      MaterialPoint start = samples[nearest];
+      if (nearest < static_cast<unsigned int>(kGridV)) {
+        start.v = LongitudeAround(model, points[i], start.u);
+      }
+      result[i] = Refine(model, points[i], start, options.step_tolerance_mm);
     }
-    result[i] = Refine(model, points[i], start);
+  };
+  // Threads only pay for themselves past a few hundred points (a point
+  // costs ~10 us).
+  const size_t num_threads = std::clamp<size_t>(
+      std::min<size_t>(options.num_threads, points.size() / 256), 1, 64);
+  if (num_threads == 1) {
+    refine_range(0, points.size());
+    return result;
   }
+  std::vector<std::thread> threads;
+  const size_t chunk = (points.size() + num_threads - 1) / num_threads;
+  for (size_t begin = chunk; begin < points.size(); begin += chunk) {
+    threads.emplace_back(refine_range, begin,
+                         std::min(points.size(), begin + chunk));
+  }
+  refine_range(0, std::min(points.size(), chunk));
+  for (std::thread& thread : threads) thread.join();
   return result;
 }
 

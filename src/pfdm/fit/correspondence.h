@@ -23,11 +23,21 @@ Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u, const T& v);
 // the cavity.  At the apex pole, where d/dv vanishes, the axis direction -z.
 Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v);
 
+struct CorrespondenceOptions {
+  // Points are split into this many contiguous chunks, one per thread; the
+  // result does not depend on it.
+  int num_threads = 1;
+  // A refinement step that moves the model point by less than this (mm)
+  // ends the search for that point; 0 runs every step until none improves.
+  double step_tolerance_mm = 1e-8;
+};
+
 // For each point, the (u, v) in [u_min, u_max] x [-pi, pi) whose model point
 // is nearest: the nearest sample of a (u, v) grid, then a few damped
 // Gauss-Newton steps on |x(u, v) - p|^2.
 std::vector<MaterialPoint> ClosestMaterialPoints(
-    const Model& model, const std::vector<Eigen::Vector3d>& points);
+    const Model& model, const std::vector<Eigen::Vector3d>& points,
+    const CorrespondenceOptions& options = {});
 
 }  // namespace pfdm
 

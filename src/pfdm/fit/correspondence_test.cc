@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/fit/initialization.h"
 #include "pfdm/phantom/phantom.h"
 
 namespace pfdm {
@@ -62,6 +63,53 @@ TEST(CorrespondenceTest, NormalIsUnitAndOrthogonalToTheSurface) {
   // At the apex pole the normal is the axis pointing away from the base.
   EXPECT_TRUE(SurfaceNormal(model, -M_PI / 2, 0.0)
                   .isApprox(-model.Rotation().col(2), 1e-9));
+}
+
+// The search stops once a step moves the model point by less than
+// step_tolerance_mm; running every step instead (tolerance 0, the search as
+// it was before the early stop) must find the same material points, on the
+// truth and on a frame-0 start far from the data, and threads must not
+// change a bit of the result.
+TEST(CorrespondenceTest, EarlyStopAndThreadsFindTheSameMaterialPoints) {
+  PhantomOptions phantom_options;
+  phantom_options.num_points = 3000;
+  phantom_options.num_frames = 5;
+  const Phantom phantom = MakePhantom(phantom_options);
+  std::vector<Eigen::Vector3d> points;
+  for (const DataPoint& p : phantom.points.frames[3].points) {
+    points.push_back(p.position);
+  }
+  const Model start = InitializeModel(phantom.truth[3].config, points, {});
+  for (const Model& model : {phantom.truth[3], start}) {
+    CorrespondenceOptions exhaustive;
+    exhaustive.step_tolerance_mm = 0.0;
+    const std::vector<MaterialPoint> reference =
+        ClosestMaterialPoints(model, points, exhaustive);
+    const std::vector<MaterialPoint> found =
+        ClosestMaterialPoints(model, points);
+    CorrespondenceOptions threaded;
+    threaded.num_threads = 2;
+    const std::vector<MaterialPoint> found_threaded =
+        ClosestMaterialPoints(model, points, threaded);
+    double worst_mm = 0.0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      // 1e-6 mm on the model: a thousandth of the data's noise
+      // (0.5 mm) to the power of three.
+      worst_mm =
+          std::max(worst_mm, (model.WorldPoint(found[i].u, found[i].v) -
+                              model.WorldPoint(reference[i].u, reference[i].v))
+                                 .norm());
+      // Distances to the data agree to 1e-9 mm.
+      EXPECT_NEAR(
+          (model.WorldPoint(found[i].u, found[i].v) - points[i]).norm(),
+          (model.WorldPoint(reference[i].u, reference[i].v) - points[i]).norm(),
+          1e-9)
+          << i;
+      EXPECT_EQ(found_threaded[i].u, found[i].u) << i;
+      EXPECT_EQ(found_threaded[i].v, found[i].v) << i;
+    }
+    EXPECT_LT(worst_mm, 1e-6);
+  }
 }
 
 }  // namespace

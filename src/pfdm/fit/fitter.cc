@@ -57,12 +57,14 @@ std::vector<Eigen::Vector3d> Positions(const Frame& frame) {
 // and returns how far (mm) the farthest one moved on the model.
 double UpdateClosest(const Model& model,
                      const std::vector<Eigen::Vector3d>& points,
-                     const std::vector<size_t>& which,
+                     const std::vector<size_t>& which, int num_threads,
                      std::vector<MaterialPoint>* material) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
+  CorrespondenceOptions correspondence;
+  correspondence.num_threads = num_threads;
   const std::vector<MaterialPoint> closest =
-      ClosestMaterialPoints(model, subset);
+      ClosestMaterialPoints(model, subset, correspondence);
   double moved = 0.0;
   for (size_t j = 0; j < which.size(); ++j) {
     MaterialPoint& old = (*material)[which[j]];
@@ -193,7 +195,13 @@ SequenceFit FitSequence(const PointSequence& sequence,
         unknown.push_back(i);
       }
     }
-    UpdateClosest(model, points, unknown, &fit.material);
+    auto closest_start = std::chrono::steady_clock::now();
+    UpdateClosest(model, points, unknown, options.solver.num_threads,
+                  &fit.material);
+    fit.correspondence_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                      closest_start)
+            .count();
     std::vector<bool> sliding(points.size(), false);
     for (size_t i : unknown) sliding[i] = true;
 
@@ -244,7 +252,13 @@ SequenceFit FitSequence(const PointSequence& sequence,
       }
       if (unknown.empty()) break;
       if (reference) SpanAxialExtent(points, options, &model);
-      const double moved = UpdateClosest(model, points, unknown, &fit.material);
+      closest_start = std::chrono::steady_clock::now();
+      const double moved = UpdateClosest(
+          model, points, unknown, options.solver.num_threads, &fit.material);
+      fit.correspondence_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                        closest_start)
+              .count();
       if (moved < options.correspondence_tolerance_mm) break;
     }
     recorder.Finish();

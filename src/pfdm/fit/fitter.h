@@ -40,6 +40,8 @@ struct FrameFit {
   double jacobian_seconds = 0.0;       // Summed over the solver's iterations.
   double linear_solver_seconds = 0.0;  // Likewise.
   double minimizer_seconds = 0.0;      // Likewise; see SolverReport.
+  // Closest material points of the untracked points, over the rounds.
+  double correspondence_seconds = 0.0;
   std::string termination;
   // Every solver iteration of every correspondence round, numbered on.
   std::vector<SolverTracePoint> trace;

@@ -22,6 +22,12 @@ struct VtkPolyData {
 
 std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title);
 
+// Appends value as printf's %.9g would (a nanometre on a heart-sized model;
+// ParaView reads any precision) and an int in decimal, without a stream:
+// formatting through std::ostream was most of the time of writing outputs.
+void AppendVtkNumber(double value, std::string* out);
+void AppendVtkNumber(int value, std::string* out);
+
 }  // namespace pfdm
 
 #endif  // PFDM_IO_VTK_WRITER_H_

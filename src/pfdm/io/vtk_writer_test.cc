@@ -1,6 +1,8 @@
 #include "pfdm/io/vtk_writer.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -92,6 +94,26 @@ TEST(VtkWriterTest, WritesNineSignificantDigits) {
   EXPECT_EQ(vtk.words[vtk.After("POINTS") + 3], "-123456.789");
   EXPECT_EQ(vtk.words[vtk.After("POINTS") + 4], "1e-20");
   EXPECT_EQ(vtk.words.back(), "0.666666667");
+}
+
+TEST(VtkWriterTest, NumbersAreFormattedAsPrintfWould) {
+  // The files' text did not change when the writers left std::ostream:
+  // every value as %.9g, every index as %d.
+  const std::vector<double> values = {
+      0.0,      -0.0, 1.0,       -2.5,         0.1,        1.0 / 3,      1e-5,
+      -1.25e-7, 1e20, 123456789, 1234567890.5, M_PI * 100, -42.000000001};
+  for (double value : values) {
+    char expected[32];
+    std::snprintf(expected, sizeof(expected), "%.9g", value);
+    std::string text;
+    AppendVtkNumber(value, &text);
+    EXPECT_EQ(text, expected) << value;
+  }
+  for (int value : {0, 7, -3, 2147483647}) {
+    std::string text;
+    AppendVtkNumber(value, &text);
+    EXPECT_EQ(text, std::to_string(value));
+  }
 }
 
 TEST(VtkWriterTest, LeavesOutEmptySections) {

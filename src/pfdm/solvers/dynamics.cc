@@ -441,6 +441,7 @@ SolverReport SolveDamped(ceres::Problem* problem,
   solver_options.min_relative_decrease = 0.0;
   solver_options.max_num_line_search_step_size_iterations = 0;
   solver_options.linear_solver_type = options.linear_solver;
+  solver_options.sparse_linear_algebra_library_type = options.sparse_library;
   solver_options.num_threads = options.num_threads;
   solver_options.max_num_iterations = options.max_steps;
   // Rest is the callback's to decide; Ceres stops only on a step lost in

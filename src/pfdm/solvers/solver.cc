@@ -87,6 +87,7 @@ SolverReport SolveDirect(ceres::Problem* problem,
     solver_options.update_state_every_iteration = true;
   }
   solver_options.linear_solver_type = options.linear_solver;
+  solver_options.sparse_linear_algebra_library_type = options.sparse_library;
   solver_options.max_num_iterations = options.max_iterations;
   solver_options.num_threads = options.num_threads;
   solver_options.function_tolerance = 1e-9;

@@ -42,6 +42,13 @@ struct SolverOptions {
   int max_iterations = 100;
   int num_threads = 1;
   ceres::LinearSolverType linear_solver = ceres::SPARSE_NORMAL_CHOLESKY;
+  // The sparse Cholesky behind SPARSE_NORMAL_CHOLESKY.  Not SuiteSparse:
+  // Debian's CHOLMOD runs its supernodal factorization in OpenMP teams of a
+  // fixed size (4, whatever OMP_NUM_THREADS says), and on a 2-core machine
+  // the caller then waits for threads the scheduler has not run yet: most of
+  // a 170-parameter solve's time, spent idle.  Eigen's simplicial LDL^T is
+  // single-threaded and does the arithmetic in a fraction of that.
+  ceres::SparseLinearAlgebraLibraryType sparse_library = ceres::EIGEN_SPARSE;
   // Dynamics (damped and integrator): pseudo-time step, 0 = the default
   // (integrator: 0.9 of the stability bound; damped: 1,000); rest when the
   // energy dissipated per unit pseudo-time falls below rest_tolerance^2 of

@@ -1,0 +1,155 @@
+// The whole job a user waits for, `pfdm fit` end to end through the library:
+// read the points, fit every frame, write every output.  Phantoms of N tags
+// x 5 frames (written to a scratch CSV first, so reading is timed too) and,
+// when ../shared/data is present, biv-me patient 1's LV endocardial contours
+// (25 frames, no tracked points).  Reports each phase in ms, the tracked
+// frames' mean, the tracked frame's minimizer time, and the ratios the
+// README quotes: frame 0 over a tracked frame, outputs' share of the job.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "benchmark/benchmark.h"
+#include "pfdm/fit/correspondence.h"
+#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/initialization.h"
+#include "pfdm/io/fit_output.h"
+#include "pfdm/io/point_source.h"
+#include "pfdm/io/point_writer.h"
+#include "pfdm/phantom/phantom.h"
+#include "pfdm/util/atomic_file.h"
+
+namespace pfdm {
+namespace {
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+std::string ScratchFolder(const std::string& name) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "pfdm_job_benchmark" / name;
+  std::filesystem::create_directories(path);
+  return path.string();
+}
+
+// Times one job on the points at `path` and fills the state's counters.
+void RunJob(benchmark::State& state, const std::string& path,
+            const std::string& contours, int num_threads) {
+  const std::string out = ScratchFolder("out");
+  FitOptions options;
+  options.solver.num_threads = num_threads;
+  double read = 0, frame0 = 0, tracked = 0, tracked_minimizer = 0, write = 0,
+         correspondence0 = 0;
+  int num_tracked = 0;
+  for (auto _ : state) {
+    auto start = std::chrono::steady_clock::now();
+    const PointSequence points = ReadPoints(path, "auto", contours);
+    read = SecondsSince(start);
+    const SequenceFit fit =
+        FitSequence(points, ModelConfig::Paper(17), options);
+    start = std::chrono::steady_clock::now();
+    WriteFitOutputs(out, points, fit, options);
+    write = SecondsSince(start);
+    frame0 = fit.frames[0].solve_seconds;
+    correspondence0 = fit.frames[0].correspondence_seconds;
+    tracked = tracked_minimizer = 0;
+    num_tracked = static_cast<int>(fit.frames.size()) - 1;
+    for (size_t t = 1; t < fit.frames.size(); ++t) {
+      tracked += fit.frames[t].solve_seconds;
+      tracked_minimizer += fit.frames[t].minimizer_seconds;
+    }
+  }
+  const double job = read + frame0 + tracked + write;
+  const double per_tracked = tracked / std::max(num_tracked, 1);
+  state.counters["job_ms"] = 1e3 * job;
+  state.counters["read_ms"] = 1e3 * read;
+  state.counters["frame0_ms"] = 1e3 * frame0;
+  state.counters["frame0_correspondence_ms"] = 1e3 * correspondence0;
+  state.counters["tracked_ms"] = 1e3 * per_tracked;
+  state.counters["tracked_minimizer_ms"] =
+      1e3 * tracked_minimizer / std::max(num_tracked, 1);
+  state.counters["outputs_ms"] = 1e3 * write;
+  state.counters["frame0_x_tracked"] = frame0 / per_tracked;
+  state.counters["outputs_share"] = write / job;
+}
+
+// Args: tags, threads.
+void BM_PhantomJob(benchmark::State& state) {
+  PhantomOptions phantom_options;
+  phantom_options.num_points = static_cast<int>(state.range(0));
+  phantom_options.num_frames = 5;
+  const std::string path = ScratchFolder("phantom") + "/points_" +
+                           std::to_string(phantom_options.num_points) + ".csv";
+  WriteFileAtomically(path, ToPointsCsv(MakePhantom(phantom_options).points));
+  RunJob(state, path, "", static_cast<int>(state.range(1)));
+}
+BENCHMARK(BM_PhantomJob)
+    ->ArgNames({"tags", "threads"})
+    ->Args({2000, 1})
+    ->Args({20000, 1})
+    ->Args({20000, 2})
+    ->Args({50000, 1})
+    ->Args({50000, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+
+// biv-me patient 1, LV endocardium: every frame untracked.
+void BM_BivMeJob(benchmark::State& state) {
+  const std::string folder =
+      std::string(PFDM_SHARED_DATA_DIR) + "/biv-me-patient1/guidepoints";
+  if (!std::filesystem::exists(folder)) {
+    state.SkipWithError("../shared/data is absent");
+    return;
+  }
+  RunJob(state, folder, "lv-endo", static_cast<int>(state.range(0)));
+}
+BENCHMARK(BM_BivMeJob)
+    ->ArgNames({"threads"})
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+
+// Frame 0's first correspondence round alone: a 20,000-tag phantom's
+// frame 0 against the initialized model.  Args: exhaustive (1: every
+// refinement step, as before the early stop), threads.
+void BM_ClosestMaterialPoints(benchmark::State& state) {
+  PhantomOptions phantom_options;
+  phantom_options.num_points = 20000;
+  phantom_options.num_frames = 1;
+  const Phantom phantom = MakePhantom(phantom_options);
+  std::vector<Eigen::Vector3d> points;
+  for (const DataPoint& p : phantom.points.frames[0].points) {
+    points.push_back(p.position);
+  }
+  const Model model = InitializeModel(ModelConfig::Paper(17), points, {});
+  CorrespondenceOptions options;
+  if (state.range(0) == 1) options.step_tolerance_mm = 0.0;
+  options.num_threads = static_cast<int>(state.range(1));
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(ClosestMaterialPoints(model, points, options));
+  }
+  state.counters["us_per_point"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * points.size(),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
+      benchmark::Counter::kIs1000);
+}
+BENCHMARK(BM_ClosestMaterialPoints)
+    ->ArgNames({"exhaustive", "threads"})
+    ->Args({1, 1})
+    ->Args({0, 1})
+    ->Args({0, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+
+}  // namespace
+}  // namespace pfdm
+
+BENCHMARK_MAIN();

@@ -1,0 +1,295 @@
+#!/usr/bin/python3
+"""Runs pfdm's benchmarks and rewrites README.md's performance tables.
+
+    /usr/bin/python3 scripts/performance_tables.py            # run, rewrite
+    /usr/bin/python3 scripts/performance_tables.py --no-run   # rewrite only
+
+Each benchmark writes Google Benchmark JSON (--benchmark_format=json) into
+--results (default build/benchmark_results/); `pfdm batch` is timed on a
+manifest of phantom cases and its numbers saved in the same folder as
+batch.json.  The README's text between the markers
+<!-- performance-tables:NAME:begin --> and <!-- ...:end --> is then replaced
+by tables made from those files, with the machine, date and load average
+each run recorded, so the README never drifts from the code.  Timings on a
+loaded machine are inflated and noisy: run this on a quiet one.
+Standard library only.
+"""
+
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BENCHMARKS = ["fit_benchmark", "cost_function_benchmark", "solvers_benchmark",
+              "job_benchmark"]
+LINEAR_SOLVERS = {0: "DENSE_NORMAL_CHOLESKY", 1: "DENSE_QR",
+                  2: "SPARSE_NORMAL_CHOLESKY"}
+SPARSE_LIBRARIES = {0: "SuiteSparse", 1: "CXSparse", 2: "Eigen"}
+SOLVERS = {0: "direct", 1: "damped (dt = 1,000)", 2: "integrator"}
+BATCH_CASES = 6
+BATCH_TAGS = 2000
+
+
+def run_benchmarks(build, results, names):
+    os.makedirs(results, exist_ok=True)
+    for name in names:
+        out = os.path.join(results, name + ".json")
+        print("running", name, "...", file=sys.stderr, flush=True)
+        subprocess.run([os.path.join(build, name), "--benchmark_format=json",
+                        "--benchmark_out=" + out,
+                        "--benchmark_out_format=json"],
+                       check=True, stdout=subprocess.DEVNULL)
+
+
+def run_batch(build, results):
+    """Times `pfdm batch --jobs 2` on phantom cases; writes batch.json."""
+    pfdm = os.path.join(build, "pfdm")
+    with tempfile.TemporaryDirectory(prefix="pfdm_batch_bench_") as tmp:
+        rows = ["case,points"]
+        for i in range(BATCH_CASES):
+            points = os.path.join(tmp, "case%d.csv" % i)
+            subprocess.run([pfdm, "simulate", "--frames", "5", "--tags",
+                            str(BATCH_TAGS), "--seed", str(i + 1), "--out",
+                            points], check=True, stdout=subprocess.DEVNULL)
+            rows.append("case%d,%s" % (i, points))
+        manifest = os.path.join(tmp, "manifest.csv")
+        with open(manifest, "w") as f:
+            f.write("\n".join(rows) + "\n")
+        record = {"context": context(), "cases": BATCH_CASES,
+                  "tags": BATCH_TAGS, "frames": 5, "runs": []}
+        for jobs in (1, 2):
+            start = time.monotonic()
+            subprocess.run([pfdm, "batch", "--manifest", manifest, "--jobs",
+                            str(jobs), "--out", os.path.join(tmp, "out%d" %
+                                                             jobs)],
+                           check=True, stdout=subprocess.DEVNULL)
+            seconds = time.monotonic() - start
+            record["runs"].append({"jobs": jobs, "seconds": seconds,
+                                   "cases_per_minute":
+                                       60.0 * BATCH_CASES / seconds})
+    with open(os.path.join(results, "batch.json"), "w") as f:
+        json.dump(record, f, indent=2)
+
+
+def context():
+    return {"date": time.strftime("%Y-%m-%dT%H:%M:%S+00:00", time.gmtime()),
+            "host_name": os.uname().nodename, "num_cpus": os.cpu_count(),
+            "load_avg": list(os.getloadavg())}
+
+
+def load(results, name):
+    path = os.path.join(results, name + ".json")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
+def medians(document):
+    """{run name without the repetition suffix: median row}."""
+    rows = {}
+    for b in document["benchmarks"]:
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != \
+                "median":
+            continue
+        key = re.sub(r"/(iterations|repeats|real_time).*$", "", b["run_name"])
+        rows[key] = b
+    return rows
+
+
+def args(key):
+    """'BM_X/points:10/threads:1' -> {'points': 10, 'threads': 1}."""
+    out = {}
+    for part in key.split("/")[1:]:
+        if ":" in part:
+            name, value = part.split(":", 1)
+            out[name] = int(value)
+        elif part.isdigit():
+            out.setdefault("arg", int(part))
+    return out
+
+
+def number(x, digits=2):
+    if x >= 1000:
+        return "{:,.0f}".format(x)
+    if x >= 100:
+        return "%.0f" % x
+    if x >= 10:
+        return "%.1f" % x
+    return ("%." + str(digits) + "f") % x
+
+
+def table(header, rows):
+    lines = ["| " + " | ".join(header) + " |",
+             "| " + " | ".join("---" for _ in header) + " |"]
+    lines += ["| " + " | ".join(row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def describe(document, what):
+    c = document["context"]
+    load_avg = ", ".join("%.1f" % x for x in c.get("load_avg", []))
+    return ("`%s`: %s, host `%s`, %s CPUs, load average %s at its start" %
+            (what, c["date"][:16].replace("T", " ") + " UTC",
+             c.get("host_name", "?"), c.get("num_cpus", "?"), load_avg))
+
+
+def fit_table(document):
+    rows = []
+    for key, b in medians(document).items():
+        if not key.startswith("BM_FitFrame"):
+            continue
+        a = args(key)
+        rows.append((a["points"], a["autodiff"], a["solver"] != 2,
+                     a["sparse"] != 2, a["solver"], a["threads"], [
+            "{:,}".format(a["points"]), str(a["threads"]),
+            LINEAR_SOLVERS.get(a["solver"], str(a["solver"])),
+            SPARSE_LIBRARIES[a["sparse"]] if a["solver"] == 2 else "-",
+            "autodiff" if a["autodiff"] else "analytic",
+            number(b["ms_per_iter"]), number(b["jacobian_ms_per_iter"]),
+            number(b["linear_ms_per_iter"]), number(b["frame_ms"], 1),
+            number(b["x_floor"], 1), "%d" % b["iterations"]]))
+    rows.sort(key=lambda r: r[:6])
+    return table(["points", "threads", "linear solver", "sparse library",
+                  "Jacobian", "ms/iter", "Jacobian ms/iter",
+                  "linear ms/iter", "frame ms", "x floor", "iterations"],
+                 [r[-1] for r in rows])
+
+
+def cost_table(document):
+    names = {"BM_Analytic/0": "one point, residual only",
+             "BM_Analytic/1": "one point, analytic Jacobian",
+             "BM_Autodiff/0": "one point, residual only (autodiff functor)",
+             "BM_Autodiff/1": "one point, autodiff Jacobian",
+             "BM_PointGroup/0": "512-point group, residual only",
+             "BM_PointGroup/1": "512-point group, knots varied",
+             "BM_PointGroup/2": "512-point group, knots and pose varied"}
+    rows = []
+    for key, b in medians(document).items():
+        if key in names:
+            # Counters with kInvert come out in seconds per point.
+            rows.append([names[key], number(1e9 * b["ns_per_point"], 1)])
+    return table(["cost function", "ns per point"], rows)
+
+
+def job_table(document, batch):
+    rows = []
+    closest = []
+    for key, b in medians(document).items():
+        a = args(key)
+        if key.startswith("BM_ClosestMaterialPoints"):
+            closest.append([
+                "exhaustive" if a["exhaustive"] else "early stop",
+                str(a["threads"]), number(b["real_time"]),
+                number(1e6 * b["us_per_point"], 2)])
+            continue
+        case = ("phantom, {:,} tags x 5 frames".format(a["tags"])
+                if key.startswith("BM_PhantomJob") else
+                "biv-me patient 1, LV endo contours, 25 frames")
+        rows.append([case, str(a.get("threads", a.get("arg", 1))),
+                     number(b["job_ms"]), number(b["read_ms"]),
+                     "%s (%s)" % (number(b["frame0_ms"]),
+                                  number(b["frame0_correspondence_ms"])),
+                     "%s (%s)" % (number(b["tracked_ms"]),
+                                  number(b["tracked_minimizer_ms"])),
+                     number(b["outputs_ms"]),
+                     "%.1f" % b["frame0_x_tracked"],
+                     "%.0f %%" % (100 * b["outputs_share"])])
+    text = table(["case", "threads", "job ms", "read ms",
+                  "frame 0 ms (closest points)",
+                  "later frame ms (minimizer)", "outputs ms",
+                  "frame 0 / later frame", "outputs share"], rows)
+    if closest:
+        text += ("\n\nFrame 0's first closest-point search alone (20,000 "
+                 "tags against the initialized model):\n\n")
+        text += table(["search", "threads", "ms", "CPU us per point"],
+                      closest)
+    if batch:
+        text += "\n\n`pfdm batch` on %d phantom cases of {:,} tags x 5 " \
+                "frames (%s):\n\n".format(batch["tags"]) % (
+                    batch["cases"], describe(batch, "batch"))
+        text += table(["--jobs", "seconds", "cases per minute"],
+                      [[str(r["jobs"]), "%.1f" % r["seconds"],
+                        "%.1f" % r["cases_per_minute"]]
+                       for r in batch["runs"]])
+    return text
+
+
+def solvers_table(document):
+    rows = []
+    for key, b in medians(document).items():
+        a = args(key)
+        rows.append((a["points"], a["solver"], [
+            "{:,}".format(a["points"]), SOLVERS[a["solver"]],
+            "{:,}".format(int(b["iterations"])),
+            "%s (%s)" % ("{:,}".format(int(b["jacobian_evals_to_rms"])),
+                         number(b["evals_to_rms_vs_direct"])),
+            number(b["time_to_rms_vs_direct"], 2),
+            number(b["time_vs_direct"], 2),
+            "yes" if b["at_rest"] else "no (step cap)",
+            "%.4f" % b["rms_vs_direct"]]))
+    rows.sort(key=lambda r: r[:2])
+    return table(["points", "solver", "steps",
+                  "Jacobian evals to RMS (vs direct)",
+                  "time to RMS vs direct", "time to the end vs direct",
+                  "at rest", "final RMS vs direct"],
+                 [r[-1] for r in rows])
+
+
+def replace(readme, name, text):
+    pattern = re.compile(r"(<!-- performance-tables:%s:begin -->\n).*?"
+                         r"(<!-- performance-tables:%s:end -->)" % (name, name),
+                         re.S)
+    if not pattern.search(readme):
+        sys.exit("README.md has no performance-tables:%s markers" % name)
+    return pattern.sub(lambda m: m.group(1) + text + "\n" + m.group(2),
+                       readme)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--results", default=None,
+                        help="JSON folder (default BUILD/benchmark_results)")
+    parser.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    parser.add_argument("--no-run", action="store_true",
+                        help="only rewrite the README from saved JSON")
+    parser.add_argument("--only", nargs="*", default=None,
+                        help="run only these benchmarks (and 'batch')")
+    options = parser.parse_args()
+    results = options.results or os.path.join(options.build,
+                                              "benchmark_results")
+    if not options.no_run:
+        names = options.only if options.only is not None else \
+            BENCHMARKS + ["batch"]
+        run_benchmarks(options.build, results,
+                       [n for n in names if n != "batch"])
+        if "batch" in names:
+            run_batch(options.build, results)
+
+    with open(options.readme) as f:
+        readme = f.read()
+    sections = {"fit": ("fit_benchmark", fit_table),
+                "cost": ("cost_function_benchmark", cost_table),
+                "solvers": ("solvers_benchmark", solvers_table)}
+    for name, (benchmark, make) in sections.items():
+        document = load(results, benchmark)
+        if document:
+            readme = replace(readme, name, describe(document, benchmark) +
+                             ":\n\n" + make(document))
+    job = load(results, "job_benchmark")
+    if job:
+        readme = replace(readme, "job", describe(job, "job_benchmark") +
+                         ":\n\n" + job_table(job, load(results, "batch")))
+    with open(options.readme, "w") as f:
+        f.write(readme)
+    print("rewrote", options.readme, "from", results, file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
