@@ -79,7 +79,8 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   EXPECT_EQ(ErrorOf(s), "unknown --linear_solver 'MAGIC'");
   s = FitSettings();
   s.time_step = -1.0;
-  EXPECT_EQ(ErrorOf(s), "--time_step must be 0 (default) or between 1e-6 and 1e12, got -1");
+  EXPECT_EQ(ErrorOf(s),
+            "--time_step must be 0 (default) or between 1e-6 and 1e12, got -1");
   s = FitSettings();
   s.max_steps = 0;
   EXPECT_EQ(ErrorOf(s), "--max_steps must be at least 1");

@@ -1,18 +1,10 @@
 #include "pfdm/io/vtp_writer.h"
 
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_util.h"
 
 namespace pfdm {
 namespace {
-
-int Count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (size_t at = text.find(what); at != std::string::npos;
-       at = text.find(what, at + 1)) {
-    ++n;
-  }
-  return n;
-}
 
 TEST(VtpWriterTest, PolyDataHasPointsCellsAndNamedArrays) {
   VtkPolyData data;
@@ -38,15 +30,15 @@ TEST(VtpWriterTest, PolyDataHasPointsCellsAndNamedArrays) {
   EXPECT_NE(xml.find("Name=\"offsets\" format=\"ascii\">\n 3\n"),
             std::string::npos);
   EXPECT_NE(xml.find(" 5 5 5\n"), std::string::npos);
-  EXPECT_EQ(Count(xml, "<DataArray"), 7);
-  EXPECT_EQ(Count(xml, "</DataArray>"), 7);
+  EXPECT_EQ(CountOf(xml, "<DataArray"), 7);
+  EXPECT_EQ(CountOf(xml, "</DataArray>"), 7);
 }
 
 TEST(VtpWriterTest, CollectionListsEveryTimestep) {
   const std::string pvd = PvdCollection(
       {{0, "frame_000.vtp"}, {1, "frame_001.vtp"}, {2, "a&b.vtp"}});
   EXPECT_NE(pvd.find("type=\"Collection\""), std::string::npos);
-  EXPECT_EQ(Count(pvd, "<DataSet "), 3);
+  EXPECT_EQ(CountOf(pvd, "<DataSet "), 3);
   EXPECT_NE(
       pvd.find("timestep=\"1\" group=\"\" part=\"0\" file=\"frame_001.vtp\""),
       std::string::npos);

@@ -1,18 +1,10 @@
 #include "pfdm/report/bullseye_plot.h"
 
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_util.h"
 
 namespace pfdm {
 namespace {
-
-int Count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (size_t at = text.find(what); at != std::string::npos;
-       at = text.find(what, at + 1)) {
-    ++n;
-  }
-  return n;
-}
 
 // The AHA's page layout: segment 1 (and 7) centred at the top, 2 upper
 // left, 4 at the bottom; the apical 13 at the top, 14 left, 16 right.
@@ -48,13 +40,13 @@ TEST(BullseyePlotTest, PanelsLabelEverySegment) {
   const std::string svg = BullseyeSvg(regions, {ecc, rotation});
   EXPECT_NE(svg.find("peak Ecc, %"), std::string::npos);
   EXPECT_NE(svg.find("rotation, degrees"), std::string::npos);
-  EXPECT_EQ(Count(svg, ">-20.0<"), 1);
-  EXPECT_EQ(Count(svg, ">-16.2<"), 1);  // Segment 16, -16.25.
-  EXPECT_EQ(Count(svg, ">8.0<"), 1);    // Rotation of segment 16.
-  EXPECT_EQ(Count(svg, ">16<"), 2);     // Its number, once per panel.
-  EXPECT_EQ(Count(svg, ">apex<"), 2);
+  EXPECT_EQ(CountOf(svg, ">-20.0<"), 1);
+  EXPECT_EQ(CountOf(svg, ">-16.2<"), 1);  // Segment 16, -16.25.
+  EXPECT_EQ(CountOf(svg, ">8.0<"), 1);    // Rotation of segment 16.
+  EXPECT_EQ(CountOf(svg, ">16<"), 2);     // Its number, once per panel.
+  EXPECT_EQ(CountOf(svg, ">apex<"), 2);
   // Segment borders: 16 per panel.
-  EXPECT_EQ(Count(svg, "stroke='rgb( 64,  64,  64)'"), 32);
+  EXPECT_EQ(CountOf(svg, "stroke='rgb( 64,  64,  64)'"), 32);
   EXPECT_NE(svg.find("rgb(214,  96,  77)"), std::string::npos);
 }
 

@@ -2,19 +2,11 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/test_util.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-int Count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (size_t at = text.find(what); at != std::string::npos;
-       at = text.find(what, at + 1)) {
-    ++n;
-  }
-  return n;
-}
 
 TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
   PhantomOptions options;
@@ -26,11 +18,11 @@ TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
        {"radial: a1 / a1 at frame 0", "radial: a2 / a2 at frame 0",
         "longitudinal: a3 / a3 at frame 0", "twist tau (degrees)",
         "bending b0 (mm)", "bending b2 (mm)"}) {
-    EXPECT_EQ(Count(svg, title), 1) << title;
+    EXPECT_EQ(CountOf(svg, title), 1) << title;
   }
   // gnuplot writes a key entry as <text><tspan ...>N</tspan>; five frames.
   for (int t = 0; t < 5; ++t) {
-    EXPECT_GE(Count(svg, ">" + std::to_string(t) + "</tspan>"), 1) << t;
+    EXPECT_GE(CountOf(svg, ">" + std::to_string(t) + "</tspan>"), 1) << t;
   }
 }
 

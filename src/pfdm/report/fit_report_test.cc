@@ -4,18 +4,10 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/test_util.h"
 
 namespace pfdm {
 namespace {
-
-int Count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (size_t at = text.find(what); at != std::string::npos;
-       at = text.find(what, at + 1)) {
-    ++n;
-  }
-  return n;
-}
 
 TEST(FitReportTest, EscapesAndInlinesSvg) {
   EXPECT_EQ(HtmlEscape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
@@ -55,7 +47,7 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   EXPECT_NE(html.find("4 ES"), std::string::npos);
   EXPECT_NE(html.find("<td>4.50</td>"), std::string::npos);  // RMS frame 4.
   // 5 frame rows and 16 segment rows, each a <tr> after its table's head.
-  EXPECT_EQ(Count(html, "<tr>"), 2 + 5 + 16);
+  EXPECT_EQ(CountOf(html, "<tr>"), 2 + 5 + 16);
   EXPECT_NE(html.find("apical 4"), std::string::npos);
   EXPECT_EQ(html.find("No tracked points"), std::string::npos);  // Tags.
   for (const char* external : {"src=", "href=", "<link", "@import"}) {

@@ -12,6 +12,8 @@ namespace pfdm {
 std::string ScratchDirectory(const std::string& name);
 
 void WriteText(const std::string& path, const std::string& text);
+// How often `what` occurs in text (overlaps counted).
+int CountOf(const std::string& text, const std::string& what);
 std::string ReadText(const std::string& path);
 
 struct CommandResult {
