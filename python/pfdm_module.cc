@@ -555,8 +555,8 @@ void BindFunctions(py::module_& m) {
       [](const py::object& points, const std::string& format,
          const std::string& contours, const std::string& base_plane,
          const std::string& model, int knots, double smoothness, double prior,
-         const std::string& loss, double loss_scale, int threads,
-         const py::object& apex, const py::object& base,
+         double untracked_prior, const std::string& loss, double loss_scale,
+         int threads, const py::object& apex, const py::object& base,
          const std::string& solver, const std::string& linear_solver,
          double time_step, double rest_tolerance, int max_steps,
          const std::string& damping, const std::string& damping_scale,
@@ -569,6 +569,7 @@ void BindFunctions(py::module_& m) {
         s.knots = knots;
         s.smoothness = smoothness;
         s.prior = prior;
+        s.untracked_prior = untracked_prior;
         s.loss = loss;
         s.loss_scale = loss_scale;
         s.threads = threads;
@@ -591,6 +592,7 @@ void BindFunctions(py::module_& m) {
       py::arg("knots") = fit_defaults.knots,
       py::arg("smoothness") = fit_defaults.smoothness,
       py::arg("prior") = fit_defaults.prior,
+      py::arg("untracked_prior") = fit_defaults.untracked_prior,
       py::arg("loss") = fit_defaults.loss,
       py::arg("loss_scale") = fit_defaults.loss_scale,
       py::arg("threads") = fit_defaults.threads, py::arg("apex") = py::none(),

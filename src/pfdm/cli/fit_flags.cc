@@ -24,8 +24,12 @@ DEFINE_double(smoothness, kDefaults.smoothness,
               "smoothness weight, relative to one knot's data, 0 to 1e6");
 DEFINE_double(prior, kDefaults.prior,
               "pull toward the previous frame, same units, 0 to 1e6");
+DEFINE_double(untracked_prior, kDefaults.untracked_prior,
+              "frames without tracked points (contours): pull toward frame "
+              "0, same units, 0 to 1e6");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
-DEFINE_double(loss_scale, kDefaults.loss_scale, "robust loss scale, mm, positive");
+DEFINE_double(loss_scale, kDefaults.loss_scale,
+              "robust loss scale, mm, positive");
 DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
 DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
@@ -66,6 +70,7 @@ FitSettings FitSettingsFromFlags() {
   s.knots = FLAGS_knots;
   s.smoothness = FLAGS_smoothness;
   s.prior = FLAGS_prior;
+  s.untracked_prior = FLAGS_untracked_prior;
   s.loss = FLAGS_loss;
   s.loss_scale = FLAGS_loss_scale;
   s.threads = FLAGS_threads;

@@ -26,6 +26,7 @@ struct FitSettings {
   // The fit.
   double smoothness = 1.0;
   double prior = 0.001;
+  double untracked_prior = FitOptions().untracked_prior_weight;
   std::string loss = "none";
   double loss_scale = 1.0;
   int threads = 1;

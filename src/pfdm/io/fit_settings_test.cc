@@ -27,6 +27,7 @@ TEST(FitSettingsTest, DefaultsAreTheLibrarys) {
   const FitOptions library;
   EXPECT_EQ(options.smoothness_weight, library.smoothness_weight);
   EXPECT_EQ(options.prior_weight, library.prior_weight);
+  EXPECT_EQ(options.untracked_prior_weight, library.untracked_prior_weight);
   EXPECT_EQ(options.loss, library.loss);
   EXPECT_EQ(options.loss_scale_mm, library.loss_scale_mm);
   EXPECT_EQ(options.solver.kind, library.solver.kind);
@@ -74,6 +75,9 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   EXPECT_EQ(ErrorOf(s), "--apex and --base go together");
   s.base = "1,2";
   EXPECT_EQ(ErrorOf(s), "--base must be x,y,z in mm, got '1,2'");
+  s = FitSettings();
+  s.untracked_prior = -1.0;
+  EXPECT_EQ(ErrorOf(s), "--untracked_prior must be between 0 and 1e6, got -1");
   s = FitSettings();
   s.linear_solver = "MAGIC";
   EXPECT_EQ(ErrorOf(s), "unknown --linear_solver 'MAGIC'");
