@@ -4,34 +4,12 @@
 #include <string>
 
 #include "glog/logging.h"
+#include "pfdm/util/markup_escape.h"
 
 namespace pfdm {
 namespace {
 
 // Escapes the characters XML forbids in attribute values.
-std::string XmlAttribute(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 void CellArrays(const char* element, const std::vector<int>& connectivity,
                 int cell_size, std::string* out) {
   *out += "      <";
@@ -90,7 +68,7 @@ std::string ToVtkXmlPolyData(const VtkPolyData& data) {
   out += "      <PointData>\n";
   for (const auto& [name, values] : data.point_scalars) {
     CHECK_EQ(values.size(), n) << name;
-    out += "        <DataArray type=\"Float64\" Name=\"" + XmlAttribute(name) +
+    out += "        <DataArray type=\"Float64\" Name=\"" + EscapeMarkup(name) +
            "\" format=\"ascii\">\n";
     for (double value : values) {
       out += ' ';
@@ -100,7 +78,7 @@ std::string ToVtkXmlPolyData(const VtkPolyData& data) {
   }
   for (const auto& [name, values] : data.point_vectors) {
     CHECK_EQ(values.size(), n) << name;
-    out += "        <DataArray type=\"Float64\" Name=\"" + XmlAttribute(name) +
+    out += "        <DataArray type=\"Float64\" Name=\"" + EscapeMarkup(name) +
            "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
     for (const auto& v : values) append_vector(v);
     out += "        </DataArray>\n";
@@ -126,7 +104,7 @@ std::string PvdCollection(
          "byte_order=\"LittleEndian\">\n  <Collection>\n";
   for (const auto& [time, file] : timesteps) {
     out << "    <DataSet timestep=\"" << time
-        << "\" group=\"\" part=\"0\" file=\"" << XmlAttribute(file) << "\"/>\n";
+        << "\" group=\"\" part=\"0\" file=\"" << EscapeMarkup(file) << "\"/>\n";
   }
   out << "  </Collection>\n</VTKFile>\n";
   return out.str();

@@ -6,6 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "pfdm/util/markup_escape.h"
+
 namespace pfdm {
 namespace {
 
@@ -65,29 +67,6 @@ constexpr const char* kStyle =
 
 }  // namespace
 
-std::string HtmlEscape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string InlineSvg(const std::string& svg_document) {
   const size_t start = svg_document.find("<svg");
   return start == std::string::npos ? "" : svg_document.substr(start);
@@ -105,12 +84,12 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   const ClinicalSummary& es = analysis.clinical[ef.es_frame];
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-    << "<title>pfdm fit: " << HtmlEscape(points.source) << "</title>"
+    << "<title>pfdm fit: " << EscapeMarkup(points.source) << "</title>"
     << "<style>" << kStyle << "</style></head><body>\n"
     << "<h1>Left-ventricular motion from a parameter-function fit</h1>\n"
-    << "<p>Data <code>" << HtmlEscape(points.source) << "</code>, "
+    << "<p>Data <code>" << EscapeMarkup(points.source) << "</code>, "
     << fit.frames.size() << " frames; model <code>"
-    << HtmlEscape(fit.config.name) << "</code> with " << fit.config.num_knots
+    << EscapeMarkup(fit.config.name) << "</code> with " << fit.config.num_knots
     << " knots from apex to base. End-diastole (ED) is frame " << ef.ed_frame
     << ", end-systole (ES) the frame of least cavity volume, frame "
     << ef.es_frame << ".</p>\n";
@@ -209,7 +188,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
       << "</td><td>"
       << (t < analysis.strain.size() ? Fixed(analysis.strain[t].gls_percent, 1)
                                      : "")
-      << "</td><td class=\"l\">" << HtmlEscape(f.termination) << "</td></tr>\n";
+      << "</td><td class=\"l\">" << EscapeMarkup(f.termination)
+      << "</td></tr>\n";
   }
   h << "</table>\n";
 

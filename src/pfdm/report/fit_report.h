@@ -22,9 +22,6 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const std::string& strain_svg = "",
                           const std::string& bullseye_svg = "");
 
-// text with & < > " escaped.
-std::string HtmlEscape(const std::string& text);
-
 // An SVG document's <svg> element, without the XML prolog and doctype that
 // may not stand inside HTML.
 std::string InlineSvg(const std::string& svg_document);
