@@ -31,13 +31,18 @@ def main():
     a3 = fit.function_names.index("a3")
     twist_deg = np.degrees(fit.functions[:, :, tau])  # (frames, knots)
     a3_mm = fit.functions[:, :, a3]
+    # The phantom's tags lie on a mid-wall surface: its volume is not the
+    # cavity's (tags through the wall or contours of both walls give that).
+    volume = fit.volume_surface + "_volume_ml"
     for frame in fit.frames:
         c = frame.clinical
         print(f"frame {frame.frame}: rms {frame.stats['rms_mm']:.3f} mm, "
               f"net twist {c['net_twist_deg']:+.2f} deg, "
               f"longitudinal shortening {c['longitudinal_shortening_percent']:.1f} %, "
-              f"volume {c['volume_ml']:.1f} ml")
-    print(f"ejection fraction {fit.ejection_fraction['ratio']:.3f}")
+              f"{volume} {c[volume]:.1f}")
+    fraction = (fit.ejection_fraction or
+                fit.to_dict()[fit.volume_surface + "_volume_fraction"])
+    print(f"{fit.volume_surface} volume fraction {fraction['ratio']:.3f}")
     vertices, faces = fit.frames[-1].surface()
     print(f"last frame's surface: {len(vertices)} vertices, {len(faces)} "
           f"triangles (pyvista.PolyData or trimesh.Trimesh take them)")

@@ -136,7 +136,7 @@ int FunctionIndex(const std::string& name) {
 }
 
 constexpr const char* kFunctionsDoc =
-    "(knots, 14) array: row k holds every function at knot k, columns in "
+    "(knots, 17) array: row k holds every function at knot k, columns in "
     "the order of function_names, in function_units (as parameters.csv: "
     "a0, a1..a3 as a0*a_i, b0, b2 and the offsets in mm, tau in radians, "
     "eps1, eps2, b1, b3 unitless).";
@@ -278,13 +278,29 @@ void BindModel(py::module_& m) {
       .def("surface", &SurfaceArrays, py::arg("rings") = kSurfaceRings,
            py::arg("meridians") = kSurfaceMeridians, kSurfaceDoc)
       .def(
-          "volume_ml", [](const Model& model) { return CavityVolumeMl(model); },
-          "The volume (ml) of the cavity closed by a flat lid at the base "
-          "rim (ml).")
+          "volume_ml",
+          [](const Model& model, const py::object& w) {
+            const double surface = !w.is_none() ? w.cast<double>()
+                                   : model.config.Solid() ? -1.0
+                                                          : 0.0;
+            return CavityVolumeMl(model, nullptr, surface);
+          },
+          py::arg("w") = py::none(),
+          "The volume (ml) inside the model's surface w closed by a flat lid "
+          "at the base rim: by default a solid's endocardium (w = -1, the "
+          "cavity), or a single surface's own.")
       .def("__repr__", [](const Model& model) {
         return "<pfdm.Model '" + model.config.name + "', " +
                std::to_string(model.config.num_knots) + " knots>";
       });
+}
+
+// fit.json frame keys that are volumes or mass: *_volume_ml, lv_mass_g.
+bool IsVolumeKey(const std::string& key) {
+  const std::string tail = "_volume_ml";
+  return key == "lv_mass_g" ||
+         (key.size() > tail.size() &&
+          key.compare(key.size() - tail.size(), tail.size(), tail) == 0);
 }
 
 void BindFit(py::module_& m) {
@@ -311,7 +327,7 @@ void BindFit(py::module_& m) {
             py::dict stats;
             for (auto [key, value] : f.Entry()) {
               if (py::isinstance<py::dict>(value) ||
-                  key.cast<std::string>() == "volume_ml")
+                  IsVolumeKey(key.cast<std::string>()))
                 continue;
               stats[key] = value;
             }
@@ -329,12 +345,18 @@ void BindFit(py::module_& m) {
           [](const FitFrame& f) {
             py::dict entry = f.Entry();
             py::dict clinical = entry["clinical"];
-            clinical["volume_ml"] = entry["volume_ml"];
+            for (auto [key, value] : entry) {
+              if (IsVolumeKey(key.cast<std::string>())) clinical[key] = value;
+            }
             return clinical;
           },
           "dict: the clinical summary of fit.json's frame entry (net twist, "
           "apex and base rotation, radial contraction, longitudinal "
-          "shortening, per-knot ratios to frame 0) and volume_ml.")
+          "shortening, per-knot ratios to frame 0, a solid's endo_* and "
+          "epi_* numbers and wall thickening) and its volumes, named for "
+          "what they enclose: cavity_volume_ml, midwall_volume_ml or "
+          "epicardial_volume_ml, with a solid's myocardial_volume_ml and "
+          "lv_mass_g.")
       .def_property_readonly(
           "ids",
           [](const FitFrame& f) {
@@ -420,13 +442,13 @@ void BindFit(py::module_& m) {
             }
             return all;
           },
-          "(frames, knots, 14) array: every frame's `functions`.")
+          "(frames, knots, 17) array: every frame's `functions`.")
       .def_property_readonly(
           "knot_u", [](const FitResult& r) { return KnotUArray(r.fit.config); },
           "(K,) array: each knot's latitude u, apex to base.")
       .def_property_readonly(
           "function_names", [](const FitResult&) { return Names(); },
-          "The 14 functions' names, the columns of `functions`.")
+          "The 17 functions' names, the columns of `functions`.")
       .def_property_readonly(
           "function_units", [](const FitResult&) { return Units(); },
           "Their units: 'mm', 'rad' or '1'.")
@@ -453,11 +475,21 @@ void BindFit(py::module_& m) {
           "its mode (free, constant, fixed) and unit.")
       .def_property_readonly(
           "ejection_fraction",
-          [](const FitResult& r) {
-            return JsonMember(FromJson(r.json), "ejection_fraction");
+          [](const FitResult& r) -> py::object {
+            py::dict document = FromJson(r.json);
+            if (!document.contains("ejection_fraction")) return py::none();
+            return document["ejection_fraction"];
           },
           "dict: fit.json's ejection_fraction (ratio, ed_frame, es_frame, "
-          "edv_ml, esv_ml, cavity_closure).")
+          "edv_ml, esv_ml, cavity_closure); None when the fitted surface "
+          "is not the cavity's (volume_surface), whose volume fraction is "
+          "then fit.json's <volume_surface>_volume_fraction.")
+      .def_property_readonly(
+          "volume_surface",
+          [](const FitResult& r) {
+            return r.analysis.volume_surface;
+          },
+          "What the volumes enclose: 'cavity', 'midwall' or 'epicardial'.")
       .def_property_readonly(
           "regions",
           [](const FitResult& r) {
@@ -554,7 +586,8 @@ void BindFunctions(py::module_& m) {
       "fit",
       [](const py::object& points, const std::string& format,
          const std::string& contours, const std::string& base_plane,
-         const std::string& model, int knots, double smoothness, double prior,
+         const std::string& model, int knots, const std::string& wall,
+         double smoothness, double prior,
          double untracked_prior, const std::string& loss, double loss_scale,
          int threads, const py::object& apex, const py::object& base,
          const std::string& solver, const std::string& linear_solver,
@@ -567,6 +600,7 @@ void BindFunctions(py::module_& m) {
         s.base_plane = base_plane;
         s.model = model;
         s.knots = knots;
+        s.wall = wall;
         s.smoothness = smoothness;
         s.prior = prior;
         s.untracked_prior = untracked_prior;
@@ -590,6 +624,7 @@ void BindFunctions(py::module_& m) {
       py::arg("base_plane") = fit_defaults.base_plane,
       py::arg("model") = fit_defaults.model,
       py::arg("knots") = fit_defaults.knots,
+      py::arg("wall") = fit_defaults.wall,
       py::arg("smoothness") = fit_defaults.smoothness,
       py::arg("prior") = fit_defaults.prior,
       py::arg("untracked_prior") = fit_defaults.untracked_prior,

@@ -106,9 +106,10 @@ def test_surface_is_the_closed_models_triangulation(phantom_fit):
                                atol=1e-12)
     # The flat-lid volume of this coarse grid within 1 % of the fit's 97 x 128.
     volume = capped_volume_ml(vertices, faces)
-    assert volume == pytest.approx(frame.clinical["volume_ml"], rel=0.01)
+    assert volume == pytest.approx(frame.clinical["midwall_volume_ml"],
+                                   rel=0.01)
     assert frame.model.volume_ml() == pytest.approx(
-        frame.clinical["volume_ml"], rel=1e-12)
+        frame.clinical["midwall_volume_ml"], rel=1e-12)
     fine_vertices, _ = frame.surface(rings=65, meridians=96)
     assert len(fine_vertices) == 64 * 96 + 1
 
@@ -117,14 +118,14 @@ def test_model_pose_and_functions_are_arrays(phantom_fit):
     fit, truth = phantom_fit
     model = fit.frames[0].model
     assert model.name == "paper" and model.num_knots == 17
-    assert model.functions.shape == (17, 14)
+    assert model.functions.shape == (17, len(pfdm.FUNCTION_NAMES))
     assert model.knot_u[0] == pytest.approx(-np.pi / 2)
     assert model.knot_u[-1] == pytest.approx(np.pi / 6)
     np.testing.assert_array_equal(model.center, fit.frames[0].pose["center_mm"])
     np.testing.assert_array_equal(model.quaternion_wxyz,
                                   fit.frames[0].pose["quaternion_wxyz"])
     assert np.linalg.norm(model.quaternion_wxyz) == pytest.approx(1.0)
-    assert truth[0].functions.shape == (17, 14)
+    assert truth[0].functions.shape == (17, len(pfdm.FUNCTION_NAMES))
 
 
 def test_mesh_vertices_read_as_the_cli_reads_them():

@@ -16,7 +16,7 @@ def test_the_python_example_fits_and_writes_the_outputs():
     assert done.returncode == 0, done.stderr
     assert (out / "fit" / "fit.json").exists()
     assert "frame 2: rms" in done.stdout
-    assert "ejection fraction 0." in done.stdout
+    assert "midwall volume fraction 0." in done.stdout
     plotted = importlib.util.find_spec("matplotlib") is not None
     for name in ("functions.png", "surface.png"):
         assert (out / name).exists() == plotted, name

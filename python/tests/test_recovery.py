@@ -28,9 +28,14 @@ def test_fit_from_a_path_gives_the_cli_fit_json_to_the_last_digit(cli_phantom):
         assert frame.stats["rms_mm"] == entry["rms_mm"]
         assert frame.stats["n_points"] == 600
         assert frame.pose == entry["pose"]
-        clinical = dict(entry["clinical"], volume_ml=entry["volume_ml"])
+        clinical = dict(entry["clinical"],
+                        midwall_volume_ml=entry["midwall_volume_ml"])
         assert frame.clinical == clinical
-    assert fit.ejection_fraction == cli_json["ejection_fraction"]
+    # Tags on one surface: its volume fraction, not an ejection fraction.
+    assert fit.volume_surface == "midwall"
+    assert fit.ejection_fraction is None
+    assert fit.to_dict()["midwall_volume_fraction"] == (
+        cli_json["midwall_volume_fraction"])
     assert fit.regions == cli_json["regions"]
     assert len(fit.regions) == 16
 
@@ -57,12 +62,13 @@ def test_functions_array_is_parameters_csv(cli_phantom):
     folder, points_csv, _ = cli_phantom
     fit = pfdm.fit(points_csv)
     names = list(pfdm.FUNCTION_NAMES)
-    assert fit.function_names == names and len(names) == 14
+    assert fit.function_names == names and len(names) == 17
+    assert names[-3:] == ["h", "dtau", "shift"]
     assert fit.function_units[names.index("tau")] == "rad"
     assert fit.function_units[names.index("a3")] == "mm"
     assert fit.function_units[names.index("eps1")] == "1"
     functions = fit.functions
-    assert functions.shape == (3, 17, 14)
+    assert functions.shape == (3, 17, 17)
     rows = 0
     with open(folder / "cli" / "parameters.csv") as f:
         for row in csv.DictReader(f):
@@ -72,7 +78,7 @@ def test_functions_array_is_parameters_csv(cli_phantom):
             assert "%.10g" % functions[t, k, f_index] == row["value"]
             assert "%.10g" % fit.knot_u[k] == row["u"]
             rows += 1
-    assert rows == 3 * 17 * 14
+    assert rows == 3 * 17 * 17
     np.testing.assert_array_equal(fit.frames[2].functions, functions[2])
     np.testing.assert_array_equal(fit.frames[2].model.function("tau"),
                                   functions[2, :, names.index("tau")])

@@ -30,7 +30,14 @@ CaseSummary SummaryFromFitJson(const std::string& name,
   try {
     const nlohmann::json fit = nlohmann::json::parse(json_text);
     const nlohmann::json& frames = fit.at("frames");
-    const nlohmann::json& ef = fit.at("ejection_fraction");
+    // fit.json from before the wall model: the volume was the cavity's.
+    const nlohmann::json model = fit.value("model", nlohmann::json::object());
+    summary.volume_surface =
+        model.value("volume_surface", std::string("cavity"));
+    const bool cavity = summary.volume_surface == "cavity";
+    const nlohmann::json& ef =
+        fit.at(cavity ? "ejection_fraction"
+                      : summary.volume_surface + "_volume_fraction");
     summary.frames = static_cast<int>(frames.size());
     for (const auto& frame : frames) {
       summary.max_rms_mm =
@@ -46,6 +53,12 @@ CaseSummary SummaryFromFitJson(const std::string& name,
         es.at("longitudinal_shortening_percent").get<double>();
     summary.radial_contraction_percent =
         es.at("radial_contraction_percent").get<double>();
+    summary.solid = model.value("wall", std::string()) == "solid";
+    if (summary.solid) {
+      summary.lv_mass_g = frames.at(0).at("lv_mass_g").get<double>();
+      summary.wall_thickening_percent =
+          es.at("wall_thickening_percent").get<double>();
+    }
     if (fit.contains("strain")) {
       summary.has_strain = true;
       summary.peak_gcs_percent =
@@ -62,17 +75,23 @@ CaseSummary SummaryFromFitJson(const std::string& name,
 std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
   std::ostringstream out;
   out.precision(6);
-  out << "case,status,frames,max_rms_mm,edv_ml,esv_ml,es_frame,"
-         "ejection_fraction,net_twist_at_es_deg,"
+  out << "case,status,frames,max_rms_mm,volume_surface,ed_volume_ml,"
+         "es_volume_ml,es_frame,ejection_fraction,lv_mass_g,"
+         "wall_thickening_at_es_percent,net_twist_at_es_deg,"
          "longitudinal_shortening_at_es_percent,"
          "radial_contraction_at_es_percent,peak_gcs_percent,"
          "peak_gls_percent,error\n";
   for (const CaseSummary& c : cases) {
     out << CsvField(c.name) << ',' << c.status << ',';
     if (c.status == "done") {
-      out << c.frames << ',' << c.max_rms_mm << ',' << c.edv_ml << ','
-          << c.esv_ml << ',' << c.es_frame << ',' << c.ejection_fraction << ','
-          << c.net_twist_deg << ',' << c.longitudinal_shortening_percent << ','
+      out << c.frames << ',' << c.max_rms_mm << ',' << c.volume_surface << ','
+          << c.edv_ml << ',' << c.esv_ml << ',' << c.es_frame << ',';
+      if (c.volume_surface == "cavity") out << c.ejection_fraction;
+      out << ',';
+      if (c.solid) out << c.lv_mass_g << ',' << c.wall_thickening_percent;
+      else out << ',';
+      out << ',' << c.net_twist_deg << ','
+          << c.longitudinal_shortening_percent << ','
           << c.radial_contraction_percent << ',';
       if (c.has_strain) {
         out << c.peak_gcs_percent << ',' << c.peak_gls_percent << ',';
@@ -80,7 +99,7 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
         out << ",,";
       }
     } else {
-      out << ",,,,,,,,,,,";
+      out << ",,,,,,,,,,,,,,";
     }
     out << CsvField(c.error) << '\n';
   }

@@ -12,10 +12,18 @@ struct CaseSummary {
   std::string status;  // "done", "failed" or "pending".
   int frames = 0;
   double max_rms_mm = 0.0;
-  double edv_ml = 0.0;
+  // What the volumes enclose (fit.json model.volume_surface): "cavity",
+  // "midwall" or "epicardial".  The ejection fraction is only the cavity's:
+  // the summary leaves it empty for the others.
+  std::string volume_surface = "cavity";
+  double edv_ml = 0.0;  // ED and ES volumes of that surface.
   double esv_ml = 0.0;
   int es_frame = 0;
   double ejection_fraction = 0.0;  // Ratio, (EDV - ESV) / EDV.
+  // A solid's LV mass at ED (g) and wall thickening at ES (percent).
+  bool solid = false;
+  double lv_mass_g = 0.0;
+  double wall_thickening_percent = 0.0;
   // At ES, the frame of least volume.
   double net_twist_deg = 0.0;
   double longitudinal_shortening_percent = 0.0;

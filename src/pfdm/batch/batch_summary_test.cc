@@ -54,16 +54,47 @@ TEST(BatchSummaryTest, CsvRowsQuoteWhatNeedsIt) {
   pending.name = "p3";
   pending.status = "pending";
   EXPECT_EQ(SummaryCsv({old, done, failed, pending}),
-            "case,status,frames,max_rms_mm,edv_ml,esv_ml,es_frame,"
-            "ejection_fraction,net_twist_at_es_deg,"
+            "case,status,frames,max_rms_mm,volume_surface,ed_volume_ml,"
+            "es_volume_ml,es_frame,ejection_fraction,lv_mass_g,"
+            "wall_thickening_at_es_percent,net_twist_at_es_deg,"
             "longitudinal_shortening_at_es_percent,"
             "radial_contraction_at_es_percent,peak_gcs_percent,"
             "peak_gls_percent,error\n"
-            "p0,done,3,1.25,150,60,1,0.6,12.5,15,25,,,\n"
-            "p1,done,3,1.25,150,60,1,0.6,12.5,15,25,-18.5,-14.25,\n"
-            "p2,failed,,,,,,,,,,,,\"p2.csv:3: column 'x' is not a "
+            "p0,done,3,1.25,cavity,150,60,1,0.6,,,12.5,15,25,,,\n"
+            "p1,done,3,1.25,cavity,150,60,1,0.6,,,12.5,15,25,-18.5,-14.25,\n"
+            "p2,failed,,,,,,,,,,,,,,,\"p2.csv:3: column 'x' is not a "
             "\"\"number\"\", sorry\"\n"
-            "p3,pending,,,,,,,,,,,,\n");
+            "p3,pending,,,,,,,,,,,,,,,\n");
+}
+
+// A solid's fit.json: the cavity's ejection fraction, the LV mass at ED
+// and the thickening at ES; a mid-wall surface's: no ejection fraction.
+TEST(BatchSummaryTest, NamesWhatTheVolumesEnclose) {
+  std::string solid = kFitJson;
+  solid.insert(1, R"("model": {"wall": "solid", "volume_surface": "cavity"},)");
+  const std::string es = "\"radial_contraction_percent\": 25.0";
+  solid.replace(solid.find(es), es.size(),
+                es + ", \"wall_thickening_percent\": 41.5");
+  const std::string ed = "{\"rms_mm\": 0.5,";
+  solid.replace(solid.find(ed), ed.size(), ed + " \"lv_mass_g\": 120.5,");
+  const CaseSummary s = SummaryFromFitJson("s", solid, "s/fit.json");
+  EXPECT_TRUE(s.solid);
+  EXPECT_EQ(s.lv_mass_g, 120.5);
+  EXPECT_EQ(s.wall_thickening_percent, 41.5);
+  std::string midwall = kFitJson;
+  midwall.replace(midwall.find("\"ejection_fraction\""), 19,
+                  "\"midwall_volume_fraction\"");
+  midwall.insert(1, R"("model": {"wall": "midwall",
+                                 "volume_surface": "midwall"},)");
+  const CaseSummary m = SummaryFromFitJson("m", midwall, "m/fit.json");
+  EXPECT_EQ(m.volume_surface, "midwall");
+  const std::string csv = SummaryCsv({s, m});
+  EXPECT_NE(csv.find("\ns,done,3,1.25,cavity,150,60,1,0.6,120.5,41.5,12.5,"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("\nm,done,3,1.25,midwall,150,60,1,,,,12.5,"),
+            std::string::npos)
+      << csv;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
+#include "pfdm/model/parameter_function.h"
 #include "pfdm/testing/test_util.h"
 
 namespace pfdm {
@@ -52,7 +53,7 @@ TEST(CliTest, SimulateThenFitWritesEveryOutput) {
   EXPECT_EQ(line, "frame,function,knot,u,z_mm,value");
   int count = 0;
   while (std::getline(rows, line)) ++count;
-  EXPECT_EQ(count, 3 * 14 * 17);
+  EXPECT_EQ(count, 3 * kNumFunctions * 17);
 }
 
 TEST(CliTest, FitWithTheIntegratorRecordsItsSettings) {

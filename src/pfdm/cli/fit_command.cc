@@ -16,6 +16,8 @@ int RunFit() {
   CheckFitOutputFolder(FLAGS_out, FLAGS_points);
   const PointSequence points = PointsFromFlags();
   const SequenceFit fit = FitSequence(points, config, options);
+  std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
+              fit.wall_reason.c_str());
   WriteFitOutputs(FLAGS_out, points, fit, options,
                   BasePlanesFromFlags(FLAGS_points));
   for (const FrameFit& frame : fit.frames) {

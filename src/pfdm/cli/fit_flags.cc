@@ -20,6 +20,10 @@ DEFINE_string(contours, kDefaults.contours.c_str(),
 DEFINE_string(out, "", "output folder (simulate: output CSV)");
 DEFINE_string(model, kDefaults.model.c_str(), "paper or superellipsoid");
 DEFINE_int32(knots, kDefaults.knots, "knots per parameter function, 2 to 100");
+DEFINE_string(wall, kDefaults.wall.c_str(),
+              "midwall (one surface), solid (endocardium to epicardium, "
+              "wall thickness h and transmural twist dtau) or auto: solid "
+              "for contours of both walls or tags spread across the wall");
 DEFINE_double(smoothness, kDefaults.smoothness,
               "smoothness weight, relative to one knot's data, 0 to 1e6");
 DEFINE_double(prior, kDefaults.prior,
@@ -68,6 +72,7 @@ FitSettings FitSettingsFromFlags() {
   s.base_plane = FLAGS_base_plane;
   s.model = FLAGS_model;
   s.knots = FLAGS_knots;
+  s.wall = FLAGS_wall;
   s.smoothness = FLAGS_smoothness;
   s.prior = FLAGS_prior;
   s.untracked_prior = FLAGS_untracked_prior;

@@ -65,8 +65,9 @@ void EvaluateSample(const PointSample& sample, FunctionMask free_mask,
   ShapeJacobian shape_jacobian;
   const Eigen::Vector3d s =
       want_shape_jacobian
-          ? ShapeAndJacobian(f, sample.angles, unit_exponents, &shape_jacobian)
-          : ReferenceShape(f, sample.angles, unit_exponents);
+          ? ShapeAndJacobian(f, sample.angles, unit_exponents, &shape_jacobian,
+                             sample.w)
+          : ReferenceShape(f, sample.angles, unit_exponents, sample.w);
   const Eigen::Vector3d residual =
       rotation * s + Eigen::Map<const Eigen::Vector3d>(parameters[0]) -
       sample.data;

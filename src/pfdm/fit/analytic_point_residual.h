@@ -18,6 +18,7 @@ struct PointSample {
   Eigen::Vector3d data = Eigen::Vector3d::Zero();
   Angles<double> angles{1.0, 0.0, 1.0, 0.0};
   double knot_weight = 0.0;
+  double w = 0.0;  // Transmural coordinate (transmural.h).
   bool has_normal = false;
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
 

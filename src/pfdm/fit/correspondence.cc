@@ -57,11 +57,11 @@ MaterialPoint Refine(const Model& model, const Eigen::Vector3d& target,
   using Jet2 = ceres::Jet<double, 2>;
   MaterialPoint best = start;
   double best_cost =
-      (WorldPointAt(model, best.u, best.v) - target).squaredNorm();
+      (WorldPointAt(model, best.u, best.v, best.w) - target).squaredNorm();
   double lambda = 1e-3;
   for (int step = 0; step < kRefinementSteps; ++step) {
     const Eigen::Matrix<Jet2, 3, 1> x =
-        WorldPointAt(model, Jet2(best.u, 0), Jet2(best.v, 1));
+        WorldPointAt(model, Jet2(best.u, 0), Jet2(best.v, 1), best.w);
     Eigen::Matrix<double, 3, 2> jacobian;
     Eigen::Vector3d residual;
     for (int i = 0; i < 3; ++i) {
@@ -79,9 +79,10 @@ MaterialPoint Refine(const Model& model, const Eigen::Vector3d& target,
       const Eigen::Vector2d delta = -damped.ldlt().solve(gradient);
       MaterialPoint trial{
           std::clamp(best.u + delta[0], model.config.u_min, model.config.u_max),
-          WrapLongitude(best.v + delta[1])};
+          WrapLongitude(best.v + delta[1]), best.w};
       const double cost =
-          (WorldPointAt(model, trial.u, trial.v) - target).squaredNorm();
+          (WorldPointAt(model, trial.u, trial.v, trial.w) - target)
+              .squaredNorm();
       if (cost < best_cost) {
         best = trial;
         best_cost = cost;
@@ -104,7 +105,7 @@ MaterialPoint Refine(const Model& model, const Eigen::Vector3d& target,
 
 template <typename T>
 Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
-                                    const T& v) {
+                                    const T& v, double w) {
   const ModelConfig& config = model.config;
   const KnotGrid& grid = config.Grid();
   double u_value;
@@ -132,16 +133,17 @@ Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
   for (int i = 0; i < 4; ++i) quaternion[i] = T(model.state.quaternion[i]);
   return WorldFromModel(
       center, quaternion,
-      ReferenceShape(f, MakeAngles(u, v), model.UnitExponents()));
+      ReferenceShape(f, MakeAngles(u, v), model.UnitExponents(), w));
 }
 
 template Eigen::Vector3d WorldPointAt(const Model&, const double&,
-                                      const double&);
+                                      const double&, double);
 
-Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v) {
+Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
+                              double w) {
   using Jet2 = ceres::Jet<double, 2>;
   const Eigen::Matrix<Jet2, 3, 1> x =
-      WorldPointAt(model, Jet2(u, 0), Jet2(v, 1));
+      WorldPointAt(model, Jet2(u, 0), Jet2(v, 1), w);
   Eigen::Vector3d du, dv;
   for (int i = 0; i < 3; ++i) {
     du[i] = x[i].v[0];
@@ -180,6 +182,7 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
       double distance_squared = 0.0;
       tree.knnSearch(points[i].data(), 1, &nearest, &distance_squared);
       MaterialPoint start = samples[nearest];
+      if (!options.surfaces.empty()) start.w = options.surfaces[i];
       if (nearest < static_cast<unsigned int>(kGridV)) {
         start.v = LongitudeAround(model, points[i], start.u);
       }

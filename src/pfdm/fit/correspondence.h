@@ -12,16 +12,20 @@ namespace pfdm {
 struct MaterialPoint {
   double u = 0.0;
   double v = 0.0;
+  double w = 0.0;  // Transmural: -1 endocardium, 0 mid-wall, +1 epicardium.
 };
 
-// The model's world-space point x(u, v), for any scalar (a Jet when u and v
-// are differentiated).
+// The model's world-space point x(u, v, w), for any scalar (a Jet when u
+// and v are differentiated).
 template <typename T>
-Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u, const T& v);
+Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u, const T& v,
+                                    double w = 0.0);
 
-// Unit outward normal of the model surface at (u, v), world frame: out of
-// the cavity.  At the apex pole, where d/dv vanishes, the axis direction -z.
-Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v);
+// Unit outward normal of the model's surface w at (u, v), world frame: out
+// of the cavity.  At the apex pole, where d/dv vanishes, the axis direction
+// -z.
+Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
+                              double w = 0.0);
 
 struct CorrespondenceOptions {
   // Points are split into this many contiguous chunks, one per thread; the
@@ -30,11 +34,13 @@ struct CorrespondenceOptions {
   // A refinement step that moves the model point by less than this (mm)
   // ends the search for that point; 0 runs every step until none improves.
   double step_tolerance_mm = 1e-8;
+  // The surface w each point is sought on (empty: the mid-wall, w = 0).
+  std::vector<double> surfaces;
 };
 
 // For each point, the (u, v) in [u_min, u_max] x [-pi, pi) whose model point
-// is nearest: the nearest sample of a (u, v) grid, then a few damped
-// Gauss-Newton steps on |x(u, v) - p|^2.
+// on its surface w is nearest: the nearest sample of a (u, v) grid of the
+// mid-wall, then a few damped Gauss-Newton steps on |x(u, v, w) - p|^2.
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const CorrespondenceOptions& options = {});

@@ -30,20 +30,22 @@ const char* JacobianName(JacobianKind kind) {
 ceres::CostFunction* MakePointCost(const Eigen::Vector3d& data, double u,
                                    double v, double knot_weight,
                                    FunctionMask free_mask, bool unit_exponents,
-                                   JacobianKind kind) {
+                                   JacobianKind kind, double w) {
   switch (kind) {
-    case JacobianKind::kAnalytic:
-      return new AnalyticPointResidual(PointSample(data, u, v, knot_weight),
-                                       free_mask, unit_exponents);
+    case JacobianKind::kAnalytic: {
+      PointSample sample(data, u, v, knot_weight);
+      sample.w = w;
+      return new AnalyticPointResidual(sample, free_mask, unit_exponents);
+    }
     case JacobianKind::kAutodiff:
       return PointResidual::Create(data, u, v, knot_weight, free_mask,
-                                   unit_exponents);
+                                   unit_exponents, w);
     case JacobianKind::kNumeric:
       return new ceres::NumericDiffCostFunction<PointResidual, ceres::CENTRAL,
                                                 3, 3, 4, kNumFunctions,
                                                 kNumFunctions, kNumFunctions>(
           new PointResidual(data, u, v, knot_weight, free_mask,
-                            unit_exponents));
+                            unit_exponents, w));
   }
   return nullptr;
 }
@@ -53,22 +55,23 @@ ceres::CostFunction* MakeSurfaceCost(const Eigen::Vector3d& data, double u,
                                      FunctionMask free_mask,
                                      bool unit_exponents,
                                      const Eigen::Vector3d& normal,
-                                     JacobianKind kind) {
+                                     JacobianKind kind, double w) {
   switch (kind) {
-    case JacobianKind::kAnalytic:
-      return new AnalyticSurfaceResidual(
-          PointSample(data, u, v, knot_weight, normal), free_mask,
-          unit_exponents);
+    case JacobianKind::kAnalytic: {
+      PointSample sample(data, u, v, knot_weight, normal);
+      sample.w = w;
+      return new AnalyticSurfaceResidual(sample, free_mask, unit_exponents);
+    }
     case JacobianKind::kAutodiff:
       return SurfaceResidual::Create(data, u, v, knot_weight, free_mask,
-                                     unit_exponents, normal);
+                                     unit_exponents, normal, w);
     case JacobianKind::kNumeric:
       return new ceres::NumericDiffCostFunction<SurfaceResidual, ceres::CENTRAL,
                                                 1, 3, 4, kNumFunctions,
                                                 kNumFunctions, kNumFunctions>(
-          new SurfaceResidual(
-              PointResidual(data, u, v, knot_weight, free_mask, unit_exponents),
-              normal, data));
+          new SurfaceResidual(PointResidual(data, u, v, knot_weight, free_mask,
+                                            unit_exponents, w),
+                              normal, data));
   }
   return nullptr;
 }

@@ -16,11 +16,11 @@ enum class JacobianKind { kAnalytic, kAutodiff, kNumeric };
 JacobianKind JacobianFromName(const std::string& name);
 const char* JacobianName(JacobianKind kind);
 
-// The 3-vector residual of a tracked point (PointResidual).
+// The 3-vector residual of a tracked point (PointResidual) on surface w.
 ceres::CostFunction* MakePointCost(const Eigen::Vector3d& data, double u,
                                    double v, double knot_weight,
                                    FunctionMask free_mask, bool unit_exponents,
-                                   JacobianKind kind);
+                                   JacobianKind kind, double w = 0.0);
 
 // The point-to-plane residual (SurfaceResidual).
 ceres::CostFunction* MakeSurfaceCost(const Eigen::Vector3d& data, double u,
@@ -28,7 +28,7 @@ ceres::CostFunction* MakeSurfaceCost(const Eigen::Vector3d& data, double u,
                                      FunctionMask free_mask,
                                      bool unit_exponents,
                                      const Eigen::Vector3d& normal,
-                                     JacobianKind kind);
+                                     JacobianKind kind, double w = 0.0);
 
 }  // namespace pfdm
 

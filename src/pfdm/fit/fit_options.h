@@ -7,6 +7,7 @@
 
 #include "pfdm/fit/data_cost.h"
 #include "pfdm/fit/initialization.h"
+#include "pfdm/fit/transmural.h"
 #include "pfdm/solvers/damping_groups.h"
 #include "pfdm/solvers/solver.h"
 
@@ -36,6 +37,7 @@ struct FitOptions {
   JacobianKind jacobian = JacobianKind::kAnalytic;
   std::optional<AxisHint> hint;
   int min_points = 10;
+  WallModel wall = WallModel::kAuto;
   // Model states kept along each frame's solver path, log-spaced in the
   // iteration count at this many per decade, plus the start and the end;
   // 0 keeps none (FrameFit::trajectory).

@@ -1,6 +1,7 @@
 #include "pfdm/fit/fitter.h"
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -54,24 +55,97 @@ std::vector<Eigen::Vector3d> Positions(const Frame& frame) {
 }
 
 // Fills material[i] for the listed points with their closest material points
-// and returns how far (mm) the farthest one moved on the model.
+// and returns how far (mm) the farthest one moved on the model.  In a solid,
+// a point is sought on its surface: layer_w[i] for a contour of one wall,
+// or, when depths are assigned (frame 0's tags), QuantileDepths' w.
 double UpdateClosest(const Model& model,
                      const std::vector<Eigen::Vector3d>& points,
                      const std::vector<size_t>& which, int num_threads,
+                     const std::vector<double>& layer_w,
+                     const std::vector<bool>& assign_depth,
                      std::vector<MaterialPoint>* material) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
   CorrespondenceOptions correspondence;
   correspondence.num_threads = num_threads;
-  const std::vector<MaterialPoint> closest =
+  std::vector<MaterialPoint> closest =
       ClosestMaterialPoints(model, subset, correspondence);
+  if (model.config.Solid()) {
+    std::vector<size_t> tags;
+    std::vector<Eigen::Vector3d> tag_points;
+    std::vector<MaterialPoint> tag_material;
+    std::vector<double> tag_u;
+    correspondence.surfaces.assign(which.size(), 0.0);
+    for (size_t j = 0; j < which.size(); ++j) {
+      correspondence.surfaces[j] = layer_w[which[j]];
+      if (!assign_depth[which[j]]) continue;
+      tags.push_back(j);
+      tag_points.push_back(subset[j]);
+      tag_material.push_back(closest[j]);
+      tag_u.push_back(closest[j].u);
+    }
+    const std::vector<double> depths = QuantileDepths(
+        tag_u, MidwallDistances(model, tag_points, tag_material));
+    for (size_t t = 0; t < tags.size(); ++t) {
+      correspondence.surfaces[tags[t]] = depths[t];
+    }
+    // Off the mid-wall, the closest point of the point's own surface.
+    std::vector<size_t> off;
+    CorrespondenceOptions on_surface = correspondence;
+    on_surface.surfaces.clear();
+    std::vector<Eigen::Vector3d> off_points;
+    for (size_t j = 0; j < which.size(); ++j) {
+      if (correspondence.surfaces[j] == 0.0) continue;
+      off.push_back(j);
+      off_points.push_back(subset[j]);
+      on_surface.surfaces.push_back(correspondence.surfaces[j]);
+    }
+    const std::vector<MaterialPoint> refined =
+        ClosestMaterialPoints(model, off_points, on_surface);
+    for (size_t k = 0; k < off.size(); ++k) closest[off[k]] = refined[k];
+  }
   double moved = 0.0;
   for (size_t j = 0; j < which.size(); ++j) {
     MaterialPoint& old = (*material)[which[j]];
-    moved = std::max(moved, (model.WorldPoint(closest[j].u, closest[j].v) -
-                             model.WorldPoint(old.u, old.v))
+    const MaterialPoint& now = closest[j];
+    moved = std::max(moved, (model.WorldPoint(now.u, now.v, now.w) -
+                             model.WorldPoint(old.u, old.v, old.w))
                                 .norm());
-    old = closest[j];
+    old = now;
+  }
+  return moved;
+}
+
+// Sets the listed points' w to their QuantileDepths on `model` and returns
+// how far (mm) the farthest one's model point moved.  Why each frame ranks
+// its tags afresh rather than keeping frame 0's w: a w read from noisy
+// distances regresses every later frame's thickness toward zero (errors in
+// the regressor), by the noise's share of the depths' variance, while frame
+// 0's own h comes out inflated by as much; ranked in every frame, h is
+// biased alike in all of them and the thickening (a ratio) is not.  A tag's
+// place in the order across the wall is material; its rank changes only by
+// noise.
+double RerankDepths(const Model& model,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<size_t>& which,
+                    std::vector<MaterialPoint>* material) {
+  std::vector<Eigen::Vector3d> subset;
+  std::vector<MaterialPoint> subset_material;
+  std::vector<double> u;
+  for (size_t i : which) {
+    subset.push_back(points[i]);
+    subset_material.push_back((*material)[i]);
+    u.push_back((*material)[i].u);
+  }
+  const std::vector<double> depths =
+      QuantileDepths(u, MidwallDistances(model, subset, subset_material));
+  double moved = 0.0;
+  for (size_t j = 0; j < which.size(); ++j) {
+    MaterialPoint& m = (*material)[which[j]];
+    moved = std::max(moved, (model.WorldPoint(m.u, m.v, depths[j]) -
+                             model.WorldPoint(m.u, m.v, m.w))
+                                .norm());
+    m.w = depths[j];
   }
   return moved;
 }
@@ -81,8 +155,8 @@ void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
   double sum_squared = 0.0, sum = 0.0, max = 0.0;
   fit->residuals.clear();
   for (size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3d r =
-        model.WorldPoint(fit->material[i].u, fit->material[i].v) - points[i];
+    const MaterialPoint& m = fit->material[i];
+    const Eigen::Vector3d r = model.WorldPoint(m.u, m.v, m.w) - points[i];
     fit->residuals.push_back(r);
     sum_squared += r.squaredNorm();
     sum += r.norm();
@@ -149,6 +223,33 @@ bool StateFinite(const ModelState& state) {
   return true;
 }
 
+// How a frame's points are sought in a solid: a contour's wall, +-1; 0
+// for everything else (tags get their depth from QuantileDepths).
+std::vector<double> LayerDepths(const Frame& frame) {
+  std::vector<double> w;
+  for (const DataPoint& p : frame.points) {
+    w.push_back(p.layer == WallLayer::kEndocardium  ? -1.0
+                : p.layer == WallLayer::kEpicardium ? 1.0
+                                                    : 0.0);
+  }
+  return w;
+}
+
+bool HasBothWalls(const Frame& frame) {
+  bool endo = false, epi = false;
+  for (const DataPoint& p : frame.points) {
+    endo = endo || p.layer == WallLayer::kEndocardium;
+    epi = epi || p.layer == WallLayer::kEpicardium;
+  }
+  return endo && epi;
+}
+
+std::string FormatMm(double mm) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f", mm);
+  return text;
+}
+
 }  // namespace
 
 SequenceFit FitSequence(const PointSequence& sequence,
@@ -173,6 +274,38 @@ SequenceFit FitSequence(const PointSequence& sequence,
   result.config = config;
   Model model =
       InitializeModel(config, Positions(sequence.frames[0]), options.hint);
+  // The wall: contours of both walls make a solid from the start; tags
+  // through the wall are told from tags on one surface after frame 0's
+  // mid-wall fit (below).
+  const Frame& first = sequence.frames[0];
+  bool has_tags = false;
+  for (const DataPoint& p : first.points) {
+    has_tags = has_tags || frames_per_id[p.id] > 1;
+  }
+  if (options.wall == WallModel::kMidwall) {
+    result.wall_reason = "--wall midwall";
+  } else if (HasBothWalls(first)) {
+    model.config.MakeSolid();
+    result.wall_reason = "endocardial and epicardial contours";
+  } else if (!has_tags) {
+    if (options.wall == WallModel::kSolid) {
+      throw InputError(sequence.source +
+                       ": --wall solid needs tags tracked through the wall "
+                       "or contours of both walls (lv-endo,lv-epi)");
+    }
+    result.wall_reason = "no tracked tags and no contours of both walls";
+  }
+  bool wall_decided = !result.wall_reason.empty();
+  if (!model.config.Solid()) {
+    bool endo = false, epi = false;
+    for (const DataPoint& p : first.points) {
+      endo = endo || p.layer == WallLayer::kEndocardium;
+      epi = epi || p.layer == WallLayer::kEpicardium;
+    }
+    if (endo != epi) {
+      result.surface = endo ? WallLayer::kEndocardium : WallLayer::kEpicardium;
+    }
+  }
   ModelState prior = model.state;
   // Frame 0's pose, which later frames may tilt and move but not spin.
   std::array<double, 4> reference_quaternion = model.state.quaternion;
@@ -183,25 +316,34 @@ SequenceFit FitSequence(const PointSequence& sequence,
     const auto start = std::chrono::steady_clock::now();
     const bool reference = frame.index == sequence.frames[0].index;
     const std::vector<Eigen::Vector3d> points = Positions(frame);
+    const std::vector<double> layer_w = LayerDepths(frame);
     FrameFit fit;
     fit.frame = frame.index;
     fit.material.resize(points.size());
     std::vector<size_t> unknown;
+    // Frame 0's tags, whose depth in a solid comes from their spread.
+    std::vector<bool> assign_depth(points.size(), false);
     for (size_t i = 0; i < points.size(); ++i) {
       auto it = tracked_material.find(frame.points[i].id);
       if (it != tracked_material.end()) {
         fit.material[i] = it->second;
       } else {
         unknown.push_back(i);
+        assign_depth[i] = reference && frames_per_id[frame.points[i].id] > 1;
       }
     }
-    auto closest_start = std::chrono::steady_clock::now();
-    UpdateClosest(model, points, unknown, options.solver.num_threads,
-                  &fit.material);
-    fit.correspondence_seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                      closest_start)
-            .count();
+    auto update_closest = [&]() {
+      const auto closest_start = std::chrono::steady_clock::now();
+      const double moved =
+          UpdateClosest(model, points, unknown, options.solver.num_threads,
+                        layer_w, assign_depth, &fit.material);
+      fit.correspondence_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                        closest_start)
+              .count();
+      return moved;
+    };
+    update_closest();
     std::vector<bool> sliding(points.size(), false);
     for (size_t i : unknown) sliding[i] = true;
 
@@ -212,54 +354,111 @@ SequenceFit FitSequence(const PointSequence& sequence,
     SolverReport report;
     TrajectoryRecorder recorder(options.trajectory_per_decade, &model,
                                 &fit.trajectory);
-    for (int round = 0; round < options.max_correspondence_rounds; ++round) {
-      std::optional<double> rim_height;
-      if (!reference && !unknown.empty()) {
-        const double top = TopHeight(points, options, model);
-        if (std::isfinite(top)) rim_height = top;
+    // A solid's tracked tags keep (u, v) but take their depth from this
+    // frame's ranks (RerankDepths).
+    std::vector<size_t> tracked_tags;
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (!reference && tracked_material.count(frame.points[i].id) > 0) {
+        tracked_tags.push_back(i);
       }
-      const SolverTracePoint last =
-          fit.trace.empty() ? SolverTracePoint{-1} : fit.trace.back();
-      FitOptions round_options = options;
-      if (options.trajectory_per_decade > 0) {
-        round_options.solver.on_step = [&recorder,
-                                        last](const SolverTracePoint& point) {
-          recorder.Step(last.iteration + 1 + point.iteration,
-                        last.pseudo_time + point.pseudo_time);
-        };
+    }
+    const bool rerank_depths = model.config.Solid() && !tracked_tags.empty();
+    if (rerank_depths) {
+      RerankDepths(model, points, tracked_tags, &fit.material);
+    }
+    auto solve_rounds = [&]() {
+      for (int round = 0; round < options.max_correspondence_rounds;
+           ++round) {
+        std::optional<double> rim_height;
+        if (!reference && !unknown.empty()) {
+          const double top = TopHeight(points, options, model);
+          if (std::isfinite(top)) rim_height = top;
+        }
+        const SolverTracePoint last =
+            fit.trace.empty() ? SolverTracePoint{-1} : fit.trace.back();
+        FitOptions round_options = options;
+        if (options.trajectory_per_decade > 0) {
+          round_options.solver.on_step =
+              [&recorder, last](const SolverTracePoint& point) {
+                recorder.Step(last.iteration + 1 + point.iteration,
+                              last.pseudo_time + point.pseudo_time);
+              };
+        }
+        report =
+            SolveFrame(points, fit.material, sliding, rim_height, kind,
+                       kind == FrameKind::kUntracked ? reference_state : prior,
+                       reference_quaternion, round_options, &model);
+        fit.iterations += report.iterations;
+        fit.residual_evaluations += report.residual_evaluations;
+        fit.jacobian_evaluations += report.jacobian_evaluations;
+        fit.jacobian_seconds += report.jacobian_seconds;
+        fit.linear_solver_seconds += report.linear_solver_seconds;
+        fit.minimizer_seconds += report.minimizer_seconds;
+        ++fit.correspondence_rounds;
+        for (SolverTracePoint point : report.trace) {
+          point.iteration += last.iteration + 1;
+          point.pseudo_time += last.pseudo_time;
+          point.wall_seconds += last.wall_seconds;
+          fit.trace.push_back(point);
+        }
+        if (!report.usable) {
+          throw InputError(sequence.source + ": frame " +
+                           std::to_string(frame.index) +
+                           ": solver failed: " + report.message);
+        }
+        if (rerank_depths) {
+          if (RerankDepths(model, points, tracked_tags, &fit.material) <
+              options.correspondence_tolerance_mm) {
+            break;
+          }
+          continue;
+        }
+        if (unknown.empty()) break;
+        if (reference) SpanAxialExtent(points, options, &model);
+        if (update_closest() < options.correspondence_tolerance_mm) break;
       }
-      report =
-          SolveFrame(points, fit.material, sliding, rim_height, kind,
-                     kind == FrameKind::kUntracked ? reference_state : prior,
-                     reference_quaternion, round_options, &model);
-      fit.iterations += report.iterations;
-      fit.residual_evaluations += report.residual_evaluations;
-      fit.jacobian_evaluations += report.jacobian_evaluations;
-      fit.jacobian_seconds += report.jacobian_seconds;
-      fit.linear_solver_seconds += report.linear_solver_seconds;
-      fit.minimizer_seconds += report.minimizer_seconds;
-      ++fit.correspondence_rounds;
-      for (SolverTracePoint point : report.trace) {
-        point.iteration += last.iteration + 1;
-        point.pseudo_time += last.pseudo_time;
-        point.wall_seconds += last.wall_seconds;
-        fit.trace.push_back(point);
+    };
+    solve_rounds();
+    if (reference && !wall_decided) {
+      // Tags through the wall, or on one surface?  Their spread about the
+      // fitted mid-wall says.
+      std::vector<Eigen::Vector3d> tag_points;
+      std::vector<MaterialPoint> tag_material;
+      std::vector<double> tag_u;
+      for (size_t i = 0; i < points.size(); ++i) {
+        if (!assign_depth[i]) continue;
+        tag_points.push_back(points[i]);
+        tag_material.push_back(fit.material[i]);
+        tag_u.push_back(fit.material[i].u);
       }
-      if (!report.usable) {
-        throw InputError(sequence.source + ": frame " +
-                         std::to_string(frame.index) +
-                         ": solver failed: " + report.message);
+      const std::vector<double> distances =
+          MidwallDistances(model, tag_points, tag_material);
+      const double spread = WallSpreadMm(model, tag_material, distances);
+      result.wall_reason =
+          "tags spread " + FormatMm(spread) + " mm across the wall";
+      // An unfinished solve leaves tags far from the surface too: only a
+      // converged one tells a wall from a fit that stopped early.
+      const bool wall_seen = spread >= kMinWallSpreadMm && report.converged;
+      if (options.wall == WallModel::kSolid || wall_seen) {
+        model.config.MakeSolid();
+        const double h = std::max(
+            0.0, ThicknessFromDepths(distances,
+                                     QuantileDepths(tag_u, distances)));
+        model.state.globals[kH] = h;
+        for (FunctionValues& knot : model.state.knots) knot[kH] = h;
+        if (options.wall == WallModel::kSolid) {
+          result.wall_reason += " (--wall solid)";
+        }
+        update_closest();
+        solve_rounds();
+      } else if (!report.converged) {
+        result.wall_reason +=
+            ", but frame 0's mid-wall solve did not converge: one surface";
+      } else {
+        result.wall_reason += ": one surface (under " +
+                              FormatMm(kMinWallSpreadMm) + " mm)";
       }
-      if (unknown.empty()) break;
-      if (reference) SpanAxialExtent(points, options, &model);
-      closest_start = std::chrono::steady_clock::now();
-      const double moved = UpdateClosest(
-          model, points, unknown, options.solver.num_threads, &fit.material);
-      fit.correspondence_seconds +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                        closest_start)
-              .count();
-      if (moved < options.correspondence_tolerance_mm) break;
+      wall_decided = true;
     }
     recorder.Finish();
     fit.termination = report.termination;
@@ -272,7 +471,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
     const BendingShift turns = model.CanonicalizeBending();
     if (turns != BendingShift{0.0, 0.0}) {
       for (TrajectoryPoint& point : fit.trajectory) {
-        Model recorded{config, point.state};
+        Model recorded{model.config, point.state};
         recorded.ShiftBending(turns);
         point.state = recorded.state;
       }
@@ -295,6 +494,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
     }
     result.frames.push_back(std::move(fit));
   }
+  result.config = model.config;
+  if (result.config.Solid()) result.surface = WallLayer::kAnywhere;
   return result;
 }
 

@@ -49,13 +49,25 @@ struct FrameFit {
 };
 
 struct SequenceFit {
-  ModelConfig config;
+  ModelConfig config;  // config.Solid(): the wall model the fit chose.
+  // Why: "--wall midwall", "endocardial and epicardial contours", "tags
+  // spread 9.8 mm across the wall", ...
+  std::string wall_reason;
+  // Of a single surface (not a solid), which wall its data lie on: the
+  // endocardium or the epicardium when frame 0 has contours of that wall
+  // only, else kAnywhere (tags: the mid-wall).
+  WallLayer surface = WallLayer::kAnywhere;
   std::vector<FrameFit> frames;
   Model ModelAt(int frame) const { return {config, frames[frame].state}; }
 };
 
-// Gauge: see gauge.h and README "Gauge conventions".  Throws InputError
-// naming the frame when a frame has too few points or the solver fails.
+// Gauge: see gauge.h and README "Gauge conventions".  The wall
+// (options.wall, docs/gauge.md "The wall"): a solid when the first frame
+// has contours of both walls, or tags spread across the wall by at least
+// kMinWallSpreadMm after a converged mid-wall fit of that frame; a single
+// surface otherwise.  Throws InputError naming the frame when a frame has too few
+// points or the solver fails, and when --wall solid meets data with
+// neither.
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options);
 

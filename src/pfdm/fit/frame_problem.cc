@@ -40,6 +40,11 @@ FunctionValues FunctionScales(const Model& model,
   scales[kTau] = a0;
   scales[kB0] = scales[kB2] = scales[kE1o] = scales[kE2o] = scales[kE3o] = 1.0;
   scales[kB1] = scales[kB3] = radius;
+  // A unit of h moves a wall surface by half a millimetre, one of shift by a
+  // millimetre; dtau turns it by half as much as tau.
+  scales[kH] = 0.5;
+  scales[kWallShift] = 1.0;
+  scales[kDtau] = 0.5 * a0;
   for (int f : held) scales[f] = 0.0;
   return scales;
 }
@@ -111,22 +116,23 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   };
   for (size_t i = 0; i < points.size(); ++i) {
     const KnotSpan span = grid.Span(material[i].u);
-    const double u = material[i].u, v = material[i].v;
+    const double u = material[i].u, v = material[i].v, w = material[i].w;
     const bool plane = sliding[i] && u < config.u_max;
     if (analytic) {
       groups[span.k0].push_back(
           plane ? PointSample(points[i], u, v, span.weight,
-                              SurfaceNormal(*model, u, v))
+                              SurfaceNormal(*model, u, v, w))
                 : PointSample(points[i], u, v, span.weight));
+      groups[span.k0].back().w = w;
       if (groups[span.k0].size() == group_size) add_group(span.k0);
       continue;
     }
     ceres::CostFunction* cost =
         plane ? MakeSurfaceCost(points[i], u, v, span.weight, free_mask,
-                                unit_exponents, SurfaceNormal(*model, u, v),
-                                options.jacobian)
+                                unit_exponents, SurfaceNormal(*model, u, v, w),
+                                options.jacobian, w)
               : MakePointCost(points[i], u, v, span.weight, free_mask,
-                              unit_exponents, options.jacobian);
+                              unit_exponents, options.jacobian, w);
     blocks.AddResidual(cost, loss, true, {kGlobalsBlock, span.k0, span.k0 + 1});
   }
   for (int k0 = 0; k0 + 1 < config.num_knots; ++k0) {

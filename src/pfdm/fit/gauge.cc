@@ -10,7 +10,8 @@
 namespace pfdm {
 namespace {
 
-constexpr int kReferenceHeld[] = {kA3, kTau, kB0, kB1, kB2, kB3};
+constexpr int kReferenceHeld[] = {kA3, kTau, kDtau, kWallShift,
+                                   kB0, kB1, kB2, kB3};
 
 }  // namespace
 
@@ -28,7 +29,9 @@ std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
                        f) != std::end(kReferenceHeld);
     }
     hold = hold || ((f == kE1o || f == kE2o) && block == kGlobalsBlock);
-    if (kind == FrameKind::kUntracked) hold = hold || f == kTau;
+    if (kind == FrameKind::kUntracked) {
+      hold = hold || f == kTau || f == kDtau || f == kWallShift;
+    }
     if (hold) held.push_back(f);
   }
   return held;

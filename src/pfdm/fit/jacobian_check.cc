@@ -20,6 +20,7 @@ struct State {
   FunctionValues knot0;
   FunctionValues knot1;
   double u = 0.3, v = 1.1;
+  double w = 0.0;  // The mid-wall unless a state says.
   bool unit_exponents = false;
   FunctionMask free_mask = (1u << kNumFunctions) - 1;
 };
@@ -43,6 +44,9 @@ State General() {
   f[kE1o] = 1.0;
   f[kE2o] = -2.0;
   f[kE3o] = 0.5;
+  f[kH] = 9.0;
+  f[kDtau] = 0.05;
+  f[kWallShift] = 0.7;
   s.globals = s.knot0 = s.knot1 = f;
   for (int i = 1; i < kNumFunctions; ++i) s.knot1[i] *= 1.1;
   return s;
@@ -92,6 +96,30 @@ std::vector<std::pair<std::string, State>> States() {
   identity.quaternion[1] = identity.quaternion[2] = identity.quaternion[3] = 0;
   identity.center[0] = identity.center[1] = identity.center[2] = 0.0;
   add("constant functions", 0.1, -0.3).free_mask = 0;
+  // The solid's surfaces (model/transmural.h).
+  add("endocardium", 0.3, 1.1).w = -1.0;
+  add("epicardium", -0.4, -2.0).w = 1.0;
+  add("endocardium at the apex pole", -kHalfPi, 0.7).w = -1.0;
+  add("epicardium on +x axis", -0.4, 0.0).w = 1.0;
+  State& cup_wall = add("epicardium, cup bends", -0.5, 1.3);
+  cup_wall.w = 1.0;
+  ForEachBlock(&cup_wall, [](FunctionValues* f) {
+    (*f)[kB1] = 0.0;
+    (*f)[kB3] = 2.0;
+  });
+  State& unit_wall = add("endocardium, eps = 1 held", -0.9, 2.5);
+  ForEachBlock(&unit_wall,
+               [](FunctionValues* f) { (*f)[kEps1] = (*f)[kEps2] = 1.0; });
+  unit_wall.unit_exponents = true;
+  unit_wall.w = -1.0;
+  State& solid = add("inside the wall, solid LV set-up", -1.2, -0.3);
+  ModelConfig solid_config = ModelConfig::Paper(17);
+  solid_config.MakeSolid();
+  ForEachBlock(&solid,
+               [](FunctionValues* f) { (*f)[kEps1] = (*f)[kEps2] = 1.0; });
+  solid.unit_exponents = true;
+  solid.free_mask = solid_config.FreeMask();
+  solid.w = 0.4;
   return states;
 }
 
@@ -136,10 +164,11 @@ std::vector<JacobianCheck> CheckJacobians() {
     for (JacobianKind kind :
          {JacobianKind::kAnalytic, JacobianKind::kAutodiff}) {
       std::unique_ptr<ceres::CostFunction> point(MakePointCost(
-          data, s.u, s.v, 0.3, s.free_mask, s.unit_exponents, kind));
+          data, s.u, s.v, 0.3, s.free_mask, s.unit_exponents, kind, s.w));
       checks.push_back(Check(name, "point", kind, *point, s));
-      std::unique_ptr<ceres::CostFunction> surface(MakeSurfaceCost(
-          data, s.u, s.v, 0.3, s.free_mask, s.unit_exponents, normal, kind));
+      std::unique_ptr<ceres::CostFunction> surface(
+          MakeSurfaceCost(data, s.u, s.v, 0.3, s.free_mask, s.unit_exponents,
+                          normal, kind, s.w));
       checks.push_back(Check(name, "surface", kind, *surface, s));
     }
   }

@@ -42,7 +42,7 @@ void ForEachShape(const std::vector<PointSample>& samples,
       const PointSample& sample = samples[first + i];
       InterpolateFunctions(free_mask, blocks[2], blocks[3], blocks[4],
                            sample.knot_weight, f[i]);
-      preludes[i] = PrepareShape(f[i], sample.angles, unit_exponents);
+      preludes[i] = PrepareShape(f[i], sample.angles, unit_exponents, sample.w);
       std::copy(preludes[i].angles, preludes[i].angles + kNumShapeAngles,
                 angles + i * kNumShapeAngles);
     }
@@ -79,8 +79,7 @@ PointGroupResidual::PointGroupResidual(
   compressed_ = columns_ > 0 && rows_ > columns_ + 1;
   const auto functions = [this](int knot) {
     return entries_[knot] ? entries_[knot]->free()
-                          : std::vector<int>(std::begin(kAllFunctions),
-                                             std::end(kAllFunctions));
+                          : std::vector<int>(kAllFunctions, kAllFunctions + kNumFunctions);
   };
   knots_alike_ = varied_[3] && varied_[4] && functions(1) == functions(2);
   set_num_residuals(compressed_ ? columns_ + 1 : rows_);

@@ -7,21 +7,24 @@
 
 namespace pfdm {
 
-// r = c + R(q) s(f(u_i); u_i, v_i) - d_i, where
+// r = c + R(q) s(f(u_i); u_i, v_i, w_i) - d_i, where
 // f(u_i) = (1 - w_i) knot_k + w_i knot_{k+1} for the free functions and the
 // global block otherwise.  (u_i, v_i) is the data point's material point,
-// held fixed during a solve; r is in mm.
+// held fixed during a solve, w_i its transmural coordinate (transmural.h);
+// r is in mm.
 class PointResidual {
  public:
   static constexpr int kNumResiduals = 3;
 
   PointResidual(const Eigen::Vector3d& data, double u, double v,
-                double knot_weight, FunctionMask free_mask, bool unit_exponents)
+                double knot_weight, FunctionMask free_mask, bool unit_exponents,
+                double w = 0.0)
       : data_(data),
         angles_(MakeAngles(u, v)),
         knot_weight_(knot_weight),
         free_mask_(free_mask),
-        unit_exponents_(unit_exponents) {}
+        unit_exponents_(unit_exponents),
+        w_(w) {}
 
   template <typename T>
   bool operator()(const T* center, const T* quaternion, const T* globals,
@@ -39,17 +42,17 @@ class PointResidual {
     T f[kNumFunctions];
     InterpolateFunctions(free_mask_, globals, knot0, knot1, knot_weight_, f);
     return WorldFromModel(center, quaternion,
-                          ReferenceShape(f, angles_, unit_exponents_));
+                          ReferenceShape(f, angles_, unit_exponents_, w_));
   }
 
   static ceres::CostFunction* Create(const Eigen::Vector3d& data, double u,
                                      double v, double knot_weight,
                                      FunctionMask free_mask,
-                                     bool unit_exponents) {
+                                     bool unit_exponents, double w = 0.0) {
     return new ceres::AutoDiffCostFunction<PointResidual, kNumResiduals, 3, 4,
                                            kNumFunctions, kNumFunctions,
-                                           kNumFunctions>(
-        new PointResidual(data, u, v, knot_weight, free_mask, unit_exponents));
+                                           kNumFunctions>(new PointResidual(
+        data, u, v, knot_weight, free_mask, unit_exponents, w));
   }
 
  private:
@@ -58,6 +61,7 @@ class PointResidual {
   double knot_weight_;
   FunctionMask free_mask_;
   bool unit_exponents_;
+  double w_;
 };
 
 // r = n_i . (c + R(q) s(f(u_i); u_i, v_i) - d_i): the point-to-plane
@@ -87,12 +91,13 @@ class SurfaceResidual {
                                      double v, double knot_weight,
                                      FunctionMask free_mask,
                                      bool unit_exponents,
-                                     const Eigen::Vector3d& normal) {
+                                     const Eigen::Vector3d& normal,
+                                     double w = 0.0) {
     return new ceres::AutoDiffCostFunction<
         SurfaceResidual, 1, 3, 4, kNumFunctions, kNumFunctions, kNumFunctions>(
-        new SurfaceResidual(
-            PointResidual(data, u, v, knot_weight, free_mask, unit_exponents),
-            normal, data));
+        new SurfaceResidual(PointResidual(data, u, v, knot_weight, free_mask,
+                                          unit_exponents, w),
+                            normal, data));
   }
 
  private:

@@ -14,8 +14,15 @@ namespace internal {
 
 constexpr int kBlockSizes[5] = {3, 4, kNumFunctions, kNumFunctions,
                                 kNumFunctions};
-constexpr int kAllFunctions[kNumFunctions] = {0, 1, 2, 3,  4,  5,  6,
-                                              7, 8, 9, 10, 11, 12, 13};
+// 0, 1, ..., kNumFunctions - 1.
+struct FunctionIndices {
+  int values[kNumFunctions];
+  constexpr FunctionIndices() : values() {
+    for (int i = 0; i < kNumFunctions; ++i) values[i] = i;
+  }
+};
+inline constexpr FunctionIndices kFunctionIndices;
+inline constexpr const int* kAllFunctions = kFunctionIndices.values;
 
 // Whether `block` (0: the globals, 1 and 2: the two knots) supplies
 // `function`: the globals supply the functions that are not free, the knots

@@ -43,8 +43,32 @@ constexpr const char* kGaugeConvention =
     "the same bend) until their knot means lie in [0, 2).";
 
 constexpr const char* kEjectionDefinition =
-    "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; "
-    "volume_ml is the fitted cavity as cavity_closure says.";
+    "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; the "
+    "volumes are the frames' cavity_volume_ml, closed as cavity_closure "
+    "says.";
+
+constexpr const char* kVolumeFractionDefinition =
+    "(V_ED - V_ES) / V_ED of the volume the fitted surface encloses, which "
+    "is not the cavity (volume_surface says what it is: a surface through "
+    "the middle of the wall encloses the cavity and about half the "
+    "myocardium), so this is not the ejection fraction: fit tags through "
+    "the wall or contours of both walls (--wall solid) for that; ED is frame "
+    "0, ES the frame of least volume.";
+
+constexpr const char* kWallDefinition =
+    "A solid (model.wall): x(u, v, w) with w from -1 (endocardium) to +1 "
+    "(epicardium), the layer w = 0 displaced along the ellipsoid normal n by "
+    "w h / 2 + w^2 shift, the twist tau + w dtau / 2; tags get their w from "
+    "their rank across the wall in every frame (docs/gauge.md, The wall).  "
+    "cavity_volume_ml is inside the endocardium, myocardial_volume_ml "
+    "between the walls (each closed as cavity_closure says), lv_mass_g at "
+    "1.05 g/ml; endo_* and epi_* rotations and radial contraction are "
+    "measured like the mid-wall's on each wall's rings in the same frame-0 "
+    "short-axis planes; wall_thickness_mm is the endocardial-to-epicardial "
+    "vector of a material point along the mid-wall's normal, the mean over "
+    "the ten contraction rings, and wall_thickening_percent the mean of "
+    "100 (T / T0 - 1) over them (per segment: regions' "
+    "thickening_percent).";
 
 constexpr const char* kRegionsConvention =
     "AHA-style segments: thirds of frame 0's axis from the base rim to the "
@@ -96,7 +120,7 @@ std::string CavityClosure(const FitAnalysis& analysis) {
 
 bool IsLength(int f) {
   return f == kA0 || f == kA1 || f == kA2 || f == kA3 || f == kB0 || f == kB2 ||
-         f == kE1o || f == kE2o || f == kE3o;
+         f == kE1o || f == kE2o || f == kE3o || f == kH || f == kWallShift;
 }
 
 double KnotRingZ(const Model& model, double u) {
@@ -223,7 +247,7 @@ double ReportedValue(const Model& model, int f, double u) {
 }
 
 const char* ReportedUnit(int f) {
-  return f == kTau ? "rad" : IsLength(f) ? "mm" : "1";
+  return f == kTau || f == kDtau ? "rad" : IsLength(f) ? "mm" : "1";
 }
 
 std::string ParametersCsv(const std::vector<Model>& frames) {
@@ -255,6 +279,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   json settings = {
       {"points", points.source},
       {"smoothness_weight", options.smoothness_weight},
+      {"wall", WallModelName(options.wall)},
       {"prior_weight", options.prior_weight},
       {"untracked_prior_weight", options.untracked_prior_weight},
       {"loss", options.loss},
@@ -301,15 +326,19 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                 {"knots", fit.config.num_knots},
                 {"u_min", fit.config.u_min},
                 {"u_max", fit.config.u_max},
+                {"wall", fit.config.Solid() ? "solid" : "midwall"},
+                {"wall_reason", fit.wall_reason},
+                {"volume_surface", analysis.volume_surface},
                 {"functions", functions}};
+  const bool solid = fit.config.Solid();
+  const std::string volume_key = analysis.volume_surface + "_volume_ml";
 
   json frames = json::array();
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& frame = fit.frames[t];
     const ClinicalSummary& summary = analysis.clinical[t];
     const GlobalStrain& strain = analysis.strain[t];
-    frames.push_back(
-        {{"frame", frame.frame},
+    json entry = {{"frame", frame.frame},
          {"n_points", frame.residuals.size()},
          {"rms_mm", frame.rms_mm},
          {"mean_distance_mm", frame.mean_distance_mm},
@@ -318,7 +347,12 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
          {"correspondence_rounds", frame.correspondence_rounds},
          {"solve_seconds", frame.solve_seconds},
          {"termination", frame.termination},
-         {"volume_ml", summary.volume_ml},
+         {volume_key, summary.volume_ml}};
+    if (solid) {
+      entry["myocardial_volume_ml"] = summary.myocardial_volume_ml;
+      entry["lv_mass_g"] = summary.lv_mass_g;
+    }
+    entry.update(json{
          {"pose",
           {{"center_mm", frame.state.center},
            {"quaternion_wxyz", frame.state.quaternion}}},
@@ -337,21 +371,40 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
            {"radial_ratio_x_per_knot", summary.radial_ratio_x},
            {"radial_ratio_y_per_knot", summary.radial_ratio_y},
            {"longitudinal_ratio_per_knot", summary.longitudinal_ratio}}}});
+    if (solid) {
+      json& clinical = entry["clinical"];
+      clinical["endo_apex_rotation_deg"] = summary.endo_apex_rotation_deg;
+      clinical["endo_base_rotation_deg"] = summary.endo_base_rotation_deg;
+      clinical["endo_net_twist_deg"] = summary.endo_net_twist_deg;
+      clinical["epi_apex_rotation_deg"] = summary.epi_apex_rotation_deg;
+      clinical["epi_base_rotation_deg"] = summary.epi_base_rotation_deg;
+      clinical["epi_net_twist_deg"] = summary.epi_net_twist_deg;
+      clinical["endo_radial_contraction_percent"] =
+          summary.endo_radial_contraction_percent;
+      clinical["epi_radial_contraction_percent"] =
+          summary.epi_radial_contraction_percent;
+      clinical["wall_thickness_mm"] = summary.wall_thickness_mm;
+      clinical["wall_thickening_percent"] = summary.wall_thickening_percent;
+    }
+    frames.push_back(std::move(entry));
   }
   const EjectionFraction& ef = analysis.ejection_fraction;
+  const bool cavity = analysis.volume_surface == "cavity";
   json ejection = {{"ratio", ef.ratio},
                    {"ed_frame", ef.ed_frame},
                    {"es_frame", ef.es_frame},
                    {"edv_ml", ef.edv_ml},
                    {"esv_ml", ef.esv_ml},
-                   {"definition", kEjectionDefinition},
+                   {"definition", cavity ? kEjectionDefinition
+                                         : kVolumeFractionDefinition},
                    {"cavity_closure", CavityClosure(analysis)}};
   const std::vector<double> peak_ecc = PeakRegionEcc(analysis.region_motion);
   json regions = json::array();
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
     const WallRegion& region = analysis.regions[r];
-    std::vector<double> rotation, radial, ecc, ell, ecl;
+    std::vector<double> rotation, radial, ecc, ell, ecl, thickening;
     for (const auto& motion : analysis.region_motion) {
+      thickening.push_back(motion[r].thickening_percent);
       rotation.push_back(motion[r].rotation_deg);
       radial.push_back(motion[r].radial_contraction_percent);
       ecc.push_back(motion[r].ecc_percent);
@@ -373,6 +426,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
          {"area_mm2", analysis.region_motion.empty()
                           ? 0.0
                           : analysis.region_motion[0][r].area_mm2}});
+    if (solid) regions.back()["thickening_percent"] = thickening;
   }
   json levels = json::object();
   static const char* const kLevelNames[] = {"basal", "mid", "apical"};
@@ -394,12 +448,15 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                    {"settings", settings},
                    {"model", model},
                    {"gauge_convention", kGaugeConvention},
-                   {"clinical_definition", kClinicalDefinition},
-                   {"ejection_fraction", ejection},
+                   {"clinical_definition", kClinicalDefinition}};
+  if (solid) document["wall_definition"] = kWallDefinition;
+  document[cavity ? "ejection_fraction"
+                  : analysis.volume_surface + "_volume_fraction"] = ejection;
+  document.update(json{
                    {"regions_convention", kRegionsConvention},
                    {"regions", regions},
                    {"strain", strain},
-                   {"frames", frames}};
+                   {"frames", frames}});
   return document.dump(2) + "\n";
 }
 
@@ -411,6 +468,23 @@ VtkPolyData FramePolyData(const Model& model, const Frame& frame,
   data.points = surface.mesh.points;
   data.triangles = surface.mesh.triangles;
   std::vector<double> u_values = surface.u, v_values = surface.v;
+  std::vector<double> w_values(data.points.size(), 0.0);
+  // A solid's walls go in as two more surfaces, told apart by w.
+  for (double w : model.config.Solid() ? std::vector<double>{-1.0, 1.0}
+                                       : std::vector<double>{}) {
+    const ModelSurface wall =
+        MakeModelSurface(model, kSurfaceRings, kSurfaceMeridians, {}, w);
+    const int offset = static_cast<int>(data.points.size());
+    data.points.insert(data.points.end(), wall.mesh.points.begin(),
+                       wall.mesh.points.end());
+    for (auto triangle : wall.mesh.triangles) {
+      for (int& corner : triangle) corner += offset;
+      data.triangles.push_back(triangle);
+    }
+    u_values.insert(u_values.end(), wall.u.begin(), wall.u.end());
+    v_values.insert(v_values.end(), wall.v.begin(), wall.v.end());
+    w_values.insert(w_values.end(), wall.u.size(), w);
+  }
   std::vector<double> is_data(data.points.size(), 0.0);
   std::vector<Eigen::Vector3d> residuals(data.points.size(),
                                          Eigen::Vector3d::Zero());
@@ -419,6 +493,7 @@ VtkPolyData FramePolyData(const Model& model, const Frame& frame,
     data.points.push_back(frame.points[i].position);
     u_values.push_back(fit.material[i].u);
     v_values.push_back(fit.material[i].v);
+    w_values.push_back(fit.material[i].w);
     is_data.push_back(1.0);
     residuals.push_back(fit.residuals[i]);
   }
@@ -428,6 +503,7 @@ VtkPolyData FramePolyData(const Model& model, const Frame& frame,
   }
   data.point_scalars = {{"u", u_values},
                         {"v", v_values},
+                        {"w", w_values},
                         {"twist_deg", twist},
                         {"is_data", is_data}};
   data.point_vectors = {{"residual", residuals}};
@@ -466,7 +542,8 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
       "report.html",
       FitReportHtml(
           points, fit, analysis, parameters_svg,
-          CycleCurvesSvg(analysis.clinical), StrainCurvesSvg(analysis.strain),
+          CycleCurvesSvg(analysis.clinical, analysis.volume_surface),
+          StrainCurvesSvg(analysis.strain),
           BullseyeSvg(analysis.regions, ClinicalBullseyeMaps(analysis))));
   files.emplace_back("fit.json", FitJson(points, fit, options, analysis));
 

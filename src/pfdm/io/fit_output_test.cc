@@ -41,14 +41,21 @@ TEST(FitOutputTest, JsonHasVolumesEjectionFractionAndRegions) {
   ASSERT_EQ(json["frames"].size(), 3u);
   std::vector<double> volumes;
   for (const auto& frame : json["frames"]) {
-    volumes.push_back(frame["volume_ml"].get<double>());
+    volumes.push_back(frame["midwall_volume_ml"].get<double>());
+    EXPECT_FALSE(frame.contains("cavity_volume_ml"));
   }
-  // The fitted cavity within 2 % of the true model's.
+  // Tags on one surface: named what it is, no ejection fraction.
+  EXPECT_EQ(json["model"]["wall"], "midwall");
+  EXPECT_EQ(json["model"]["volume_surface"], "midwall");
+  EXPECT_FALSE(json.contains("ejection_fraction"));
+  // The fitted surface's volume within 2 % of the true model's.
   for (int t = 0; t < 3; ++t) {
     const double truth = CavityVolumeMl(f.phantom.truth[t]);
     EXPECT_NEAR(volumes[t], truth, 0.02 * truth) << t;
   }
-  const auto& ef = json["ejection_fraction"];
+  const auto& ef = json["midwall_volume_fraction"];
+  EXPECT_NE(ef["definition"].get<std::string>().find("not the ejection"),
+            std::string::npos);
   EXPECT_EQ(ef["ed_frame"], 0);
   EXPECT_EQ(ef["es_frame"], 2);
   EXPECT_DOUBLE_EQ(ef["edv_ml"].get<double>(), volumes[0]);
@@ -110,10 +117,12 @@ TEST(FitOutputTest, SurfaceCarriesTwistInDegreesAtEachVertex) {
   const Model model = f.fit.ModelAt(2);
   const VtkPolyData data =
       FramePolyData(model, f.phantom.points.frames[2], f.fit.frames[2]);
-  ASSERT_EQ(data.point_scalars.size(), 4u);
-  EXPECT_EQ(data.point_scalars[2].first, "twist_deg");
+  ASSERT_EQ(data.point_scalars.size(), 5u);
+  EXPECT_EQ(data.point_scalars[2].first, "w");
+  for (double w : data.point_scalars[2].second) EXPECT_EQ(w, 0.0);
+  EXPECT_EQ(data.point_scalars[3].first, "twist_deg");
   const auto& u = data.point_scalars[0].second;
-  const auto& twist = data.point_scalars[2].second;
+  const auto& twist = data.point_scalars[3].second;
   ASSERT_EQ(twist.size(), data.points.size());
   EXPECT_EQ(data.vertices.size(), 600u);
   for (size_t i = 0; i < twist.size(); i += 97) {

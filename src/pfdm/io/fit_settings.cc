@@ -53,6 +53,7 @@ FitOptions FitOptionsFrom(const FitSettings& s) {
   options.smoothness_weight = Weight("smoothness", s.smoothness);
   options.prior_weight = Weight("prior", s.prior);
   options.untracked_prior_weight = Weight("untracked_prior", s.untracked_prior);
+  options.wall = WallModelFromName(s.wall);
   options.loss = s.loss;
   // Scale 0 once left the model unmoved with exit 0.
   if (!(s.loss_scale > 0.0) || !std::isfinite(s.loss_scale)) {

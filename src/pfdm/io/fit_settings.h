@@ -23,6 +23,7 @@ struct FitSettings {
   // The model.
   std::string model = "paper";
   int knots = 17;
+  std::string wall = "auto";
   // The fit.
   double smoothness = 1.0;
   double prior = 0.001;

@@ -153,6 +153,24 @@ PointSequence ReadPointsCsv(const std::string& path) {
   return Assemble(path, std::move(frames));
 }
 
+namespace {
+
+// biv-me's LV contours name their wall: SAX_LV_ENDOCARDIAL,
+// LAX_LV_EPICARDIAL and so on.  The aortic valve points end the cavity's
+// outflow tract (lv-cavity), so they are the endocardium's too.
+WallLayer ContourLayer(const std::string& type) {
+  if (type == "AORTA_VALVE") return WallLayer::kEndocardium;
+  auto ends_with = [&](const std::string& tail) {
+    return type.size() >= tail.size() &&
+           type.compare(type.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (ends_with("_LV_ENDOCARDIAL")) return WallLayer::kEndocardium;
+  if (ends_with("_LV_EPICARDIAL")) return WallLayer::kEpicardium;
+  return WallLayer::kAnywhere;
+}
+
+}  // namespace
+
 PointSequence ReadGpFiles(const std::string& path,
                           const std::vector<std::string>& contour_types) {
   std::vector<std::string> files;
@@ -189,7 +207,7 @@ PointSequence ReadGpFiles(const std::string& path,
                                        ParseCoordinate(file, line, "y", y),
                                        ParseCoordinate(file, line, "z", z));
         if (!keep.empty() && keep.count(type) == 0) continue;
-        points.push_back({next_id++, position});
+        points.push_back({next_id++, position, ContourLayer(type)});
       }
     } catch (const io::error::base& error) {
       throw Restate(file, error);

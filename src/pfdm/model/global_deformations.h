@@ -46,13 +46,14 @@ Eigen::Matrix<T, 3, 1> Bend(const T* f, const Eigen::Matrix<T, 3, 1>& e,
           f[kB2] * BendProfile(T(e[1] / e1max), f[kB3], ring[1]));
 }
 
-// T_twist(e) = Rz(tau) e: a right-handed rotation by tau about axis 3.
+// T_twist(e) = Rz(tau) e: a right-handed rotation by tau about axis 3 (the
+// function tau, or the twist of a surface off the mid-wall: TwistAt).
 template <typename T>
-Eigen::Matrix<T, 3, 1> Twist(const T* f, const Eigen::Matrix<T, 3, 1>& e) {
+Eigen::Matrix<T, 3, 1> Twist(const T& tau, const Eigen::Matrix<T, 3, 1>& e) {
   using std::cos;
   using std::sin;
-  const T c = cos(f[kTau]);
-  const T s = sin(f[kTau]);
+  const T c = cos(tau);
+  const T s = sin(tau);
   return Eigen::Matrix<T, 3, 1>(c * e[0] - s * e[1], s * e[0] + c * e[1], e[2]);
 }
 

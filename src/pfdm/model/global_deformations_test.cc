@@ -18,7 +18,7 @@ TEST(TwistTest, RotatesRightHandedAboutTheLongAxis) {
   FunctionValues f = Values();
   f[kTau] = 0.3;
   const Eigen::Vector3d e(10.0, 0.0, 7.0);
-  const Eigen::Vector3d twisted = Twist(f.data(), e);
+  const Eigen::Vector3d twisted = Twist(f[kTau], e);
   EXPECT_NEAR(std::atan2(twisted.y(), twisted.x()), 0.3, 1e-12);
   EXPECT_NEAR(twisted.head<2>().norm(), 10.0, 1e-12);
   EXPECT_EQ(twisted.z(), 7.0);

@@ -16,6 +16,9 @@ ModelConfig ModelConfig::Paper(int num_knots) {
   config.modes[kEps1] = FunctionMode::kFixed;
   config.modes[kEps2] = FunctionMode::kFixed;
   config.modes[kE3o] = FunctionMode::kFixed;
+  config.modes[kH] = FunctionMode::kFixed;
+  config.modes[kDtau] = FunctionMode::kFixed;
+  config.modes[kWallShift] = FunctionMode::kFixed;
   return config;
 }
 
@@ -40,6 +43,10 @@ ModelConfig ModelConfig::FromName(const std::string& name, int num_knots) {
   if (name == "superellipsoid") return Superellipsoid(num_knots);
   throw InputError("unknown --model '" + name +
                    "' (expected paper or superellipsoid)");
+}
+
+void ModelConfig::MakeSolid() {
+  modes[kH] = modes[kDtau] = modes[kWallShift] = modes[kA1];
 }
 
 const KnotGrid& ModelConfig::Grid() const {
@@ -98,14 +105,14 @@ double Model::FunctionAt(int function, double u) const {
   return FunctionsAt(u)[function];
 }
 
-Eigen::Vector3d Model::ModelPoint(double u, double v) const {
+Eigen::Vector3d Model::ModelPoint(double u, double v, double w) const {
   const FunctionValues f = FunctionsAt(u);
-  return ReferenceShape(f.data(), MakeAngles(u, v), UnitExponents());
+  return ReferenceShape(f.data(), MakeAngles(u, v), UnitExponents(), w);
 }
 
-Eigen::Vector3d Model::WorldPoint(double u, double v) const {
+Eigen::Vector3d Model::WorldPoint(double u, double v, double w) const {
   return WorldFromModel(state.center.data(), state.quaternion.data(),
-                        ModelPoint(u, v));
+                        ModelPoint(u, v, w));
 }
 
 namespace {

@@ -38,6 +38,12 @@ struct ModelConfig {
   static constexpr int kMaxKnots = 100;
   static ModelConfig FromName(const std::string& name, int num_knots);
 
+  // The wall (docs/gauge.md, "The wall"): a mid-wall surface holds the wall
+  // thickness h, the transmural twist difference dtau and shift at 0; a
+  // solid fits them as a1 is fitted (over the knots, or constant).
+  void MakeSolid();
+  bool Solid() const { return modes[kH] != FunctionMode::kFixed; }
+
   // The knots of this configuration; the reference stays valid until the
   // same thread asks for another configuration's grid.
   const KnotGrid& Grid() const;
@@ -67,8 +73,11 @@ struct Model {
   bool UnitExponents() const;
   double FunctionAt(int function, double u) const;
   FunctionValues FunctionsAt(double u) const;
-  Eigen::Vector3d ModelPoint(double u, double v) const;  // s, model frame
-  Eigen::Vector3d WorldPoint(double u, double v) const;  // c + R s
+  // s, model frame, on surface w (-1 endocardium, 0 mid-wall, +1
+  // epicardium: transmural.h).
+  Eigen::Vector3d ModelPoint(double u, double v, double w = 0.0) const;
+  Eigen::Vector3d WorldPoint(double u, double v,
+                             double w = 0.0) const;  // c + R s
   // Rotation world_from_model.
   Eigen::Matrix3d Rotation() const;
 

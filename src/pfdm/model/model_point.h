@@ -10,6 +10,7 @@
 #include "pfdm/model/global_deformations.h"
 #include "pfdm/model/parameter_function.h"
 #include "pfdm/model/superellipsoid.h"
+#include "pfdm/model/transmural.h"
 
 namespace pfdm {
 
@@ -30,11 +31,15 @@ void InterpolateFunctions(FunctionMask free_mask, const T* globals,
   }
 }
 
+// The point of surface w (transmural.h; 0: the mid-wall).  The bend's ring
+// mean is the mid-wall ring's on every surface.
 template <typename T, typename A>
 Eigen::Matrix<T, 3, 1> ReferenceShape(const T* f, const Angles<A>& angles,
-                                      bool unit_exponents) {
-  return Offset(f, Twist(f, Bend(f, Superellipsoid(f, angles, unit_exponents),
-                                 RingHalfExtents(f, angles, unit_exponents))));
+                                      bool unit_exponents, double w = 0.0) {
+  Eigen::Matrix<T, 3, 1> e = Superellipsoid(f, angles, unit_exponents);
+  if (w != 0.0) e += WallOffset(f, angles, w);
+  return Offset(f, Twist(TwistAt(f, w),
+                         Bend(f, e, RingHalfExtents(f, angles, unit_exponents))));
 }
 
 // x = c + R(q) p with q = (w, x, y, z) a unit quaternion.

@@ -14,10 +14,10 @@ constexpr int kVolumeMeridians = 128;
 }  // namespace
 
 ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
-                              std::optional<double> u_end) {
+                              std::optional<double> u_end, double w) {
   ModelSurface surface;
   auto add = [&](double u, double v) {
-    surface.mesh.points.push_back(model.WorldPoint(u, v));
+    surface.mesh.points.push_back(model.WorldPoint(u, v, w));
     surface.u.push_back(u);
     surface.v.push_back(v);
     return static_cast<int>(surface.mesh.points.size()) - 1;
@@ -51,15 +51,15 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
   return surface;
 }
 
-double CavityVolumeMl(const Model& model, const BasePlane* base) {
+double CavityVolumeMl(const Model& model, const BasePlane* base, double w) {
   if (base == nullptr) {
     const ModelSurface surface =
-        MakeModelSurface(model, kVolumeRings, kVolumeMeridians);
+        MakeModelSurface(model, kVolumeRings, kVolumeMeridians, {}, w);
     return EnclosedVolume(CapBoundaryLoops(surface.mesh)) / 1000.0;
   }
   // Closed at both poles; twice the rings for twice the range of u.
   const ModelSurface closed =
-      MakeModelSurface(model, 2 * kVolumeRings, kVolumeMeridians, kPi / 2);
+      MakeModelSurface(model, 2 * kVolumeRings, kVolumeMeridians, kPi / 2, w);
   Eigen::Vector3d normal = base->normal.normalized();
   if (normal.dot(model.Rotation().col(2)) < 0.0) normal = -normal;
   return VolumeBelowPlane(closed.mesh, base->point, normal) / 1000.0;

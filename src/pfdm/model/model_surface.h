@@ -23,16 +23,21 @@ struct ModelSurface {
 
 // u_end > u_max continues the surface past the base rim with every
 // function held at its base value; u_end = pi/2 closes it at a top pole.
+// w: the solid's surface (model/transmural.h), 0 the mid-wall.
 ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
-                              std::optional<double> u_end = std::nullopt);
+                              std::optional<double> u_end = std::nullopt,
+                              double w = 0.0);
 
-// Volume (ml) of the cavity.  Without a base plane: the model surface
+// Volume (ml) inside the model's surface w (the cavity for the endocardium,
+// w = -1 of a solid, or of a surface fitted to endocardial contours).
+// Without a base plane: the model surface
 // closed at the base by a fan of triangles around the rim's centroid (a
 // flat lid for a planar rim).  With one: the model continued past its rim
 // (see MakeModelSurface) and cut by the plane, keeping the apex's side, so a
 // tilted annulus is followed where the flat lid would cut across it.
 // Sampled finely enough that a sphere comes out within 0.1 %.
-double CavityVolumeMl(const Model& model, const BasePlane* base = nullptr);
+double CavityVolumeMl(const Model& model, const BasePlane* base = nullptr,
+                      double w = 0.0);
 
 }  // namespace pfdm
 

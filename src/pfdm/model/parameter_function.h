@@ -25,6 +25,9 @@ enum Function : int {
   kE1o,     // Axis offset along axis 1 (mm).
   kE2o,     // Axis offset along axis 2 (mm).
   kE3o,     // Axis offset along axis 3 (mm).
+  kH,       // Wall thickness (mm): endocardium w = -1 to epicardium w = +1.
+  kDtau,    // Epicardial minus endocardial twist (radians).
+  kWallShift,  // The walls' middle, outward of the layer w = 0 (mm).
   kNumFunctions
 };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "ceres/jet.h"
+#include "pfdm/model/transmural.h"
 
 namespace pfdm {
 namespace {
@@ -23,19 +24,30 @@ Power PowerOf(double x, double e, bool unit_exponents) {
 }  // namespace
 
 ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
-                          bool unit_exponents) {
+                          bool unit_exponents, double w) {
   ShapePrelude prelude;
   prelude.cu = PowerOf(angles.cos_u, f[kEps1], unit_exponents);
   prelude.su = PowerOf(angles.sin_u, f[kEps1], unit_exponents);
   prelude.cv = PowerOf(angles.cos_v, f[kEps2], unit_exponents);
   prelude.sv = PowerOf(angles.sin_v, f[kEps2], unit_exponents);
-  const double x1 = f[kA1] * prelude.cu.value * prelude.cv.value;
-  const double x2 = f[kA2] * prelude.cu.value * prelude.sv.value;
+  double x1 = f[kA1] * prelude.cu.value * prelude.cv.value;
+  double x2 = f[kA2] * prelude.cu.value * prelude.sv.value;
+  prelude.w = w;
+  if (w != 0.0) {
+    const Eigen::Vector3d m(angles.cos_u * angles.cos_v / f[kA1],
+                            angles.cos_u * angles.sin_v / f[kA2],
+                            angles.sin_u / f[kA3]);
+    prelude.wall_inverse_norm = 1.0 / m.norm();
+    prelude.wall_direction = m * prelude.wall_inverse_norm;
+    const double half = WallDepth(f, w) / f[kA0];
+    x1 += half * prelude.wall_direction[0];
+    x2 += half * prelude.wall_direction[1];
+  }
   prelude.angles[kPhase1] = kHalfPi * (x1 - f[kB1]);
   prelude.angles[kBend1] = kHalfPi * f[kB1];
   prelude.angles[kPhase2] = kHalfPi * (x2 - f[kB3]);
   prelude.angles[kBend2] = kHalfPi * f[kB3];
-  prelude.angles[kTwist] = f[kTau];
+  prelude.angles[kTwist] = TwistAt(f, w);
   for (int i = 0; i < 2; ++i) {
     const double ring = kHalfPi * f[i == 0 ? kA1 : kA2] * prelude.cu.value;
     prelude.j0[i] = ceres::BesselJ0(ring);
@@ -45,8 +57,9 @@ ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
 }
 
 Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
-                                 bool unit_exponents, ShapeJacobian* jacobian) {
-  const ShapePrelude prelude = PrepareShape(f, angles, unit_exponents);
+                                 bool unit_exponents, ShapeJacobian* jacobian,
+                                 double w) {
+  const ShapePrelude prelude = PrepareShape(f, angles, unit_exponents, w);
   double sines[kNumShapeAngles], cosines[kNumShapeAngles];
   for (int i = 0; i < kNumShapeAngles; ++i) {
     sines[i] = std::sin(prelude.angles[i]);
@@ -60,19 +73,25 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
 // B_e = I + e3 (beta1, beta2, 0)^T, beta_i = b_{2i-2} g_x(e_i / a0, b_{2i-1}) /
 // a0, g(x, b, r) = cos(pi/2 (x - b)) - J0(pi/2 r) cos(pi/2 b), and the ring
 // half extents r1 = a1 Cu^e1, r2 = a2 Cu^e1 bring in
-// dg/dr = pi/2 J1(pi/2 r) cos(pi/2 b) (J0' = -J1).
+// dg/dr = pi/2 J1(pi/2 r) cos(pi/2 b) (J0' = -J1).  Off the mid-wall the
+// primitive is e + k n with k = w h / 2 + w^2 s and n = m / |m|
+// (transmural.h), so de/dh = w n / 2, de/ds = w^2 n and de/da_i = k (I - n n^T) dm/da_i / |m| with
+// dm/da_i = -m_i / a_i along axis i; the twist angle is tau + w dtau / 2.
 Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
                                  const double* sines, const double* cosines,
                                  ShapeJacobian* jacobian) {
   const Power &cu = prelude.cu, &su = prelude.su, &cv = prelude.cv,
               &sv = prelude.sv;
   const double a0 = f[kA0];
-  const Eigen::Vector3d e(a0 * f[kA1] * cu.value * cv.value,
-                          a0 * f[kA2] * cu.value * sv.value,
-                          a0 * f[kA3] * su.value);
+  const Eigen::Vector3d primitive(a0 * f[kA1] * cu.value * cv.value,
+                                  a0 * f[kA2] * cu.value * sv.value,
+                                  a0 * f[kA3] * su.value);
+  const double half_wall = WallDepth(f, prelude.w);
+  const Eigen::Vector3d e =
+      primitive + half_wall * prelude.wall_direction;
 
-  const double x1 = f[kA1] * cu.value * cv.value;
-  const double x2 = f[kA2] * cu.value * sv.value;
+  const double x1 = e[0] / a0;
+  const double x2 = e[1] / a0;
   const double g1 = cosines[kPhase1] - prelude.j0[0] * cosines[kBend1];
   const double g2 = cosines[kPhase2] - prelude.j0[1] * cosines[kBend2];
   const Eigen::Vector3d b(e[0], e[1], e[2] + f[kB0] * g1 + f[kB2] * g2);
@@ -85,7 +104,7 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
   // de/df: only a0, a1..a3 and the exponents enter the primitive.
   Eigen::Matrix<double, 3, kNumFunctions> de =
       Eigen::Matrix<double, 3, kNumFunctions>::Zero();
-  de.col(kA0) = e / a0;
+  de.col(kA0) = primitive / a0;
   de(0, kA1) = a0 * cu.value * cv.value;
   de(1, kA2) = a0 * cu.value * sv.value;
   de(2, kA3) = a0 * su.value;
@@ -94,6 +113,19 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
   de(2, kEps1) = a0 * f[kA3] * su.d_exponent;
   de(0, kEps2) = a0 * f[kA1] * cu.value * cv.d_exponent;
   de(1, kEps2) = a0 * f[kA2] * cu.value * sv.d_exponent;
+  if (prelude.w != 0.0) {
+    const Eigen::Vector3d& n = prelude.wall_direction;
+    const Eigen::Matrix3d project =
+        (Eigen::Matrix3d::Identity() - n * n.transpose()) *
+        (half_wall * prelude.wall_inverse_norm);
+    // m_i = n_i |m|, so dm_i/da_i = -n_i |m| / a_i.
+    for (int i = 0; i < 3; ++i) {
+      de.col(kA1 + i) -=
+          project.col(i) * (n[i] / (prelude.wall_inverse_norm * f[kA1 + i]));
+    }
+    de.col(kH) = 0.5 * prelude.w * n;
+    de.col(kWallShift) = prelude.w * prelude.w * n;
+  }
 
   // db/df = B_e de/df + the bend's own dependence on a0 and b0..b3.
   const double gx1 = -kHalfPi * sines[kPhase1];
@@ -122,6 +154,8 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
   ds.row(2) = db.row(2);
   ds(0, kTau) += -s * b[0] - c * b[1];
   ds(1, kTau) += c * b[0] - s * b[1];
+  ds(0, kDtau) = 0.5 * prelude.w * ds(0, kTau);
+  ds(1, kDtau) = 0.5 * prelude.w * ds(1, kTau);
   ds(0, kE1o) += 1.0;
   ds(1, kE2o) += 1.0;
   ds(2, kE3o) += 1.0;

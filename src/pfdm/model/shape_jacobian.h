@@ -27,9 +27,13 @@ struct ShapePrelude {
   double angles[kNumShapeAngles];
   // J0 and J1 at pi/2 times each ring half extent (the bends' ring means).
   double j0[2], j1[2];
+  // The surface w (transmural.h): w, the wall direction n and 1 / |m|.
+  double w = 0.0;
+  Eigen::Vector3d wall_direction = Eigen::Vector3d::Zero();
+  double wall_inverse_norm = 0.0;
 };
 ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
-                          bool unit_exponents);
+                          bool unit_exponents, double w = 0.0);
 
 // The shape and, when jacobian is not null, ds/df, from the prelude and the
 // sines and cosines of its angles.
@@ -38,10 +42,12 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
                                  ShapeJacobian* jacobian);
 
 // Returns s = T_o(T_twist(T_b(e))) for the function values f at the
-// material point with the given angles and, when jacobian is not null,
-// ds/df (3 x 14, one column per function).  Matches ReferenceShape.
+// material point with the given angles on surface w and, when jacobian is
+// not null, ds/df (3 x kNumFunctions, one column per function).  Matches
+// ReferenceShape.
 Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
-                                 bool unit_exponents, ShapeJacobian* jacobian);
+                                 bool unit_exponents, ShapeJacobian* jacobian,
+                                 double w = 0.0);
 
 }  // namespace pfdm
 

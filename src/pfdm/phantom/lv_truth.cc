@@ -18,6 +18,41 @@ constexpr int kSurfaceCols = 256;
 constexpr int kSegmentRows = 60;
 constexpr int kSegmentCols = 120;
 constexpr double kLayerW[3] = {-1.0, 0.0, 1.0};  // Endo, mid, epi.
+constexpr int kLinePoints = 72;  // Transmural lines per ring.
+
+// A transmural line's material points: endocardium, epicardium, and four
+// mid-wall neighbours (nu + d, nu - d, phi + d, phi - d) for its normal.
+constexpr int kLineStride = 6;
+constexpr double kNormalStep = 1e-4;  // Radians of nu and phi.
+
+void AddLine(const LvShape& shape, double nu, double phi,
+             std::vector<Eigen::Vector3d>* material) {
+  material->push_back(shape.Position(nu, phi, -1.0));
+  material->push_back(shape.Position(nu, phi, 1.0));
+  material->push_back(shape.Position(nu + kNormalStep, phi, 0.0));
+  material->push_back(shape.Position(nu - kNormalStep, phi, 0.0));
+  material->push_back(shape.Position(nu, phi + kNormalStep, 0.0));
+  material->push_back(shape.Position(nu, phi - kNormalStep, 0.0));
+}
+
+// The wall's thickness across the line: endo-to-epi along the mid-wall's
+// normal there (what an echo or CMR chord perpendicular to the wall reads).
+double Thickness(const std::vector<Eigen::Vector3d>& world, int i) {
+  const Eigen::Vector3d normal =
+      (world[i + 2] - world[i + 3]).cross(world[i + 4] - world[i + 5]);
+  return std::abs((world[i + 1] - world[i]).dot(normal.normalized()));
+}
+
+// Mean over `count` lines from `begin` of T / T0 - 1.
+double LineStretch(const std::vector<Eigen::Vector3d>& world0,
+                   const std::vector<Eigen::Vector3d>& world, int begin,
+                   int count) {
+  double sum = 0.0;
+  for (int i = begin; i < begin + kLineStride * count; i += kLineStride) {
+    sum += Thickness(world, i) / Thickness(world0, i) - 1.0;
+  }
+  return sum / count;
+}
 
 using Points = std::vector<Eigen::Vector3d>;
 
@@ -90,6 +125,13 @@ LvTruthMeter::LvTruthMeter(const LvShape& shape) {
     }
     AddGrid(shape, kLayerW[layer], &surface_[layer]);
   }
+  line_begin_ = static_cast<int>(material_.size());
+  for (double h : LvRingHeights()) {
+    const double nu = shape.NuAtHeight(h * shape.base_z(), 0.0);
+    for (int i = 0; i < kLinePoints; ++i) {
+      AddLine(shape, nu, -kPi + 2.0 * kPi * i / kLinePoints, &material_);
+    }
+  }
   // Segment cells on the mid-wall, weighted by their ED area: per unit of h
   // and phi, r |dX/dh| in the meridian plane.
   segment_begin_ = static_cast<int>(material_.size());
@@ -109,6 +151,15 @@ LvTruthMeter::LvTruthMeter(const LvShape& shape) {
           shape.Position(nu, lambda_deg / kDegreesPerRadian - kPi, 0.0));
       segment_weight_.push_back(weight);
       segment_of_.push_back(SegmentOf(h, lambda_deg));
+    }
+  }
+  cell_line_begin_ = static_cast<int>(material_.size());
+  for (int row = 0; row < kSegmentRows; ++row) {
+    const double nu =
+        shape.NuAtHeight((row + 0.5) / kSegmentRows * shape.base_z(), 0.0);
+    for (int col = 0; col < kSegmentCols; ++col) {
+      AddLine(shape, nu, (col + 0.5) * 2.0 * kPi / kSegmentCols - kPi,
+              &material_);
     }
   }
 }
@@ -202,10 +253,16 @@ LvFrameTruth LvTruthMeter::Measure(const Points& world0,
   truth.volume_ml = volumes[1];
   truth.epi_volume_ml = volumes[2];
   truth.myocardial_volume_ml = volumes[2] - volumes[0];
+  for (int ring = 0; ring < kRings; ++ring) {
+    truth.wall_thickening_percent.push_back(
+        100.0 * LineStretch(world0, world,
+                            line_begin_ + kLineStride * kLinePoints * ring,
+                            kLinePoints));
+  }
 
   constexpr int kSegments = 16;
   std::vector<double> weight(kSegments, 0.0), turn(kSegments, 0.0),
-      contraction(kSegments, 0.0);
+      contraction(kSegments, 0.0), thickening(kSegments, 0.0);
   for (int row = 0; row < kSegmentRows; ++row) {
     const int begin = segment_begin_ + row * kSegmentCols;
     const Eigen::Vector3d c0 = Centroid(world0, begin, kSegmentCols);
@@ -219,6 +276,9 @@ LvFrameTruth LvTruthMeter::Measure(const Points& world0,
       turn[s] += wt * TurnAbout(axis0, world0[i] - c0, world[i] - c);
       contraction[s] +=
           wt * (1.0 - (world[i] - c).norm() / (world0[i] - c0).norm());
+      thickening[s] +=
+          wt * LineStretch(world0, world,
+                           cell_line_begin_ + kLineStride * cell, 1);
     }
   }
   for (int s = 0; s < kSegments; ++s) {
@@ -227,6 +287,7 @@ LvFrameTruth LvTruthMeter::Measure(const Points& world0,
     segment.name = SegmentName(s);
     segment.rotation_deg = kDegreesPerRadian * turn[s] / weight[s];
     segment.radial_contraction_percent = 100.0 * contraction[s] / weight[s];
+    segment.wall_thickening_percent = 100.0 * thickening[s] / weight[s];
     truth.segments.push_back(segment);
   }
   return truth;

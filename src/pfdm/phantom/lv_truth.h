@@ -30,6 +30,12 @@
 //   counter-clockwise about +z from the body's -x): area-weighted means
 //   (ED mid-wall area) of each point's rotation as above and of
 //   100 (1 - rho / rho0), rho its distance from its ring's centroid.
+//   wall_thickening_percent (segments and per ring): 100 (T / T0 - 1), T
+//   the wall's thickness at a mid-wall material point: the vector from the
+//   endocardial to the epicardial material point at its (nu, phi) (a
+//   coordinate line of mu, normal to every surface at ED) along the
+//   mid-wall's current normal there; the segment's area-weighted mean, the
+//   ring's plain mean.
 //   A lesion pulls its rings' centroids ~0.6 mm toward itself by
 //   end-systole, so, by these definitions, the other mid segments read up
 //   to 2 points of contraction and 1.3 degrees of rotation away from the
@@ -66,6 +72,7 @@ struct LvSegmentTruth {
   std::string name;  // "basal 1" .. "apical 4", as report/wall_motion.
   double rotation_deg = 0.0;
   double radial_contraction_percent = 0.0;
+  double wall_thickening_percent = 0.0;
 };
 
 struct LvFrameTruth {
@@ -85,6 +92,8 @@ struct LvFrameTruth {
   double epi_volume_ml = 0.0;
   double myocardial_volume_ml = 0.0;
   LvLayerRings midwall, endo, epi;
+  // Per LvRingHeights(), at the mid-wall ring's nu.
+  std::vector<double> wall_thickening_percent;
   std::vector<LvSegmentTruth> segments;
 };
 
@@ -110,6 +119,10 @@ class LvTruthMeter {
   std::vector<int> ring_begin_[3];  // Endo, mid, epi.
   Grid surface_[3];
   int segment_begin_ = 0;
+  // Transmural lines: per ring, kLinePoints (endo, epi) pairs; per segment
+  // cell likewise, one pair.
+  int line_begin_ = 0;
+  int cell_line_begin_ = 0;
   std::vector<double> segment_weight_;
   std::vector<int> segment_of_;  // Per cell, 0-based.
 };

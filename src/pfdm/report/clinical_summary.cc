@@ -8,11 +8,82 @@
 namespace pfdm {
 namespace {
 
-constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 double ApexToBaseRim(const Model& model) {
   const Eigen::Vector3d apex = model.WorldPoint(model.config.u_min, 0.0);
   return (SampleRing(model, model.config.u_max).centroid - apex).norm();
+}
+
+// Rotation (degrees) of surface w's ring at height fraction h.
+double RingRotationDeg(const Model& reference, const Model& current, double h,
+                       double w) {
+  const double u = RingAtHeightFraction(reference, h, w);
+  return MeanRotation(SampleRing(reference, u, kRingSamples, w),
+                      SampleRing(current, u, kRingSamples, w),
+                      LongAxis(reference)) *
+         kDegreesPerRadian;
+}
+
+// Mean over the contraction rings of 1 - r / r0 on surface w, percent.
+double RadialContractionPercent(const Model& reference, const Model& current,
+                                double w) {
+  double percent = 0.0;
+  for (int i = 0; i < kContractionRings; ++i) {
+    const double u =
+        RingAtHeightFraction(reference, (i + 0.5) / kContractionRings, w);
+    percent += 100.0 *
+               (1.0 - MeanRadius(SampleRing(current, u, kRingSamples, w)) /
+                          MeanRadius(SampleRing(reference, u, kRingSamples, w))) /
+               kContractionRings;
+  }
+  return percent;
+}
+
+// Mean wall thickness (mm) around the material ring at u.
+double RingThickness(const Model& model, double u) {
+  double sum = 0.0;
+  for (int j = 0; j < kRingSamples; ++j) {
+    sum += WallThickness(model, u, -kPi + 2.0 * kPi * (j + 0.5) / kRingSamples);
+  }
+  return sum / kRingSamples;
+}
+
+void SummarizeWall(const Model& reference, const Model& current,
+                   ClinicalSummary* summary) {
+  summary->solid = true;
+  summary->endo_apex_rotation_deg =
+      RingRotationDeg(reference, current, kApicalRingFraction, -1.0);
+  summary->endo_base_rotation_deg =
+      RingRotationDeg(reference, current, kBasalRingFraction, -1.0);
+  summary->endo_net_twist_deg =
+      summary->endo_base_rotation_deg - summary->endo_apex_rotation_deg;
+  summary->epi_apex_rotation_deg =
+      RingRotationDeg(reference, current, kApicalRingFraction, 1.0);
+  summary->epi_base_rotation_deg =
+      RingRotationDeg(reference, current, kBasalRingFraction, 1.0);
+  summary->epi_net_twist_deg =
+      summary->epi_base_rotation_deg - summary->epi_apex_rotation_deg;
+  summary->endo_radial_contraction_percent =
+      RadialContractionPercent(reference, current, -1.0);
+  summary->epi_radial_contraction_percent =
+      RadialContractionPercent(reference, current, 1.0);
+  double thickness = 0.0, thickening = 0.0;
+  for (int i = 0; i < kContractionRings; ++i) {
+    const double u =
+        RingAtHeightFraction(reference, (i + 0.5) / kContractionRings);
+    const double now = RingThickness(current, u);
+    thickness += now / kContractionRings;
+    thickening +=
+        100.0 * (now / RingThickness(reference, u) - 1.0) / kContractionRings;
+  }
+  summary->wall_thickness_mm = thickness;
+  summary->wall_thickening_percent = thickening;
+  summary->volume_ml = CavityVolumeMl(current, nullptr, -1.0);
+  summary->myocardial_volume_ml =
+      CavityVolumeMl(current, nullptr, 1.0) - summary->volume_ml;
+  summary->lv_mass_g = kMyocardialDensity * summary->myocardial_volume_ml;
 }
 
 }  // namespace
@@ -51,18 +122,15 @@ ClinicalSummary SummarizeFrame(int frame, const Model& reference,
     summary.radial_ratio_y.push_back(ratio(kA2));
     summary.longitudinal_ratio.push_back(ratio(kA3));
   }
-  for (int i = 0; i < kContractionRings; ++i) {
-    const double u =
-        RingAtHeightFraction(reference, (i + 0.5) / kContractionRings);
-    summary.radial_contraction_percent +=
-        100.0 *
-        (1.0 - MeanRadius(SampleRing(current, u)) /
-                   MeanRadius(SampleRing(reference, u))) /
-        kContractionRings;
-  }
+  summary.radial_contraction_percent =
+      RadialContractionPercent(reference, current, 0.0);
   summary.longitudinal_shortening_percent =
       100.0 * (1.0 - ApexToBaseRim(current) / ApexToBaseRim(reference));
-  summary.volume_ml = CavityVolumeMl(current);
+  if (current.config.Solid()) {
+    SummarizeWall(reference, current, &summary);
+  } else {
+    summary.volume_ml = CavityVolumeMl(current);
+  }
   return summary;
 }
 

@@ -15,6 +15,8 @@ constexpr double kApicalRingFraction = 0.2;
 constexpr double kBasalRingFraction = 0.85;
 // Radial contraction is the mean over rings at h = 0.05, 0.15, ..., 0.95.
 constexpr int kContractionRings = 10;
+// Myocardial density, g/ml, for the LV mass.
+constexpr double kMyocardialDensity = 1.05;
 
 // Every number but the per-knot ratios is measured on the fitted model's
 // material points (world coordinates) against frame 0's, so it means the
@@ -46,8 +48,32 @@ struct ClinicalSummary {
   // 1 - L / L0, percent, L the distance from the apex pole's material point
   // to the centroid of the base rim's material points.
   double longitudinal_shortening_percent = 0.0;
-  // The cavity closed at the base rim (CavityVolumeMl).
+  // Inside the fitted surface closed at the base rim (CavityVolumeMl): the
+  // cavity (the endocardium, w = -1) of a solid; of a single surface,
+  // whatever its data are (SequenceFit::surface).
   double volume_ml = 0.0;
+
+  // A solid's walls (model/transmural.h); all zero for a single surface.
+  // Each wall's rings sit on the same frame-0 short-axis planes as the
+  // mid-wall rings above (RingAtHeightFraction with w), measured likewise.
+  bool solid = false;
+  double endo_apex_rotation_deg = 0.0;
+  double endo_base_rotation_deg = 0.0;
+  double endo_net_twist_deg = 0.0;
+  double epi_apex_rotation_deg = 0.0;
+  double epi_base_rotation_deg = 0.0;
+  double epi_net_twist_deg = 0.0;
+  double endo_radial_contraction_percent = 0.0;
+  double epi_radial_contraction_percent = 0.0;
+  // Wall thickness (material_rings.h WallThickness), mean over the
+  // kContractionRings mid-wall rings; thickening the mean of 100 (T / T0 -
+  // 1) per ring, T0 frame 0's.
+  double wall_thickness_mm = 0.0;
+  double wall_thickening_percent = 0.0;
+  // Between the epicardium and the endocardium, each closed at the base
+  // rim; mass at kMyocardialDensity.
+  double myocardial_volume_ml = 0.0;
+  double lv_mass_g = 0.0;
 };
 
 // (EDV - ESV) / EDV with end-diastole the first frame and end-systole the

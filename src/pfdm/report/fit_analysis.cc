@@ -4,6 +4,13 @@
 
 namespace pfdm {
 
+std::string VolumeSurfaceName(const SequenceFit& fit) {
+  if (fit.config.Solid() || fit.surface == WallLayer::kEndocardium) {
+    return "cavity";
+  }
+  return fit.surface == WallLayer::kEpicardium ? "epicardial" : "midwall";
+}
+
 FitAnalysis AnalyzeFit(const SequenceFit& fit,
                        const std::vector<BasePlane>& base_planes,
                        const RegionLayout& layout) {
@@ -12,11 +19,19 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
     analysis.models.push_back(fit.ModelAt(static_cast<int>(t)));
   }
   analysis.clinical = SummarizeSequence(analysis.models);
+  analysis.volume_surface = VolumeSurfaceName(fit);
   if (base_planes.size() == fit.frames.size()) {
     analysis.base_planes = base_planes;
+    const bool solid = fit.config.Solid();
     for (size_t t = 0; t < fit.frames.size(); ++t) {
-      analysis.clinical[t].volume_ml =
-          CavityVolumeMl(analysis.models[t], &base_planes[t]);
+      ClinicalSummary& c = analysis.clinical[t];
+      const Model& model = analysis.models[t];
+      c.volume_ml = CavityVolumeMl(model, &base_planes[t], solid ? -1.0 : 0.0);
+      if (solid) {
+        c.myocardial_volume_ml =
+            CavityVolumeMl(model, &base_planes[t], 1.0) - c.volume_ml;
+        c.lv_mass_g = kMyocardialDensity * c.myocardial_volume_ml;
+      }
     }
   }
   analysis.ejection_fraction = EjectionFractionOf(analysis.clinical);

@@ -2,6 +2,7 @@
 #ifndef PFDM_REPORT_FIT_ANALYSIS_H_
 #define PFDM_REPORT_FIT_ANALYSIS_H_
 
+#include <string>
 #include <vector>
 
 #include "pfdm/fit/fitter.h"
@@ -22,7 +23,14 @@ struct FitAnalysis {
   std::vector<WallRegion> regions;
   std::vector<std::vector<RegionMotion>> region_motion;  // [frame][region]
   std::vector<GlobalStrain> strain;                      // Per frame.
+  // What clinical[t].volume_ml encloses: "cavity" (a solid's endocardium,
+  // or a surface fitted to endocardial contours), "epicardial" or "midwall"
+  // (VolumeSurfaceName).
+  std::string volume_surface;
 };
+
+// "cavity", "epicardial" or "midwall": see FitAnalysis::volume_surface.
+std::string VolumeSurfaceName(const SequenceFit& fit);
 
 // base_planes: one per frame to close the cavity there (see
 // CavityVolumeMl), or empty for the flat lid at the base rim.

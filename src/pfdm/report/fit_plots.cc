@@ -51,14 +51,18 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
                             m.FunctionAt(kA2, u) / ed.FunctionAt(kA2, u),
                             m.FunctionAt(kA3, u) / ed.FunctionAt(kA3, u),
                             m.FunctionAt(kTau, u) * kDegreesPerRadian,
-                            m.FunctionAt(kB0, u), m.FunctionAt(kB2, u)});
+                            m.FunctionAt(kB0, u), m.FunctionAt(kB2, u),
+                            m.FunctionAt(kH, u),
+                            m.FunctionAt(kDtau, u) * kDegreesPerRadian});
     }
   }
   std::ostringstream colors;
   for (int t = 0; t < n; ++t) colors << (t ? " " : "") << FrameColor(t, n);
+  const bool solid = ed.config.Solid();
   std::ostringstream script;
   script << "colors = '" << colors.str() << "'\n"
-         << "set multiplot layout 2,3 margins 0.05,0.9,0.09,0.92 "
+         << "set multiplot layout " << (solid ? 3 : 2)
+         << ",3 margins 0.05,0.9,0.09,0.92 "
             "spacing 0.06,0.13 title 'Parameter functions, apex to base, "
             "one line per frame' font 'sans,15'\n"
          << "set grid lc rgb '#dddddd'\n"
@@ -79,9 +83,12 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
       {5, "twist tau (degrees)", "0"},
       {6, "bending b0 (mm)", "0"},
       {7, "bending b2 (mm)", "0"},
+      {8, "wall thickness h (mm)", "0"},
+      {9, "epi minus endo twist dtau (degrees)", "0"},
   };
   bool first = true;
   for (const Panel& p : panels) {
+    if (!solid && p.column > 7) break;
     script << "set title '" << p.title << "'\n";
     if (first) {
       script << "set key at screen 0.995,0.92 top right Left reverse "
@@ -96,10 +103,12 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
     first = false;
   }
   script << "unset multiplot\n";
-  return RenderSvgString("parameters.svg", {block}, script.str(), 1200, 760);
+  return RenderSvgString("parameters.svg", {block}, script.str(), 1200,
+                         solid ? 1100 : 760);
 }
 
-std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries) {
+std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
+                           const std::string& volume_surface) {
   PlotData block{"cycle", {}};
   for (const ClinicalSummary& s : summaries) {
     block.rows.push_back({static_cast<double>(s.frame), s.volume_ml,
@@ -115,8 +124,12 @@ std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries) {
          << "set grid lc rgb '#dddddd'\nset xlabel 'frame'\n"
          << "set style data linespoints\nset pointsize 0.6\n"
          << "unset key\n"
-         << "set title sprintf('cavity volume, EF %.1f %%', "
-         << 100.0 * ef.ratio << ")\nset ylabel 'ml'\n"
+         << (volume_surface == "cavity"
+                 ? "set title sprintf('cavity volume, EF %.1f %%', " +
+                       std::to_string(100.0 * ef.ratio) + ")"
+                 : "set title '" + volume_surface +
+                       " volume (not the cavity)'")
+         << "\nset ylabel 'ml'\n"
          << "set label 1 'ED' at " << ef.ed_frame << ',' << ef.edv_ml
          << " offset 0.5,0.8\n"
          << "set label 2 'ES' at " << ef.es_frame << ',' << ef.esv_ml

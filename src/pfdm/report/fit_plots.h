@@ -18,7 +18,10 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames);
 
 // Over the frames: cavity volume (ED and ES marked), apex and base rotation
 // with net twist, and radial and longitudinal contraction.
-std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries);
+// volume_surface: what the volumes enclose (FitAnalysis::volume_surface);
+// only the cavity's gives an ejection fraction.
+std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
+                           const std::string& volume_surface = "cavity");
 
 }  // namespace pfdm
 

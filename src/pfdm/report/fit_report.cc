@@ -82,6 +82,13 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   const StrainPeak gcs = PeakGcs(analysis.strain);
   const StrainPeak gls = PeakGls(analysis.strain);
   const ClinicalSummary& es = analysis.clinical[ef.es_frame];
+  const ClinicalSummary& ed = analysis.clinical[ef.ed_frame];
+  const bool cavity = analysis.volume_surface == "cavity";
+  const std::string volume_name =
+      cavity ? "cavity volume"
+      : analysis.volume_surface == "epicardial"
+          ? "volume inside the epicardium"
+          : "mid-wall enclosed volume";
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
     << "<title>pfdm fit: " << EscapeMarkup(points.source) << "</title>"
@@ -91,13 +98,37 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     << fit.frames.size() << " frames; model <code>"
     << EscapeMarkup(fit.config.name) << "</code> with " << fit.config.num_knots
     << " knots from apex to base. End-diastole (ED) is frame " << ef.ed_frame
-    << ", end-systole (ES) the frame of least cavity volume, frame "
-    << ef.es_frame << ".</p>\n";
+    << ", end-systole (ES) the frame of least " << volume_name << ", frame "
+    << ef.es_frame << ". Wall: "
+    << (fit.config.Solid() ? "a solid from endocardium to epicardium"
+                           : "one surface")
+    << " (" << EscapeMarkup(fit.wall_reason) << ").</p>\n";
 
-  h << "<div class=\"key\">"
-    << "<div>ejection fraction<b>" << Fixed(100 * ef.ratio, 1) << " %</b>"
-    << "EDV " << Fixed(ef.edv_ml, 1) << " ml, ESV " << Fixed(ef.esv_ml, 1)
-    << " ml</div>"
+  h << "<div class=\"key\">";
+  if (cavity) {
+    h << "<div>ejection fraction<b>" << Fixed(100 * ef.ratio, 1) << " %</b>"
+      << "EDV " << Fixed(ef.edv_ml, 1) << " ml, ESV " << Fixed(ef.esv_ml, 1)
+      << " ml</div>";
+  } else {
+    h << "<div>" << volume_name << "<b>" << Fixed(ef.edv_ml, 1) << " ml</b>"
+      << "at ED, " << Fixed(ef.esv_ml, 1)
+      << " ml at ES: not the cavity, no ejection fraction</div>";
+  }
+  if (fit.config.Solid()) {
+    h << "<div>LV mass at ED<b>" << Fixed(ed.lv_mass_g, 0) << " g</b>"
+      << "myocardium " << Fixed(ed.myocardial_volume_ml, 0)
+      << " ml at 1.05 g/ml</div>"
+      << "<div>wall thickening at ES<b>"
+      << Fixed(es.wall_thickening_percent, 1) << " %</b>"
+      << Fixed(ed.wall_thickness_mm, 1) << " to "
+      << Fixed(es.wall_thickness_mm, 1) << " mm</div>"
+      << "<div>endo / epi net twist at ES<b>"
+      << Fixed(es.endo_net_twist_deg, 1) << " / "
+      << Fixed(es.epi_net_twist_deg, 1) << "&deg;</b>radial contraction "
+      << Fixed(es.endo_radial_contraction_percent, 1) << " / "
+      << Fixed(es.epi_radial_contraction_percent, 1) << " %</div>";
+  }
+  h
     << "<div>net twist at ES<b>" << Fixed(es.net_twist_deg, 1) << "&deg;</b>"
     << "apex " << Fixed(es.apex_rotation_deg, 1) << "&deg;, base "
     << Fixed(es.base_rotation_deg, 1) << "&deg;</div>"
@@ -124,7 +155,21 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
        "ED distance between those rings. Radial contraction: 1 &minus; r/r"
        "<sub>ED</sub>, r the mean distance of a ring's material points from "
        "their centroid; longitudinal shortening: of the distance from the "
-       "apex to the base rim's centroid. Volumes close the fitted surface "
+       "apex to the base rim's centroid. "
+    << (fit.config.Solid()
+            ? "Endocardial and epicardial numbers are measured likewise on "
+              "each wall's material rings; wall thickness is the "
+              "endocardial-to-epicardial chord of a material point along "
+              "the mid-wall's normal, thickening its change against ED; the "
+              "cavity is inside the endocardium and the myocardium between "
+              "the walls. "
+            : cavity ? ""
+                     : "The data lie on one surface through the wall (tags "
+                       "on a mid-wall), so the volume it encloses includes "
+                       "part of the myocardium and is not the cavity: fit "
+                       "tags through the wall or contours of both walls for "
+                       "that. ")
+    << "Volumes close the fitted surface "
     << (analysis.base_planes.empty()
             ? "with a flat lid at the base rim"
             : "at each frame's mitral valve plane (through the MITRAL_VALVE "
@@ -162,7 +207,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   }
 
   h << "<h2>Per frame</h2>\n<table><tr><th>frame</th><th>points</th>"
-    << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>volume ml</th>"
+    << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>"
+    << volume_name << " ml</th>"
     << "<th>net twist &deg;</th><th>apex &deg;</th><th>base &deg;</th>"
     << "<th>torsion &deg;/cm</th><th>radial %</th><th>longitudinal %</th>"
     << "<th>GCS %</th><th>GLS %</th>"
@@ -213,7 +259,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   h << "<table><tr><th>segment</th><th class=\"l\">region</th>"
     << "<th>longitude v, &deg;</th><th>rotation &deg;</th>"
     << "<th>radial contraction %</th><th>Ecc %</th><th>Ell %</th>"
-    << "<th>Ecl %</th><th>peak Ecc %</th></tr>\n";
+    << "<th>Ecl %</th><th>peak Ecc %</th>"
+    << (fit.config.Solid() ? "<th>thickening %</th>" : "") << "</tr>\n";
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
     const WallRegion& region = analysis.regions[r];
     constexpr double kDegrees = 180.0 / 3.14159265358979323846;
@@ -229,8 +276,12 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
       << Tint(-motion[r].ell_percent, 30.0) << ">"
       << Fixed(motion[r].ell_percent, 1) << "</td><td>"
       << Fixed(motion[r].ecl_percent, 1) << "</td><td"
-      << Tint(-peak_ecc[r], 30.0) << ">" << Fixed(peak_ecc[r], 1)
-      << "</td></tr>\n";
+      << Tint(-peak_ecc[r], 30.0) << ">" << Fixed(peak_ecc[r], 1) << "</td>";
+    if (fit.config.Solid()) {
+      h << "<td" << Tint(motion[r].thickening_percent, 60.0) << ">"
+        << Fixed(motion[r].thickening_percent, 1) << "</td>";
+    }
+    h << "</tr>\n";
   }
   h << "</table>\n<p class=\"note\">Segments: thirds of the ED axis (basal, "
        "mid, apical) cut into "

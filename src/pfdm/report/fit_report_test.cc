@@ -39,10 +39,20 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   EXPECT_NE(html.find("<svg id='p'></svg>"), std::string::npos);
   EXPECT_NE(html.find("<svg id='c'></svg>"), std::string::npos);
   EXPECT_EQ(html.find("<?xml"), std::string::npos);
-  char ef[32];
-  std::snprintf(ef, sizeof(ef), "%.1f %%",
-                100 * analysis.ejection_fraction.ratio);
-  EXPECT_NE(html.find(ef), std::string::npos) << ef;
+  // Tags on a mid-wall: its volume is named as such, with no ejection
+  // fraction; a surface fitted to endocardial contours encloses the cavity.
+  EXPECT_NE(html.find("mid-wall enclosed volume"), std::string::npos);
+  EXPECT_NE(html.find("no ejection fraction"), std::string::npos);
+  EXPECT_EQ(html.find("ejection fraction<b>"), std::string::npos);
+  SequenceFit endocardium = fit;
+  endocardium.surface = WallLayer::kEndocardium;
+  const FitAnalysis cavity = AnalyzeFit(endocardium);
+  const std::string cavity_html =
+      FitReportHtml(points, endocardium, cavity, "", "");
+  char ef[64];
+  std::snprintf(ef, sizeof(ef), "ejection fraction<b>%.1f %%",
+                100 * cavity.ejection_fraction.ratio);
+  EXPECT_NE(cavity_html.find(ef), std::string::npos) << ef;
   EXPECT_NE(html.find("4 ES"), std::string::npos);
   EXPECT_NE(html.find("<td>4.50</td>"), std::string::npos);  // RMS frame 4.
   // 5 frame rows and 16 segment rows, each a <tr> after its table's head.

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "pfdm/fit/correspondence.h"
+
 namespace pfdm {
 namespace {
 
@@ -9,11 +11,12 @@ constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
-MaterialRing SampleRing(const Model& model, double u, int samples) {
+MaterialRing SampleRing(const Model& model, double u, int samples,
+                        double w) {
   MaterialRing ring;
   for (int j = 0; j < samples; ++j) {
     const double v = -kPi + 2.0 * kPi * (j + 0.5) / samples;
-    ring.points.push_back(model.WorldPoint(u, v));
+    ring.points.push_back(model.WorldPoint(u, v, w));
     ring.centroid += ring.points.back();
   }
   ring.centroid /= samples;
@@ -44,6 +47,11 @@ double MeanRotation(const MaterialRing& from, const MaterialRing& to,
   return sum / from.points.size();
 }
 
+double WallThickness(const Model& model, double u, double v) {
+  return std::abs((model.WorldPoint(u, v, 1.0) - model.WorldPoint(u, v, -1.0))
+                      .dot(SurfaceNormal(model, u, v)));
+}
+
 double RingHeight(const Model& model, double u) {
   return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
          model.FunctionAt(kE3o, u);
@@ -57,6 +65,31 @@ double RingAtHeightFraction(const Model& reference, double h) {
   for (int i = 0; i < 60; ++i) {
     const double mid = 0.5 * (low + high);
     (RingHeight(reference, mid) < target ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+double RingAtHeightFraction(const Model& reference, double h, double w) {
+  const double u_mid = RingAtHeightFraction(reference, h);
+  if (w == 0.0) return u_mid;
+  const double target = RingHeight(reference, u_mid);
+  // Surface w's ring height, model frame: the mean of its points' z.
+  auto height = [&](double u) {
+    double sum = 0.0;
+    constexpr int kSamples = 24;
+    for (int j = 0; j < kSamples; ++j) {
+      sum += reference.ModelPoint(u, -kPi + 2.0 * kPi * (j + 0.5) / kSamples,
+                                  w)
+                 .z();
+    }
+    return sum / kSamples;
+  };
+  double low = reference.config.u_min, high = reference.config.u_max;
+  if (height(low) >= target) return low;
+  if (height(high) <= target) return high;
+  for (int i = 0; i < 50; ++i) {
+    const double mid = 0.5 * (low + high);
+    (height(mid) < target ? low : high) = mid;
   }
   return 0.5 * (low + high);
 }

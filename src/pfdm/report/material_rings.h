@@ -19,8 +19,9 @@ struct MaterialRing {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
 };
 
+// The ring at u on the solid's surface w (model/transmural.h; 0: mid-wall).
 MaterialRing SampleRing(const Model& model, double u,
-                        int samples = kRingSamples);
+                        int samples = kRingSamples, double w = 0.0);
 
 // Mean distance of the ring's points from its centroid.
 double MeanRadius(const MaterialRing& ring);
@@ -36,6 +37,12 @@ double MeanRotation(const MaterialRing& from, const MaterialRing& to,
 double AngleAbout(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                   const Eigen::Vector3d& axis);
 
+// A solid's wall thickness (mm) at the material point (u, v): the vector
+// from its endocardial to its epicardial point, (u, v, -1) to (u, v, +1),
+// along the normal of the layer w = 0 there, as a chord perpendicular to
+// the wall reads it.
+double WallThickness(const Model& model, double u, double v);
+
 // Height of ring u along the reference model's axis in its model frame:
 // a0 a3 sin u + e3o, which bending does not move (its ring mean is zero).
 double RingHeight(const Model& model, double u);
@@ -43,6 +50,12 @@ double RingHeight(const Model& model, double u);
 // The u of the material ring at height fraction h (0 apex, 1 base rim) of
 // the reference model's apex-to-base length.
 double RingAtHeightFraction(const Model& reference, double h);
+
+// The u of surface w's material ring whose centroid sits at the height of
+// the mid-wall ring at fraction h (so endocardial, mid-wall and epicardial
+// rings at one h share a short-axis plane on frame 0, as a slice's rings
+// do).  w = 0: RingAtHeightFraction.  Clamped to [u_min, u_max].
+double RingAtHeightFraction(const Model& reference, double h, double w);
 
 // The reference frame's long axis in world coordinates (apex to base).
 Eigen::Vector3d LongAxis(const Model& model);

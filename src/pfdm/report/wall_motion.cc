@@ -92,6 +92,7 @@ std::vector<RegionMotion> SummarizeRegions(const Model& reference,
         std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudeSamples);
     const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
     const MaterialRing after = SampleRing(current, u, kLongitudeSamples);
+    const bool solid = current.config.Solid();
     for (int j = 0; j < kLongitudeSamples; ++j) {
       const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
       const int r = AssignRegion(reference, u, v, layout);
@@ -106,6 +107,12 @@ std::vector<RegionMotion> SummarizeRegions(const Model& reference,
       motion[r].ecc_percent += w * 100.0 * strain.ecc;
       motion[r].ell_percent += w * 100.0 * strain.ell;
       motion[r].ecl_percent += w * 100.0 * strain.ecl;
+      if (solid) {
+        motion[r].thickening_percent +=
+            w * 100.0 *
+            (WallThickness(current, u, v) / WallThickness(reference, u, v) -
+             1.0);
+      }
       weight[r] += w;
     }
   }
@@ -116,6 +123,7 @@ std::vector<RegionMotion> SummarizeRegions(const Model& reference,
     motion[r].ecc_percent /= weight[r];
     motion[r].ell_percent /= weight[r];
     motion[r].ecl_percent /= weight[r];
+    motion[r].thickening_percent /= weight[r];
     // Each sample stands for a cell of (s_max - s_min) / kLatitudeSamples
     // in sin u and 2 pi / kLongitudeSamples in v.
     motion[r].area_mm2 = weight[r] * (s_max - s_min) / kLatitudeSamples * 2.0 *

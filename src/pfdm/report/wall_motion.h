@@ -54,6 +54,10 @@ struct RegionMotion {
   double ecc_percent = 0.0;
   double ell_percent = 0.0;
   double ecl_percent = 0.0;
+  // A solid's wall thickening: mean of 100 (T / T0 - 1), T the wall
+  // thickness at the material point (material_rings.h WallThickness); 0
+  // for a single surface.
+  double thickening_percent = 0.0;
   // The region's area on the reference (frame 0) surface, mm^2: the weight
   // of its means in a global one.
   double area_mm2 = 0.0;

@@ -12,6 +12,7 @@ namespace pfdm {
 double DampingGroups::Of(Function f) const {
   switch (f) {
     case kTau:
+    case kDtau:
       return twist;
     case kB0:
     case kB1:

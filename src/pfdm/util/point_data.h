@@ -10,11 +10,16 @@
 
 namespace pfdm {
 
+// Which surface of the wall a point lies on, when its input says so (biv-me
+// contour types); tags and unlabelled points are kAnywhere.
+enum class WallLayer { kAnywhere, kEndocardium, kEpicardium };
+
 struct DataPoint {
   // The same id in several frames is the same material point (a tracked
   // tag); an id seen in one frame only is an untracked surface sample.
   std::int64_t id = 0;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // mm
+  WallLayer layer = WallLayer::kAnywhere;
 };
 
 struct Frame {

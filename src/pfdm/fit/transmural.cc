@@ -1,0 +1,123 @@
+#include "pfdm/fit/transmural.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "nanoflann.hpp"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+// nanoflann's view of points.
+struct Cloud {
+  std::vector<Eigen::Vector3d> points;
+  size_t kdtree_get_point_count() const { return points.size(); }
+  double kdtree_get_pt(size_t i, size_t dim) const { return points[i][dim]; }
+  template <class BoundingBox>
+  bool kdtree_get_bbox(BoundingBox&) const {
+    return false;
+  }
+};
+using CloudTree = nanoflann::KDTreeSingleIndexAdaptor<
+    nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3>;
+
+}  // namespace
+
+WallModel WallModelFromName(const std::string& name) {
+  if (name == "auto") return WallModel::kAuto;
+  if (name == "midwall") return WallModel::kMidwall;
+  if (name == "solid") return WallModel::kSolid;
+  throw InputError("unknown --wall '" + name +
+                   "' (expected auto, midwall or solid)");
+}
+
+const char* WallModelName(WallModel model) {
+  switch (model) {
+    case WallModel::kAuto:
+      return "auto";
+    case WallModel::kMidwall:
+      return "midwall";
+    case WallModel::kSolid:
+      return "solid";
+  }
+  return "";
+}
+
+std::vector<double> MidwallDistances(
+    const Model& model, const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material) {
+  std::vector<double> distances;
+  distances.reserve(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const double u = material[i].u, v = material[i].v;
+    distances.push_back(SurfaceNormal(model, u, v)
+                            .dot(points[i] - model.WorldPoint(u, v)));
+  }
+  return distances;
+}
+
+double WallSpreadMm(const Model& model,
+                    const std::vector<MaterialPoint>& material,
+                    const std::vector<double>& distances) {
+  if (material.size() < 2) return 0.0;
+  Cloud cloud;
+  for (const MaterialPoint& m : material) {
+    cloud.points.push_back(model.WorldPoint(m.u, m.v));
+  }
+  CloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  double sum_squared = 0.0;
+  for (size_t i = 0; i < material.size(); ++i) {
+    unsigned int nearest[2];
+    double distance_squared[2];
+    tree.knnSearch(cloud.points[i].data(), 2, nearest, distance_squared);
+    const size_t j = nearest[0] == i ? nearest[1] : nearest[0];
+    sum_squared += (distances[i] - distances[j]) * (distances[i] - distances[j]);
+  }
+  return std::sqrt(6.0 * sum_squared / material.size());
+}
+
+std::vector<double> QuantileDepths(const std::vector<double>& u,
+                                   const std::vector<double>& distances) {
+  const size_t n = u.size();
+  std::vector<size_t> by_u(n);
+  std::iota(by_u.begin(), by_u.end(), 0);
+  std::stable_sort(by_u.begin(), by_u.end(),
+                   [&](size_t a, size_t b) { return u[a] < u[b]; });
+  const size_t band = std::max<size_t>(kMinBand, n / 16);
+  std::vector<double> depths(n, 0.0);
+  for (size_t begin = 0, end = 0; begin < n; begin = end) {
+    // The last band takes the remainder rather than leaving a runt.
+    end = std::min(n, begin + band);
+    if (n - end < band / 2) end = n;
+    std::vector<size_t> members(by_u.begin() + begin, by_u.begin() + end);
+    std::stable_sort(members.begin(), members.end(), [&](size_t a, size_t b) {
+      return distances[a] < distances[b];
+    });
+    const double count = static_cast<double>(members.size());
+    for (size_t rank = 0; rank < members.size(); ++rank) {
+      depths[members[rank]] = 2.0 * (rank + 0.5) / count - 1.0;
+    }
+  }
+  return depths;
+}
+
+double ThicknessFromDepths(const std::vector<double>& distances,
+                           const std::vector<double>& depths) {
+  double dw = 0.0, ww = 0.0, d_sum = 0.0, w_sum = 0.0;
+  const double n = static_cast<double>(distances.size());
+  for (size_t i = 0; i < distances.size(); ++i) {
+    d_sum += distances[i];
+    w_sum += depths[i];
+  }
+  for (size_t i = 0; i < distances.size(); ++i) {
+    const double w = depths[i] - w_sum / n;
+    dw += w * (distances[i] - d_sum / n);
+    ww += w * w;
+  }
+  return ww > 0.0 ? 2.0 * dw / ww : 0.0;
+}
+
+}  // namespace pfdm
