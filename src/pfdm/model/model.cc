@@ -100,7 +100,8 @@ double Model::FunctionAt(int function, double u) const {
 
 Eigen::Vector3d Model::ModelPoint(double u, double v) const {
   const FunctionValues f = FunctionsAt(u);
-  return ReferenceShape(f.data(), MakeAngles(u, v), UnitExponents());
+  return ReferenceShape(f.data(), MakeAngles(u, v), UnitExponents()) +
+         state.local.Displacement(u, v);
 }
 
 Eigen::Vector3d Model::WorldPoint(double u, double v) const {

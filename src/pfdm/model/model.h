@@ -8,6 +8,7 @@
 
 #include "Eigen/Core"
 #include "Eigen/Geometry"  // Users of models take cross products.
+#include "pfdm/model/local_field.h"
 #include "pfdm/model/model_point.h"
 #include "pfdm/model/parameter_function.h"
 
@@ -53,6 +54,8 @@ struct ModelState {
   std::array<double, 4> quaternion{1.0, 0.0, 0.0, 0.0};  // (w, x, y, z)
   FunctionValues globals = DefaultFunctionValues();      // Non-free functions.
   std::vector<FunctionValues> knots;                     // Free functions.
+  // Local displacements d(u, v), model frame; empty: none (p = s).
+  LocalField local;
 };
 
 using BendingShift = std::array<double, 2>;
@@ -67,8 +70,9 @@ struct Model {
   bool UnitExponents() const;
   double FunctionAt(int function, double u) const;
   FunctionValues FunctionsAt(double u) const;
-  Eigen::Vector3d ModelPoint(double u, double v) const;  // s, model frame
-  Eigen::Vector3d WorldPoint(double u, double v) const;  // c + R s
+  // p = s + d, model frame: the global shape and the local displacement.
+  Eigen::Vector3d ModelPoint(double u, double v) const;
+  Eigen::Vector3d WorldPoint(double u, double v) const;  // c + R p
   // Rotation world_from_model.
   Eigen::Matrix3d Rotation() const;
 
