@@ -12,6 +12,17 @@
 
 namespace pfdm {
 
+// Local deformations (local_fit.h, docs/local_deformations.md).
+struct LocalOptions {
+  bool enabled = false;
+  int rows = 13;  // Nodes along u, the apex pole's row included.
+  int cols = 24;  // Nodes around v.
+  // Membrane plus thin-plate energy of the nodal field, relative to one
+  // node's share of the data (N / nodes points), as smoothness_weight is to
+  // a knot's.
+  double stiffness = 0.02;
+};
+
 struct FitOptions {
   // Regularizer weights, each relative to one knot's share of the data
   // (N / K points).  Smoothness: 1 penalizes a knot bent 1 mm off the line
@@ -40,6 +51,7 @@ struct FitOptions {
   // iteration count at this many per decade, plus the start and the end;
   // 0 keeps none (FrameFit::trajectory).
   int trajectory_per_decade = 0;
+  LocalOptions local;
 };
 
 }  // namespace pfdm

@@ -10,6 +10,7 @@
 #include "Eigen/Dense"
 #include "pfdm/fit/frame_problem.h"
 #include "pfdm/fit/gauge.h"
+#include "pfdm/fit/local_fit.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -146,7 +147,7 @@ bool StateFinite(const ModelState& state) {
   for (const FunctionValues& knot : state.knots) {
     if (!finite(knot)) return false;
   }
-  return true;
+  return finite(state.local.values);
 }
 
 }  // namespace
@@ -183,6 +184,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
     const auto start = std::chrono::steady_clock::now();
     const bool reference = frame.index == sequence.frames[0].index;
     const std::vector<Eigen::Vector3d> points = Positions(frame);
+    // The global rounds fit the global model alone; the local field comes
+    // after them (FitLocalField).
+    model.state.local = LocalField();
     FrameFit fit;
     fit.frame = frame.index;
     fit.material.resize(points.size());
@@ -276,6 +280,32 @@ SequenceFit FitSequence(const PointSequence& sequence,
         recorded.ShiftBending(turns);
         point.state = recorded.state;
       }
+    }
+    if (options.local.enabled) {
+      // Contour points then find their closest points on the whole model,
+      // as they did on the global one: the field moves the surface along
+      // it too, and their material points (tracked ones keep the global
+      // fit's, saved above) would otherwise lag behind.
+      const auto local_start = std::chrono::steady_clock::now();
+      for (int round = 0; round < options.max_correspondence_rounds; ++round) {
+        const SolverReport local =
+            FitLocalField(points, fit.material, sliding, options, &model);
+        fit.local_iterations += local.iterations;
+        if (!local.usable) {
+          throw InputError(
+              sequence.source + ": frame " + std::to_string(frame.index) +
+              ": local deformations: solver failed: " + local.message);
+        }
+        if (unknown.empty()) break;
+        if (UpdateClosest(model, points, unknown, options.solver.num_threads,
+                          &fit.material) <
+            options.correspondence_tolerance_mm) {
+          break;
+        }
+      }
+      fit.local_seconds = std::chrono::duration<double>(
+                              std::chrono::steady_clock::now() - local_start)
+                              .count();
     }
     Summarize(model, points, &fit);
     // Never a silent absurd fit: an infinite RMS once printed CONVERGENCE.

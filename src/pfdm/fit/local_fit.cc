@@ -1,0 +1,144 @@
+#include "pfdm/fit/local_fit.h"
+
+#include <cmath>
+#include <utility>
+
+#include "pfdm/fit/linear_node_cost.h"
+
+namespace pfdm {
+namespace {
+
+// The membrane term's weight against the thin plate's.  Equal weights keep
+// a field that follows a segment's lesion (measured on the lesion phantom,
+// docs/local_deformations.md).
+constexpr double kMembraneShare = 1.0;
+// A ring's mean displacement costs like this many times the ring's points
+// all that far off: stiff, as the gauge terms are, without dwarfing the
+// data in the integrator's stability bound.
+constexpr double kRingMeanWeight = 10.0;
+
+}  // namespace
+
+void AddLocalRegularizer(const Model& global, int num_points, double stiffness,
+                         LocalField* field, ceres::Problem* problem) {
+  const LocalGrid& grid = field->grid;
+  auto block = [field, &grid](int row, int col) {
+    return &field->values[3 * grid.Node(row, col)];
+  };
+  const double per_node = static_cast<double>(num_points) / grid.NumNodes();
+  if (stiffness > 0.0) {
+    const double membrane = std::sqrt(kMembraneShare * stiffness * per_node);
+    const double plate = std::sqrt(stiffness * per_node);
+    auto add = [&](double weight, const std::vector<double>& coefficients,
+                   std::vector<double*> nodes) {
+      problem->AddResidualBlock(MakeNodeDifferenceCost(weight, coefficients),
+                                nullptr, nodes);
+    };
+    for (int row = 0; row + 1 < grid.rows; ++row) {
+      for (int col = 0; col < grid.cols; ++col) {
+        // Along the meridian, from the pole down each column.
+        add(membrane, {1.0, -1.0}, {block(row, col), block(row + 1, col)});
+        if (row > 0) {
+          add(plate, {1.0, -2.0, 1.0},
+              {block(row - 1, col), block(row, col), block(row + 1, col)});
+        }
+      }
+    }
+    for (int row = 1; row < grid.rows; ++row) {
+      for (int col = 0; col < grid.cols; ++col) {
+        add(membrane, {1.0, -1.0}, {block(row, col), block(row, col + 1)});
+        add(plate, {1.0, -2.0, 1.0},
+            {block(row, col - 1), block(row, col), block(row, col + 1)});
+        if (row + 1 < grid.rows) {
+          // The mixed term of the thin plate, |d_uv|^2 counted twice.
+          add(std::sqrt(2.0) * plate, {1.0, -1.0, -1.0, 1.0},
+              {block(row, col), block(row, col + 1), block(row + 1, col),
+               block(row + 1, col + 1)});
+        }
+      }
+    }
+    // Straight through the pole: the meridians v and v + pi are one curve.
+    if (grid.cols % 2 == 0) {
+      for (int col = 0; col < grid.cols / 2; ++col) {
+        add(plate, {1.0, -2.0, 1.0},
+            {block(1, col), block(0, 0), block(1, col + grid.cols / 2)});
+      }
+    }
+  }
+  // Ring means in the global model's own directions at each node.  The
+  // pole is a ring of one point: where the apex is, is the global
+  // functions' too.
+  const double sqrt_weight = std::sqrt(
+      kRingMeanWeight * static_cast<double>(num_points) / (grid.rows - 1));
+  problem->AddResidualBlock(MakeNodeDifferenceCost(sqrt_weight, {1.0}), nullptr,
+                            {block(0, 0)});
+  for (int row = 1; row < grid.rows; ++row) {
+    const double u = grid.RowU(row);
+    std::vector<Eigen::Vector3d> at(grid.cols);
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (int col = 0; col < grid.cols; ++col) {
+      at[col] = global.ModelPoint(u, grid.ColV(col));
+      centre += at[col] / grid.cols;
+    }
+    std::vector<Eigen::MatrixXd> blocks;
+    std::vector<double*> nodes;
+    for (int col = 0; col < grid.cols; ++col) {
+      Eigen::Vector3d radial = at[col] - centre;
+      radial.z() = 0.0;
+      radial.normalize();
+      const Eigen::Vector3d tangential = Eigen::Vector3d::UnitZ().cross(radial);
+      Eigen::MatrixXd rows(5, 3);
+      rows.topRows<3>() = Eigen::Matrix3d::Identity();
+      rows.row(3) = radial.transpose();
+      rows.row(4) = tangential.transpose();
+      blocks.push_back(sqrt_weight / grid.cols * rows);
+      nodes.push_back(block(row, col));
+    }
+    problem->AddResidualBlock(
+        new LinearNodeCost(Eigen::VectorXd::Zero(5), std::move(blocks)),
+        nullptr, nodes);
+  }
+}
+
+SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
+                           const std::vector<MaterialPoint>& material,
+                           const std::vector<bool>& sliding,
+                           const FitOptions& options, Model* model) {
+  const ModelConfig& config = model->config;
+  model->state.local = LocalField();
+  LocalGrid grid;
+  grid.rows = options.local.rows;
+  grid.cols = options.local.cols;
+  grid.u_min = config.u_min;
+  grid.u_max = config.u_max;
+  LocalField field = LocalField::Zero(grid);
+
+  ceres::Problem problem;
+  const Eigen::Matrix3d rotation = model->Rotation();
+  for (size_t i = 0; i < points.size(); ++i) {
+    const double u = material[i].u, v = material[i].v;
+    const ShapeWeights shape = ShapeAt(grid, u, v);
+    std::vector<double*> nodes;
+    for (int k = 0; k < shape.count; ++k) {
+      nodes.push_back(&field.values[3 * shape.node[k]]);
+    }
+    const Eigen::Vector3d global = model->WorldPoint(u, v);
+    problem.AddResidualBlock(
+        sliding[i] && u < config.u_max
+            ? MakeLocalSurfaceCost(global, rotation, shape, points[i],
+                                   SurfaceNormal(*model, u, v))
+            : MakeLocalPointCost(global, rotation, shape, points[i]),
+        nullptr, nodes);
+  }
+  AddLocalRegularizer(*model, static_cast<int>(points.size()),
+                      options.local.stiffness, &field, &problem);
+
+  SolverOptions solver = options.solver;
+  solver.on_step = nullptr;
+  solver.damping_scale.clear();
+  const SolverReport report = SolveProblem(&problem, solver);
+  model->state.local = std::move(field);
+  return report;
+}
+
+}  // namespace pfdm
