@@ -282,24 +282,32 @@ SequenceFit FitSequence(const PointSequence& sequence,
       }
     }
     if (options.local.enabled) {
-      // Contour points then find their closest points on the whole model,
-      // as they did on the global one: the field moves the surface along
-      // it too, and their material points (tracked ones keep the global
-      // fit's, saved above) would otherwise lag behind.
+      // Points seen in one frame only (contours) pull along the normal and
+      // then find their closest points on the whole model, as they did on
+      // the global one: the field moves the surface along itself too.
+      // Tracked points keep the global fit's material point (saved above)
+      // and pull with the whole vector on every frame, frame 0 included.
+      std::vector<size_t> contour;
+      std::vector<bool> local_sliding(points.size(), false);
+      for (size_t i : unknown) {
+        if (frames_per_id[frame.points[i].id] > 1) continue;
+        contour.push_back(i);
+        local_sliding[i] = true;
+      }
       const auto local_start = std::chrono::steady_clock::now();
       for (int round = 0; round < options.max_correspondence_rounds; ++round) {
         const SolverReport local =
-            FitLocalField(points, fit.material, sliding, options, &model);
+            FitLocalField(points, fit.material, local_sliding, options, &model);
         fit.local_iterations += local.iterations;
         if (!local.usable) {
           throw InputError(
               sequence.source + ": frame " + std::to_string(frame.index) +
               ": local deformations: solver failed: " + local.message);
         }
-        if (unknown.empty()) break;
-        if (UpdateClosest(model, points, unknown, options.solver.num_threads,
+        if (contour.empty() ||
+            UpdateClosest(model, points, contour, options.solver.num_threads,
                           &fit.material) <
-            options.correspondence_tolerance_mm) {
+                options.correspondence_tolerance_mm) {
           break;
         }
       }

@@ -2,23 +2,25 @@
 
 #include <cmath>
 #include <utility>
+#include <vector>
 
+#include "ceres/problem.h"
 #include "pfdm/fit/linear_node_cost.h"
 
 namespace pfdm {
 namespace {
 
-// The membrane term's weight against the thin plate's.  Equal weights keep
-// a field that follows a segment's lesion (measured on the lesion phantom,
-// docs/local_deformations.md).
+// The membrane term's weight against the thin plate's: one
+// --local_stiffness sets both (the ratio was not tuned; the stiffness was).
 constexpr double kMembraneShare = 1.0;
 // A ring's mean displacement costs like this many times the ring's points
 // all that far off: stiff, as the gauge terms are, without dwarfing the
 // data in the integrator's stability bound.
 constexpr double kRingMeanWeight = 10.0;
 
-}  // namespace
-
+// The stiffness and ring-mean terms of the field's grid on its nodal
+// values (which stay where they are while the problem lives), for
+// `num_points` data points.
 void AddLocalRegularizer(const Model& global, int num_points, double stiffness,
                          LocalField* field, ceres::Problem* problem) {
   const LocalGrid& grid = field->grid;
@@ -99,6 +101,8 @@ void AddLocalRegularizer(const Model& global, int num_points, double stiffness,
         nullptr, nodes);
   }
 }
+
+}  // namespace
 
 SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
                            const std::vector<MaterialPoint>& material,

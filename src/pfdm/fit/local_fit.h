@@ -18,7 +18,6 @@
 #include <vector>
 
 #include "Eigen/Core"
-#include "ceres/problem.h"
 #include "pfdm/fit/correspondence.h"
 #include "pfdm/fit/fit_options.h"
 #include "pfdm/model/local_field.h"
@@ -26,12 +25,6 @@
 #include "pfdm/solvers/solver.h"
 
 namespace pfdm {
-
-// The stiffness and ring-mean terms of `grid` on the nodal values of
-// *field (which must stay where they are while the problem lives), for
-// `num_points` data points.  Used by FitLocalField; apart for tests.
-void AddLocalRegularizer(const Model& global, int num_points, double stiffness,
-                         LocalField* field, ceres::Problem* problem);
 
 // Replaces model->state.local by the field fitted with `options.solver`
 // (any of the three solvers) on `options.local`'s grid, everything else of
