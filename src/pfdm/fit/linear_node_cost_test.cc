@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "ceres/gradient_checker.h"
@@ -64,28 +65,51 @@ std::vector<const double*> Parameters(const Model& model,
   return parameters;
 }
 
+// The point and plane costs of a data point at (u, v), on the model
+// without its field.
+struct Costs {
+  std::unique_ptr<ceres::CostFunction> point, plane;
+};
+const Eigen::Vector3d kData(3.0, -1.0, 20.0);
+const Eigen::Vector3d kNormal = Eigen::Vector3d(0.2, -0.3, 0.9).normalized();
+
+Costs CostsAt(const Model& model, const ShapeWeights& shape, double u,
+              double v) {
+  Model global = model;
+  global.state.local = LocalField();
+  const Eigen::Vector3d x = global.WorldPoint(u, v);
+  return {std::unique_ptr<ceres::CostFunction>(
+              MakeLocalPointCost(x, model.Rotation(), shape, kData)),
+          std::unique_ptr<ceres::CostFunction>(MakeLocalSurfaceCost(
+              x, model.Rotation(), shape, kData, kNormal))};
+}
+
+// ceres::GradientChecker's report on `cost` at `parameters`, "" if it
+// agrees.
+std::string GradientError(const ceres::CostFunction* cost,
+                          const double* const* parameters) {
+  const std::vector<const ceres::Manifold*>* no_manifolds = nullptr;
+  ceres::GradientChecker checker(cost, no_manifolds,
+                                 ceres::NumericDiffOptions());
+  ceres::GradientChecker::ProbeResults results;
+  return checker.Probe(parameters, 1e-9, &results) ? "" : results.error_log;
+}
+
 // The residual is the whole model's point minus the data: the shape
 // functions of the cost and of Model::WorldPoint are one.
 TEST(LinearNodeCostTest, PointResidualIsTheWholeModelMinusData) {
   const Model model = PosedModelWithField();
-  Model global = model;
-  global.state.local = LocalField();
-  const Eigen::Vector3d data(3.0, -1.0, 20.0);
-  const Eigen::Vector3d normal = Eigen::Vector3d(0.2, -0.3, 0.9).normalized();
   for (const Case& c : Cases(model.state.local.grid)) {
     const ShapeWeights shape = ShapeAt(model.state.local.grid, c.u, c.v);
-    const std::unique_ptr<ceres::CostFunction> point(MakeLocalPointCost(
-        global.WorldPoint(c.u, c.v), model.Rotation(), shape, data));
-    const std::unique_ptr<ceres::CostFunction> plane(MakeLocalSurfaceCost(
-        global.WorldPoint(c.u, c.v), model.Rotation(), shape, data, normal));
+    const Costs costs = CostsAt(model, shape, c.u, c.v);
     const std::vector<const double*> parameters = Parameters(model, shape);
     Eigen::Vector3d r;
     double plane_r;
-    ASSERT_TRUE(point->Evaluate(parameters.data(), r.data(), nullptr));
-    ASSERT_TRUE(plane->Evaluate(parameters.data(), &plane_r, nullptr));
-    const Eigen::Vector3d expected = model.WorldPoint(c.u, c.v) - data;
+    ASSERT_TRUE(costs.point->Evaluate(parameters.data(), r.data(), nullptr));
+    ASSERT_TRUE(costs.plane->Evaluate(parameters.data(), &plane_r, nullptr));
+    const Eigen::Vector3d expected = model.WorldPoint(c.u, c.v) - kData;
     EXPECT_LT((r - expected).norm(), 1e-10) << c.where;
-    EXPECT_NEAR(plane_r, normal.dot(expected), 1e-10) << c.where;
+    EXPECT_NEAR(plane_r, kNormal.dot(expected), 1e-10) << c.where;
     EXPECT_EQ(shape.count,
               c.u == model.config.u_min || c.u < model.state.local.grid.RowU(1)
                   ? 3
@@ -96,28 +120,15 @@ TEST(LinearNodeCostTest, PointResidualIsTheWholeModelMinusData) {
 
 TEST(LinearNodeCostTest, GradientCheckerAgrees) {
   const Model model = PosedModelWithField();
-  Model global = model;
-  global.state.local = LocalField();
-  const Eigen::Vector3d data(3.0, -1.0, 20.0);
-  const Eigen::Vector3d normal = Eigen::Vector3d(0.2, -0.3, 0.9).normalized();
-  ceres::NumericDiffOptions numeric;
   for (const Case& c : Cases(model.state.local.grid)) {
     const ShapeWeights shape = ShapeAt(model.state.local.grid, c.u, c.v);
     const std::vector<const double*> parameters = Parameters(model, shape);
+    const Costs costs = CostsAt(model, shape, c.u, c.v);
     for (bool plane : {false, true}) {
-      const std::unique_ptr<ceres::CostFunction> cost(
-          plane ? MakeLocalSurfaceCost(global.WorldPoint(c.u, c.v),
-                                       model.Rotation(), shape, data, normal)
-                : MakeLocalPointCost(global.WorldPoint(c.u, c.v),
-                                     model.Rotation(), shape, data));
-      ceres::GradientChecker checker(
-          cost.get(),
-          static_cast<const std::vector<const ceres::Manifold*>*>(nullptr),
-          numeric);
-      ceres::GradientChecker::ProbeResults results;
-      EXPECT_TRUE(checker.Probe(parameters.data(), 1e-9, &results))
-          << c.where << (plane ? " plane" : " point") << ": "
-          << results.error_log;
+      EXPECT_EQ(GradientError((plane ? costs.plane : costs.point).get(),
+                              parameters.data()),
+                "")
+          << c.where << (plane ? " plane" : " point");
     }
   }
   const double q[4][3] = {{1, 2, 3}, {-1, 0.5, 2}, {0, 0, 1}, {4, -2, 0}};
@@ -128,12 +139,7 @@ TEST(LinearNodeCostTest, GradientCheckerAgrees) {
   ASSERT_TRUE(mixed->Evaluate(nodes, r, nullptr));
   EXPECT_NEAR(r[0], 3.0 * (1 + 1 - 0 + 4), 1e-12);
   EXPECT_NEAR(r[1], 3.0 * (2 - 0.5 - 0 - 2), 1e-12);
-  ceres::GradientChecker checker(
-      mixed.get(),
-      static_cast<const std::vector<const ceres::Manifold*>*>(nullptr),
-      numeric);
-  ceres::GradientChecker::ProbeResults results;
-  EXPECT_TRUE(checker.Probe(nodes, 1e-9, &results)) << results.error_log;
+  EXPECT_EQ(GradientError(mixed.get(), nodes), "");
 }
 
 }  // namespace
