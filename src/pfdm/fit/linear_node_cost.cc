@@ -27,31 +27,36 @@ bool LinearNodeCost::Evaluate(double const* const* parameters,
   return true;
 }
 
-namespace {
-
-// The rows `projection` (m x 3) of x_g + R d - data.
-ceres::CostFunction* MakeProjectedPointCost(const Eigen::MatrixXd& projection,
-                                            const Eigen::Vector3d& global_point,
-                                            const Eigen::Matrix3d& rotation,
-                                            const ShapeWeights& shape,
-                                            const Eigen::Vector3d& data) {
+ceres::CostFunction* MakeLinearNodeCost(const RowMajorMatrix& rows) {
   std::vector<Eigen::MatrixXd> blocks;
-  const Eigen::MatrixXd moved = projection * rotation;
-  for (int k = 0; k < shape.count; ++k) {
-    blocks.push_back(shape.weight[k] * moved);
-  }
-  return new LinearNodeCost(projection * (global_point - data),
-                            std::move(blocks));
+  const int count = static_cast<int>(rows.cols() - 1) / 3;
+  for (int k = 0; k < count; ++k) blocks.push_back(rows.middleCols<3>(3 * k));
+  return new LinearNodeCost(rows.col(rows.cols() - 1), std::move(blocks));
 }
 
-}  // namespace
+RowMajorMatrix LocalPointRows(const Eigen::Vector3d& global_point,
+                              const Eigen::Matrix3d& rotation,
+                              const ShapeWeights& shape,
+                              const Eigen::Vector3d& data,
+                              const Eigen::Vector3d* normal) {
+  const Eigen::MatrixXd projection =
+      normal != nullptr ? Eigen::MatrixXd(normal->transpose())
+                        : Eigen::MatrixXd(Eigen::Matrix3d::Identity());
+  RowMajorMatrix rows(projection.rows(), 3 * shape.count + 1);
+  const Eigen::MatrixXd moved = projection * rotation;
+  for (int k = 0; k < shape.count; ++k) {
+    rows.middleCols<3>(3 * k) = shape.weight[k] * moved;
+  }
+  rows.col(3 * shape.count) = projection * (global_point - data);
+  return rows;
+}
 
 ceres::CostFunction* MakeLocalPointCost(const Eigen::Vector3d& global_point,
                                         const Eigen::Matrix3d& rotation,
                                         const ShapeWeights& shape,
                                         const Eigen::Vector3d& data) {
-  return MakeProjectedPointCost(Eigen::Matrix3d::Identity(), global_point,
-                                rotation, shape, data);
+  return MakeLinearNodeCost(
+      LocalPointRows(global_point, rotation, shape, data, nullptr));
 }
 
 ceres::CostFunction* MakeLocalSurfaceCost(const Eigen::Vector3d& global_point,
@@ -59,8 +64,8 @@ ceres::CostFunction* MakeLocalSurfaceCost(const Eigen::Vector3d& global_point,
                                           const ShapeWeights& shape,
                                           const Eigen::Vector3d& data,
                                           const Eigen::Vector3d& normal) {
-  return MakeProjectedPointCost(normal.transpose(), global_point, rotation,
-                                shape, data);
+  return MakeLinearNodeCost(
+      LocalPointRows(global_point, rotation, shape, data, &normal));
 }
 
 ceres::CostFunction* MakeNodeDifferenceCost(

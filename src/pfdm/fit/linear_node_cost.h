@@ -7,6 +7,7 @@
 
 #include "Eigen/Core"
 #include "ceres/cost_function.h"
+#include "pfdm/fit/square_root_form.h"
 #include "pfdm/model/local_field.h"
 
 namespace pfdm {
@@ -44,6 +45,18 @@ ceres::CostFunction* MakeLocalSurfaceCost(const Eigen::Vector3d& global_point,
                                           const ShapeWeights& shape,
                                           const Eigen::Vector3d& data,
                                           const Eigen::Vector3d& normal);
+
+// [A_0 .. A_{k-1} b]: the cost's matrices side by side and its offset last.
+ceres::CostFunction* MakeLinearNodeCost(const RowMajorMatrix& rows);
+
+// The rows [S_0 P R .. S_{count-1} P R  P (x_g - data)] of a data point's
+// cost below (P = I, or n^T with a normal), for stacking the points of one
+// element into one residual block in square-root form (local_fit.cc).
+RowMajorMatrix LocalPointRows(const Eigen::Vector3d& global_point,
+                              const Eigen::Matrix3d& rotation,
+                              const ShapeWeights& shape,
+                              const Eigen::Vector3d& data,
+                              const Eigen::Vector3d* normal);
 
 // r = sqrt_weight sum_k c_k q_k (3 rows): a finite difference of the nodal
 // vectors (membrane: c = (1, -1); thin plate: (1, -2, 1) or the mixed

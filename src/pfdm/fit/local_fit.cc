@@ -6,6 +6,7 @@
 
 #include "ceres/problem.h"
 #include "pfdm/fit/linear_node_cost.h"
+#include "pfdm/fit/square_root_form.h"
 
 namespace pfdm {
 namespace {
@@ -117,22 +118,56 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   grid.u_max = config.u_max;
   LocalField field = LocalField::Zero(grid);
 
-  ceres::Problem problem;
+  // The points of each element are one residual block in square-root
+  // form (square_root_form.h): the residual is linear in q_d, so its
+  // n + 1 rows give the same cost as the points' own rows for every q_d,
+  // and Ceres handles one block per element instead of one per point.
+  std::vector<std::vector<RowMajorMatrix>> element_rows((grid.rows - 1) *
+                                                        grid.cols);
+  std::vector<ShapeWeights> element_shape(element_rows.size());
   const Eigen::Matrix3d rotation = model->Rotation();
   for (size_t i = 0; i < points.size(); ++i) {
     const double u = material[i].u, v = material[i].v;
+    const LocalElement element = ElementAt(grid, u, v);
+    const int e = element.row * grid.cols + element.col;
     const ShapeWeights shape = ShapeAt(grid, u, v);
+    element_shape[e] = shape;
+    const Eigen::Vector3d global = model->WorldPoint(u, v);
+    if (sliding[i] && u < config.u_max) {
+      const Eigen::Vector3d normal = SurfaceNormal(*model, u, v);
+      element_rows[e].push_back(
+          LocalPointRows(global, rotation, shape, points[i], &normal));
+    } else {
+      element_rows[e].push_back(
+          LocalPointRows(global, rotation, shape, points[i], nullptr));
+    }
+  }
+  ceres::Problem problem;
+  for (size_t e = 0; e < element_rows.size(); ++e) {
+    if (element_rows[e].empty()) continue;
+    const ShapeWeights& shape = element_shape[e];
     std::vector<double*> nodes;
     for (int k = 0; k < shape.count; ++k) {
       nodes.push_back(&field.values[3 * shape.node[k]]);
     }
-    const Eigen::Vector3d global = model->WorldPoint(u, v);
-    problem.AddResidualBlock(
-        sliding[i] && u < config.u_max
-            ? MakeLocalSurfaceCost(global, rotation, shape, points[i],
-                                   SurfaceNormal(*model, u, v))
-            : MakeLocalPointCost(global, rotation, shape, points[i]),
-        nullptr, nodes);
+    int height = 0;
+    for (const RowMajorMatrix& rows : element_rows[e]) height += rows.rows();
+    RowMajorMatrix stacked(height, 3 * shape.count + 1);
+    height = 0;
+    for (const RowMajorMatrix& rows : element_rows[e]) {
+      stacked.middleRows(height, rows.rows()) = rows;
+      height += rows.rows();
+    }
+    if (stacked.rows() > stacked.cols()) {
+      const SquareRootForm form = ToSquareRootForm(stacked);
+      const int n = static_cast<int>(form.r.cols());
+      RowMajorMatrix square = RowMajorMatrix::Zero(n + 1, n + 1);
+      square.topLeftCorner(n, n) = form.r;
+      square.col(n).head(n) = form.z;
+      square(n, n) = form.rho;
+      stacked = std::move(square);
+    }
+    problem.AddResidualBlock(MakeLinearNodeCost(stacked), nullptr, nodes);
   }
   AddLocalRegularizer(*model, static_cast<int>(points.size()),
                       options.local.stiffness, &field, &problem);
