@@ -593,7 +593,8 @@ void BindFunctions(py::module_& m) {
          const std::string& solver, const std::string& linear_solver,
          double time_step, double rest_tolerance, int max_steps,
          const std::string& damping, const std::string& damping_scale,
-         const std::string& jacobian) {
+         const std::string& jacobian, const std::string& local,
+         const std::string& local_grid, double local_stiffness) {
         FitSettings s;
         s.format = format;
         s.contours = contours;
@@ -617,6 +618,9 @@ void BindFunctions(py::module_& m) {
         s.damping = damping;
         s.damping_scale = damping_scale;
         s.jacobian = jacobian;
+        s.local = local;
+        s.local_grid = local_grid;
+        s.local_stiffness = local_stiffness;
         return Fit(points, s);
       },
       py::arg("points"), py::kw_only(), py::arg("format") = fit_defaults.format,
@@ -639,6 +643,9 @@ void BindFunctions(py::module_& m) {
       py::arg("damping") = fit_defaults.damping,
       py::arg("damping_scale") = fit_defaults.damping_scale,
       py::arg("jacobian") = fit_defaults.jacobian,
+      py::arg("local") = fit_defaults.local,
+      py::arg("local_grid") = fit_defaults.local_grid,
+      py::arg("local_stiffness") = fit_defaults.local_stiffness,
       "Fits every frame, as `pfdm fit` does "
       "with the flags of the same names and defaults.  points: a "
       "PointSequence, a path (read as read_points with format and "

@@ -26,7 +26,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCHMARKS = ["fit_benchmark", "cost_function_benchmark", "solvers_benchmark",
-              "job_benchmark"]
+              "job_benchmark", "local_benchmark"]
 LINEAR_SOLVERS = {0: "DENSE_NORMAL_CHOLESKY", 1: "DENSE_QR",
                   2: "SPARSE_NORMAL_CHOLESKY"}
 SPARSE_LIBRARIES = {0: "SuiteSparse", 1: "CXSparse", 2: "Eigen"}
@@ -241,6 +241,29 @@ def solvers_table(document):
                  [r[-1] for r in rows])
 
 
+def local_table(document):
+    rows = []
+    off = {}
+    for key, b in medians(document).items():
+        a = args(key)
+        if not a["local"]:
+            off[a["points"]] = b["frame_ms"]
+    for key, b in medians(document).items():
+        a = args(key)
+        rows.append((a["points"], a["local"], [
+            "{:,}".format(a["points"]), "on" if a["local"] else "off",
+            number(b["frame_ms"], 1),
+            number(b["local_ms"], 1) if a["local"] else "-",
+            "%d" % b["local_iterations"] if a["local"] else "-",
+            number(b["frame_ms"] / off[a["points"]], 2)
+            if a["points"] in off else "-",
+            "%.3f" % b["rms_mm"]]))
+    rows.sort(key=lambda r: r[:2])
+    return table(["points", "local", "frame ms", "local field ms",
+                  "local iterations", "vs global only", "RMS mm"],
+                 [r[-1] for r in rows])
+
+
 def replace(readme, name, text):
     pattern = re.compile(r"(<!-- performance-tables:%s:begin -->\n).*?"
                          r"(<!-- performance-tables:%s:end -->)" % (name, name),
@@ -276,7 +299,8 @@ def main():
         readme = f.read()
     sections = {"fit": ("fit_benchmark", fit_table),
                 "cost": ("cost_function_benchmark", cost_table),
-                "solvers": ("solvers_benchmark", solvers_table)}
+                "solvers": ("solvers_benchmark", solvers_table),
+                "local": ("local_benchmark", local_table)}
     for name, (benchmark, make) in sections.items():
         document = load(results, benchmark)
         if document:

@@ -24,7 +24,8 @@ def test_guide_points_fit_and_mitral_valve_volumes_equal_the_clis():
     assert "mitral valve plane" in fit.ejection_fraction["cavity_closure"]
     assert len(fit) == 25
     assert fit.volume_surface == "cavity"  # Endocardial contours.
-    assert fit[0].clinical["cavity_volume_ml"] == pytest.approx(174.9, abs=0.1)
+    # 174.9 ml with the global functions alone (--local off).
+    assert fit[0].clinical["cavity_volume_ml"] == pytest.approx(175.2, abs=0.1)
     # A flat lid at the rim instead: other volumes, same shapes.
     rim = pfdm.fit(GUIDE_POINTS, base_plane="rim")
     assert "flat lid" in rim.ejection_fraction["cavity_closure"]

@@ -168,6 +168,15 @@ const BadInput kBadInputs[] = {
      "--damping_scale twist=0",
      "--damping_scale entry 'twist=0' is not group=value with a positive "
      "value and group one of pose, shape, twist, bending, offsets"},
+    {"local neither on nor off", "frame,id,x,y,z\n0,1,2,3,4\n", "--local 1",
+     "--local must be on or off, got '1'"},
+    {"local grid too coarse", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--local_grid 2x16",
+     "--local_grid must be NUxNV with 3 to 40 rows and 4 to 72 columns, got "
+     "'2x16'"},
+    {"negative local stiffness", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--local_stiffness -1",
+     "--local_stiffness must be between 0 and 1e6, got -1"},
 };
 
 TEST(CliTest, BadInputGivesOneLineNonZeroExitAndNoOutput) {

@@ -57,6 +57,14 @@ DEFINE_string(damping_scale, "",
               "twist=10,offsets=2 (groups pose shape twist bending offsets)");
 DEFINE_string(jacobian, kDefaults.jacobian.c_str(),
               "analytic, autodiff or numeric");
+DEFINE_string(local, kDefaults.local.c_str(),
+              "local deformations on top of the global functions: on or off");
+DEFINE_string(local_grid, kDefaults.local_grid.c_str(),
+              "local deformations' nodes, rows (apex pole to base) x "
+              "columns (around), 3 to 40 x 4 to 72");
+DEFINE_double(local_stiffness, kDefaults.local_stiffness,
+              "local deformations' membrane and thin-plate weight, relative "
+              "to one node's data, 0 to 1e6");
 DEFINE_string(base_plane, kDefaults.base_plane.c_str(),
               "fit, batch: where the cavity volume is "
               "closed: auto (the mitral valve plane when biv-me guide points "
@@ -89,6 +97,9 @@ FitSettings FitSettingsFromFlags() {
   s.damping = FLAGS_damping;
   s.damping_scale = FLAGS_damping_scale;
   s.jacobian = FLAGS_jacobian;
+  s.local = FLAGS_local;
+  s.local_grid = FLAGS_local_grid;
+  s.local_stiffness = FLAGS_local_stiffness;
   return s;
 }
 

@@ -133,7 +133,9 @@ Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
   for (int i = 0; i < 4; ++i) quaternion[i] = T(model.state.quaternion[i]);
   return WorldFromModel(
       center, quaternion,
-      ReferenceShape(f, MakeAngles(u, v), model.UnitExponents(), w));
+      Eigen::Matrix<T, 3, 1>(
+          ReferenceShape(f, MakeAngles(u, v), model.UnitExponents(), w) +
+          LocalDisplacement(model.state.local, u, v)));
 }
 
 template Eigen::Vector3d WorldPointAt(const Model&, const double&,

@@ -11,6 +11,7 @@
 #include "Eigen/Dense"
 #include "pfdm/fit/frame_problem.h"
 #include "pfdm/fit/gauge.h"
+#include "pfdm/fit/local_fit.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -220,7 +221,7 @@ bool StateFinite(const ModelState& state) {
   for (const FunctionValues& knot : state.knots) {
     if (!finite(knot)) return false;
   }
-  return true;
+  return finite(state.local.values);
 }
 
 // How a frame's points are sought in a solid: a contour's wall, +-1; 0
@@ -317,6 +318,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
     const bool reference = frame.index == sequence.frames[0].index;
     const std::vector<Eigen::Vector3d> points = Positions(frame);
     const std::vector<double> layer_w = LayerDepths(frame);
+    // The global rounds fit the global model alone; the local field comes
+    // after them (FitLocalField).
+    model.state.local = LocalField();
     FrameFit fit;
     fit.frame = frame.index;
     fit.material.resize(points.size());
@@ -475,6 +479,41 @@ SequenceFit FitSequence(const PointSequence& sequence,
         recorded.ShiftBending(turns);
         point.state = recorded.state;
       }
+    }
+    if (options.local.enabled) {
+      // Points seen in one frame only (contours) pull along the normal and
+      // then find their closest points on the whole model, as they did on
+      // the global one: the field moves the surface along itself too.
+      // Tracked points keep the global fit's material point (saved above)
+      // and pull with the whole vector on every frame, frame 0 included.
+      std::vector<size_t> contour;
+      std::vector<bool> local_sliding(points.size(), false);
+      for (size_t i : unknown) {
+        if (frames_per_id[frame.points[i].id] > 1) continue;
+        contour.push_back(i);
+        local_sliding[i] = true;
+      }
+      const auto local_start = std::chrono::steady_clock::now();
+      for (int round = 0; round < options.max_correspondence_rounds; ++round) {
+        const SolverReport local =
+            FitLocalField(points, fit.material, local_sliding, options, &model);
+        fit.local_iterations += local.iterations;
+        if (!local.usable) {
+          throw InputError(
+              sequence.source + ": frame " + std::to_string(frame.index) +
+              ": local deformations: solver failed: " + local.message);
+        }
+        if (contour.empty() ||
+            UpdateClosest(model, points, contour, options.solver.num_threads,
+                          layer_w, std::vector<bool>(points.size(), false),
+                          &fit.material) <
+                options.correspondence_tolerance_mm) {
+          break;
+        }
+      }
+      fit.local_seconds = std::chrono::duration<double>(
+                              std::chrono::steady_clock::now() - local_start)
+                              .count();
     }
     Summarize(model, points, &fit);
     // Never a silent absurd fit: an infinite RMS once printed CONVERGENCE.

@@ -42,6 +42,9 @@ struct FrameFit {
   double minimizer_seconds = 0.0;      // Likewise; see SolverReport.
   // Closest material points of the untracked points, over the rounds.
   double correspondence_seconds = 0.0;
+  // The local field's solve (FitOptions::local), within solve_seconds.
+  double local_seconds = 0.0;
+  int local_iterations = 0;
   std::string termination;
   // Every solver iteration of every correspondence round, numbered on.
   std::vector<SolverTracePoint> trace;

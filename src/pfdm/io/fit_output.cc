@@ -291,7 +291,11 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
        ceres::LinearSolverTypeToString(options.solver.linear_solver)},
       {"jacobian", JacobianName(options.jacobian)},
       {"max_iterations", options.solver.max_iterations},
-      {"threads", options.solver.num_threads}};
+      {"threads", options.solver.num_threads},
+      {"local", options.local.enabled},
+      {"local_grid", std::to_string(options.local.rows) + "x" +
+                         std::to_string(options.local.cols)},
+      {"local_stiffness", options.local.stiffness}};
   if (!points.contour_types.empty()) {
     settings["contour_types"] = points.contour_types;
   }

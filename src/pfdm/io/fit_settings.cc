@@ -5,6 +5,7 @@
 
 #include "ceres/types.h"
 #include "pfdm/io/mitral_valve_planes.h"
+#include "pfdm/model/local_field.h"
 #include "pfdm/solvers/damping_groups.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/input_file.h"
@@ -87,6 +88,14 @@ FitOptions FitOptionsFrom(const FitSettings& s) {
   options.solver.damping = DampingFromName(s.damping);
   options.damping_groups = DampingGroupsFromText(s.damping_scale);
   options.jacobian = JacobianFromName(s.jacobian);
+  if (s.local != "on" && s.local != "off") {
+    throw InputError("--local must be on or off, got '" + Clip(s.local) + "'");
+  }
+  options.local.enabled = s.local == "on";
+  const LocalGrid grid = ParseLocalGrid(Clip(s.local_grid));
+  options.local.rows = grid.rows;
+  options.local.cols = grid.cols;
+  options.local.stiffness = Weight("local_stiffness", s.local_stiffness);
   if (s.apex.empty() != s.base.empty()) {
     throw InputError("--apex and --base go together");
   }

@@ -41,6 +41,10 @@ struct FitSettings {
   std::string damping = "jacobi";
   std::string damping_scale;
   std::string jacobian = "analytic";
+  // Local deformations (fit/local_fit.h).
+  std::string local = FitOptions().local.enabled ? "on" : "off";
+  std::string local_grid = "13x24";  // LocalOptions' rows x cols.
+  double local_stiffness = FitOptions().local.stiffness;
 };
 
 // Each throws InputError naming the flag at fault.

@@ -28,6 +28,10 @@ TEST(FitSettingsTest, DefaultsAreTheLibrarys) {
   EXPECT_EQ(options.smoothness_weight, library.smoothness_weight);
   EXPECT_EQ(options.prior_weight, library.prior_weight);
   EXPECT_EQ(options.untracked_prior_weight, library.untracked_prior_weight);
+  EXPECT_EQ(options.local.enabled, library.local.enabled);
+  EXPECT_EQ(options.local.rows, library.local.rows);
+  EXPECT_EQ(options.local.cols, library.local.cols);
+  EXPECT_EQ(options.local.stiffness, library.local.stiffness);
   EXPECT_EQ(options.loss, library.loss);
   EXPECT_EQ(options.loss_scale_mm, library.loss_scale_mm);
   EXPECT_EQ(options.solver.kind, library.solver.kind);
@@ -78,6 +82,17 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   s = FitSettings();
   s.untracked_prior = -1.0;
   EXPECT_EQ(ErrorOf(s), "--untracked_prior must be between 0 and 1e6, got -1");
+  s = FitSettings();
+  s.local = "yes";
+  EXPECT_EQ(ErrorOf(s), "--local must be on or off, got 'yes'");
+  s = FitSettings();
+  s.local_grid = "9x100";
+  EXPECT_EQ(ErrorOf(s),
+            "--local_grid must be NUxNV with 3 to 40 rows and 4 to 72 "
+            "columns, got '9x100'");
+  s = FitSettings();
+  s.local_stiffness = -1.0;
+  EXPECT_EQ(ErrorOf(s), "--local_stiffness must be between 0 and 1e6, got -1");
   s = FitSettings();
   s.linear_solver = "MAGIC";
   EXPECT_EQ(ErrorOf(s), "unknown --linear_solver 'MAGIC'");

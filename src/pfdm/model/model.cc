@@ -107,7 +107,8 @@ double Model::FunctionAt(int function, double u) const {
 
 Eigen::Vector3d Model::ModelPoint(double u, double v, double w) const {
   const FunctionValues f = FunctionsAt(u);
-  return ReferenceShape(f.data(), MakeAngles(u, v), UnitExponents(), w);
+  return ReferenceShape(f.data(), MakeAngles(u, v), UnitExponents(), w) +
+         state.local.Displacement(u, v);
 }
 
 Eigen::Vector3d Model::WorldPoint(double u, double v, double w) const {

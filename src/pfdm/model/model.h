@@ -8,6 +8,7 @@
 
 #include "Eigen/Core"
 #include "Eigen/Geometry"  // Users of models take cross products.
+#include "pfdm/model/local_field.h"
 #include "pfdm/model/model_point.h"
 #include "pfdm/model/parameter_function.h"
 
@@ -59,6 +60,8 @@ struct ModelState {
   std::array<double, 4> quaternion{1.0, 0.0, 0.0, 0.0};  // (w, x, y, z)
   FunctionValues globals = DefaultFunctionValues();      // Non-free functions.
   std::vector<FunctionValues> knots;                     // Free functions.
+  // Local displacements d(u, v), model frame; empty: none (p = s).
+  LocalField local;
 };
 
 using BendingShift = std::array<double, 2>;
@@ -73,11 +76,12 @@ struct Model {
   bool UnitExponents() const;
   double FunctionAt(int function, double u) const;
   FunctionValues FunctionsAt(double u) const;
-  // s, model frame, on surface w (-1 endocardium, 0 mid-wall, +1
-  // epicardium: transmural.h).
+  // p = s + d, model frame: the global shape and the local displacement, on
+  // surface w (-1 endocardium, 0 mid-wall, +1 epicardium: transmural.h;
+  // d moves every surface alike).
   Eigen::Vector3d ModelPoint(double u, double v, double w = 0.0) const;
   Eigen::Vector3d WorldPoint(double u, double v,
-                             double w = 0.0) const;  // c + R s
+                             double w = 0.0) const;  // c + R p
   // Rotation world_from_model.
   Eigen::Matrix3d Rotation() const;
 

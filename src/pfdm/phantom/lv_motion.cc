@@ -50,9 +50,11 @@ double DesignedRotationDeg(const LvDeformation& design, double h) {
 }
 
 double LesionWeight(const LvDeformation& design, double h, double lambda_deg) {
-  const double lambda = lambda_deg - 360.0 * std::floor(lambda_deg / 360.0);
+  // Longitude from the lesion's centre, in [-180, 180).
+  const double from = lambda_deg - design.lesion_center_deg;
+  const double off = from - 360.0 * std::floor((from + 180.0) / 360.0);
   return Window(h, 1.0 / 3.0, 2.0 / 3.0, design.lesion_edge_h) *
-         Window(lambda, 60.0, 120.0, design.lesion_edge_deg);
+         Window(off, -30.0, 30.0, design.lesion_edge_deg);
 }
 
 LvMaterialPoint MaterialPointAt(const LvShape& shape,

@@ -14,10 +14,11 @@
 // The three act on separate coordinates, so their order does not matter.
 // The optional lesion scales c by 1 - lesion_loss g(h, lambda) in the mid
 // third, lambda (longitude counted counter-clockwise about +z from -x, as
-// report/wall_motion's regions count v) in [60, 120] degrees: AHA segment 8
-// ("mid 2"). g is 1 inside and falls to 0 at the segment's edges over
-// lesion_edge_h of height and lesion_edge_deg of longitude (smoothstep),
-// so no other segment is touched.
+// report/wall_motion's regions count v) within 30 degrees of
+// lesion_center_deg (default [60, 120] degrees: AHA segment 8, "mid 2").
+// g is 1 inside and falls to 0 at the segment's edges over lesion_edge_h
+// of height and lesion_edge_deg of longitude (smoothstep), so no other
+// segment is touched.
 #ifndef PFDM_PHANTOM_LV_MOTION_H_
 #define PFDM_PHANTOM_LV_MOTION_H_
 
@@ -43,8 +44,14 @@ struct LvDeformation {
   double base_rotation_deg = 3.0;
   bool lesion = false;
   double lesion_loss = 0.7;  // Fraction of c lost inside the lesion.
-  double lesion_edge_h = 0.03;
-  double lesion_edge_deg = 5.0;
+  // Edges wide enough for the segment's truth to be the lesion's, not an
+  // artefact of them: 5-degree edges stepped the radius by 15 % and
+  // stretched the circumference, so the segment's mean Ecc was +18 %.
+  double lesion_edge_h = 0.1;
+  double lesion_edge_deg = 20.0;
+  // The lesion spans 60 degrees of longitude about this one (90: segment
+  // 8's middle); a test may move it to where a fit's sectors put segment 8.
+  double lesion_center_deg = 90.0;
 };
 
 // Designed values (fractions, degrees) at p = 1, without the lesion.

@@ -48,8 +48,15 @@ TEST(LvPhantomMotionTest, MovesAMaterialPointAsDesigned) {
 TEST(LvPhantomMotionTest, LesionCoversMidSegmentTwoOnly) {
   LvDeformation design;
   EXPECT_NEAR(LesionWeight(design, 0.5, 90.0), 1.0, 1e-12);
-  EXPECT_NEAR(LesionWeight(design, 0.4, 66.0), 1.0, 1e-12);
-  EXPECT_NEAR(LesionWeight(design, 0.5, 62.5), 0.5, 1e-12);  // Mid-edge.
+  EXPECT_NEAR(LesionWeight(design, 0.45, 82.0), 1.0, 1e-12);
+  EXPECT_NEAR(LesionWeight(design, 0.5, 70.0), 0.5, 1e-12);  // Mid-edge.
+  EXPECT_NEAR(LesionWeight(design, 1.0 / 3.0 + 0.05, 90.0), 0.5, 1e-12);
+  // Moved to another centre, across the seam at 0 = 360 degrees.
+  LvDeformation moved = design;
+  moved.lesion_center_deg = 10.0;
+  EXPECT_NEAR(LesionWeight(moved, 0.5, 10.0), 1.0, 1e-12);
+  EXPECT_NEAR(LesionWeight(moved, 0.5, 350.0), 0.5, 1e-12);
+  EXPECT_EQ(LesionWeight(moved, 0.5, 90.0), 0.0);
   for (double lambda : {59.0, 121.0, 270.0, -90.0}) {
     EXPECT_EQ(LesionWeight(design, 0.5, lambda), 0.0) << lambda;
   }

@@ -26,10 +26,11 @@
 // it and 2 deg of tilt by end-systole; the body in an oblique world pose.
 // Segments at end-systole (contraction %, rotation deg): basal 20.68, 0.79;
 // mid 21.99, -3.46; apical 23.26, -7.61 (+-0.02 deg from the tilt). With
-// the lesion (mid 2 = segment 8): mid 1..6 contract 22.96, 11.05, 22.96,
-// 20.98, 20.01, 20.98 % and turn -4.74, -3.45, -2.20, -2.22, -3.45, -4.71
-// deg; basal and apical segments are unchanged (lv_truth.h says why the
-// other mid segments move).
+// the lesion (mid 2 = segment 8; 20-degree, 0.1-height edges): mid 1..6
+// contract 22.54, 15.89, 22.54, 21.42, 20.86, 21.42 % and turn -4.18,
+// -3.45, -2.75, -2.76, -3.45, -4.18 deg (inside the lesion 6.6 %); basal
+// and apical segments are unchanged (lv_truth.h says why the other mid
+// segments move).
 //
 // Tags: each a fixed material point, id = index, in every frame; half on
 // short-axis planes (height uniform, longitude uniform), half on long-axis

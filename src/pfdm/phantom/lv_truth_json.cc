@@ -88,7 +88,8 @@ std::string LvTruthJson(const LvPhantom& phantom) {
                     {"base_rotation_deg", design.base_rotation_deg},
                     {"lesion_loss", design.lesion_loss},
                     {"lesion_edge_h", design.lesion_edge_h},
-                    {"lesion_edge_deg", design.lesion_edge_deg}};
+                    {"lesion_edge_deg", design.lesion_edge_deg},
+                    {"lesion_center_deg", design.lesion_center_deg}};
   json["ring_heights"] = LvRingHeights();
   int es = 0;
   for (size_t t = 0; t < phantom.truth.size(); ++t) {

@@ -1,0 +1,123 @@
+// Local deformations (Park, Metaxas & Young 1994, section 2.2): a finite
+// element displacement field d(u, v) = S(u, v) q_d on top of the global
+// parameter functions, p = s + d in the model frame
+// (docs/local_deformations.md).
+//
+// Nodes: rows 0 .. rows - 1 at u equally spaced from u_min to u_max and
+// `cols` columns at v = -pi + 2 pi j / cols, periodic in v.  Row 0, the apex
+// pole, is ONE node: every v meets there, so the surface stays closed.  The
+// elements are bilinear in (u, v) between rows 1 .. rows - 1, and in the
+// first row the pole's value blends linearly in u with the bilinear ring of
+// row 1: a point touches 4 nodes (pole row: the pole and 2).  d is the same
+// for every transmural position: it moves the mid-wall and any surface
+// offset from it alike.
+#ifndef PFDM_MODEL_LOCAL_FIELD_H_
+#define PFDM_MODEL_LOCAL_FIELD_H_
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "Eigen/Core"
+
+namespace pfdm {
+
+struct LocalGrid {
+  int rows = 0;  // 0: no field.
+  int cols = 0;
+  double u_min = 0.0;
+  double u_max = 0.0;
+
+  // Bounds of --local_grid: a few nodes per AHA segment at most; the cost
+  // grows with them and the data do not resolve more.
+  static constexpr int kMinRows = 3, kMaxRows = 40;
+  static constexpr int kMinCols = 4, kMaxCols = 72;
+
+  int NumNodes() const { return rows > 0 ? 1 + (rows - 1) * cols : 0; }
+  // Node index of (row, col), col taken modulo cols; row 0 is the pole.
+  int Node(int row, int col) const {
+    if (row == 0) return 0;
+    const int wrapped = ((col % cols) + cols) % cols;
+    return 1 + (row - 1) * cols + wrapped;
+  }
+  double RowU(int row) const {
+    return u_min + (u_max - u_min) * row / (rows - 1);
+  }
+  double ColV(int col) const;
+};
+
+// "NUxNV", e.g. "9x16", within LocalGrid's bounds; throws InputError naming
+// --local_grid otherwise.  u_min, u_max are left 0.
+LocalGrid ParseLocalGrid(const std::string& text);
+
+// The nodes whose shape functions cover (u, v) and their values there:
+// d(u, v) = sum_k weight[k] q[node[k]].  u is clamped to [u_min, u_max].
+struct ShapeWeights {
+  int count = 0;
+  std::array<int, 4> node{};
+  std::array<double, 4> weight{};
+};
+
+// The element of (u, v): s = (u - u0) / du along u from the element's lower
+// row and t = (v - v0) / dv along v from its first column are in [0, 1]
+// (v0 is shifted by whole turns to v's side of the seam at -pi).
+struct LocalElement {
+  int row = 0;  // Lower row, 0 .. rows - 2.
+  int col = 0;  // 0 .. cols - 1.
+  double u0 = 0.0, du = 1.0, v0 = 0.0, dv = 1.0;
+};
+LocalElement ElementAt(const LocalGrid& grid, double u, double v);
+
+ShapeWeights ShapeAt(const LocalGrid& grid, double u, double v);
+
+struct LocalField {
+  LocalGrid grid;
+  std::vector<double> values;  // 3 per node, model frame, mm.
+
+  bool empty() const { return values.empty(); }
+  // A field of zeros on `grid`.
+  static LocalField Zero(const LocalGrid& grid);
+  Eigen::Vector3d Displacement(double u, double v) const;
+};
+
+// d(u, v) for any scalar type (a Jet when u and v are differentiated, as the
+// closest-point search does); zero for an empty field.
+template <typename T>
+Eigen::Matrix<T, 3, 1> LocalDisplacement(const LocalField& field, const T& u,
+                                         const T& v) {
+  Eigen::Matrix<T, 3, 1> d(T(0.0), T(0.0), T(0.0));
+  if (field.empty()) return d;
+  double u_value, v_value;
+  if constexpr (std::is_same_v<T, double>) {
+    u_value = u;
+    v_value = v;
+  } else {
+    u_value = u.a;
+    v_value = v.a;
+  }
+  const LocalGrid& grid = field.grid;
+  const LocalElement e = ElementAt(grid, u_value, v_value);
+  // The element's coordinates as T, so that a Jet carries ds/du, dt/dv; the
+  // clamp at u_max leaves s a constant.
+  const T s = u_value >= grid.u_max   ? T(1.0)
+              : u_value <= grid.u_min ? T(0.0)
+                                      : (u - e.u0) / e.du;
+  const T t = (v - e.v0) / e.dv;
+  auto node = [&](int row, int col) -> Eigen::Matrix<T, 3, 1> {
+    const double* q = &field.values[3 * grid.Node(row, col)];
+    return Eigen::Matrix<T, 3, 1>(T(q[0]), T(q[1]), T(q[2]));
+  };
+  const Eigen::Matrix<T, 3, 1> upper =
+      (T(1.0) - t) * node(e.row + 1, e.col) + t * node(e.row + 1, e.col + 1);
+  const Eigen::Matrix<T, 3, 1> lower =
+      e.row == 0 ? node(0, 0)
+                 : Eigen::Matrix<T, 3, 1>((T(1.0) - t) * node(e.row, e.col) +
+                                          t * node(e.row, e.col + 1));
+  return (T(1.0) - s) * lower + s * upper;
+}
+
+}  // namespace pfdm
+
+#endif  // PFDM_MODEL_LOCAL_FIELD_H_
