@@ -26,7 +26,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCHMARKS = ["fit_benchmark", "cost_function_benchmark", "solvers_benchmark",
-              "job_benchmark", "local_benchmark"]
+              "job_benchmark", "local_benchmark", "wall_benchmark"]
 LINEAR_SOLVERS = {0: "DENSE_NORMAL_CHOLESKY", 1: "DENSE_QR",
                   2: "SPARSE_NORMAL_CHOLESKY"}
 SPARSE_LIBRARIES = {0: "SuiteSparse", 1: "CXSparse", 2: "Eigen"}
@@ -264,6 +264,29 @@ def local_table(document):
                  [r[-1] for r in rows])
 
 
+def wall_table(document):
+    rows = []
+    surface = {}
+    for key, b in medians(document).items():
+        a = args(key)
+        if not a["solid"]:
+            surface[a["points"]] = b
+    for key, b in medians(document).items():
+        a = args(key)
+        base = surface.get(a["points"])
+        rows.append((a["points"], a["solid"], [
+            "{:,}".format(a["points"]), "solid" if a["solid"] else "midwall",
+            number(b["frame0_ms"], 1), number(b["frame_ms"], 1),
+            number(b["per_point_ns"], 0),
+            number(b["per_point_ns"] / base["per_point_ns"], 2)
+            if base and base["per_point_ns"] > 0 else "-",
+            "%.3f" % b["rms_mm"]]))
+    rows.sort(key=lambda r: r[:2])
+    return table(["tags", "wall", "frame 0 ms", "tracked frame ms",
+                  "Jacobian ns per tag", "vs one surface", "RMS mm"],
+                 [r[-1] for r in rows])
+
+
 def replace(readme, name, text):
     pattern = re.compile(r"(<!-- performance-tables:%s:begin -->\n).*?"
                          r"(<!-- performance-tables:%s:end -->)" % (name, name),
@@ -300,7 +323,8 @@ def main():
     sections = {"fit": ("fit_benchmark", fit_table),
                 "cost": ("cost_function_benchmark", cost_table),
                 "solvers": ("solvers_benchmark", solvers_table),
-                "local": ("local_benchmark", local_table)}
+                "local": ("local_benchmark", local_table),
+                "wall": ("wall_benchmark", wall_table)}
     for name, (benchmark, make) in sections.items():
         document = load(results, benchmark)
         if document:

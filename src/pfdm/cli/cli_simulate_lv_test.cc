@@ -84,5 +84,50 @@ TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
   }
 }
 
+// Tags through the wall: `pfdm fit` says it fits a solid and why, and
+// fit.json names the cavity, the myocardium and the mass; --wall midwall
+// keeps one surface and names its volume for what it is.
+TEST(LvPhantomCliTest, TagsThroughTheWallFitASolid) {
+  const std::string dir = ScratchDirectory("lv_wall");
+  CommandResult run = RunPfdm(
+      "simulate --phantom lv --wall_tags wall --frames 3 --tags 1000 --out " +
+      dir + "/lv.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  run = RunPfdm("fit --local off --points " + dir + "/lv.csv --out " + dir +
+                "/solid");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_EQ(run.output.rfind("wall: solid (tags spread ", 0), 0u)
+      << run.output;
+  const nlohmann::json solid =
+      nlohmann::json::parse(ReadText(dir + "/solid/fit.json"));
+  EXPECT_EQ(solid["model"]["wall"], "solid");
+  EXPECT_EQ(solid["model"]["volume_surface"], "cavity");
+  EXPECT_EQ(solid["settings"]["wall"], "auto");
+  const auto& ed = solid["frames"][0];
+  EXPECT_GT(ed["lv_mass_g"].get<double>(), 100.0);
+  EXPECT_NEAR(ed["lv_mass_g"].get<double>(),
+              1.05 * ed["myocardial_volume_ml"].get<double>(), 1e-9);
+  // The phantom's ED cavity is 107 ml (lv_phantom.h).
+  EXPECT_NEAR(ed["cavity_volume_ml"].get<double>(), 107.0, 5.0);
+  EXPECT_GT(solid["frames"][2]["clinical"]["wall_thickening_percent"]
+                .get<double>(),
+            10.0);
+  EXPECT_TRUE(solid["regions"][0].contains("thickening_percent"));
+  EXPECT_TRUE(solid.contains("ejection_fraction"));
+  EXPECT_NE(ReadText(dir + "/solid/report.html").find("LV mass at ED"),
+            std::string::npos);
+
+  run = RunPfdm("fit --local off --wall midwall --points " + dir +
+                "/lv.csv --out " + dir + "/midwall");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_EQ(run.output.rfind("wall: midwall (--wall midwall)", 0), 0u)
+      << run.output;
+  const nlohmann::json midwall =
+      nlohmann::json::parse(ReadText(dir + "/midwall/fit.json"));
+  EXPECT_FALSE(midwall.contains("ejection_fraction"));
+  EXPECT_GT(midwall["frames"][0]["midwall_volume_ml"].get<double>(), 150.0);
+  EXPECT_FALSE(midwall["frames"][0].contains("lv_mass_g"));
+}
+
 }  // namespace
 }  // namespace pfdm

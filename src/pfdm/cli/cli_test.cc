@@ -103,6 +103,18 @@ const BadInput kBadInputs[] = {
      "frame,id,x,y,z\n0,1,2,3,4\n0,2,5,6,7\n0,3,1,1,1\n"
      "0,4,2,2,2\n",
      "", "tags.csv: frame 0: only 4 points, at least 10 needed"},
+    {"unknown wall", "frame,id,x,y,z\n0,1,2,3,4\n", "--wall thick",
+     "unknown --wall 'thick' (expected auto, midwall or solid)"},
+    // One frame: no tags tracked through the wall, no contours of a wall.
+    {"solid without a wall in the data",
+     "frame,id,x,y,z\n0,0,0,-10,-16.18\n0,1,-10,-16.18,0\n"
+     "0,2,-16.18,0,-10\n0,3,0,-10,16.18\n0,4,-10,16.18,0\n"
+     "0,5,-16.18,0,10\n0,6,0,10,-16.18\n0,7,10,-16.18,0\n"
+     "0,8,16.18,0,-10\n0,9,0,10,16.18\n0,10,10,16.18,0\n"
+     "0,11,16.18,0,10\n",
+     "--wall solid",
+     "tags.csv: --wall solid needs tags tracked through the wall or "
+     "contours of both walls (lv-cavity,lv-epi)"},
     {"unknown model", "frame,id,x,y,z\n0,1,2,3,4\n", "--model cylinder",
      "unknown --model 'cylinder' (expected paper or superellipsoid)"},
     {"half a hint", "frame,id,x,y,z\n0,1,2,3,4\n", "--apex 1,2,3",

@@ -1,0 +1,49 @@
+// The solid's cost (issue 15): a systolic frame of the analytic LV phantom
+// with tags through a 10 mm wall (N tracked tags, K = 17, local field off),
+// fitted as one surface (--wall midwall) and as a solid (--wall solid).
+// "frame0_ms" is frame 0 with its correspondence rounds, "frame_ms" the
+// tracked frame, "per_point_ns" the tracked frame's Jacobian time per tag
+// and evaluation.  Each configuration runs three times; read the medians.
+#include "benchmark/benchmark.h"
+#include "pfdm/fit/fitter.h"
+#include "pfdm/phantom/lv_phantom.h"
+
+namespace pfdm {
+namespace {
+
+// Args: tags, solid (0 one surface, 1 solid).
+void BM_WallFitFrame(benchmark::State& state) {
+  LvPhantomOptions phantom_options;
+  phantom_options.num_tags = static_cast<int>(state.range(0));
+  phantom_options.num_frames = 2;
+  phantom_options.tags = LvTagLayer::kWall;
+  const LvPhantom phantom = MakeLvPhantom(phantom_options);
+  FitOptions options;
+  options.local.enabled = false;
+  options.wall = state.range(1) != 0 ? WallModel::kSolid : WallModel::kMidwall;
+  SequenceFit fit;
+  for (auto _ : state) {
+    fit = FitSequence(phantom.points, ModelConfig::Paper(17), options);
+  }
+  const FrameFit& frame = fit.frames[1];
+  state.counters["frame0_ms"] = 1e3 * fit.frames[0].solve_seconds;
+  state.counters["frame_ms"] = 1e3 * frame.solve_seconds;
+  state.counters["per_point_ns"] =
+      frame.jacobian_evaluations > 0
+          ? 1e9 * frame.jacobian_seconds /
+                (frame.jacobian_evaluations * state.range(0))
+          : 0.0;
+  state.counters["rms_mm"] = frame.rms_mm;
+}
+BENCHMARK(BM_WallFitFrame)
+    ->ArgNames({"points", "solid"})
+    ->ArgsProduct({{2000, 50000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+
+}  // namespace
+}  // namespace pfdm
+
+BENCHMARK_MAIN();

@@ -1,0 +1,60 @@
+"""The solid (issue 15) through Python: tags through the wall give the cavity,
+the myocardium and the wall's functions; the CLI's fit.json, to the digit."""
+import json
+
+import numpy as np
+import pytest
+
+import pfdm
+from conftest import run_cli, scratch
+
+
+@pytest.fixture(scope="module")
+def wall_tags():
+    folder = scratch("wall")
+    csv = folder / "lv.csv"
+    code, _, err = run_cli("simulate", "--phantom", "lv", "--wall_tags", "wall",
+                           "--frames", 3, "--tags", 1000, "--out", csv)
+    assert code == 0, err
+    return folder, csv
+
+
+def test_tags_through_the_wall_fit_a_solid(wall_tags):
+    folder, csv = wall_tags
+    fit = pfdm.fit(str(csv), local="off")
+    assert fit.model_info["wall"] == "solid"
+    assert fit.model_info["wall_reason"].startswith("tags spread ")
+    assert fit.volume_surface == "cavity"
+    names = list(fit.function_names)
+    h = fit.functions[:, :, names.index("h")]
+    # The phantom's wall: 10 mm at the equator, thinner toward the apex.
+    assert 7.0 < h[0, len(fit.knot_u) // 2] < 12.0
+    assert (h[-1, 1:] > h[0, 1:]).all()  # It thickens in systole.
+    ed, es = fit[0].clinical, fit[2].clinical
+    assert ed["cavity_volume_ml"] == pytest.approx(107.0, rel=0.05)
+    assert ed["lv_mass_g"] == pytest.approx(1.05 * ed["myocardial_volume_ml"])
+    assert es["wall_thickening_percent"] > 10.0
+    assert fit[0].model.volume_ml() == pytest.approx(
+        fit[0].model.volume_ml(w=-1))
+    assert fit[0].model.volume_ml(w=1) > fit[0].model.volume_ml(w=0)
+    assert fit.ejection_fraction["ratio"] > 0.3
+    # The same fit as the CLI's.
+    code, _, err = run_cli("fit", "--local", "off", "--points", csv, "--out",
+                           folder / "cli")
+    assert code == 0, err
+    cli = json.loads((folder / "cli" / "fit.json").read_text())
+    ours = fit.to_dict()
+    for document in (ours, cli):
+        for frame in document["frames"]:
+            frame.pop("solve_seconds")
+    assert ours == cli
+
+
+def test_midwall_keeps_one_surface(wall_tags):
+    _, csv = wall_tags
+    fit = pfdm.fit(str(csv), wall="midwall", local="off")
+    assert fit.model_info["wall"] == "midwall"
+    assert fit.ejection_fraction is None
+    assert "midwall_volume_ml" in fit[0].clinical
+    names = list(fit.function_names)
+    np.testing.assert_array_equal(fit.functions[:, :, names.index("h")], 0.0)
