@@ -157,6 +157,43 @@ double RerankDepths(const Model& model,
 }
 
 void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
+               FrameFit* fit);
+
+// A solid's tags were ranked across the wall in every frame, which widens
+// each frame's h by their noise, a thin wall's more (DeconvolvedThickness):
+// measures the noise on the tracked frames and takes it out of every
+// frame's h, then summarizes the frames again.
+void TakeOutTagNoise(const PointSequence& sequence, SequenceFit* result) {
+  double sum_squared = 0.0;
+  int frames = 0;
+  for (size_t t = 1; t < result->frames.size(); ++t) {
+    const FrameFit& frame = result->frames[t];
+    std::vector<size_t> tags;
+    for (size_t i = 0; i < frame.material.size(); ++i) {
+      if (frame.material[i].w != 0.0) tags.push_back(i);
+    }
+    if (tags.empty()) continue;
+    const double sigma = TangentialNoiseMm(result->ModelAt(static_cast<int>(t)),
+                                           frame.residuals, frame.material,
+                                           tags);
+    sum_squared += sigma * sigma;
+    ++frames;
+  }
+  if (frames == 0) return;
+  result->tag_noise_mm = std::sqrt(sum_squared / frames);
+  for (size_t t = 0; t < result->frames.size(); ++t) {
+    FrameFit& frame = result->frames[t];
+    Model model{result->config, frame.state};
+    model.state.globals[kH] =
+        DeconvolvedThickness(model.state.globals[kH], result->tag_noise_mm);
+    for (FunctionValues& knot : model.state.knots) {
+      knot[kH] = DeconvolvedThickness(knot[kH], result->tag_noise_mm);
+    }
+    Summarize(model, Positions(sequence.frames[t]), &frame);
+  }
+}
+
+void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
                FrameFit* fit) {
   double sum_squared = 0.0, sum = 0.0, max = 0.0;
   fit->residuals.clear();
@@ -543,6 +580,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
   }
   result.config = model.config;
   if (result.config.Solid()) result.surface = WallLayer::kAnywhere;
+  if (result.config.Solid() && has_tags) TakeOutTagNoise(sequence, &result);
   return result;
 }
 

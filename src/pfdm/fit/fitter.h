@@ -60,6 +60,10 @@ struct SequenceFit {
   // endocardium or the epicardium when frame 0 has contours of that wall
   // only, else kAnywhere (tags: the mid-wall).
   WallLayer surface = WallLayer::kAnywhere;
+  // A solid of ranked tags: their noise (TangentialNoiseMm over the tracked
+  // frames), taken out of every frame's h (DeconvolvedThickness); 0
+  // otherwise.
+  double tag_noise_mm = 0.0;
   std::vector<FrameFit> frames;
   Model ModelAt(int frame) const { return {config, frames[frame].state}; }
 };

@@ -104,6 +104,25 @@ std::vector<double> QuantileDepths(const std::vector<double>& u,
   return depths;
 }
 
+double TangentialNoiseMm(const Model& model,
+                         const std::vector<Eigen::Vector3d>& residuals,
+                         const std::vector<MaterialPoint>& material,
+                         const std::vector<size_t>& which) {
+  if (which.empty()) return 0.0;
+  double sum = 0.0;
+  for (size_t i : which) {
+    const MaterialPoint& m = material[i];
+    const Eigen::Vector3d n = SurfaceNormal(model, m.u, m.v, m.w);
+    sum += (residuals[i] - residuals[i].dot(n) * n).squaredNorm();
+  }
+  return std::sqrt(sum / (4.0 * which.size()));
+}
+
+double DeconvolvedThickness(double h_obs, double sigma) {
+  const double root = h_obs * h_obs - 24.0 * sigma * sigma;
+  return 0.5 * (h_obs + std::sqrt(std::max(0.0, root)));
+}
+
 double ThicknessFromDepths(const std::vector<double>& distances,
                            const std::vector<double>& depths) {
   double dw = 0.0, ww = 0.0, d_sum = 0.0, w_sum = 0.0;

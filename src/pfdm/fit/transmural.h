@@ -53,6 +53,25 @@ constexpr int kMinBand = 24;
 std::vector<double> QuantileDepths(const std::vector<double>& u,
                                    const std::vector<double>& distances);
 
+// Localization noise (mm per coordinate, isotropic) of tracked tags, from
+// their residuals across the normal of their layer: each of the two
+// tangential directions carries this frame's noise and frame 0's (through
+// the tag's (u, v)), so sigma^2 = mean |r - (r . n) n|^2 / 4.  Model error
+// counts as noise here.  0 for no tags.
+double TangentialNoiseMm(const Model& model,
+                         const std::vector<Eigen::Vector3d>& residuals,
+                         const std::vector<MaterialPoint>& material,
+                         const std::vector<size_t>& which);
+
+// The thickness of a wall of tags ranked across it, their noise taken out:
+// ranks of distances with noise sigma widen a wall of thickness h to
+// h_obs = h + 6 sigma^2 / h (the least-squares slope of uniform plus
+// Gaussian distances on their own quantiles is three times their Gini
+// mean difference, h / 3 + 2 sigma^2 / h for small sigma), so
+// h = (h_obs + sqrt(h_obs^2 - 24 sigma^2)) / 2, and h_obs / 2 where the
+// root would be imaginary.
+double DeconvolvedThickness(double h_obs, double sigma);
+
 // The thickness (mm) the distances imply at those depths: twice the
 // least-squares slope of distance on w.
 double ThicknessFromDepths(const std::vector<double>& distances,

@@ -332,6 +332,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                 {"u_max", fit.config.u_max},
                 {"wall", fit.config.Solid() ? "solid" : "midwall"},
                 {"wall_reason", fit.wall_reason},
+                {"tag_noise_mm", fit.tag_noise_mm},
                 {"volume_surface", analysis.volume_surface},
                 {"functions", functions}};
   const bool solid = fit.config.Solid();

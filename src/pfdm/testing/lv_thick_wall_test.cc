@@ -64,15 +64,17 @@ const ThickFit& Wall() {
 // Tags through a 10 mm wall (4 mm at the apex), 0.5 mm noise: the cavity
 // within 5 % at ED and ES, the ejection fraction within 0.03, each wall's
 // apex and base rotation within 1 degree and its radial contraction within
-// 2.5 points, at the noise floor.  Thickening reads 3 points low (36.6 %
-// against 39.6 % at ES): 1.3 points of it the model's quadratic profile
-// across the wall (noise-free tags), the rest the tags' noise, which
-// widens the spread of ranked tags more on the thinner ED wall than at ES
-// (docs/gauge.md, The wall).
+// 2.5 points, wall thickening within 3 points (37.5 % against 39.6 % at
+// ES; 1.3 of the 2.1 are the model's quadratic profile across the wall
+// against the phantom's, seen with noise-free tags), at the noise floor.
+// The tags' noise is measured (0.5 mm) and taken out of h (docs/gauge.md,
+// The wall).
 TEST(LvThickWallTest, TagsThroughTheWallMakeASolid) {
   const ThickFit& f = Wall();
   ASSERT_TRUE(f.fit.config.Solid()) << f.fit.wall_reason;
-  std::printf("wall: %s\n", f.fit.wall_reason.c_str());
+  std::printf("wall: %s, tag noise %.3f mm\n", f.fit.wall_reason.c_str(),
+              f.fit.tag_noise_mm);
+  EXPECT_NEAR(f.fit.tag_noise_mm, 0.5, 0.1);
   for (size_t t = 0; t < f.clinical.size(); ++t) {
     const ClinicalSummary& c = f.clinical[t];
     const LvFrameTruth& truth = f.phantom.truth[t];
@@ -105,7 +107,7 @@ TEST(LvThickWallTest, TagsThroughTheWallMakeASolid) {
                 2.5) << t;
     EXPECT_NEAR(c.epi_radial_contraction_percent, Contraction(truth.epi), 2.5)
         << t;
-    EXPECT_NEAR(c.wall_thickening_percent, Thickening(truth), 3.5) << t;
+    EXPECT_NEAR(c.wall_thickening_percent, Thickening(truth), 3.0) << t;
     // Noise 0.5 mm per coordinate at frame t and in frame 0's material
     // points: sqrt(6) 0.5 = 1.22 mm, less what the ranks absorb across the
     // wall.
@@ -134,7 +136,8 @@ TEST(LvThickWallTest, MidwallTagsKeepOneSurface) {
   EXPECT_EQ(f.clinical.back().lv_mass_g, 0.0);
 }
 
-// Segments: thickening per AHA segment within 4 points of the phantom's.
+// Segments: thickening per AHA segment within 3 points of the phantom's
+// on average.
 TEST(LvThickWallTest, SegmentsThicken) {
   const ThickFit& f = Wall();
   const Model reference = f.fit.ModelAt(0);
@@ -153,7 +156,7 @@ TEST(LvThickWallTest, SegmentsThicken) {
     fit_mean += motion[r].thickening_percent / motion.size();
     truth_mean += truth[r].wall_thickening_percent / motion.size();
   }
-  EXPECT_NEAR(fit_mean, truth_mean, 4.0);
+  EXPECT_NEAR(fit_mean, truth_mean, 3.0);
 }
 
 }  // namespace
