@@ -211,12 +211,6 @@ void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
   fit->state = model.state;
 }
 
-// Height along the model axis of the highest data point that is not an
-// outlier: with a robust loss, points farther than three loss scales from
-// the surface do not count.  NaN when none counts.
-// Sets a0 so that the model, a3 held, reaches from its fitted apex to the
-// highest data point along its axis (the base rim), keeping the apex, the
-// radii in mm and the orientation where they are.
 // A surface is fitted to points that span space; identical, collinear or
 // coplanar points once reached Ceres as NaN (a CHECK dump) or "fitted" with
 // exit 0.  Spreads are the principal standard deviations, mm.

@@ -4,26 +4,10 @@
 #include <cmath>
 #include <numeric>
 
-#include "nanoflann.hpp"
 #include "pfdm/util/error.h"
+#include "pfdm/util/point_cloud_tree.h"
 
 namespace pfdm {
-namespace {
-
-// nanoflann's view of points.
-struct Cloud {
-  std::vector<Eigen::Vector3d> points;
-  size_t kdtree_get_point_count() const { return points.size(); }
-  double kdtree_get_pt(size_t i, size_t dim) const { return points[i][dim]; }
-  template <class BoundingBox>
-  bool kdtree_get_bbox(BoundingBox&) const {
-    return false;
-  }
-};
-using CloudTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3>;
-
-}  // namespace
 
 WallModel WallModelFromName(const std::string& name) {
   if (name == "auto") return WallModel::kAuto;
@@ -62,11 +46,11 @@ double WallSpreadMm(const Model& model,
                     const std::vector<MaterialPoint>& material,
                     const std::vector<double>& distances) {
   if (material.size() < 2) return 0.0;
-  Cloud cloud;
+  PointCloud cloud;
   for (const MaterialPoint& m : material) {
     cloud.points.push_back(model.WorldPoint(m.u, m.v));
   }
-  CloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
   double sum_squared = 0.0;
   for (size_t i = 0; i < material.size(); ++i) {
