@@ -53,6 +53,10 @@ DEFINE_string(damping_scale, "",
               "twist=10,offsets=2 (groups pose shape twist bending offsets)");
 DEFINE_string(jacobian, kDefaults.jacobian.c_str(),
               "analytic, autodiff or numeric");
+DEFINE_string(vtk_format, kDefaults.vtk_format.c_str(),
+              "fit, batch: frame_NNN.vtk and .vtp as binary (legacy BINARY, "
+              "XML appended raw; exact, no formatting) or ascii (text, 9 "
+              "digits)");
 DEFINE_string(base_plane, kDefaults.base_plane.c_str(),
               "fit, batch: where the cavity volume is "
               "closed: auto (the mitral valve plane when biv-me guide points "
@@ -84,6 +88,7 @@ FitSettings FitSettingsFromFlags() {
   s.damping = FLAGS_damping;
   s.damping_scale = FLAGS_damping_scale;
   s.jacobian = FLAGS_jacobian;
+  s.vtk_format = FLAGS_vtk_format;
   return s;
 }
 
@@ -99,6 +104,8 @@ ModelConfig ModelConfigFromFlags() {
 FitOptions FitOptionsFromFlags() {
   return FitOptionsFrom(FitSettingsFromFlags());
 }
+
+VtkFormat VtkFormatFromFlags() { return VtkFormatFrom(FitSettingsFromFlags()); }
 
 std::vector<BasePlane> BasePlanesFromFlags(const std::string& points) {
   return BasePlanesFrom(FitSettingsFromFlags(), points);

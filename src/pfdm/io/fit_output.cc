@@ -442,7 +442,8 @@ std::string FrameVtk(const Model& model, const Frame& frame,
 
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
-                     const std::vector<BasePlane>& base_planes) {
+                     const std::vector<BasePlane>& base_planes,
+                     VtkFormat vtk_format) {
   // Everything is rendered before the first file is written, so a failure
   // (gnuplot missing, say) leaves no partial set behind.
   const FitAnalysis analysis = AnalyzeFit(fit, base_planes);
@@ -454,9 +455,11 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     std::snprintf(name, sizeof(name), "frame_%03d", fit.frames[t].frame);
     const VtkPolyData data =
         FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
-    files.emplace_back(std::string(name) + ".vtk",
-                       ToLegacyVtk(data, std::string("pfdm ") + name));
-    files.emplace_back(std::string(name) + ".vtp", ToVtkXmlPolyData(data));
+    files.emplace_back(
+        std::string(name) + ".vtk",
+        ToLegacyVtk(data, std::string("pfdm ") + name, vtk_format));
+    files.emplace_back(std::string(name) + ".vtp",
+                       ToVtkXmlPolyData(data, vtk_format));
     timesteps.emplace_back(fit.frames[t].frame, std::string(name) + ".vtp");
   }
   files.emplace_back("fit.pvd", PvdCollection(timesteps));
