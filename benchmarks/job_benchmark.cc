@@ -6,6 +6,7 @@
 // frames' mean, the tracked frame's minimizer time, and the ratios the
 // README quotes: frame 0 over a tracked frame, outputs' share of the job.
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -118,7 +119,8 @@ BENCHMARK(BM_BivMeJob)
 
 // Frame 0's first correspondence round alone: a 20,000-tag phantom's
 // frame 0 against the initialized model.  Args: exhaustive (1: every
-// refinement step, as before the early stop), threads.
+// refinement step, as before the early stop), threads, jet (1: ceres::Jet
+// derivatives, as before the closed-form ones).
 void BM_ClosestMaterialPoints(benchmark::State& state) {
   PhantomOptions phantom_options;
   phantom_options.num_points = 20000;
@@ -132,19 +134,27 @@ void BM_ClosestMaterialPoints(benchmark::State& state) {
   CorrespondenceOptions options;
   if (state.range(0) == 1) options.step_tolerance_mm = 0.0;
   options.num_threads = static_cast<int>(state.range(1));
+  options.jet_derivatives = state.range(2) == 1;
+  std::int64_t evaluations = 0;
+  options.evaluations = &evaluations;
   for (auto _ : state) {
     benchmark::DoNotOptimize(ClosestMaterialPoints(model, points, options));
   }
+  // Surface evaluations (point and its derivatives in u and v) per point.
+  state.counters["evaluations_per_point"] =
+      static_cast<double>(evaluations) /
+      (static_cast<double>(state.iterations()) * points.size());
   state.counters["us_per_point"] = benchmark::Counter(
       static_cast<double>(state.iterations()) * points.size(),
       benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
       benchmark::Counter::kIs1000);
 }
 BENCHMARK(BM_ClosestMaterialPoints)
-    ->ArgNames({"exhaustive", "threads"})
-    ->Args({1, 1})
-    ->Args({0, 1})
-    ->Args({0, 2})
+    ->ArgNames({"exhaustive", "threads", "jet"})
+    ->Args({1, 1, 0})
+    ->Args({0, 1, 1})
+    ->Args({0, 1, 0})
+    ->Args({0, 2, 0})
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(3)
     ->ReportAggregatesOnly(true);

@@ -184,9 +184,11 @@ def job_table(document, batch):
         a = args(key)
         if key.startswith("BM_ClosestMaterialPoints"):
             closest.append([
-                "exhaustive" if a["exhaustive"] else "early stop",
+                ("exhaustive" if a["exhaustive"] else "early stop") +
+                (", Jet derivatives" if a.get("jet") else ""),
                 str(a["threads"]), number(b["real_time"]),
-                number(1e6 * b["us_per_point"], 2)])
+                number(1e6 * b["us_per_point"], 2),
+                number(b.get("evaluations_per_point", float("nan")), 2)])
             continue
         case = ("phantom, {:,} tags x 5 frames".format(a["tags"])
                 if key.startswith("BM_PhantomJob") else
@@ -207,8 +209,8 @@ def job_table(document, batch):
     if closest:
         text += ("\n\nFrame 0's first closest-point search alone (20,000 "
                  "tags against the initialized model):\n\n")
-        text += table(["search", "threads", "ms", "CPU us per point"],
-                      closest)
+        text += table(["search", "threads", "ms", "CPU us per point",
+                       "surface evaluations per point"], closest)
     if batch:
         text += "\n\n`pfdm batch` on %d phantom cases of {:,} tags x 5 " \
                 "frames (%s):\n\n".format(batch["tags"]) % (
