@@ -83,6 +83,10 @@ PointGroupResidual::PointGroupResidual(
                                              std::end(kAllFunctions));
   };
   knots_alike_ = varied_[3] && varied_[4] && functions(1) == functions(2);
+  pose_moments_ =
+      knots_alike_ && varied_[0] && varied_[1] && !varied_[2] &&
+      std::none_of(samples_.begin(), samples_.end(),
+                   [](const PointSample& sample) { return sample.has_normal; });
   set_num_residuals(compressed_ ? columns_ + 1 : rows_);
 }
 
@@ -121,7 +125,9 @@ bool PointGroupResidual::Evaluate(double const* const* parameters,
     return true;
   }
   const SquareRootForm form =
-      knots_alike_
+      pose_moments_
+          ? SquareRootFormFromGram(PoseMomentGram(blocks, rotation), stacked)
+      : knots_alike_
           ? SquareRootFormFromGram(MomentGram(blocks, rotation), stacked)
           : ToSquareRootForm(stacked());
   std::copy(form.z.data(), form.z.data() + n, residuals);
@@ -303,6 +309,169 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
     gram(n, k + m + j) = rest_sum(kB, r, k + j);
   }
   gram(n, n) = rest_sum(kOne, r, r);
+  return gram;
+}
+
+// MomentGram with the pose's columns folded into moments of s.  In the
+// world frame a point's pose columns are I (the center) and
+// d(R(q) s)/dq = sum_a s_a W_a (the quaternion), W_a = d(R(q) e_a)/dq,
+// since R(q) s is linear in s; its knot columns are R D times (1 - w) or w
+// and its residual R r, r = s + R^T (c - p).  So the pose's blocks of
+// J^T J need only sum 1, sum s, sum s s^T, sum s r^T, sum r and, weighted
+// by (1 - w) or w, sum D and sum s_a D: per point about a third of the
+// products of [U D r]^T [U D r] with U's seven columns, and no rotation
+// Jacobian.
+Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
+    const double* const* blocks, const Eigen::Matrix3d& rotation) const {
+  const RowLayout layout = CompactLayout(entries_);
+  const int m = widths_[3];
+  const int* knot_functions = layout.functions[1];
+  const Eigen::Matrix3d model_from_world = rotation.transpose();
+  const Eigen::Vector3d center(blocks[0]);
+  // A point's moments, one row of `rest` weighted by (1, a, b) in a batch's
+  // product: [1, s, r, s s^T, s r^T, r^T r] (weight 1 is used) then
+  // [D, s_a D for a = 0..2, D^T r] (weights a and b are used), D row major.
+  constexpr int kOne = 0, kS = 1, kR = 4, kSS = 7, kSR = 16, kRR = 25;
+  const int d_at = 26, sd_at = d_at + 3 * m, dr_at = sd_at + 9 * m;
+  const int num_rest = dr_at + m, num_dd = m * (m + 1) / 2;
+  std::vector<int> dd_start(m);
+  for (int j = 0, at = 0; j < m; at += m - j, ++j) dd_start[j] = at - j;
+  constexpr int kBatch = 32;
+  RowMajorMatrix dd(kBatch, num_dd), rest(kBatch, num_rest);
+  Eigen::Matrix<double, kBatch, 3> dd_weights, rest_weights;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> dd_sums =
+      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_dd);
+  Eigen::Matrix<double, 3, Eigen::Dynamic> rest_sums =
+      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_rest);
+  int in_batch = 0;
+  auto flush = [&] {
+    dd_sums.noalias() +=
+        dd_weights.topRows(in_batch).transpose() * dd.topRows(in_batch);
+    rest_sums.noalias() +=
+        rest_weights.topRows(in_batch).transpose() * rest.topRows(in_batch);
+    in_batch = 0;
+  };
+  auto add_point = [&](int i, const Eigen::Vector3d& s,
+                       const ShapeJacobian& ds) {
+    const PointSample& sample = samples_[i];
+    double* x = rest.data() + in_batch * num_rest;
+    double* d = x + d_at;
+    for (int c = 0; c < m; ++c) {
+      if (Supplies(1, free_mask_, knot_functions[c])) {
+        for (int row = 0; row < 3; ++row) {
+          d[row * m + c] = ds(row, knot_functions[c]);
+        }
+      } else {
+        for (int row = 0; row < 3; ++row) d[row * m + c] = 0.0;
+      }
+    }
+    const Eigen::Vector3d r = s + model_from_world * (center - sample.data);
+    x[kOne] = 1.0;
+    for (int a = 0; a < 3; ++a) {
+      x[kS + a] = s[a];
+      x[kR + a] = r[a];
+      for (int c = 0; c < 3; ++c) {
+        x[kSS + 3 * a + c] = s[a] * s[c];
+        x[kSR + 3 * a + c] = s[a] * r[c];
+      }
+    }
+    x[kRR] = r.squaredNorm();
+    for (int a = 0; a < 3; ++a) {
+      double* sd = x + sd_at + 3 * a * m;
+      for (int j = 0; j < 3 * m; ++j) sd[j] = s[a] * d[j];
+    }
+    double* dr = x + dr_at;
+    double* p_dd = dd.data() + in_batch * num_dd;
+    std::fill(p_dd, p_dd + num_dd, 0.0);
+    for (int j = 0; j < m; ++j) {
+      dr[j] = d[j] * r[0] + d[m + j] * r[1] + d[2 * m + j] * r[2];
+    }
+    for (int row = 0; row < 3; ++row) {
+      const double* dr_row = d + row * m;
+      for (int j = 0; j < m; ++j) {
+        const double gj = dr_row[j];
+        if (gj == 0.0) continue;
+        double* pj = p_dd + dd_start[j];
+        for (int l = j; l < m; ++l) pj[l] += gj * dr_row[l];
+      }
+    }
+    const double b = sample.knot_weight, a = 1.0 - b;
+    dd_weights.row(in_batch) << a * a, a * b, b * b;
+    rest_weights.row(in_batch) << 1.0, a, b;
+    if (++in_batch == kBatch) flush();
+  };
+  ForEachShape(samples_, free_mask_, unit_exponents_, blocks, true, add_point);
+  if (in_batch > 0) flush();
+
+  // W_a (world, 3 x 4) and U_a = W_a^T R (4 x 3), a = 0..2.
+  Eigen::Matrix<double, 3, 4, Eigen::RowMajor> w[3];
+  Eigen::Matrix<double, 4, 3> u[3];
+  for (int a = 0; a < 3; ++a) {
+    RotationJacobian(blocks[1], Eigen::Vector3d::Unit(a), w[a].data());
+    u[a] = w[a].transpose() * rotation;
+  }
+  const int n = columns_, t = 0, q = 3, k1 = 7, k2 = 7 + m;
+  auto one = [&](int at) { return rest_sums(0, at); };
+  // sum_a s_a-weighted moments with weight row `weight` (1: a, 2: b).
+  auto sd = [&](int weight, int a, int row, int l) {
+    return rest_sums(weight, sd_at + (3 * a + row) * m + l);
+  };
+  auto d_sum = [&](int weight, int row, int l) {
+    return rest_sums(weight, d_at + row * m + l);
+  };
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  // Center against center, quaternion and residual.
+  for (int i = 0; i < 3; ++i) gram(t + i, t + i) = one(kOne);
+  Eigen::Matrix<double, 3, 4> center_quaternion =
+      Eigen::Matrix<double, 3, 4>::Zero();
+  Eigen::Matrix4d quaternion_quaternion = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d quaternion_residual = Eigen::Vector4d::Zero();
+  Eigen::Vector3d sum_r, sr_row;
+  for (int a = 0; a < 3; ++a) {
+    center_quaternion += one(kS + a) * w[a];
+    sum_r[a] = one(kR + a);
+    for (int c = 0; c < 3; ++c) {
+      quaternion_quaternion += one(kSS + 3 * a + c) * (w[a].transpose() * w[c]);
+      sr_row[c] = one(kSR + 3 * a + c);
+    }
+    quaternion_residual += u[a] * sr_row;
+  }
+  const Eigen::Vector3d center_residual = rotation * sum_r;
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 3; ++i) gram(q + j, t + i) = center_quaternion(i, j);
+    for (int i = j; i < 4; ++i) {
+      gram(q + i, q + j) = quaternion_quaternion(i, j);
+    }
+    gram(n, q + j) = quaternion_residual[j];
+  }
+  for (int i = 0; i < 3; ++i) gram(n, t + i) = center_residual[i];
+  // The knots against the pose: R sum(w D) and sum_a U_a sum(w s_a D).
+  for (int weight = 1; weight <= 2; ++weight) {
+    const int first = weight == 1 ? k1 : k2;
+    for (int l = 0; l < m; ++l) {
+      Eigen::Vector3d dl, sd_l[3];
+      for (int row = 0; row < 3; ++row) {
+        dl[row] = d_sum(weight, row, l);
+        for (int a = 0; a < 3; ++a) sd_l[a][row] = sd(weight, a, row, l);
+      }
+      const Eigen::Vector3d centers = rotation * dl;
+      Eigen::Vector4d quaternions = Eigen::Vector4d::Zero();
+      for (int a = 0; a < 3; ++a) quaternions += u[a] * sd_l[a];
+      for (int i = 0; i < 3; ++i) gram(first + l, t + i) = centers[i];
+      for (int j = 0; j < 4; ++j) gram(first + l, q + j) = quaternions[j];
+      gram(n, first + l) = rest_sums(weight, dr_at + l);
+    }
+  }
+  // The knots against each other, as MomentGram.
+  for (int j = 0; j < m; ++j) {
+    for (int i = j; i < m; ++i) {
+      const int at = dd_start[j] + i;
+      gram(k1 + i, k1 + j) = dd_sums(0, at);
+      gram(k2 + i, k1 + j) = gram(k2 + j, k1 + i) = dd_sums(1, at);
+      gram(k2 + i, k2 + j) = dd_sums(2, at);
+    }
+  }
+  gram(n, n) = one(kRR);
   return gram;
 }
 
