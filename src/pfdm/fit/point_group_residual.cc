@@ -57,6 +57,87 @@ void ForEachShape(const std::vector<PointSample>& samples,
   }
 }
 
+// Per-point moments summed over a group: each point fills a row of `dd`
+// (the knot functions' D^T D, lower triangle packed column by column) and a
+// row of `rest` (the other moments); a batch of points' rows, weighted by
+// (a^2, ab, b^2) and (1, a, b) respectively (a = 1 - w, b = w), is then
+// one matrix product each.
+class MomentSums {
+ public:
+  MomentSums(int m, int num_rest)
+      : m_(m),
+        num_dd_(m * (m + 1) / 2),
+        num_rest_(num_rest),
+        dd_start_(m),
+        dd_(kBatch, num_dd_),
+        rest_(kBatch, num_rest),
+        dd_sums_(Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_dd_)),
+        rest_sums_(
+            Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_rest)) {
+    for (int j = 0, at = 0; j < m; at += m - j, ++j) dd_start_[j] = at - j;
+  }
+
+  // The current point's rows; dd is zeroed, rest is the caller's to fill.
+  double* dd_row() {
+    double* row = dd_.data() + in_batch_ * num_dd_;
+    std::fill(row, row + num_dd_, 0.0);
+    return row;
+  }
+  double* rest_row() { return rest_.data() + in_batch_ * num_rest_; }
+
+  // Adds d d^T (d: the point's m knot columns of one row) to dd_row.
+  void AddKnotProducts(const double* d, double* dd_row) const {
+    for (int j = 0; j < m_; ++j) {
+      const double dj = d[j];
+      if (dj == 0.0) continue;
+      double* pj = dd_row + dd_start_[j];
+      for (int l = j; l < m_; ++l) pj[l] += dj * d[l];
+    }
+  }
+
+  // Ends the current point, whose knot weight is w.
+  void EndPoint(double w) {
+    const double b = w, a = 1.0 - w;
+    dd_weights_.row(in_batch_) << a * a, a * b, b * b;
+    rest_weights_.row(in_batch_) << 1.0, a, b;
+    if (++in_batch_ == kBatch) Flush();
+  }
+
+  void Flush() {
+    dd_sums_.noalias() +=
+        dd_weights_.topRows(in_batch_).transpose() * dd_.topRows(in_batch_);
+    rest_sums_.noalias() +=
+        rest_weights_.topRows(in_batch_).transpose() * rest_.topRows(in_batch_);
+    in_batch_ = 0;
+  }
+
+  // rest's sums weighted by 1 (weight 0), a (1) or b (2).
+  double rest_sum(int weight, int at) const { return rest_sums_(weight, at); }
+
+  // The knots' blocks of the Gram matrix, [(1 - w) D, w D] from column
+  // first on; lower triangle only.
+  void FillKnotBlocks(int first, Eigen::MatrixXd* gram) const {
+    const int k = first, m = m_;
+    for (int j = 0; j < m; ++j) {
+      for (int i = j; i < m; ++i) {
+        const int at = dd_start_[j] + i;
+        (*gram)(k + i, k + j) = dd_sums_(0, at);
+        (*gram)(k + m + i, k + j) = (*gram)(k + m + j, k + i) = dd_sums_(1, at);
+        (*gram)(k + m + i, k + m + j) = dd_sums_(2, at);
+      }
+    }
+  }
+
+ private:
+  static constexpr int kBatch = 32;
+  const int m_, num_dd_, num_rest_;
+  std::vector<int> dd_start_;
+  RowMajorMatrix dd_, rest_;
+  Eigen::Matrix<double, kBatch, 3> dd_weights_, rest_weights_;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> dd_sums_, rest_sums_;
+  int in_batch_ = 0;
+};
+
 }  // namespace
 
 PointGroupResidual::PointGroupResidual(
@@ -198,29 +279,9 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
   const Eigen::Matrix3d model_from_world = rotation.transpose();
   const Eigen::Vector3d center(blocks[0]);
   const int* knot_functions = layout.functions[1];
-  // Each point's P in two parts, each a row of a matrix: the D x D block
-  // (lower triangle, packed column by column) and the rows of U and r; a
-  // batch of points' sums, weighted by (a^2, ab, b^2) and (1, a, b)
-  // respectively (a = 1 - w, b = w), is then one matrix product each.
-  const int num_dd = m * (m + 1) / 2, num_rest = (k + 1) * q;
-  std::vector<int> dd_start(m);
-  for (int j = 0, at = 0; j < m; at += m - j, ++j) dd_start[j] = at - j;
-  constexpr int kBatch = 32;
-  RowMajorMatrix dd(kBatch, num_dd), rest(kBatch, num_rest);
-  Eigen::Matrix<double, kBatch, 3> dd_weights, rest_weights;
-  Eigen::Matrix<double, 3, Eigen::Dynamic> dd_sums =
-      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_dd);
-  Eigen::Matrix<double, 3, Eigen::Dynamic> rest_sums =
-      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_rest);
+  // Each point's P in two parts: the D x D block and the rows of U and r.
+  MomentSums sums(m, (k + 1) * q);
   Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor> g(3, q);
-  int in_batch = 0;
-  auto flush = [&] {
-    dd_sums.noalias() +=
-        dd_weights.topRows(in_batch).transpose() * dd.topRows(in_batch);
-    rest_sums.noalias() +=
-        rest_weights.topRows(in_batch).transpose() * rest.topRows(in_batch);
-    in_batch = 0;
-  };
   auto add_point = [&](int i, const Eigen::Vector3d& s,
                        const ShapeJacobian& ds) {
     const PointSample& sample = samples_[i];
@@ -255,18 +316,12 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
       num_rows = 1;
     }
 
-    double* p_dd = dd.data() + in_batch * num_dd;
-    double* p_rest = rest.data() + in_batch * num_rest;
-    std::fill(p_dd, p_dd + num_dd, 0.0);
-    std::fill(p_rest, p_rest + num_rest, 0.0);
+    double* p_dd = sums.dd_row();
+    double* p_rest = sums.rest_row();
+    std::fill(p_rest, p_rest + (k + 1) * q, 0.0);
     for (int row = 0; row < num_rows; ++row) {
       const double* gr = g.data() + row * q;
-      for (int j = 0; j < m; ++j) {
-        const double gj = gr[k + j];
-        if (gj == 0.0) continue;
-        double* pj = p_dd + dd_start[j];
-        for (int l = j; l < m; ++l) pj[l] += gj * gr[k + l];
-      }
+      sums.AddKnotProducts(gr + k, p_dd);
       for (int c = 0; c <= k; ++c) {
         const double gc = gr[c < k ? c : r];
         if (gc == 0.0) continue;
@@ -274,20 +329,17 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
         for (int l = 0; l < q; ++l) pc[l] += gc * gr[l];
       }
     }
-    const double b = sample.knot_weight, a = 1.0 - b;
-    dd_weights.row(in_batch) << a * a, a * b, b * b;
-    rest_weights.row(in_batch) << 1.0, a, b;
-    if (++in_batch == kBatch) flush();
+    sums.EndPoint(sample.knot_weight);
   };
   ForEachShape(samples_, free_mask_, unit_exponents_, blocks, true, add_point);
-  if (in_batch > 0) flush();
+  sums.Flush();
 
   // Into the columns [U, (1 - w) D, w D, r]; lower triangle only.  In g,
   // U is [0, k), D [k, r), r the last.
   const int n = columns_;
-  enum { kOne, kA, kB };  // rest_sums' rows; dd_sums' are aa, ab, bb.
+  enum { kOne, kA, kB };                           // The rest's weights.
   auto rest_sum = [&](int weight, int c, int l) {  // c in U or r.
-    return rest_sums(weight, (c < k ? c : k) * q + l);
+    return sums.rest_sum(weight, (c < k ? c : k) * q + l);
   };
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n + 1, n + 1);
   for (int j = 0; j < k; ++j) {
@@ -298,13 +350,8 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
     }
     gram(n, j) = rest_sum(kOne, r, j);
   }
+  sums.FillKnotBlocks(k, &gram);
   for (int j = 0; j < m; ++j) {
-    for (int i = j; i < m; ++i) {
-      const int at = dd_start[j] + i;
-      gram(k + i, k + j) = dd_sums(0, at);
-      gram(k + m + i, k + j) = gram(k + m + j, k + i) = dd_sums(1, at);
-      gram(k + m + i, k + m + j) = dd_sums(2, at);
-    }
     gram(n, k + j) = rest_sum(kA, r, k + j);
     gram(n, k + m + j) = rest_sum(kB, r, k + j);
   }
@@ -333,28 +380,11 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
   // [D, s_a D for a = 0..2, D^T r] (weights a and b are used), D row major.
   constexpr int kOne = 0, kS = 1, kR = 4, kSS = 7, kSR = 16, kRR = 25;
   const int d_at = 26, sd_at = d_at + 3 * m, dr_at = sd_at + 9 * m;
-  const int num_rest = dr_at + m, num_dd = m * (m + 1) / 2;
-  std::vector<int> dd_start(m);
-  for (int j = 0, at = 0; j < m; at += m - j, ++j) dd_start[j] = at - j;
-  constexpr int kBatch = 32;
-  RowMajorMatrix dd(kBatch, num_dd), rest(kBatch, num_rest);
-  Eigen::Matrix<double, kBatch, 3> dd_weights, rest_weights;
-  Eigen::Matrix<double, 3, Eigen::Dynamic> dd_sums =
-      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_dd);
-  Eigen::Matrix<double, 3, Eigen::Dynamic> rest_sums =
-      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_rest);
-  int in_batch = 0;
-  auto flush = [&] {
-    dd_sums.noalias() +=
-        dd_weights.topRows(in_batch).transpose() * dd.topRows(in_batch);
-    rest_sums.noalias() +=
-        rest_weights.topRows(in_batch).transpose() * rest.topRows(in_batch);
-    in_batch = 0;
-  };
+  MomentSums sums(m, dr_at + m);
   auto add_point = [&](int i, const Eigen::Vector3d& s,
                        const ShapeJacobian& ds) {
     const PointSample& sample = samples_[i];
-    double* x = rest.data() + in_batch * num_rest;
+    double* x = sums.rest_row();
     double* d = x + d_at;
     for (int c = 0; c < m; ++c) {
       if (Supplies(1, free_mask_, knot_functions[c])) {
@@ -381,27 +411,15 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
       for (int j = 0; j < 3 * m; ++j) sd[j] = s[a] * d[j];
     }
     double* dr = x + dr_at;
-    double* p_dd = dd.data() + in_batch * num_dd;
-    std::fill(p_dd, p_dd + num_dd, 0.0);
     for (int j = 0; j < m; ++j) {
       dr[j] = d[j] * r[0] + d[m + j] * r[1] + d[2 * m + j] * r[2];
     }
-    for (int row = 0; row < 3; ++row) {
-      const double* dr_row = d + row * m;
-      for (int j = 0; j < m; ++j) {
-        const double gj = dr_row[j];
-        if (gj == 0.0) continue;
-        double* pj = p_dd + dd_start[j];
-        for (int l = j; l < m; ++l) pj[l] += gj * dr_row[l];
-      }
-    }
-    const double b = sample.knot_weight, a = 1.0 - b;
-    dd_weights.row(in_batch) << a * a, a * b, b * b;
-    rest_weights.row(in_batch) << 1.0, a, b;
-    if (++in_batch == kBatch) flush();
+    double* p_dd = sums.dd_row();
+    for (int row = 0; row < 3; ++row) sums.AddKnotProducts(d + row * m, p_dd);
+    sums.EndPoint(sample.knot_weight);
   };
   ForEachShape(samples_, free_mask_, unit_exponents_, blocks, true, add_point);
-  if (in_batch > 0) flush();
+  sums.Flush();
 
   // W_a (world, 3 x 4) and U_a = W_a^T R (4 x 3), a = 0..2.
   Eigen::Matrix<double, 3, 4, Eigen::RowMajor> w[3];
@@ -411,13 +429,13 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
     u[a] = w[a].transpose() * rotation;
   }
   const int n = columns_, t = 0, q = 3, k1 = 7, k2 = 7 + m;
-  auto one = [&](int at) { return rest_sums(0, at); };
+  auto one = [&](int at) { return sums.rest_sum(0, at); };
   // sum_a s_a-weighted moments with weight row `weight` (1: a, 2: b).
   auto sd = [&](int weight, int a, int row, int l) {
-    return rest_sums(weight, sd_at + (3 * a + row) * m + l);
+    return sums.rest_sum(weight, sd_at + (3 * a + row) * m + l);
   };
   auto d_sum = [&](int weight, int row, int l) {
-    return rest_sums(weight, d_at + row * m + l);
+    return sums.rest_sum(weight, d_at + row * m + l);
   };
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n + 1, n + 1);
   // Center against center, quaternion and residual.
@@ -459,18 +477,10 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
       for (int a = 0; a < 3; ++a) quaternions += u[a] * sd_l[a];
       for (int i = 0; i < 3; ++i) gram(first + l, t + i) = centers[i];
       for (int j = 0; j < 4; ++j) gram(first + l, q + j) = quaternions[j];
-      gram(n, first + l) = rest_sums(weight, dr_at + l);
+      gram(n, first + l) = sums.rest_sum(weight, dr_at + l);
     }
   }
-  // The knots against each other, as MomentGram.
-  for (int j = 0; j < m; ++j) {
-    for (int i = j; i < m; ++i) {
-      const int at = dd_start[j] + i;
-      gram(k1 + i, k1 + j) = dd_sums(0, at);
-      gram(k2 + i, k1 + j) = gram(k2 + j, k1 + i) = dd_sums(1, at);
-      gram(k2 + i, k2 + j) = dd_sums(2, at);
-    }
-  }
+  sums.FillKnotBlocks(k1, &gram);
   gram(n, n) = one(kRR);
   return gram;
 }
