@@ -53,8 +53,9 @@ std::string RenderSvgString(const SvgPlot& plot);
 
 // Runs `script` with the data blocks defined first and the terminal set to
 // SVG (width x height pixels), and returns the SVG.  gnuplot is started
-// without a shell, the script on its standard input and the SVG on its
-// standard output, so no file name ever reaches a shell or the script.
+// without a shell, the script in an anonymous memory file (/dev/fd/3) and
+// the SVG on its standard output, so no file name of the caller's ever
+// reaches a shell or the script.
 // Throws InputError(what + ": gnuplot failed: <gnuplot's error>") if gnuplot
 // is missing or fails.
 std::string RenderSvgString(const std::string& what,

@@ -28,7 +28,7 @@ TEST(GnuplotTest, ScriptErrorsAreReportedInOneLineAndLeaveNoFile) {
     // gnuplot's own message, not the temporary script it once named.
     EXPECT_EQ(std::string(error.what()),
               dir +
-                  "/bad.svg: gnuplot failed: line 0: no datablock named "
+                  "/bad.svg: gnuplot failed: line 2: no datablock named "
                   "$missing");
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir));
@@ -42,7 +42,7 @@ TEST(GnuplotTest, AllUndefinedDataNamesTheOutputNotAScript) {
     FAIL() << "no error";
   } catch (const InputError& error) {
     EXPECT_EQ(std::string(error.what()),
-              "parameters.svg: gnuplot failed: line 3: all points y value "
+              "parameters.svg: gnuplot failed: line 6: all points y value "
               "undefined!");
   }
 }
@@ -108,7 +108,8 @@ TEST(GnuplotTest, AFailingPlotAmongSeveralIsNamed) {
     FAIL() << "no error";
   } catch (const InputError& error) {
     EXPECT_EQ(std::string(error.what()),
-              "bad.svg: gnuplot failed: line 3: no datablock named $d");
+              // The line of the one script all the plots share.
+              "bad.svg: gnuplot failed: line 12: no datablock named $d");
   }
 }
 
