@@ -201,11 +201,14 @@ def job_table(document, batch):
                                   number(b["tracked_minimizer_ms"])),
                      number(b["outputs_ms"]),
                      "%.1f" % b["frame0_x_tracked"],
-                     "%.0f %%" % (100 * b["outputs_share"])])
+                     "%.0f %%" % (100 * b["outputs_share"]),
+                     "%.0f %%" % (100 * b.get("outputs_cpu_share",
+                                               float("nan")))])
     text = table(["case", "threads", "job ms", "read ms",
                   "frame 0 ms (closest points)",
                   "later frame ms (minimizer)", "outputs ms",
-                  "frame 0 / later frame", "outputs share"], rows)
+                  "frame 0 / later frame", "outputs share",
+                  "outputs share of CPU time"], rows)
     if closest:
         text += ("\n\nFrame 0's first closest-point search alone (20,000 "
                  "tags against the initialized model):\n\n")
