@@ -360,12 +360,12 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
 }
 
 // MomentGram with the pose's columns folded into moments of s.  In the
-// world frame a point's pose columns are I (the center) and
-// d(R(q) s)/dq = sum_a s_a W_a (the quaternion), W_a = d(R(q) e_a)/dq,
-// since R(q) s is linear in s; its knot columns are R D times (1 - w) or w
-// and its residual R r, r = s + R^T (c - p).  So the pose's blocks of
-// J^T J need only sum 1, sum s, sum s s^T, sum s r^T, sum r and, weighted
-// by (1 - w) or w, sum D and sum s_a D: per point about a third of the
+// model frame a point's pose columns are R^T (the center) and
+// R^T d(R(q) s)/dq = sum_a s_a V_a (the quaternion), V_a = R^T W_a and
+// W_a = d(R(q) e_a)/dq, since R(q) s is linear in s; its knot columns are
+// D times (1 - w) or w and its residual r = s + R^T (c - p).  So the pose's
+// blocks of J^T J need only sum 1, sum s, sum s s^T, sum s r^T, sum r and,
+// weighted by (1 - w) or w, sum D and sum s_a D: per point about a third of the
 // products of [U D r]^T [U D r] with U's seven columns, and no rotation
 // Jacobian.
 Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
@@ -421,12 +421,17 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
   ForEachShape(samples_, free_mask_, unit_exponents_, blocks, true, add_point);
   sums.Flush();
 
-  // W_a (world, 3 x 4) and U_a = W_a^T R (4 x 3), a = 0..2.
+  // W_a (world, 3 x 4), V_a = R^T W_a (model frame) and U_a = V_a^T,
+  // a = 0..2.  Every block is taken in the model frame, as MomentGram
+  // takes them (the centre's columns R^T): the same Gram for a quaternion
+  // off the unit sphere, whose R is not orthogonal (the integrator's).
   Eigen::Matrix<double, 3, 4, Eigen::RowMajor> w[3];
+  Eigen::Matrix<double, 3, 4> v[3];
   Eigen::Matrix<double, 4, 3> u[3];
   for (int a = 0; a < 3; ++a) {
     RotationJacobian(blocks[1], Eigen::Vector3d::Unit(a), w[a].data());
-    u[a] = w[a].transpose() * rotation;
+    v[a] = model_from_world * w[a];
+    u[a] = v[a].transpose();
   }
   const int n = columns_, t = 0, q = 3, k1 = 7, k2 = 7 + m;
   auto one = [&](int at) { return sums.rest_sum(0, at); };
@@ -439,21 +444,25 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
   };
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n + 1, n + 1);
   // Center against center, quaternion and residual.
-  for (int i = 0; i < 3; ++i) gram(t + i, t + i) = one(kOne);
-  Eigen::Matrix<double, 3, 4> center_quaternion =
-      Eigen::Matrix<double, 3, 4>::Zero();
+  const Eigen::Matrix3d center_center =
+      one(kOne) * (rotation * model_from_world);
+  for (int j = 0; j < 3; ++j) {
+    for (int i = j; i < 3; ++i) gram(t + i, t + j) = center_center(i, j);
+  }
+  Eigen::Matrix<double, 3, 4> sum_v = Eigen::Matrix<double, 3, 4>::Zero();
   Eigen::Matrix4d quaternion_quaternion = Eigen::Matrix4d::Zero();
   Eigen::Vector4d quaternion_residual = Eigen::Vector4d::Zero();
   Eigen::Vector3d sum_r, sr_row;
   for (int a = 0; a < 3; ++a) {
-    center_quaternion += one(kS + a) * w[a];
+    sum_v += one(kS + a) * v[a];
     sum_r[a] = one(kR + a);
     for (int c = 0; c < 3; ++c) {
-      quaternion_quaternion += one(kSS + 3 * a + c) * (w[a].transpose() * w[c]);
+      quaternion_quaternion += one(kSS + 3 * a + c) * (u[a] * v[c]);
       sr_row[c] = one(kSR + 3 * a + c);
     }
     quaternion_residual += u[a] * sr_row;
   }
+  const Eigen::Matrix<double, 3, 4> center_quaternion = rotation * sum_v;
   const Eigen::Vector3d center_residual = rotation * sum_r;
   for (int j = 0; j < 4; ++j) {
     for (int i = 0; i < 3; ++i) gram(q + j, t + i) = center_quaternion(i, j);
