@@ -21,6 +21,20 @@ Model TruthModel() {
   return MakePhantom(options).truth[3];  // Twisted, offset, contracted.
 }
 
+// A phantom of num_points tags over 5 frames and frame t's positions.
+std::vector<Eigen::Vector3d> PhantomPositions(int num_points, int t,
+                                              Phantom* phantom) {
+  PhantomOptions options;
+  options.num_points = num_points;
+  options.num_frames = 5;
+  *phantom = MakePhantom(options);
+  std::vector<Eigen::Vector3d> points;
+  for (const DataPoint& p : phantom->points.frames[t].points) {
+    points.push_back(p.position);
+  }
+  return points;
+}
+
 TEST(CorrespondenceTest, FindsTheMaterialPointOfPointsOffTheSurface) {
   const Model model = TruthModel();
   std::vector<Eigen::Vector3d> points;
@@ -76,14 +90,9 @@ TEST(CorrespondenceTest, NormalIsUnitAndOrthogonalToTheSurface) {
 // truth and on a frame-0 start far from the data, and threads must not
 // change a bit of the result.
 TEST(CorrespondenceTest, EarlyStopAndThreadsFindTheSameMaterialPoints) {
-  PhantomOptions phantom_options;
-  phantom_options.num_points = 3000;
-  phantom_options.num_frames = 5;
-  const Phantom phantom = MakePhantom(phantom_options);
-  std::vector<Eigen::Vector3d> points;
-  for (const DataPoint& p : phantom.points.frames[3].points) {
-    points.push_back(p.position);
-  }
+  Phantom phantom;
+  const std::vector<Eigen::Vector3d> points =
+      PhantomPositions(3000, 3, &phantom);
   const Model start = InitializeModel(phantom.truth[3].config, points, {});
   for (const Model& model : {phantom.truth[3], start}) {
     CorrespondenceOptions exhaustive;
@@ -164,14 +173,8 @@ MaterialPoint ReferenceClosest(const Model& model, const Eigen::Vector3d& p) {
 // Against a slow reference (dense grid, then Gauss-Newton to the end):
 // never farther from the data than 1e-6 mm more.
 TEST(CorrespondenceTest, MatchesJetDerivativesAndAReferenceOnRandomPoints) {
-  PhantomOptions phantom_options;
-  phantom_options.num_points = 1000;
-  phantom_options.num_frames = 5;
-  const Phantom phantom = MakePhantom(phantom_options);
-  std::vector<Eigen::Vector3d> data;
-  for (const DataPoint& p : phantom.points.frames[0].points) {
-    data.push_back(p.position);
-  }
+  Phantom phantom;
+  const std::vector<Eigen::Vector3d> data = PhantomPositions(1000, 0, &phantom);
   const Model start = InitializeModel(phantom.truth[0].config, data, {});
   std::mt19937 random(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
