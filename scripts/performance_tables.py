@@ -232,8 +232,10 @@ def solvers_table(document):
         rows.append((a["points"], a["solver"], [
             "{:,}".format(a["points"]), SOLVERS[a["solver"]],
             "{:,}".format(int(b["iterations"])),
-            "%s (%s)" % ("{:,}".format(int(b["jacobian_evals_to_rms"])),
-                         number(b["evals_to_rms_vs_direct"])),
+            # NaN: the run never reached the direct solve's RMS.
+            "never" if b["jacobian_evals_to_rms"] != b["jacobian_evals_to_rms"]
+            else "%s (%s)" % ("{:,}".format(int(b["jacobian_evals_to_rms"])),
+                              number(b["evals_to_rms_vs_direct"])),
             number(b["time_to_rms_vs_direct"], 2),
             number(b["time_vs_direct"], 2),
             "yes" if b["at_rest"] else "no (step cap)",
