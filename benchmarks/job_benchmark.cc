@@ -5,7 +5,10 @@
 // (25 frames, no tracked points).  Reports each phase in ms, the tracked
 // frames' mean, the tracked frame's minimizer time, and the ratios the
 // README quotes: frame 0 over a tracked frame, outputs' share of the job.
+#include <sys/resource.h>
+
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -22,6 +25,20 @@
 
 namespace pfdm {
 namespace {
+
+// CPU seconds of this process and of its waited-for children (gnuplot):
+// on a machine shared with other work they stay put where wall times grow.
+double CpuSeconds() {
+  double seconds = 0.0;
+  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage usage{};
+    getrusage(who, &usage);
+    for (const timeval& t : {usage.ru_utime, usage.ru_stime}) {
+      seconds += t.tv_sec + 1e-6 * t.tv_usec;
+    }
+  }
+  return seconds;
+}
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -42,17 +59,21 @@ void RunJob(benchmark::State& state, const std::string& path,
   FitOptions options;
   options.solver.num_threads = num_threads;
   double read = 0, frame0 = 0, tracked = 0, tracked_minimizer = 0, write = 0,
-         correspondence0 = 0;
+         correspondence0 = 0, job_cpu = 0, write_cpu = 0;
   int num_tracked = 0;
   for (auto _ : state) {
+    const double job_cpu_start = CpuSeconds();
     auto start = std::chrono::steady_clock::now();
     const PointSequence points = ReadPoints(path, "auto", contours);
     read = SecondsSince(start);
     const SequenceFit fit =
         FitSequence(points, ModelConfig::Paper(17), options);
     start = std::chrono::steady_clock::now();
+    const double write_cpu_start = CpuSeconds();
     WriteFitOutputs(out, points, fit, options);
     write = SecondsSince(start);
+    write_cpu = CpuSeconds() - write_cpu_start;
+    job_cpu = CpuSeconds() - job_cpu_start;
     frame0 = fit.frames[0].solve_seconds;
     correspondence0 = fit.frames[0].correspondence_seconds;
     tracked = tracked_minimizer = 0;
@@ -74,6 +95,10 @@ void RunJob(benchmark::State& state, const std::string& path,
   state.counters["outputs_ms"] = 1e3 * write;
   state.counters["frame0_x_tracked"] = frame0 / per_tracked;
   state.counters["outputs_share"] = write / job;
+  // The same share in CPU time (gnuplot's included): what a quiet machine
+  // would show, where the wall-clock share swings with the load.
+  state.counters["outputs_cpu_ms"] = 1e3 * write_cpu;
+  state.counters["outputs_cpu_share"] = write_cpu / job_cpu;
 }
 
 // Args: tags, threads.
@@ -118,7 +143,8 @@ BENCHMARK(BM_BivMeJob)
 
 // Frame 0's first correspondence round alone: a 20,000-tag phantom's
 // frame 0 against the initialized model.  Args: exhaustive (1: every
-// refinement step, as before the early stop), threads.
+// refinement step, as before the early stop), threads, jet (1: ceres::Jet
+// derivatives, as before the closed-form ones).
 void BM_ClosestMaterialPoints(benchmark::State& state) {
   PhantomOptions phantom_options;
   phantom_options.num_points = 20000;
@@ -132,19 +158,27 @@ void BM_ClosestMaterialPoints(benchmark::State& state) {
   CorrespondenceOptions options;
   if (state.range(0) == 1) options.step_tolerance_mm = 0.0;
   options.num_threads = static_cast<int>(state.range(1));
+  options.jet_derivatives = state.range(2) == 1;
+  std::int64_t evaluations = 0;
+  options.evaluations = &evaluations;
   for (auto _ : state) {
     benchmark::DoNotOptimize(ClosestMaterialPoints(model, points, options));
   }
+  // Surface evaluations (point and its derivatives in u and v) per point.
+  state.counters["evaluations_per_point"] =
+      static_cast<double>(evaluations) /
+      (static_cast<double>(state.iterations()) * points.size());
   state.counters["us_per_point"] = benchmark::Counter(
       static_cast<double>(state.iterations()) * points.size(),
       benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
       benchmark::Counter::kIs1000);
 }
 BENCHMARK(BM_ClosestMaterialPoints)
-    ->ArgNames({"exhaustive", "threads"})
-    ->Args({1, 1})
-    ->Args({0, 1})
-    ->Args({0, 2})
+    ->ArgNames({"exhaustive", "threads", "jet"})
+    ->Args({1, 1, 0})
+    ->Args({0, 1, 1})
+    ->Args({0, 1, 0})
+    ->Args({0, 2, 0})
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(3)
     ->ReportAggregatesOnly(true);

@@ -499,17 +499,22 @@ void BindFit(py::module_& m) {
           "radial_contraction_percent per frame.")
       .def(
           "write",
-          [](const FitResult& r, const py::object& out) {
+          [](const FitResult& r, const py::object& out,
+             const std::string& vtk_format) {
             const std::string dir = PathString(out);
+            const VtkFormat format = VtkFormatFromName(vtk_format);
             py::gil_scoped_release release;
             CheckFitOutputFolder(dir, r.points.source);
-            WriteFitOutputs(dir, r.points, r.fit, r.options, r.base_planes);
+            WriteFitOutputs(dir, r.points, r.fit, r.options, r.base_planes,
+                            format);
           },
-          py::arg("out"),
+          py::arg("out"), py::kw_only(),
+          py::arg("vtk_format") = FitSettings().vtk_format,
           "Writes the files `pfdm fit --out` writes into folder out "
           "(fit.json, parameters.csv, parameters.svg, report.html, "
           "frame_NNN.vtk and .vtp, fit.pvd), each whole or not at all, "
-          "fit.json last.")
+          "fit.json last; vtk_format 'binary' (legacy BINARY, XML appended "
+          "raw) or 'ascii' as `--vtk_format`.")
       .def("__repr__", [](const FitResult& r) {
         return "<pfdm.Fit '" + r.points.source +
                "': " + std::to_string(r.fit.frames.size()) + " frames>";

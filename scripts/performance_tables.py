@@ -184,9 +184,11 @@ def job_table(document, batch):
         a = args(key)
         if key.startswith("BM_ClosestMaterialPoints"):
             closest.append([
-                "exhaustive" if a["exhaustive"] else "early stop",
+                ("exhaustive" if a["exhaustive"] else "early stop") +
+                (", Jet derivatives" if a.get("jet") else ""),
                 str(a["threads"]), number(b["real_time"]),
-                number(1e6 * b["us_per_point"], 2)])
+                number(1e6 * b["us_per_point"], 2),
+                number(b.get("evaluations_per_point", float("nan")), 2)])
             continue
         case = ("phantom, {:,} tags x 5 frames".format(a["tags"])
                 if key.startswith("BM_PhantomJob") else
@@ -199,16 +201,19 @@ def job_table(document, batch):
                                   number(b["tracked_minimizer_ms"])),
                      number(b["outputs_ms"]),
                      "%.1f" % b["frame0_x_tracked"],
-                     "%.0f %%" % (100 * b["outputs_share"])])
+                     "%.0f %%" % (100 * b["outputs_share"]),
+                     "%.0f %%" % (100 * b.get("outputs_cpu_share",
+                                               float("nan")))])
     text = table(["case", "threads", "job ms", "read ms",
                   "frame 0 ms (closest points)",
                   "later frame ms (minimizer)", "outputs ms",
-                  "frame 0 / later frame", "outputs share"], rows)
+                  "frame 0 / later frame", "outputs share",
+                  "outputs share of CPU time"], rows)
     if closest:
         text += ("\n\nFrame 0's first closest-point search alone (20,000 "
                  "tags against the initialized model):\n\n")
-        text += table(["search", "threads", "ms", "CPU us per point"],
-                      closest)
+        text += table(["search", "threads", "ms", "CPU us per point",
+                       "surface evaluations per point"], closest)
     if batch:
         text += "\n\n`pfdm batch` on %d phantom cases of {:,} tags x 5 " \
                 "frames (%s):\n\n".format(batch["tags"]) % (
@@ -227,8 +232,10 @@ def solvers_table(document):
         rows.append((a["points"], a["solver"], [
             "{:,}".format(a["points"]), SOLVERS[a["solver"]],
             "{:,}".format(int(b["iterations"])),
-            "%s (%s)" % ("{:,}".format(int(b["jacobian_evals_to_rms"])),
-                         number(b["evals_to_rms_vs_direct"])),
+            # NaN: the run never reached the direct solve's RMS.
+            "never" if b["jacobian_evals_to_rms"] != b["jacobian_evals_to_rms"]
+            else "%s (%s)" % ("{:,}".format(int(b["jacobian_evals_to_rms"])),
+                              number(b["evals_to_rms_vs_direct"])),
             number(b["time_to_rms_vs_direct"], 2),
             number(b["time_vs_direct"], 2),
             "yes" if b["at_rest"] else "no (step cap)",

@@ -79,7 +79,8 @@ std::string RunCase(const BatchCase& c, const std::string& out,
         ReadPoints(c.points, FLAGS_format,
                    c.contours.empty() ? FLAGS_contours : c.contours);
     const SequenceFit fit = FitSequence(points, config, options);
-    WriteFitOutputs(dir, points, fit, options, BasePlanesFromFlags(c.points));
+    WriteFitOutputs(dir, points, fit, options, BasePlanesFromFlags(c.points),
+                    VtkFormatFromFlags());
     fs::remove(dir + "/error.txt");
   } catch (const std::exception& error) {
     // The case's error stays beside its (absent) outputs for the summary of
@@ -122,6 +123,7 @@ int RunBatch() {
   const ModelConfig config = ModelConfigFromFlags();
   const FitOptions options = FitOptionsFromFlags();
   BasePlanesFromFlags("");  // Checks --base_plane before any case.
+  VtkFormatFromFlags();
   EnsureDirectory(FLAGS_out);
 
   std::atomic<size_t> next{0};

@@ -25,11 +25,12 @@ int RunMeshPoints();
 
 // From the shared flags (--points --format --contours; --model --knots;
 // --smoothness --prior --loss --loss_scale --threads --apex --base --solver
-// ...; --base_plane), all of them FitSettings' (fit_flags.cc).
+// ...; --base_plane --vtk_format), all of them FitSettings' (fit_flags.cc).
 FitSettings FitSettingsFromFlags();
 PointSequence PointsFromFlags();
 ModelConfig ModelConfigFromFlags();
 FitOptions FitOptionsFromFlags();
+VtkFormat VtkFormatFromFlags();
 // Per frame, the plane closing the cavity for --base_plane; "" only checks
 // the flag.
 std::vector<BasePlane> BasePlanesFromFlags(const std::string& points);

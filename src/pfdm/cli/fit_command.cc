@@ -12,6 +12,7 @@ int RunFit() {
   const ModelConfig config = ModelConfigFromFlags();
   const FitOptions options = FitOptionsFromFlags();
   BasePlanesFromFlags("");  // Checks the flag before the fit.
+  const VtkFormat vtk_format = VtkFormatFromFlags();
   // Before the minutes of work, not after them.
   CheckFitOutputFolder(FLAGS_out, FLAGS_points);
   const PointSequence points = PointsFromFlags();
@@ -19,7 +20,7 @@ int RunFit() {
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
   WriteFitOutputs(FLAGS_out, points, fit, options,
-                  BasePlanesFromFlags(FLAGS_points));
+                  BasePlanesFromFlags(FLAGS_points), vtk_format);
   for (const FrameFit& frame : fit.frames) {
     std::printf("frame %3d  points %5zu  rms %.3f mm  max %.3f mm  %s\n",
                 frame.frame, frame.residuals.size(), frame.rms_mm,

@@ -65,6 +65,10 @@ DEFINE_string(local_grid, kDefaults.local_grid.c_str(),
 DEFINE_double(local_stiffness, kDefaults.local_stiffness,
               "local deformations' membrane and thin-plate weight, relative "
               "to one node's data, 0 to 1e6");
+DEFINE_string(vtk_format, kDefaults.vtk_format.c_str(),
+              "fit, batch: frame_NNN.vtk and .vtp as binary (legacy BINARY, "
+              "XML appended raw; exact, no formatting) or ascii (text, 9 "
+              "digits)");
 DEFINE_string(base_plane, kDefaults.base_plane.c_str(),
               "fit, batch: where the cavity volume is "
               "closed: auto (the mitral valve plane when biv-me guide points "
@@ -100,6 +104,7 @@ FitSettings FitSettingsFromFlags() {
   s.local = FLAGS_local;
   s.local_grid = FLAGS_local_grid;
   s.local_stiffness = FLAGS_local_stiffness;
+  s.vtk_format = FLAGS_vtk_format;
   return s;
 }
 
@@ -115,6 +120,8 @@ ModelConfig ModelConfigFromFlags() {
 FitOptions FitOptionsFromFlags() {
   return FitOptionsFrom(FitSettingsFromFlags());
 }
+
+VtkFormat VtkFormatFromFlags() { return VtkFormatFrom(FitSettingsFromFlags()); }
 
 std::vector<BasePlane> BasePlanesFromFlags(const std::string& points) {
   return BasePlanesFrom(FitSettingsFromFlags(), points);

@@ -1,12 +1,15 @@
 #include "pfdm/fit/correspondence.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <thread>
 
 #include "Eigen/Dense"
 #include "ceres/jet.h"
-#include "nanoflann.hpp"
+#include "pfdm/model/shape_angle_derivative.h"
+#include "pfdm/util/point_cloud_tree.h"
 
 namespace pfdm {
 namespace {
@@ -15,19 +18,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kGridU = 48;
 constexpr int kGridV = 72;
 constexpr int kRefinementSteps = 10;
-
-// nanoflann's view of the grid samples.
-struct SampleCloud {
-  std::vector<Eigen::Vector3d> points;
-  size_t kdtree_get_point_count() const { return points.size(); }
-  double kdtree_get_pt(size_t i, size_t dim) const { return points[i][dim]; }
-  template <class BoundingBox>
-  bool kdtree_get_bbox(BoundingBox&) const {
-    return false;
-  }
-};
-using SampleTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<double, SampleCloud>, SampleCloud, 3>;
 
 double WrapLongitude(double v) {
   v = std::fmod(v + kPi, 2.0 * kPi);
@@ -49,54 +39,143 @@ double LongitudeAround(const Model& model, const Eigen::Vector3d& point,
   return std::atan2(std::sin(angle) / f[kA2], std::cos(angle) / f[kA1]);
 }
 
-// Gauss-Newton converges linearly here (the data sit off the surface), at a
-// rate near distance / radius of curvature, so once a step is shorter than
-// step_tolerance_mm what is left is a few percent of that.
-MaterialPoint Refine(const Model& model, const Eigen::Vector3d& target,
-                     MaterialPoint start, double step_tolerance_mm) {
-  using Jet2 = ceres::Jet<double, 2>;
-  MaterialPoint best = start;
-  double best_cost =
-      (WorldPointAt(model, best.u, best.v, best.w) - target).squaredNorm();
-  double lambda = 1e-3;
-  for (int step = 0; step < kRefinementSteps; ++step) {
-    const Eigen::Matrix<Jet2, 3, 1> x =
-        WorldPointAt(model, Jet2(best.u, 0), Jet2(best.v, 1), best.w);
-    Eigen::Matrix<double, 3, 2> jacobian;
-    Eigen::Vector3d residual;
-    for (int i = 0; i < 3; ++i) {
-      residual[i] = x[i].a - target[i];
-      jacobian.row(i) = x[i].v.transpose();
+// The model's world point x(u, v, w) and dx/d(u, v), the functions
+// interpolated along u as WorldPointAt does, derivatives in closed form
+// (ShapeAngleDerivatives) rather than through ceres::Jet, which made the
+// search several times slower.  The closed form covers the layer w = 0 of
+// the global model; off it (a solid's other layers) or with a local field,
+// the Jets.
+class SurfacePoints {
+ public:
+  SurfacePoints(const Model& model, bool jet_derivatives)
+      : model_(model),
+        jet_derivatives_(jet_derivatives || !model.state.local.empty()),
+        grid_(model.config.Grid()),
+        free_mask_(model.config.FreeMask()),
+        unit_exponents_(model.UnitExponents()),
+        rotation_(model.Rotation()),
+        center_(model.state.center.data()) {}
+
+  // x in *point, dx/du and dx/dv in the columns of *jacobian.
+  void Evaluate(double u, double v, double w, Eigen::Vector3d* point,
+                Eigen::Matrix<double, 3, 2>* jacobian) const {
+    if (jet_derivatives_ || w != 0.0) {
+      using Jet2 = ceres::Jet<double, 2>;
+      const Eigen::Matrix<Jet2, 3, 1> x =
+          WorldPointAt(model_, Jet2(u, 0), Jet2(v, 1), w);
+      for (int i = 0; i < 3; ++i) {
+        (*point)[i] = x[i].a;
+        jacobian->row(i) = x[i].v.transpose();
+      }
+      return;
     }
+    const ModelConfig& config = model_.config;
+    const KnotSpan span = grid_.Span(u);
+    const int k1 = std::min(span.k0 + 1, config.num_knots - 1);
+    const double width = grid_.KnotU(k1) - grid_.KnotU(span.k0);
+    const double weight =
+        config.num_knots == 1 ? 0.0 : (u - grid_.KnotU(span.k0)) / width;
+    const FunctionValues& knot0 = model_.state.knots[span.k0];
+    const FunctionValues& knot1 = model_.state.knots[k1];
+    double f[kNumFunctions], df_du[kNumFunctions];
+    for (int i = 0; i < kNumFunctions; ++i) {
+      if ((free_mask_ >> i) & 1u) {
+        f[i] = (1.0 - weight) * knot0[i] + weight * knot1[i];
+        df_du[i] = config.num_knots == 1 ? 0.0 : (knot1[i] - knot0[i]) / width;
+      } else {
+        f[i] = model_.state.globals[i];
+        df_du[i] = 0.0;
+      }
+    }
+    const ShapeAndAngleDerivatives shape =
+        ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents_);
+    *point = center_ + rotation_ * shape.shape;
+    jacobian->col(0) = rotation_ * shape.d_u;
+    jacobian->col(1) = rotation_ * shape.d_v;
+  }
+
+ private:
+  const Model& model_;
+  const bool jet_derivatives_;
+  const KnotGrid& grid_;
+  const FunctionMask free_mask_;
+  const bool unit_exponents_;
+  const Eigen::Matrix3d rotation_;
+  const Eigen::Vector3d center_;
+};
+
+// Damped Newton on |x(u, v) - p|^2 / 2, whose Hessian is J^T J + S with
+// S = sum_k r_k d2x_k/d(u, v)2, the surface's curvature seen from the
+// point.  Gauss-Newton (S = 0) converges only linearly, at a rate near
+// distance / radius of curvature: on frame 0, with the data millimetres off
+// the initial model, most points ran into the step cap.  S is learnt from
+// the steps taken (the structured secant update of NL2SOL: S delta =
+// (J_new - J_old)^T r_new, a symmetric rank-one change), which costs no
+// evaluation, and is left out while J^T J + S is not positive definite.
+// Every evaluation brings its derivatives, so an accepted trial point is
+// the next step's linearization, and a step shorter than step_tolerance_mm
+// ends the search before it is evaluated.
+MaterialPoint Refine(const SurfacePoints& surface, const Model& model,
+                     const Eigen::Vector3d& target, MaterialPoint start,
+                     double step_tolerance_mm, std::int64_t* evaluations) {
+  MaterialPoint best = start;
+  Eigen::Vector3d point;
+  Eigen::Matrix<double, 3, 2> jacobian;
+  surface.Evaluate(best.u, best.v, best.w, &point, &jacobian);
+  ++*evaluations;
+  Eigen::Vector3d residual = point - target;
+  double best_cost = residual.squaredNorm();
+  double lambda = 1e-3;
+  Eigen::Matrix2d curvature = Eigen::Matrix2d::Zero();
+  for (int step = 0; step < kRefinementSteps; ++step) {
     Eigen::Matrix2d normal = jacobian.transpose() * jacobian;
+    const Eigen::Matrix2d newton = normal + curvature;
+    if (newton(0, 0) > 0.0 && newton.determinant() > 0.0) normal = newton;
     const Eigen::Vector2d gradient = jacobian.transpose() * residual;
     if (gradient.norm() < 1e-12) break;
-    bool improved = false;
-    double step_mm = 0.0;
+    bool improved = false, converged = false;
     for (int attempt = 0; attempt < 8 && !improved; ++attempt) {
       Eigen::Matrix2d damped = normal;
       damped.diagonal() += lambda * (normal.diagonal().array() + 1e-9).matrix();
       const Eigen::Vector2d delta = -damped.ldlt().solve(gradient);
-      MaterialPoint trial{
+      // A step this short is where the search ends: converging faster than
+      // linearly, what is left is far shorter still, and evaluating the
+      // step would only confirm it.
+      if (attempt == 0 && (jacobian * delta).norm() < step_tolerance_mm) {
+        converged = true;
+        break;
+      }
+      const MaterialPoint trial{
           std::clamp(best.u + delta[0], model.config.u_min, model.config.u_max),
           WrapLongitude(best.v + delta[1]), best.w};
-      const double cost =
-          (WorldPointAt(model, trial.u, trial.v, trial.w) - target)
-              .squaredNorm();
+      Eigen::Vector3d trial_point;
+      Eigen::Matrix<double, 3, 2> trial_jacobian;
+      surface.Evaluate(trial.u, trial.v, trial.w, &trial_point,
+                       &trial_jacobian);
+      ++*evaluations;
+      const double cost = (trial_point - target).squaredNorm();
       if (cost < best_cost) {
+        const Eigen::Vector2d taken(trial.u - best.u, delta[1]);
+        const Eigen::Vector3d trial_residual = trial_point - target;
+        const Eigen::Vector2d secant =
+            (trial_jacobian - jacobian).transpose() * trial_residual -
+            curvature * taken;
+        const double along = secant.dot(taken);
+        if (std::abs(along) > 1e-8 * secant.norm() * taken.norm()) {
+          curvature += secant * secant.transpose() / along;
+        }
         best = trial;
         best_cost = cost;
+        residual = trial_residual;
+        jacobian = trial_jacobian;
         lambda = std::max(lambda * 0.3, 1e-9);
         improved = true;
-        step_mm = (jacobian * delta).norm();
       } else {
         lambda *= 10.0;
       }
     }
-    // Converged: further steps would only be rejected (each costing up to
-    // eight evaluations) or move the point by less than anything downstream
-    // can see.
-    if (!improved || step_mm < step_tolerance_mm) break;
+    // Converged, or no step along the gradient lowers the distance.
+    if (converged || !improved) break;
   }
   return best;
 }
@@ -140,6 +219,9 @@ Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
 
 template Eigen::Vector3d WorldPointAt(const Model&, const double&,
                                       const double&, double);
+template Eigen::Matrix<ceres::Jet<double, 2>, 3, 1> WorldPointAt(
+    const Model&, const ceres::Jet<double, 2>&, const ceres::Jet<double, 2>&,
+    double);
 
 Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
                               double w) {
@@ -161,7 +243,7 @@ Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const CorrespondenceOptions& options) {
-  SampleCloud cloud;
+  PointCloud cloud;
   std::vector<MaterialPoint> samples;
   cloud.points.reserve(kGridU * kGridV);
   for (int i = 0; i < kGridU; ++i) {
@@ -174,11 +256,14 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
       cloud.points.push_back(WorldPointAt(model, u, v));
     }
   }
-  SampleTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
 
   std::vector<MaterialPoint> result(points.size());
+  const SurfacePoints surface(model, options.jet_derivatives);
+  std::atomic<std::int64_t> evaluations{0};
   const auto refine_range = [&](size_t begin, size_t end) {
+    std::int64_t range_evaluations = 0;
     for (size_t i = begin; i < end; ++i) {
       unsigned int nearest = 0;
       double distance_squared = 0.0;
@@ -188,8 +273,10 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
       if (nearest < static_cast<unsigned int>(kGridV)) {
         start.v = LongitudeAround(model, points[i], start.u);
       }
-      result[i] = Refine(model, points[i], start, options.step_tolerance_mm);
+      result[i] = Refine(surface, model, points[i], start,
+                         options.step_tolerance_mm, &range_evaluations);
     }
+    evaluations += range_evaluations;
   };
   // Threads only pay for themselves past a few hundred points (a point
   // costs ~10 us).
@@ -197,6 +284,7 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
       std::min<size_t>(options.num_threads, points.size() / 256), 1, 64);
   if (num_threads == 1) {
     refine_range(0, points.size());
+    if (options.evaluations != nullptr) *options.evaluations += evaluations;
     return result;
   }
   std::vector<std::thread> threads;
@@ -207,6 +295,7 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
   }
   refine_range(0, std::min(points.size(), chunk));
   for (std::thread& thread : threads) thread.join();
+  if (options.evaluations != nullptr) *options.evaluations += evaluations;
   return result;
 }
 

@@ -2,6 +2,7 @@
 #ifndef PFDM_FIT_CORRESPONDENCE_H_
 #define PFDM_FIT_CORRESPONDENCE_H_
 
+#include <cstdint>
 #include <vector>
 
 #include "Eigen/Core"
@@ -31,16 +32,27 @@ struct CorrespondenceOptions {
   // Points are split into this many contiguous chunks, one per thread; the
   // result does not depend on it.
   int num_threads = 1;
-  // A refinement step that moves the model point by less than this (mm)
-  // ends the search for that point; 0 runs every step until none improves.
+  // A refinement step that would move the model point by less than this
+  // (mm) ends the search for that point; 0 runs every step until none
+  // improves.
   double step_tolerance_mm = 1e-8;
   // The surface w each point is sought on (empty: the mid-wall, w = 0).
   std::vector<double> surfaces;
+  // The same search with ceres::Jet derivatives, as before the closed-form
+  // ones: slower, for tests and the benchmark's comparison; always for
+  // points off the mid-wall (w != 0) and for a model with a local field,
+  // which the closed form does not cover.
+  bool jet_derivatives = false;
+  // When set, the number of surface evaluations (each with its derivatives
+  // in u and v) is added to it: the search's cost, counted.
+  std::int64_t* evaluations = nullptr;
 };
 
 // For each point, the (u, v) in [u_min, u_max] x [-pi, pi) whose model point
 // on its surface w is nearest: the nearest sample of a (u, v) grid of the
-// mid-wall, then a few damped Gauss-Newton steps on |x(u, v, w) - p|^2.
+// mid-wall, then a few damped Newton steps on |x(u, v, w) - p|^2 with the
+// surface's derivatives (in closed form on the mid-wall of a model without
+// a local field) and its curvature learnt from the steps.
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const CorrespondenceOptions& options = {});

@@ -57,6 +57,87 @@ void ForEachShape(const std::vector<PointSample>& samples,
   }
 }
 
+// Per-point moments summed over a group: each point fills a row of `dd`
+// (the knot functions' D^T D, lower triangle packed column by column) and a
+// row of `rest` (the other moments); a batch of points' rows, weighted by
+// (a^2, ab, b^2) and (1, a, b) respectively (a = 1 - w, b = w), is then
+// one matrix product each.
+class MomentSums {
+ public:
+  MomentSums(int m, int num_rest)
+      : m_(m),
+        num_dd_(m * (m + 1) / 2),
+        num_rest_(num_rest),
+        dd_start_(m),
+        dd_(kBatch, num_dd_),
+        rest_(kBatch, num_rest),
+        dd_sums_(Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_dd_)),
+        rest_sums_(
+            Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_rest)) {
+    for (int j = 0, at = 0; j < m; at += m - j, ++j) dd_start_[j] = at - j;
+  }
+
+  // The current point's rows; dd is zeroed, rest is the caller's to fill.
+  double* dd_row() {
+    double* row = dd_.data() + in_batch_ * num_dd_;
+    std::fill(row, row + num_dd_, 0.0);
+    return row;
+  }
+  double* rest_row() { return rest_.data() + in_batch_ * num_rest_; }
+
+  // Adds d d^T (d: the point's m knot columns of one row) to dd_row.
+  void AddKnotProducts(const double* d, double* dd_row) const {
+    for (int j = 0; j < m_; ++j) {
+      const double dj = d[j];
+      if (dj == 0.0) continue;
+      double* pj = dd_row + dd_start_[j];
+      for (int l = j; l < m_; ++l) pj[l] += dj * d[l];
+    }
+  }
+
+  // Ends the current point, whose knot weight is w.
+  void EndPoint(double w) {
+    const double b = w, a = 1.0 - w;
+    dd_weights_.row(in_batch_) << a * a, a * b, b * b;
+    rest_weights_.row(in_batch_) << 1.0, a, b;
+    if (++in_batch_ == kBatch) Flush();
+  }
+
+  void Flush() {
+    dd_sums_.noalias() +=
+        dd_weights_.topRows(in_batch_).transpose() * dd_.topRows(in_batch_);
+    rest_sums_.noalias() +=
+        rest_weights_.topRows(in_batch_).transpose() * rest_.topRows(in_batch_);
+    in_batch_ = 0;
+  }
+
+  // rest's sums weighted by 1 (weight 0), a (1) or b (2).
+  double rest_sum(int weight, int at) const { return rest_sums_(weight, at); }
+
+  // The knots' blocks of the Gram matrix, [(1 - w) D, w D] from column
+  // first on; lower triangle only.
+  void FillKnotBlocks(int first, Eigen::MatrixXd* gram) const {
+    const int k = first, m = m_;
+    for (int j = 0; j < m; ++j) {
+      for (int i = j; i < m; ++i) {
+        const int at = dd_start_[j] + i;
+        (*gram)(k + i, k + j) = dd_sums_(0, at);
+        (*gram)(k + m + i, k + j) = (*gram)(k + m + j, k + i) = dd_sums_(1, at);
+        (*gram)(k + m + i, k + m + j) = dd_sums_(2, at);
+      }
+    }
+  }
+
+ private:
+  static constexpr int kBatch = 32;
+  const int m_, num_dd_, num_rest_;
+  std::vector<int> dd_start_;
+  RowMajorMatrix dd_, rest_;
+  Eigen::Matrix<double, kBatch, 3> dd_weights_, rest_weights_;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> dd_sums_, rest_sums_;
+  int in_batch_ = 0;
+};
+
 }  // namespace
 
 PointGroupResidual::PointGroupResidual(
@@ -82,6 +163,10 @@ PointGroupResidual::PointGroupResidual(
                           : std::vector<int>(kAllFunctions, kAllFunctions + kNumFunctions);
   };
   knots_alike_ = varied_[3] && varied_[4] && functions(1) == functions(2);
+  pose_moments_ =
+      knots_alike_ && varied_[0] && varied_[1] && !varied_[2] &&
+      std::none_of(samples_.begin(), samples_.end(),
+                   [](const PointSample& sample) { return sample.has_normal; });
   set_num_residuals(compressed_ ? columns_ + 1 : rows_);
 }
 
@@ -120,7 +205,9 @@ bool PointGroupResidual::Evaluate(double const* const* parameters,
     return true;
   }
   const SquareRootForm form =
-      knots_alike_
+      pose_moments_
+          ? SquareRootFormFromGram(PoseMomentGram(blocks, rotation), stacked)
+      : knots_alike_
           ? SquareRootFormFromGram(MomentGram(blocks, rotation), stacked)
           : ToSquareRootForm(stacked());
   std::copy(form.z.data(), form.z.data() + n, residuals);
@@ -191,29 +278,9 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
   const Eigen::Matrix3d model_from_world = rotation.transpose();
   const Eigen::Vector3d center(blocks[0]);
   const int* knot_functions = layout.functions[1];
-  // Each point's P in two parts, each a row of a matrix: the D x D block
-  // (lower triangle, packed column by column) and the rows of U and r; a
-  // batch of points' sums, weighted by (a^2, ab, b^2) and (1, a, b)
-  // respectively (a = 1 - w, b = w), is then one matrix product each.
-  const int num_dd = m * (m + 1) / 2, num_rest = (k + 1) * q;
-  std::vector<int> dd_start(m);
-  for (int j = 0, at = 0; j < m; at += m - j, ++j) dd_start[j] = at - j;
-  constexpr int kBatch = 32;
-  RowMajorMatrix dd(kBatch, num_dd), rest(kBatch, num_rest);
-  Eigen::Matrix<double, kBatch, 3> dd_weights, rest_weights;
-  Eigen::Matrix<double, 3, Eigen::Dynamic> dd_sums =
-      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_dd);
-  Eigen::Matrix<double, 3, Eigen::Dynamic> rest_sums =
-      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_rest);
+  // Each point's P in two parts: the D x D block and the rows of U and r.
+  MomentSums sums(m, (k + 1) * q);
   Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor> g(3, q);
-  int in_batch = 0;
-  auto flush = [&] {
-    dd_sums.noalias() +=
-        dd_weights.topRows(in_batch).transpose() * dd.topRows(in_batch);
-    rest_sums.noalias() +=
-        rest_weights.topRows(in_batch).transpose() * rest.topRows(in_batch);
-    in_batch = 0;
-  };
   auto add_point = [&](int i, const Eigen::Vector3d& s,
                        const ShapeJacobian& ds) {
     const PointSample& sample = samples_[i];
@@ -248,18 +315,12 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
       num_rows = 1;
     }
 
-    double* p_dd = dd.data() + in_batch * num_dd;
-    double* p_rest = rest.data() + in_batch * num_rest;
-    std::fill(p_dd, p_dd + num_dd, 0.0);
-    std::fill(p_rest, p_rest + num_rest, 0.0);
+    double* p_dd = sums.dd_row();
+    double* p_rest = sums.rest_row();
+    std::fill(p_rest, p_rest + (k + 1) * q, 0.0);
     for (int row = 0; row < num_rows; ++row) {
       const double* gr = g.data() + row * q;
-      for (int j = 0; j < m; ++j) {
-        const double gj = gr[k + j];
-        if (gj == 0.0) continue;
-        double* pj = p_dd + dd_start[j];
-        for (int l = j; l < m; ++l) pj[l] += gj * gr[k + l];
-      }
+      sums.AddKnotProducts(gr + k, p_dd);
       for (int c = 0; c <= k; ++c) {
         const double gc = gr[c < k ? c : r];
         if (gc == 0.0) continue;
@@ -267,20 +328,17 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
         for (int l = 0; l < q; ++l) pc[l] += gc * gr[l];
       }
     }
-    const double b = sample.knot_weight, a = 1.0 - b;
-    dd_weights.row(in_batch) << a * a, a * b, b * b;
-    rest_weights.row(in_batch) << 1.0, a, b;
-    if (++in_batch == kBatch) flush();
+    sums.EndPoint(sample.knot_weight);
   };
   ForEachShape(samples_, free_mask_, unit_exponents_, blocks, true, add_point);
-  if (in_batch > 0) flush();
+  sums.Flush();
 
   // Into the columns [U, (1 - w) D, w D, r]; lower triangle only.  In g,
   // U is [0, k), D [k, r), r the last.
   const int n = columns_;
-  enum { kOne, kA, kB };  // rest_sums' rows; dd_sums' are aa, ab, bb.
+  enum { kOne, kA, kB };                           // The rest's weights.
   auto rest_sum = [&](int weight, int c, int l) {  // c in U or r.
-    return rest_sums(weight, (c < k ? c : k) * q + l);
+    return sums.rest_sum(weight, (c < k ? c : k) * q + l);
   };
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n + 1, n + 1);
   for (int j = 0; j < k; ++j) {
@@ -291,17 +349,147 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
     }
     gram(n, j) = rest_sum(kOne, r, j);
   }
+  sums.FillKnotBlocks(k, &gram);
   for (int j = 0; j < m; ++j) {
-    for (int i = j; i < m; ++i) {
-      const int at = dd_start[j] + i;
-      gram(k + i, k + j) = dd_sums(0, at);
-      gram(k + m + i, k + j) = gram(k + m + j, k + i) = dd_sums(1, at);
-      gram(k + m + i, k + m + j) = dd_sums(2, at);
-    }
     gram(n, k + j) = rest_sum(kA, r, k + j);
     gram(n, k + m + j) = rest_sum(kB, r, k + j);
   }
   gram(n, n) = rest_sum(kOne, r, r);
+  return gram;
+}
+
+// MomentGram with the pose's columns folded into moments of s.  In the
+// model frame a point's pose columns are R^T (the center) and
+// R^T d(R(q) s)/dq = sum_a s_a V_a (the quaternion), V_a = R^T W_a and
+// W_a = d(R(q) e_a)/dq, since R(q) s is linear in s; its knot columns are
+// D times (1 - w) or w and its residual r = s + R^T (c - p).  So the pose's
+// blocks of J^T J need only sum 1, sum s, sum s s^T, sum s r^T, sum r and,
+// weighted by (1 - w) or w, sum D and sum s_a D: per point about a third of the
+// products of [U D r]^T [U D r] with U's seven columns, and no rotation
+// Jacobian.
+Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
+    const double* const* blocks, const Eigen::Matrix3d& rotation) const {
+  const RowLayout layout = CompactLayout(entries_);
+  const int m = widths_[3];
+  const int* knot_functions = layout.functions[1];
+  const Eigen::Matrix3d model_from_world = rotation.transpose();
+  const Eigen::Vector3d center(blocks[0]);
+  // A point's moments, one row of `rest` weighted by (1, a, b) in a batch's
+  // product: [1, s, r, s s^T, s r^T, r^T r] (weight 1 is used) then
+  // [D, s_a D for a = 0..2, D^T r] (weights a and b are used), D row major.
+  constexpr int kOne = 0, kS = 1, kR = 4, kSS = 7, kSR = 16, kRR = 25;
+  const int d_at = 26, sd_at = d_at + 3 * m, dr_at = sd_at + 9 * m;
+  MomentSums sums(m, dr_at + m);
+  auto add_point = [&](int i, const Eigen::Vector3d& s,
+                       const ShapeJacobian& ds) {
+    const PointSample& sample = samples_[i];
+    double* x = sums.rest_row();
+    double* d = x + d_at;
+    for (int c = 0; c < m; ++c) {
+      if (Supplies(1, free_mask_, knot_functions[c])) {
+        for (int row = 0; row < 3; ++row) {
+          d[row * m + c] = ds(row, knot_functions[c]);
+        }
+      } else {
+        for (int row = 0; row < 3; ++row) d[row * m + c] = 0.0;
+      }
+    }
+    const Eigen::Vector3d r = s + model_from_world * (center - sample.data);
+    x[kOne] = 1.0;
+    for (int a = 0; a < 3; ++a) {
+      x[kS + a] = s[a];
+      x[kR + a] = r[a];
+      for (int c = 0; c < 3; ++c) {
+        x[kSS + 3 * a + c] = s[a] * s[c];
+        x[kSR + 3 * a + c] = s[a] * r[c];
+      }
+    }
+    x[kRR] = r.squaredNorm();
+    for (int a = 0; a < 3; ++a) {
+      double* sd = x + sd_at + 3 * a * m;
+      for (int j = 0; j < 3 * m; ++j) sd[j] = s[a] * d[j];
+    }
+    double* dr = x + dr_at;
+    for (int j = 0; j < m; ++j) {
+      dr[j] = d[j] * r[0] + d[m + j] * r[1] + d[2 * m + j] * r[2];
+    }
+    double* p_dd = sums.dd_row();
+    for (int row = 0; row < 3; ++row) sums.AddKnotProducts(d + row * m, p_dd);
+    sums.EndPoint(sample.knot_weight);
+  };
+  ForEachShape(samples_, free_mask_, unit_exponents_, blocks, true, add_point);
+  sums.Flush();
+
+  // W_a (world, 3 x 4), V_a = R^T W_a (model frame) and U_a = V_a^T,
+  // a = 0..2.  Every block is taken in the model frame, as MomentGram
+  // takes them (the centre's columns R^T): the same Gram for a quaternion
+  // off the unit sphere, whose R is not orthogonal (the integrator's).
+  Eigen::Matrix<double, 3, 4, Eigen::RowMajor> w[3];
+  Eigen::Matrix<double, 3, 4> v[3];
+  Eigen::Matrix<double, 4, 3> u[3];
+  for (int a = 0; a < 3; ++a) {
+    RotationJacobian(blocks[1], Eigen::Vector3d::Unit(a), w[a].data());
+    v[a] = model_from_world * w[a];
+    u[a] = v[a].transpose();
+  }
+  const int n = columns_, t = 0, q = 3, k1 = 7, k2 = 7 + m;
+  auto one = [&](int at) { return sums.rest_sum(0, at); };
+  // sum_a s_a-weighted moments with weight row `weight` (1: a, 2: b).
+  auto sd = [&](int weight, int a, int row, int l) {
+    return sums.rest_sum(weight, sd_at + (3 * a + row) * m + l);
+  };
+  auto d_sum = [&](int weight, int row, int l) {
+    return sums.rest_sum(weight, d_at + row * m + l);
+  };
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  // Center against center, quaternion and residual.
+  const Eigen::Matrix3d center_center =
+      one(kOne) * (rotation * model_from_world);
+  for (int j = 0; j < 3; ++j) {
+    for (int i = j; i < 3; ++i) gram(t + i, t + j) = center_center(i, j);
+  }
+  Eigen::Matrix<double, 3, 4> sum_v = Eigen::Matrix<double, 3, 4>::Zero();
+  Eigen::Matrix4d quaternion_quaternion = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d quaternion_residual = Eigen::Vector4d::Zero();
+  Eigen::Vector3d sum_r, sr_row;
+  for (int a = 0; a < 3; ++a) {
+    sum_v += one(kS + a) * v[a];
+    sum_r[a] = one(kR + a);
+    for (int c = 0; c < 3; ++c) {
+      quaternion_quaternion += one(kSS + 3 * a + c) * (u[a] * v[c]);
+      sr_row[c] = one(kSR + 3 * a + c);
+    }
+    quaternion_residual += u[a] * sr_row;
+  }
+  const Eigen::Matrix<double, 3, 4> center_quaternion = rotation * sum_v;
+  const Eigen::Vector3d center_residual = rotation * sum_r;
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 3; ++i) gram(q + j, t + i) = center_quaternion(i, j);
+    for (int i = j; i < 4; ++i) {
+      gram(q + i, q + j) = quaternion_quaternion(i, j);
+    }
+    gram(n, q + j) = quaternion_residual[j];
+  }
+  for (int i = 0; i < 3; ++i) gram(n, t + i) = center_residual[i];
+  // The knots against the pose: R sum(w D) and sum_a U_a sum(w s_a D).
+  for (int weight = 1; weight <= 2; ++weight) {
+    const int first = weight == 1 ? k1 : k2;
+    for (int l = 0; l < m; ++l) {
+      Eigen::Vector3d dl, sd_l[3];
+      for (int row = 0; row < 3; ++row) {
+        dl[row] = d_sum(weight, row, l);
+        for (int a = 0; a < 3; ++a) sd_l[a][row] = sd(weight, a, row, l);
+      }
+      const Eigen::Vector3d centers = rotation * dl;
+      Eigen::Vector4d quaternions = Eigen::Vector4d::Zero();
+      for (int a = 0; a < 3; ++a) quaternions += u[a] * sd_l[a];
+      for (int i = 0; i < 3; ++i) gram(first + l, t + i) = centers[i];
+      for (int j = 0; j < 4; ++j) gram(first + l, q + j) = quaternions[j];
+      gram(n, first + l) = sums.rest_sum(weight, dr_at + l);
+    }
+  }
+  sums.FillKnotBlocks(k1, &gram);
+  gram(n, n) = one(kRR);
   return gram;
 }
 

@@ -26,7 +26,8 @@ namespace pfdm {
 // point.  Evaluated without Jacobians it gives (|r|, 0, ..., 0): the same
 // cost again.  Jacobians of blocks not in `varied` cannot be asked for then.
 // When both knots are varied over the same functions, J^T J is summed from
-// small per-point moments in the model frame, without forming J
+// small per-point moments in the model frame, without forming J, the
+// pose's columns included when every point has three rows
 // (docs/jacobians.md, "The Gram matrix without J").
 class PointGroupResidual : public ceres::CostFunction {
  public:
@@ -46,6 +47,8 @@ class PointGroupResidual : public ceres::CostFunction {
                              const Eigen::Matrix3d& rotation) const;
   Eigen::MatrixXd MomentGram(const double* const* blocks,
                              const Eigen::Matrix3d& rotation) const;
+  Eigen::MatrixXd PoseMomentGram(const double* const* blocks,
+                                 const Eigen::Matrix3d& rotation) const;
 
   std::vector<PointSample> samples_;
   FunctionMask free_mask_;
@@ -58,6 +61,9 @@ class PointGroupResidual : public ceres::CostFunction {
   int rows_ = 0;
   bool compressed_ = false;
   bool knots_alike_ = false;  // Both knots varied, over the same functions.
+  // Knots alike, the pose varied, the globals held and no point-to-plane
+  // sample (a tracked frame): the pose's columns come from moments of s.
+  bool pose_moments_ = false;
 };
 
 }  // namespace pfdm

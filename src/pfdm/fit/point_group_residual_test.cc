@@ -20,6 +20,7 @@ constexpr int kSizes[5] = {3, 4, kNumFunctions, kNumFunctions, kNumFunctions};
 struct GroupCase {
   std::array<bool, 5> varied;
   std::vector<int> globals_free, knot0_free, knot1_free;
+  bool point_to_plane = true;  // Every fourth point against a plane.
 };
 
 // A group against its points one by one: the square-root form must give
@@ -54,8 +55,9 @@ void ExpectStackedNormalEquations(const GroupCase& group_case) {
     const double u = 1.2 * unit(random), v = 3.1 * unit(random);
     const double w = 0.5 + 0.5 * unit(random);
     samples.push_back(
-        i % 4 == 0 ? PointSample(data, u, v, w, Eigen::Vector3d(0, 0.6, 0.8))
-                   : PointSample(data, u, v, w));
+        group_case.point_to_plane && i % 4 == 0
+            ? PointSample(data, u, v, w, Eigen::Vector3d(0, 0.6, 0.8))
+            : PointSample(data, u, v, w));
   }
   const PointGroupResidual group(samples, mask, true, compact_entries,
                                  group_case.varied);
@@ -163,6 +165,20 @@ TEST(PointGroupResidualTest, SquareRootFormOfEveryBlock) {
                                 {kA0, kEps1},
                                 FreeFunctions(),
                                 FreeFunctions()});
+}
+
+// A tracked frame: the pose and the knots varied, every point with three
+// rows, so the pose's columns come from moments (PoseMomentGram); with a
+// point-to-plane sample among them, from MomentGram.
+TEST(PointGroupResidualTest, SquareRootFormOfPoseAndKnots) {
+  GroupCase tracked{{true, true, false, true, true},
+                    {},
+                    FreeFunctions(),
+                    FreeFunctions(),
+                    false};
+  ExpectStackedNormalEquations(tracked);
+  tracked.point_to_plane = true;
+  ExpectStackedNormalEquations(tracked);
 }
 
 // Knots that free different functions take the stacked rows' route.

@@ -523,10 +523,18 @@ std::string FrameVtk(const Model& model, const Frame& frame,
 
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
-                     const std::vector<BasePlane>& base_planes) {
+                     const std::vector<BasePlane>& base_planes,
+                     VtkFormat vtk_format) {
   // Everything is rendered before the first file is written, so a failure
   // (gnuplot missing, say) leaves no partial set behind.
   const FitAnalysis analysis = AnalyzeFit(fit, base_planes);
+  // One gnuplot for the four plots (its start-up, not the plotting, was
+  // most of their time), rendering while the other files are formatted.
+  SvgRendering plots(
+      {ParameterPlots(analysis.models),
+       CycleCurves(analysis.clinical, analysis.volume_surface),
+       StrainCurves(analysis.strain),
+       Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::pair<std::string, std::string>> files;
   files.emplace_back("parameters.csv", ParametersCsv(analysis.models));
   std::vector<std::pair<double, std::string>> timesteps;
@@ -535,22 +543,21 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     std::snprintf(name, sizeof(name), "frame_%03d", fit.frames[t].frame);
     const VtkPolyData data =
         FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
-    files.emplace_back(std::string(name) + ".vtk",
-                       ToLegacyVtk(data, std::string("pfdm ") + name));
-    files.emplace_back(std::string(name) + ".vtp", ToVtkXmlPolyData(data));
+    files.emplace_back(
+        std::string(name) + ".vtk",
+        ToLegacyVtk(data, std::string("pfdm ") + name, vtk_format));
+    files.emplace_back(std::string(name) + ".vtp",
+                       ToVtkXmlPolyData(data, vtk_format));
     timesteps.emplace_back(fit.frames[t].frame, std::string(name) + ".vtp");
   }
   files.emplace_back("fit.pvd", PvdCollection(timesteps));
-  const std::string parameters_svg = ParameterPlotsSvg(analysis.models);
-  files.emplace_back("parameters.svg", parameters_svg);
+  std::string json = FitJson(points, fit, options, analysis);
+  const std::vector<std::string> svgs = plots.Finish();
+  files.emplace_back("parameters.svg", svgs[0]);
   files.emplace_back(
       "report.html",
-      FitReportHtml(
-          points, fit, analysis, parameters_svg,
-          CycleCurvesSvg(analysis.clinical, analysis.volume_surface),
-          StrainCurvesSvg(analysis.strain),
-          BullseyeSvg(analysis.regions, ClinicalBullseyeMaps(analysis))));
-  files.emplace_back("fit.json", FitJson(points, fit, options, analysis));
+      FitReportHtml(points, fit, analysis, svgs[0], svgs[1], svgs[2], svgs[3]));
+  files.emplace_back("fit.json", std::move(json));  // Last: marks the set.
 
   EnsureDirectory(dir);
   // A folder where a file goes stops the write before anything is touched.

@@ -63,10 +63,11 @@ void CheckFitOutputFolder(const std::string& dir,
 // is removed first, then every other file and temporary of an older set
 // (stale frames of a longer fit too), then the new files are written, each
 // atomically, and fit.json last.  A failed write removes what it wrote.
-// base_planes as for AnalyzeFit.
+// base_planes as for AnalyzeFit; vtk_format for the .vtk and .vtp files.
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
-                     const std::vector<BasePlane>& base_planes = {});
+                     const std::vector<BasePlane>& base_planes = {},
+                     VtkFormat vtk_format = VtkFormat::kBinary);
 
 }  // namespace pfdm
 

@@ -162,6 +162,64 @@ TEST(FitOutputTest, WritesEveryFileWholeWithACollectionOfTheFrames) {
   EXPECT_NE(html.find("ejection fraction"), std::string::npos);
 }
 
+// The default .vtp files are appended raw binary: read back, they hold the
+// fitted model's surface points and the frame's data points bit for bit.
+TEST(FitOutputTest, BinaryFramesHoldTheModelsPointsExactly) {
+  const Fitted& f = PhantomFit();
+  const std::string dir = ScratchDirectory("fit_output") + "/out";
+  WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
+  const Model model = f.fit.ModelAt(2);
+  const ModelSurface surface =
+      MakeModelSurface(model, kSurfaceRings, kSurfaceMeridians);
+  const VtkXmlArrays arrays =
+      ReadAppendedRawVtkXml(ReadText(dir + "/frame_002.vtp"));
+  const std::vector<double>& points = arrays.float64.at("Points");
+  ASSERT_EQ(points.size(), 3 * (surface.mesh.points.size() +
+                                f.phantom.points.frames[2].points.size()));
+  for (size_t i = 0; i < surface.mesh.points.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_EQ(points[3 * i + k], surface.mesh.points[i][k]) << i;
+    }
+  }
+  const size_t first_data = surface.mesh.points.size();
+  for (size_t i = 0; i < f.phantom.points.frames[2].points.size(); ++i) {
+    const Eigen::Vector3d& p = f.phantom.points.frames[2].points[i].position;
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_EQ(points[3 * (first_data + i) + k], p[k]) << i;
+    }
+    ASSERT_EQ(arrays.float64.at("PointData/u")[first_data + i],
+              f.fit.frames[2].material[i].u);
+  }
+  // The model's own twist in degrees at each surface vertex's u.
+  const std::vector<double>& u = arrays.float64.at("PointData/u");
+  const std::vector<double>& twist = arrays.float64.at("PointData/twist_deg");
+  for (size_t i = 0; i < first_data; i += 37) {
+    EXPECT_EQ(u[i], surface.u[i]);
+    EXPECT_EQ(twist[i], model.FunctionAt(kTau, u[i]) * (180.0 / M_PI));
+  }
+  EXPECT_EQ(arrays.int64.at("Polys/connectivity").size(),
+            3 * surface.mesh.triangles.size());
+  EXPECT_EQ(
+      arrays.int64.at("Verts/offsets").back(),
+      static_cast<std::int64_t>(f.phantom.points.frames[2].points.size()));
+  EXPECT_EQ(ReadText(dir + "/frame_002.vtk").find("BINARY\nDATASET POLYDATA"),
+            std::string("# vtk DataFile Version 3.0\npfdm frame_002\n").size());
+}
+
+// --vtk_format ascii: text that a person or a text tool can read, the same
+// arrays.
+TEST(FitOutputTest, AsciiFramesOnRequest) {
+  const Fitted& f = PhantomFit();
+  const std::string dir = ScratchDirectory("fit_output") + "/out";
+  WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions(), {},
+                  VtkFormat::kAscii);
+  const std::string vtp = ReadText(dir + "/frame_001.vtp");
+  EXPECT_EQ(vtp.find("AppendedData"), std::string::npos);
+  EXPECT_NE(vtp.find("Name=\"twist_deg\" format=\"ascii\""), std::string::npos);
+  EXPECT_NE(ReadText(dir + "/frame_001.vtk").find("\nASCII\n"),
+            std::string::npos);
+}
+
 TEST(FitOutputTest, NothingIsWrittenWhenAnOutputCannotBeMade) {
   // The output folder is a file: one InputError, the file untouched.
   const Fitted& f = PhantomFit();

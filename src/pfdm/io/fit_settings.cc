@@ -109,6 +109,10 @@ FitOptions FitOptionsFrom(const FitSettings& s) {
   return options;
 }
 
+VtkFormat VtkFormatFrom(const FitSettings& settings) {
+  return VtkFormatFromName(settings.vtk_format);
+}
+
 std::vector<BasePlane> BasePlanesFrom(const FitSettings& settings,
                                       const std::string& points) {
   if (settings.base_plane == "rim") return {};

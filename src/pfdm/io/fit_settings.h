@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pfdm/fit/fit_options.h"
+#include "pfdm/io/vtk_writer.h"
 #include "pfdm/model/base_plane.h"
 #include "pfdm/model/model.h"
 #include "pfdm/solvers/solver.h"
@@ -45,11 +46,14 @@ struct FitSettings {
   std::string local = FitOptions().local.enabled ? "on" : "off";
   std::string local_grid = "13x24";  // LocalOptions' rows x cols.
   double local_stiffness = FitOptions().local.stiffness;
+  // The outputs.
+  std::string vtk_format = "binary";
 };
 
 // Each throws InputError naming the flag at fault.
 ModelConfig ModelConfigFrom(const FitSettings& settings);
 FitOptions FitOptionsFrom(const FitSettings& settings);
+VtkFormat VtkFormatFrom(const FitSettings& settings);
 // Per frame, the plane closing the cavity: none for base_plane "rim", the
 // mitral valve planes of the guide points at `points` for "auto" (none
 // when they have none).  An empty `points` only checks base_plane.

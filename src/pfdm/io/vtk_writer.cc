@@ -1,9 +1,12 @@
 #include "pfdm/io/vtk_writer.h"
 
 #include <charconv>
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "glog/logging.h"
+#include "pfdm/util/error.h"
 
 namespace pfdm {
 
@@ -23,7 +26,36 @@ void CheckToken(const std::string& name) {
       << "'" << name << "'";
 }
 
+// The legacy format's binary numbers are big-endian whatever the machine.
+void AppendBigEndian(std::uint64_t bits, std::string* out) {
+  char bytes[8];
+  for (int i = 0; i < 8; ++i)
+    bytes[i] = static_cast<char>(bits >> (56 - 8 * i));
+  out->append(bytes, 8);
+}
+
+void AppendBigEndian(double value, std::string* out) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof(bits));
+  AppendBigEndian(bits, out);
+}
+
+void AppendBigEndian(int value, std::string* out) {
+  const auto bits = static_cast<std::uint32_t>(value);
+  const char bytes[4] = {static_cast<char>(bits >> 24),
+                         static_cast<char>(bits >> 16),
+                         static_cast<char>(bits >> 8), static_cast<char>(bits)};
+  out->append(bytes, 4);
+}
+
 }  // namespace
+
+VtkFormat VtkFormatFromName(const std::string& name) {
+  if (name == "ascii") return VtkFormat::kAscii;
+  if (name == "binary") return VtkFormat::kBinary;
+  throw InputError("unknown --vtk_format '" + name +
+                   "' (expected ascii or binary)");
+}
 
 void AppendVtkNumber(double value, std::string* out) {
   char buffer[32];
@@ -39,30 +71,44 @@ void AppendVtkNumber(int value, std::string* out) {
   out->append(buffer, end.ptr);
 }
 
-std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title) {
+std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title,
+                        VtkFormat format) {
   const size_t n = data.points.size();
+  const bool binary = format == VtkFormat::kBinary;
   CHECK_EQ(title.find('\n'), std::string::npos) << title;
   std::string out;
   // About 30 characters per point and per point's vector.
   out.reserve(32 * n * (2 + data.point_vectors.size()) +
               12 * n * data.point_scalars.size() + 16 * data.triangles.size());
-  const auto append_vector = [&out](const Eigen::Vector3d& v) {
-    AppendVtkNumber(v.x(), &out);
-    out += ' ';
-    AppendVtkNumber(v.y(), &out);
-    out += ' ';
-    AppendVtkNumber(v.z(), &out);
-    out += '\n';
+  // In binary, a section's numbers follow its header line without
+  // separators, and a newline closes the section before the next keyword.
+  const auto append_number = [&out, binary](auto value, char separator) {
+    if (binary) {
+      AppendBigEndian(value, &out);
+    } else {
+      AppendVtkNumber(value, &out);
+      out += separator;
+    }
+  };
+  const auto end_section = [&out, binary] {
+    if (binary) out += '\n';
+  };
+  const auto append_vector = [&append_number](const Eigen::Vector3d& v) {
+    append_number(v.x(), ' ');
+    append_number(v.y(), ' ');
+    append_number(v.z(), '\n');
   };
   const auto append_count = [&out](size_t count) {
     out += std::to_string(count);
   };
   out += "# vtk DataFile Version 3.0\n";
   out += title;
-  out += "\nASCII\nDATASET POLYDATA\nPOINTS ";
+  out += binary ? "\nBINARY" : "\nASCII";
+  out += "\nDATASET POLYDATA\nPOINTS ";
   append_count(n);
   out += " double\n";
   for (const auto& p : data.points) append_vector(p);
+  end_section();
   if (!data.vertices.empty()) {
     out += "VERTICES ";
     append_count(data.vertices.size());
@@ -71,10 +117,10 @@ std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title) {
     out += '\n';
     for (int v : data.vertices) {
       CheckIndex(v, n);
-      out += "1 ";
-      AppendVtkNumber(v, &out);
-      out += '\n';
+      append_number(1, ' ');
+      append_number(v, '\n');
     }
+    end_section();
   }
   if (!data.triangles.empty()) {
     out += "POLYGONS ";
@@ -84,14 +130,12 @@ std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title) {
     out += '\n';
     for (const auto& t : data.triangles) {
       for (int v : t) CheckIndex(v, n);
-      out += "3 ";
-      AppendVtkNumber(t[0], &out);
-      out += ' ';
-      AppendVtkNumber(t[1], &out);
-      out += ' ';
-      AppendVtkNumber(t[2], &out);
-      out += '\n';
+      append_number(3, ' ');
+      append_number(t[0], ' ');
+      append_number(t[1], ' ');
+      append_number(t[2], '\n');
     }
+    end_section();
   }
   if (!data.point_scalars.empty() || !data.point_vectors.empty()) {
     out += "POINT_DATA ";
@@ -102,16 +146,15 @@ std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title) {
     CheckToken(name);
     CHECK_EQ(values.size(), n) << name;
     out += "SCALARS " + name + " double 1\nLOOKUP_TABLE default\n";
-    for (double value : values) {
-      AppendVtkNumber(value, &out);
-      out += '\n';
-    }
+    for (double value : values) append_number(value, '\n');
+    end_section();
   }
   for (const auto& [name, values] : data.point_vectors) {
     CheckToken(name);
     CHECK_EQ(values.size(), n) << name;
     out += "VECTORS " + name + " double\n";
     for (const auto& v : values) append_vector(v);
+    end_section();
   }
   return out;
 }

@@ -1,4 +1,4 @@
-// Legacy ASCII VTK polydata, which ParaView opens.
+// Legacy VTK polydata, which ParaView opens, and how VTK files store numbers.
 #ifndef PFDM_IO_VTK_WRITER_H_
 #define PFDM_IO_VTK_WRITER_H_
 
@@ -20,7 +20,19 @@ struct VtkPolyData {
       point_vectors;
 };
 
-std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title);
+// How a VTK file stores its arrays.  Binary needs no number formatting,
+// which made up most of the time of writing outputs, and keeps every double
+// exactly; ParaView, VTK and meshio read both.
+enum class VtkFormat {
+  kAscii,   // Decimal text, 9 significant digits.
+  kBinary,  // Legacy: BINARY (big-endian); XML: appended raw.
+};
+
+// "ascii" or "binary"; throws InputError naming --vtk_format otherwise.
+VtkFormat VtkFormatFromName(const std::string& name);
+
+std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title,
+                        VtkFormat format = VtkFormat::kAscii);
 
 // Appends value as printf's %.9g would (a nanometre on a heart-sized model;
 // ParaView reads any precision) and an int in decimal, without a stream:

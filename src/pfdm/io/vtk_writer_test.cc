@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
@@ -126,6 +129,81 @@ TEST(VtkWriterTest, LeavesOutEmptySections) {
   EXPECT_EQ(vtk.words,
             (std::vector<std::string>{"ASCII", "DATASET", "POLYDATA", "POINTS",
                                       "1", "double", "1", "2", "3"}));
+}
+
+// The legacy BINARY form: each section's header line, then its numbers
+// big-endian (doubles, int32 cells), then a newline.
+class BigEndianReader {
+ public:
+  BigEndianReader(const std::string& text, size_t at) : text_(text), at_(at) {}
+  double Double() {
+    std::uint64_t bits = 0;
+    for (int i = 0; i < 8; ++i) {
+      bits = (bits << 8) | static_cast<unsigned char>(text_.at(at_++));
+    }
+    double value;
+    std::memcpy(&value, &bits, sizeof(value));
+    return value;
+  }
+  int Int() {
+    std::uint32_t bits = 0;
+    for (int i = 0; i < 4; ++i) {
+      bits = (bits << 8) | static_cast<unsigned char>(text_.at(at_++));
+    }
+    return static_cast<int>(bits);
+  }
+  size_t at() const { return at_; }
+  void Skip(size_t count) { at_ += count; }
+
+ private:
+  const std::string& text_;
+  size_t at_;
+};
+
+TEST(VtkWriterTest, BinaryReadsBackExactly) {
+  VtkPolyData data = Sample();
+  data.points[1] = {1.0 / 3.0, -0.0, 1e-300};
+  const std::string vtk =
+      ToLegacyVtk(data, "pfdm frame_003", VtkFormat::kBinary);
+  const std::string head =
+      "# vtk DataFile Version 3.0\npfdm frame_003\nBINARY\nDATASET "
+      "POLYDATA\nPOINTS 4 double\n";
+  ASSERT_EQ(vtk.substr(0, head.size()), head);
+  BigEndianReader in(vtk, head.size());
+  for (const Eigen::Vector3d& p : data.points) {
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(in.Double(), p[k]);
+  }
+  auto expect_line = [&](const std::string& line) {
+    ASSERT_EQ(vtk.substr(in.at(), line.size()), line);
+    in.Skip(line.size());
+  };
+  expect_line("\nVERTICES 1 2\n");
+  EXPECT_EQ(in.Int(), 1);
+  EXPECT_EQ(in.Int(), 3);
+  expect_line("\nPOLYGONS 2 8\n");
+  for (int expected : {3, 0, 1, 2, 3, 1, 2, 3}) EXPECT_EQ(in.Int(), expected);
+  expect_line("\nPOINT_DATA 4\nSCALARS u double 1\nLOOKUP_TABLE default\n");
+  for (double expected : {0.1, 0.2, 0.3, 0.4}) EXPECT_EQ(in.Double(), expected);
+  expect_line("\nSCALARS is_data double 1\nLOOKUP_TABLE default\n");
+  for (double expected : {0, 0, 0, 1}) EXPECT_EQ(in.Double(), expected);
+  expect_line("\nVECTORS residual double\n");
+  for (double expected : {0, 0, 0, 0, 0, 0, 0, 0, 0, 1, -2, 3}) {
+    EXPECT_EQ(in.Double(), expected);
+  }
+  EXPECT_EQ(in.at() + 1, vtk.size());
+  EXPECT_EQ(vtk.back(), '\n');
+}
+
+TEST(VtkWriterTest, FormatsByName) {
+  EXPECT_EQ(VtkFormatFromName("ascii"), VtkFormat::kAscii);
+  EXPECT_EQ(VtkFormatFromName("binary"), VtkFormat::kBinary);
+  try {
+    VtkFormatFromName("base64");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(),
+                 "unknown --vtk_format 'base64' (expected ascii or binary)");
+  }
 }
 
 TEST(VtkWriterDeathTest, MismatchedArraysAndBadIndicesAreProgrammingErrors) {

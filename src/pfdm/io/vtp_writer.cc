@@ -1,7 +1,10 @@
 #include "pfdm/io/vtp_writer.h"
 
+#include <cstdint>
+#include <cstring>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include "glog/logging.h"
 #include "pfdm/util/markup_escape.h"
@@ -9,7 +12,6 @@
 namespace pfdm {
 namespace {
 
-// Escapes the characters XML forbids in attribute values.
 void CellArrays(const char* element, const std::vector<int>& connectivity,
                 int cell_size, std::string* out) {
   *out += "      <";
@@ -36,9 +38,109 @@ void CellArrays(const char* element, const std::vector<int>& connectivity,
   *out += ">\n";
 }
 
+static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double),
+              "vectors of points are copied as packed doubles");
+
+// The appended raw form: the XML names each array with its offset into the
+// bytes after the '_' that opens <AppendedData>.
+class AppendedArrays {
+ public:
+  // Declares an array of `count` values at `data` (copied now) with the
+  // given XML attributes (type, name, components).
+  template <typename Value>
+  void Add(const std::string& attributes, const Value* data, size_t count,
+           std::string* xml) {
+    static_assert(std::is_trivially_copyable_v<Value>);
+    *xml += "        <DataArray " + attributes +
+            " format=\"appended\" offset=\"" + std::to_string(bytes_.size()) +
+            "\"/>\n";
+    const std::uint64_t size = count * sizeof(Value);
+    bytes_.append(reinterpret_cast<const char*>(&size), sizeof(size));
+    bytes_.append(reinterpret_cast<const char*>(data), size);
+  }
+
+  void Close(std::string* xml) const {
+    *xml += "  <AppendedData encoding=\"raw\">\n   _";
+    *xml += bytes_;
+    *xml += "\n  </AppendedData>\n";
+  }
+
+ private:
+  std::string bytes_;
+};
+
+constexpr const char* kByteOrder =
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    "BigEndian";
+#else
+    "LittleEndian";
+#endif
+
+// Binary VTK XML: the same arrays as the ASCII form, in the same order.
+std::string AppendedRawPolyData(const VtkPolyData& data) {
+  const size_t n = data.points.size();
+  std::string xml;
+  AppendedArrays arrays;
+  xml +=
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
+      "byte_order=\"";
+  xml += kByteOrder;
+  xml +=
+      "\" header_type=\"UInt64\">\n  <PolyData>\n    <Piece NumberOfPoints=\"";
+  xml += std::to_string(n) + "\" NumberOfVerts=\"" +
+         std::to_string(data.vertices.size()) +
+         "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"" +
+         std::to_string(data.triangles.size()) + "\">\n";
+  xml += "      <PointData>\n";
+  for (const auto& [name, values] : data.point_scalars) {
+    CHECK_EQ(values.size(), n) << name;
+    arrays.Add("type=\"Float64\" Name=\"" + EscapeMarkup(name) + "\"",
+               values.data(), values.size(), &xml);
+  }
+  for (const auto& [name, values] : data.point_vectors) {
+    CHECK_EQ(values.size(), n) << name;
+    arrays.Add("type=\"Float64\" Name=\"" + EscapeMarkup(name) +
+                   "\" NumberOfComponents=\"3\"",
+               values.empty() ? nullptr : values[0].data(), 3 * n, &xml);
+  }
+  xml += "      </PointData>\n      <Points>\n";
+  arrays.Add("type=\"Float64\" NumberOfComponents=\"3\"",
+             data.points.empty() ? nullptr : data.points[0].data(), 3 * n,
+             &xml);
+  xml += "      </Points>\n";
+  const auto cells = [&](const char* element, const std::vector<int>& indices,
+                         int cell_size) {
+    std::vector<std::int64_t> connectivity(indices.begin(), indices.end());
+    std::vector<std::int64_t> offsets;
+    for (size_t end = cell_size; end <= indices.size(); end += cell_size) {
+      offsets.push_back(static_cast<std::int64_t>(end));
+    }
+    xml += std::string("      <") + element + ">\n";
+    arrays.Add("type=\"Int64\" Name=\"connectivity\"", connectivity.data(),
+               connectivity.size(), &xml);
+    arrays.Add("type=\"Int64\" Name=\"offsets\"", offsets.data(),
+               offsets.size(), &xml);
+    xml += std::string("      </") + element + ">\n";
+  };
+  if (!data.vertices.empty()) cells("Verts", data.vertices, 1);
+  if (!data.triangles.empty()) {
+    std::vector<int> polygons;
+    polygons.reserve(3 * data.triangles.size());
+    for (const auto& t : data.triangles) {
+      polygons.insert(polygons.end(), t.begin(), t.end());
+    }
+    cells("Polys", polygons, 3);
+  }
+  xml += "    </Piece>\n  </PolyData>\n";
+  arrays.Close(&xml);
+  xml += "</VTKFile>\n";
+  return xml;
+}
+
 }  // namespace
 
-std::string ToVtkXmlPolyData(const VtkPolyData& data) {
+std::string ToVtkXmlPolyData(const VtkPolyData& data, VtkFormat format) {
+  if (format == VtkFormat::kBinary) return AppendedRawPolyData(data);
   const size_t n = data.points.size();
   std::vector<int> polygons;
   polygons.reserve(3 * data.triangles.size());

@@ -11,8 +11,12 @@
 
 namespace pfdm {
 
-// The same content as ToLegacyVtk, as ASCII VTK XML PolyData.
-std::string ToVtkXmlPolyData(const VtkPolyData& data);
+// The same content as ToLegacyVtk, as VTK XML PolyData.  Binary: every
+// array appended raw after the XML (<AppendedData encoding="raw">, each
+// block a UInt64 byte count and the values in the machine's byte order,
+// which the header names), Float64 and Int64 as in ASCII.
+std::string ToVtkXmlPolyData(const VtkPolyData& data,
+                             VtkFormat format = VtkFormat::kAscii);
 
 // A collection of (time, file) pairs, files relative to the .pvd's folder.
 std::string PvdCollection(

@@ -1,5 +1,9 @@
 #include "pfdm/io/vtp_writer.h"
 
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
 #include "gtest/gtest.h"
 #include "pfdm/testing/test_util.h"
 
@@ -32,6 +36,52 @@ TEST(VtpWriterTest, PolyDataHasPointsCellsAndNamedArrays) {
   EXPECT_NE(xml.find(" 5 5 5\n"), std::string::npos);
   EXPECT_EQ(CountOf(xml, "<DataArray"), 7);
   EXPECT_EQ(CountOf(xml, "</DataArray>"), 7);
+}
+
+// Appended raw: the XML names each array, its bytes follow; read back by an
+// independent reader they are the doubles and indices given, bit for bit.
+TEST(VtpWriterTest, BinaryPolyDataReadsBackExactly) {
+  VtkPolyData data;
+  data.points = {{1.0 / 3.0, -0.0, 1e-300}, {1, 0, 0}, {0, 1, 0}, {5, 5, 5}};
+  data.triangles = {{0, 1, 2}, {1, 2, 3}};
+  data.vertices = {3};
+  data.point_scalars = {{"twist_deg", {0, M_PI, -2e9, 3.5}},
+                        {"a<b", {1, 2, 3, 4}}};
+  data.point_vectors = {
+      {"residual", {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, -2, 1.0 / 7.0}}}};
+  const std::string xml = ToVtkXmlPolyData(data, VtkFormat::kBinary);
+  EXPECT_EQ(xml.rfind("<?xml", 0), 0u);
+  EXPECT_NE(xml.find("NumberOfPoints=\"4\" NumberOfVerts=\"1\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("Name=\"a&lt;b\""), std::string::npos);
+  EXPECT_EQ(CountOf(xml, "<DataArray"), 8);
+  EXPECT_EQ(CountOf(xml, "format=\"appended\""), 8);
+  const std::string end = "\n  </AppendedData>\n</VTKFile>\n";
+  EXPECT_EQ(xml.substr(xml.size() - end.size()), end);
+
+  const VtkXmlArrays arrays = ReadAppendedRawVtkXml(xml);
+  const std::vector<double> points = arrays.float64.at("Points");
+  ASSERT_EQ(points.size(), 12u);
+  for (size_t i = 0; i < 4; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(points[3 * i + k], data.points[i][k]) << i;
+    }
+  }
+  EXPECT_TRUE(std::signbit(points[1]));
+  EXPECT_EQ(arrays.float64.at("PointData/twist_deg"),
+            data.point_scalars[0].second);
+  // The reader does not unescape names.
+  EXPECT_EQ(arrays.float64.at("PointData/a&lt;b"),
+            data.point_scalars[1].second);
+  EXPECT_EQ(arrays.float64.at("PointData/residual"),
+            (std::vector<double>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, -2, 1.0 / 7.0}));
+  EXPECT_EQ(arrays.int64.at("Verts/connectivity"),
+            (std::vector<std::int64_t>{3}));
+  EXPECT_EQ(arrays.int64.at("Verts/offsets"), (std::vector<std::int64_t>{1}));
+  EXPECT_EQ(arrays.int64.at("Polys/connectivity"),
+            (std::vector<std::int64_t>{0, 1, 2, 1, 2, 3}));
+  EXPECT_EQ(arrays.int64.at("Polys/offsets"),
+            (std::vector<std::int64_t>{3, 6}));
 }
 
 TEST(VtpWriterTest, CollectionListsEveryTimestep) {

@@ -54,8 +54,8 @@ std::pair<double, double> BullseyeSpanDeg(const WallRegion& region) {
   return {begin, begin + width};
 }
 
-std::string BullseyeSvg(const std::vector<WallRegion>& regions,
-                        const std::vector<BullseyeMap>& maps) {
+SvgPlot Bullseye(const std::vector<WallRegion>& regions,
+                 const std::vector<BullseyeMap>& maps) {
   const int panels = static_cast<int>(maps.size());
   std::ostringstream script;
   script.precision(5);
@@ -112,8 +112,12 @@ std::string BullseyeSvg(const std::vector<WallRegion>& regions,
            << "plot $centre using 1:2:3 with dots lc palette notitle\n";
   }
   script << "unset multiplot\n";
-  return RenderSvgString("bullseye.svg", {centre}, script.str(), 400 * panels,
-                         430);
+  return {"bullseye.svg", {centre}, script.str(), 400 * panels, 430};
+}
+
+std::string BullseyeSvg(const std::vector<WallRegion>& regions,
+                        const std::vector<BullseyeMap>& maps) {
+  return RenderSvgString(Bullseye(regions, maps));
 }
 
 std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
@@ -133,7 +137,7 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
   return {ecc, radial, rotation};
 }
 
-std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain) {
+SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain) {
   PlotData block{"strain", {}};
   for (size_t t = 0; t < strain.size(); ++t) {
     const GlobalStrain& g = strain[t];
@@ -167,7 +171,11 @@ std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain) {
            << " lc rgb '#c0392b' pt 7 title 'apical'\n";
   }
   script << "unset multiplot\n";
-  return RenderSvgString("strain.svg", {block}, script.str(), 1200, 380);
+  return {"strain.svg", {block}, script.str(), 1200, 380};
+}
+
+std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain) {
+  return RenderSvgString(StrainCurves(strain));
 }
 
 }  // namespace pfdm

@@ -9,6 +9,7 @@
 
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/global_strain.h"
+#include "pfdm/report/gnuplot.h"
 #include "pfdm/report/wall_motion.h"
 
 namespace pfdm {
@@ -38,6 +39,8 @@ std::pair<double, double> BullseyeSpanDeg(const WallRegion& region);
 // labelled with its number and value.  One panel per map, side by side.
 std::string BullseyeSvg(const std::vector<WallRegion>& regions,
                         const std::vector<BullseyeMap>& maps);
+SvgPlot Bullseye(const std::vector<WallRegion>& regions,
+                 const std::vector<BullseyeMap>& maps);
 
 // The report's three maps: peak Ecc over the frames, and radial
 // contraction and rotation at end-systole.
@@ -46,6 +49,7 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis);
 // Over the frames: Ecc and Ell, the global means (GCS, GLS) and each
 // level's, one panel each.
 std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain);
+SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain);
 
 }  // namespace pfdm
 

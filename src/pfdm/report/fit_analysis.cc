@@ -37,9 +37,10 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   analysis.ejection_fraction = EjectionFractionOf(analysis.clinical);
   analysis.layout = layout;
   analysis.regions = Regions(layout);
+  const ReferenceSamples reference =
+      SampleReference(analysis.models.front(), layout);
   for (const Model& model : analysis.models) {
-    analysis.region_motion.push_back(
-        SummarizeRegions(analysis.models.front(), model, layout));
+    analysis.region_motion.push_back(SummarizeRegions(reference, model));
     analysis.strain.push_back(
         SummarizeStrain(analysis.regions, analysis.region_motion.back()));
   }

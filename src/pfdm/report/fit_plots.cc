@@ -34,7 +34,7 @@ std::string FrameColor(int t, int n) {
 
 }  // namespace
 
-std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
+SvgPlot ParameterPlots(const std::vector<Model>& frames) {
   const int n = static_cast<int>(frames.size());
   const int knots = frames.front().config.num_knots;
   const KnotGrid grid = frames.front().config.Grid();
@@ -103,12 +103,15 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
     first = false;
   }
   script << "unset multiplot\n";
-  return RenderSvgString("parameters.svg", {block}, script.str(), 1200,
-                         solid ? 1100 : 760);
+  return {"parameters.svg", {block}, script.str(), 1200, solid ? 1100 : 760};
 }
 
-std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
-                           const std::string& volume_surface) {
+std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
+  return RenderSvgString(ParameterPlots(frames));
+}
+
+SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
+                    const std::string& volume_surface) {
   PlotData block{"cycle", {}};
   for (const ClinicalSummary& s : summaries) {
     block.rows.push_back({static_cast<double>(s.frame), s.volume_ml,
@@ -147,7 +150,12 @@ std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
             "$cycle using 1:6 lc rgb '#c0392b' pt 7 title 'radial', "
             "'' using 1:7 lc rgb '#2471a3' pt 5 title 'longitudinal'\n"
          << "unset multiplot\n";
-  return RenderSvgString("cycle.svg", {block}, script.str(), 1200, 380);
+  return {"cycle.svg", {block}, script.str(), 1200, 380};
+}
+
+std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
+                           const std::string& volume_surface) {
+  return RenderSvgString(CycleCurves(summaries, volume_surface));
 }
 
 }  // namespace pfdm

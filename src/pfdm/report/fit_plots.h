@@ -15,6 +15,7 @@ namespace pfdm {
 // tau in degrees, bending b0 and b2 in mm, each against the knot index from
 // apex to base, one line per frame (dark early, light late) with a legend.
 std::string ParameterPlotsSvg(const std::vector<Model>& frames);
+SvgPlot ParameterPlots(const std::vector<Model>& frames);
 
 // Over the frames: cavity volume (ED and ES marked), apex and base rotation
 // with net twist, and radial and longitudinal contraction.
@@ -22,6 +23,8 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames);
 // only the cavity's gives an ejection fraction.
 std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
                            const std::string& volume_surface = "cavity");
+SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
+                    const std::string& volume_surface = "cavity");
 
 }  // namespace pfdm
 

@@ -2,6 +2,7 @@
 #ifndef PFDM_REPORT_GNUPLOT_H_
 #define PFDM_REPORT_GNUPLOT_H_
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,10 +14,48 @@ struct PlotData {
   std::vector<std::vector<double>> rows;
 };
 
+// One plot: its data blocks, script and size; `what` names it in errors.
+struct SvgPlot {
+  std::string what;
+  std::vector<PlotData> data;
+  std::string script;
+  int width = 900;
+  int height = 600;
+};
+
+// Renders each plot as RenderSvgString would, all in one gnuplot process
+// (`reset session` between them): starting gnuplot costs more than
+// rendering one of the report's plots.  The SVGs in the plots' order;
+// throws InputError naming the plot that failed.
+std::vector<std::string> RenderSvgStrings(const std::vector<SvgPlot>& plots);
+
+// RenderSvgStrings in two halves: gnuplot starts here (throwing
+// InputError if it cannot) and renders while the caller does other work;
+// Finish waits for it and returns the SVGs or throws as RenderSvgStrings.
+// Destroyed unfinished, it waits for gnuplot, leaving no zombie behind.
+class SvgRendering {
+ public:
+  explicit SvgRendering(const std::vector<SvgPlot>& plots);
+  ~SvgRendering();
+  SvgRendering(const SvgRendering&) = delete;
+  SvgRendering& operator=(const SvgRendering&) = delete;
+
+  std::vector<std::string> Finish();
+
+ private:
+  struct Process;
+  void Wait();
+
+  std::vector<std::string> names_;
+  std::unique_ptr<Process> process_;
+};
+std::string RenderSvgString(const SvgPlot& plot);
+
 // Runs `script` with the data blocks defined first and the terminal set to
 // SVG (width x height pixels), and returns the SVG.  gnuplot is started
-// without a shell, the script on its standard input and the SVG on its
-// standard output, so no file name ever reaches a shell or the script.
+// without a shell, the script in an anonymous memory file (/dev/fd/3) and
+// the SVG on its standard output, so no file name of the caller's ever
+// reaches a shell or the script.
 // Throws InputError(what + ": gnuplot failed: <gnuplot's error>") if gnuplot
 // is missing or fails.
 std::string RenderSvgString(const std::string& what,

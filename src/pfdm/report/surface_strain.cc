@@ -30,18 +30,19 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
   return {e(0, 0), e(1, 1), 0.5 * (e(0, 1) + e(1, 0))};
 }
 
+void SurfaceTangents(const Model& model, double u, double v,
+                     Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
+  *xu = (model.WorldPoint(u + kStep, v) - model.WorldPoint(u - kStep, v)) /
+        (2 * kStep);
+  *xv = (model.WorldPoint(u, v + kStep) - model.WorldPoint(u, v - kStep)) /
+        (2 * kStep);
+}
+
 SurfaceStrain StrainAt(const Model& reference, const Model& current, double u,
                        double v) {
-  auto tangents = [&](const Model& m, Eigen::Vector3d* xu,
-                      Eigen::Vector3d* xv) {
-    *xu =
-        (m.WorldPoint(u + kStep, v) - m.WorldPoint(u - kStep, v)) / (2 * kStep);
-    *xv =
-        (m.WorldPoint(u, v + kStep) - m.WorldPoint(u, v - kStep)) / (2 * kStep);
-  };
   Eigen::Vector3d xu0, xv0, xu, xv;
-  tangents(reference, &xu0, &xv0);
-  tangents(current, &xu, &xv);
+  SurfaceTangents(reference, u, v, &xu0, &xv0);
+  SurfaceTangents(current, u, v, &xu, &xv);
   return PlaneStrain(xu0, xv0, xu, xv, xv0, xu0);
 }
 

@@ -39,6 +39,11 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
 // e_c along X_v (v counter-clockwise about the model's +z), e_l toward
 // increasing u, from the apex to the base.  Not defined at the apex pole,
 // where X_v vanishes.
+// The world-frame tangents dx/du, dx/dv at (u, v) by central differences,
+// as StrainAt takes them.
+void SurfaceTangents(const Model& model, double u, double v,
+                     Eigen::Vector3d* xu, Eigen::Vector3d* xv);
+
 SurfaceStrain StrainAt(const Model& reference, const Model& current, double u,
                        double v);
 

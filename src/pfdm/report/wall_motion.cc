@@ -76,42 +76,69 @@ int AssignRegion(const Model& reference, double u, double v,
   return first + sector;
 }
 
-std::vector<RegionMotion> SummarizeRegions(const Model& reference,
-                                           const Model& current,
-                                           const RegionLayout& layout) {
-  const size_t count = Regions(layout).size();
-  std::vector<RegionMotion> motion(count);
-  std::vector<double> weight(count, 0.0);
+ReferenceSamples SampleReference(const Model& reference,
+                                 const RegionLayout& layout) {
+  ReferenceSamples out;
+  out.num_regions = Regions(layout).size();
   // Cell centres equally spaced in sin u and v (equal areas on a sphere),
   // weighted by the reference surface's area; the pole is never sampled.
-  const double s_min = std::sin(reference.config.u_min);
-  const double s_max = std::sin(reference.config.u_max);
-  const Eigen::Vector3d axis = LongAxis(reference);
+  out.s_min = std::sin(reference.config.u_min);
+  out.s_max = std::sin(reference.config.u_max);
+  out.axis = LongAxis(reference);
+  out.samples.reserve(kLatitudeSamples * kLongitudeSamples);
+  for (int i = 0; i < kLatitudeSamples; ++i) {
+    const double u = std::asin(out.s_min + (out.s_max - out.s_min) * (i + 0.5) /
+                                               kLatitudeSamples);
+    const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
+    for (int j = 0; j < kLongitudeSamples; ++j) {
+      const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
+      ReferenceSamples::Sample sample;
+      sample.region = AssignRegion(reference, u, v, layout);
+      sample.weight = AreaWeight(reference, u, v);
+      sample.from = before.points[j] - before.centroid;
+      SurfaceTangents(reference, u, v, &sample.xu, &sample.xv);
+      if (reference.config.Solid()) {
+        sample.thickness = WallThickness(reference, u, v);
+      }
+      out.samples.push_back(sample);
+    }
+  }
+  return out;
+}
+
+std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
+                                           const Model& current) {
+  const size_t count = reference.num_regions;
+  std::vector<RegionMotion> motion(count);
+  std::vector<double> weight(count, 0.0);
+  const double s_min = reference.s_min, s_max = reference.s_max;
+  const ReferenceSamples::Sample* sample = reference.samples.data();
   for (int i = 0; i < kLatitudeSamples; ++i) {
     const double u =
         std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudeSamples);
-    const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
     const MaterialRing after = SampleRing(current, u, kLongitudeSamples);
     const bool solid = current.config.Solid();
-    for (int j = 0; j < kLongitudeSamples; ++j) {
+    for (int j = 0; j < kLongitudeSamples; ++j, ++sample) {
       const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
-      const int r = AssignRegion(reference, u, v, layout);
-      const double w = AreaWeight(reference, u, v);
-      const Eigen::Vector3d from = before.points[j] - before.centroid;
+      const int r = sample->region;
+      const double w = sample->weight;
+      const Eigen::Vector3d& from = sample->from;
       const Eigen::Vector3d to = after.points[j] - after.centroid;
       motion[r].rotation_deg +=
-          w * AngleAbout(from, to, axis) * kDegreesPerRadian;
+          w * AngleAbout(from, to, reference.axis) * kDegreesPerRadian;
       motion[r].radial_contraction_percent +=
           w * 100.0 * (1.0 - to.norm() / from.norm());
-      const SurfaceStrain strain = StrainAt(reference, current, u, v);
+      Eigen::Vector3d xu, xv;
+      SurfaceTangents(current, u, v, &xu, &xv);
+      const SurfaceStrain strain =
+          PlaneStrain(sample->xu, sample->xv, xu, xv, sample->xv, sample->xu);
       motion[r].ecc_percent += w * 100.0 * strain.ecc;
       motion[r].ell_percent += w * 100.0 * strain.ell;
       motion[r].ecl_percent += w * 100.0 * strain.ecl;
       if (solid) {
         motion[r].thickening_percent +=
             w * 100.0 *
-            (WallThickness(current, u, v) / WallThickness(reference, u, v) -
-             1.0);
+            (WallThickness(current, u, v) / sample->thickness - 1.0);
       }
       weight[r] += w;
     }
@@ -130,6 +157,12 @@ std::vector<RegionMotion> SummarizeRegions(const Model& reference,
                          kPi / kLongitudeSamples;
   }
   return motion;
+}
+
+std::vector<RegionMotion> SummarizeRegions(const Model& reference,
+                                           const Model& current,
+                                           const RegionLayout& layout) {
+  return SummarizeRegions(SampleReference(reference, layout), current);
 }
 
 }  // namespace pfdm

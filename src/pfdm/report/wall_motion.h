@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "Eigen/Core"
 #include "pfdm/model/model.h"
 
 namespace pfdm {
@@ -68,6 +69,28 @@ struct RegionMotion {
 std::vector<RegionMotion> SummarizeRegions(const Model& reference,
                                            const Model& current,
                                            const RegionLayout& layout);
+
+// What SummarizeRegions takes from the reference model at its samples
+// (region, area weight, ring, tangents): the same for every frame of a fit,
+// so a fit's frames share one (AnalyzeFit) and give the same numbers.
+struct ReferenceSamples {
+  struct Sample {
+    int region = 0;
+    double weight = 0.0;
+    Eigen::Vector3d from =
+        Eigen::Vector3d::Zero();  // From its ring's centroid.
+    Eigen::Vector3d xu = Eigen::Vector3d::Zero(), xv = Eigen::Vector3d::Zero();
+    double thickness = 0.0;  // A solid's WallThickness; 0 otherwise.
+  };
+  size_t num_regions = 0;
+  double s_min = 0.0, s_max = 0.0;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  std::vector<Sample> samples;  // Latitude by latitude.
+};
+ReferenceSamples SampleReference(const Model& reference,
+                                 const RegionLayout& layout);
+std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
+                                           const Model& current);
 
 }  // namespace pfdm
 

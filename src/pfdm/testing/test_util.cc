@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -67,6 +68,61 @@ CommandResult RunPfdm(const std::string& arguments) {
 std::string SharedDataDirectory() {
   const std::string dir = PFDM_SHARED_DATA_DIR;
   return std::filesystem::is_directory(dir) ? dir : "";
+}
+
+namespace {
+
+// The value of attribute name="..." in one XML tag, "" when absent.
+std::string Attribute(const std::string& tag, const std::string& name) {
+  const std::string key = " " + name + "=\"";
+  const size_t at = tag.find(key);
+  if (at == std::string::npos) return "";
+  const size_t begin = at + key.size();
+  return tag.substr(begin, tag.find('"', begin) - begin);
+}
+
+}  // namespace
+
+VtkXmlArrays ReadAppendedRawVtkXml(const std::string& xml) {
+  VtkXmlArrays arrays;
+  const std::string opening = "<AppendedData encoding=\"raw\">";
+  const size_t appended = xml.find(opening);
+  EXPECT_NE(appended, std::string::npos);
+  if (appended == std::string::npos) return arrays;
+  const size_t data = xml.find('_', appended + opening.size()) + 1;
+  const std::string header = xml.substr(0, appended);
+  EXPECT_NE(header.find("header_type=\"UInt64\""), std::string::npos);
+  EXPECT_NE(header.find("byte_order=\"LittleEndian\""), std::string::npos);
+  std::string section;
+  for (size_t at = header.find('<'); at != std::string::npos;
+       at = header.find('<', at + 1)) {
+    const std::string tag = header.substr(at, header.find('>', at) - at + 1);
+    for (const char* name : {"PointData", "Points", "Verts", "Polys"}) {
+      if (tag == std::string("<") + name + ">") section = name;
+    }
+    if (tag.rfind("<DataArray ", 0) != 0) continue;
+    EXPECT_EQ(Attribute(tag, "format"), "appended") << tag;
+    const size_t offset = std::stoull(Attribute(tag, "offset"));
+    std::uint64_t size = 0;
+    EXPECT_LE(data + offset + sizeof(size), xml.size()) << tag;
+    if (data + offset + sizeof(size) > xml.size()) break;
+    std::memcpy(&size, xml.data() + data + offset, sizeof(size));
+    const char* bytes = xml.data() + data + offset + sizeof(size);
+    EXPECT_LE(data + offset + sizeof(size) + size, xml.size()) << tag;
+    const std::string name = Attribute(tag, "Name");
+    const std::string key = name.empty() ? section : section + "/" + name;
+    if (Attribute(tag, "type") == "Float64") {
+      std::vector<double>& values = arrays.float64[key];
+      values.resize(size / sizeof(double));
+      std::memcpy(values.data(), bytes, size);
+    } else {
+      EXPECT_EQ(Attribute(tag, "type"), "Int64") << tag;
+      std::vector<std::int64_t>& values = arrays.int64[key];
+      values.resize(size / sizeof(std::int64_t));
+      std::memcpy(values.data(), bytes, size);
+    }
+  }
+  return arrays;
 }
 
 }  // namespace pfdm

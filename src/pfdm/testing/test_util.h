@@ -2,7 +2,10 @@
 #ifndef PFDM_TESTING_TEST_UTIL_H_
 #define PFDM_TESTING_TEST_UTIL_H_
 
+#include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace pfdm {
 
@@ -25,6 +28,16 @@ struct CommandResult {
 // Runs the built pfdm binary with the given arguments (shell-quoted by the
 // caller where needed).
 CommandResult RunPfdm(const std::string& arguments);
+
+// The arrays of a VTK XML file written with appended raw data (header_type
+// UInt64), read back independently of the writer: keyed by section and
+// name ("PointData/u", "Points", "Polys/connectivity"), Float64 arrays in
+// float64 and Int64 ones in int64.  Fails the test on a malformed file.
+struct VtkXmlArrays {
+  std::map<std::string, std::vector<double>> float64;
+  std::map<std::string, std::vector<std::int64_t>> int64;
+};
+VtkXmlArrays ReadAppendedRawVtkXml(const std::string& xml);
 
 // ../shared/data beside the source tree, or "" when it is absent.
 std::string SharedDataDirectory();

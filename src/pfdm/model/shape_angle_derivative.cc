@@ -1,0 +1,120 @@
+#include "pfdm/model/shape_angle_derivative.h"
+
+#include <cmath>
+
+#include "ceres/jet.h"
+#include "pfdm/model/parameter_function.h"
+#include "pfdm/model/signed_power.h"
+
+namespace pfdm {
+namespace {
+
+constexpr double kHalfPi = 1.57079632679489661923;
+
+// A value with its derivatives in u and v.
+struct Graded {
+  double value, d_u, d_v;
+};
+
+// sgn(x)|x|^e as SignedPower, x and e graded.
+Graded GradedSignedPower(const Graded& x, double e, double de_du) {
+  const double base = x.value * x.value + kSignedPowerDelta * kSignedPowerDelta;
+  const double power = std::pow(base, (e - 1.0) * 0.5);
+  const double value = x.value * power;
+  // d/dx = base^((e-3)/2) (e x^2 + delta^2); d/de = value ln(base) / 2.
+  const double d_x =
+      power / base *
+      (e * x.value * x.value + kSignedPowerDelta * kSignedPowerDelta);
+  const double d_e = 0.5 * value * std::log(base);
+  return {value, d_x * x.d_u + d_e * de_du, d_x * x.d_v};
+}
+
+// b g(x, b, r) of global_deformations.h's BendProfile with its derivatives;
+// nothing to compute while the amplitude and its slope are zero (frame 0,
+// and any unbent model).
+Graded GradedBend(double amplitude, double d_amplitude, const Graded& x,
+                  double b, double db_du, double r, double dr_du) {
+  if (amplitude == 0.0 && d_amplitude == 0.0) return {0.0, 0.0, 0.0};
+  const double phase = kHalfPi * (x.value - b);
+  const double cos_phase = std::cos(phase), sin_phase = std::sin(phase);
+  const double cos_b = std::cos(kHalfPi * b), sin_b = std::sin(kHalfPi * b);
+  const double j0 = ceres::BesselJ0(kHalfPi * r);
+  const double j1 = ceres::BesselJ1(kHalfPi * r);
+  const double g = cos_phase - j0 * cos_b;
+  // dg = -h sin(h (x - b)) (dx - db) + h J1(h r) cos(h b) dr
+  //      + h J0(h r) sin(h b) db, h = pi / 2.
+  const double dg_du = kHalfPi * (-sin_phase * (x.d_u - db_du) +
+                                  j1 * cos_b * dr_du + j0 * sin_b * db_du);
+  const double dg_dv = -kHalfPi * sin_phase * x.d_v;
+  return {amplitude * g, d_amplitude * g + amplitude * dg_du,
+          amplitude * dg_dv};
+}
+
+}  // namespace
+
+ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
+                                               const double* df_du,
+                                               const Angles<double>& angles,
+                                               bool unit_exponents) {
+  // The primitive's signed powers of the angles' sines and cosines.
+  const Graded cos_u{angles.cos_u, -angles.sin_u, 0.0};
+  const Graded sin_u{angles.sin_u, angles.cos_u, 0.0};
+  const Graded cos_v{angles.cos_v, 0.0, -angles.sin_v};
+  const Graded sin_v{angles.sin_v, 0.0, angles.cos_v};
+  Graded cu = cos_u, su = sin_u, cv = cos_v, sv = sin_v;
+  if (!unit_exponents) {
+    cu = GradedSignedPower(cos_u, f[kEps1], df_du[kEps1]);
+    su = GradedSignedPower(sin_u, f[kEps1], df_du[kEps1]);
+    cv = GradedSignedPower(cos_v, f[kEps2], df_du[kEps2]);
+    sv = GradedSignedPower(sin_v, f[kEps2], df_du[kEps2]);
+  }
+  // e = a0 (a1 cu cv, a2 cu sv, a3 su).
+  const double a0 = f[kA0], da0 = df_du[kA0];
+  const auto radial = [&](int a, const Graded& around) {
+    const double amplitude = a0 * f[a];
+    const double d_amplitude = da0 * f[a] + a0 * df_du[a];
+    return Graded{
+        amplitude * cu.value * around.value,
+        d_amplitude * cu.value * around.value +
+            amplitude * (cu.d_u * around.value + cu.value * around.d_u),
+        amplitude * cu.value * around.d_v};
+  };
+  const Graded e1 = radial(kA1, cv);
+  const Graded e2 = radial(kA2, sv);
+  const Graded e3{
+      a0 * f[kA3] * su.value,
+      (da0 * f[kA3] + a0 * df_du[kA3]) * su.value + a0 * f[kA3] * su.d_u, 0.0};
+  // Bending: across-axis positions in units of e1max = a0, ring half
+  // extents a1 cu and a2 cu.
+  const auto across = [&](const Graded& e) {
+    return Graded{e.value / a0, (e.d_u * a0 - e.value * da0) / (a0 * a0),
+                  e.d_v / a0};
+  };
+  const Graded bend1 =
+      GradedBend(f[kB0], df_du[kB0], across(e1), f[kB1], df_du[kB1],
+                 f[kA1] * cu.value, df_du[kA1] * cu.value + f[kA1] * cu.d_u);
+  const Graded bend2 =
+      GradedBend(f[kB2], df_du[kB2], across(e2), f[kB3], df_du[kB3],
+                 f[kA2] * cu.value, df_du[kA2] * cu.value + f[kA2] * cu.d_u);
+  const Graded bent3{e3.value + bend1.value + bend2.value,
+                     e3.d_u + bend1.d_u + bend2.d_u,
+                     e3.d_v + bend1.d_v + bend2.d_v};
+  // Twist by tau about axis 3, then the offsets.
+  const double c = std::cos(f[kTau]), s = std::sin(f[kTau]);
+  const double dtau = df_du[kTau];
+  ShapeAndAngleDerivatives out;
+  out.shape = Eigen::Vector3d(c * e1.value - s * e2.value + f[kE1o],
+                              s * e1.value + c * e2.value + f[kE2o],
+                              bent3.value + f[kE3o]);
+  out.d_u =
+      Eigen::Vector3d(c * e1.d_u - s * e2.d_u -
+                          dtau * (s * e1.value + c * e2.value) + df_du[kE1o],
+                      s * e1.d_u + c * e2.d_u +
+                          dtau * (c * e1.value - s * e2.value) + df_du[kE2o],
+                      bent3.d_u + df_du[kE3o]);
+  out.d_v = Eigen::Vector3d(c * e1.d_v - s * e2.d_v, s * e1.d_v + c * e2.d_v,
+                            bent3.d_v);
+  return out;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,29 @@
+// The reference shape's derivatives along the material coordinates (u, v),
+// in closed form: what the closest-point search steps on.
+#ifndef PFDM_MODEL_SHAPE_ANGLE_DERIVATIVE_H_
+#define PFDM_MODEL_SHAPE_ANGLE_DERIVATIVE_H_
+
+#include "Eigen/Core"
+#include "pfdm/model/superellipsoid.h"
+
+namespace pfdm {
+
+struct ShapeAndAngleDerivatives {
+  Eigen::Vector3d shape;  // s, model frame, as ReferenceShape.
+  Eigen::Vector3d d_u;    // ds/du, the functions moving along u too.
+  Eigen::Vector3d d_v;    // ds/dv.
+};
+
+// s = T_o(T_twist(T_b(e))) for the function values f at the material point
+// with the given angles, and its total derivatives in u and v when the
+// functions change along u at the rates df_du (the knot span's slopes of the
+// free functions, 0 for the others).  Matches ReferenceShape differentiated
+// in its angles with ceres::Jet (tested), at a fraction of the cost.
+ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
+                                               const double* df_du,
+                                               const Angles<double>& angles,
+                                               bool unit_exponents);
+
+}  // namespace pfdm
+
+#endif  // PFDM_MODEL_SHAPE_ANGLE_DERIVATIVE_H_

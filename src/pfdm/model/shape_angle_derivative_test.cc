@@ -1,0 +1,93 @@
+#include "pfdm/model/shape_angle_derivative.h"
+
+#include <random>
+
+#include "ceres/jet.h"
+#include "gtest/gtest.h"
+#include "pfdm/model/model_point.h"
+
+namespace pfdm {
+namespace {
+
+using Jet2 = ceres::Jet<double, 2>;
+
+// ReferenceShape differentiated by ceres::Jet in (u, v), the functions
+// moving along u at the rates df_du.
+void ExpectMatchesJet(const double* f, const double* df_du, double u, double v,
+                      bool unit_exponents) {
+  Jet2 f_jet[kNumFunctions];
+  for (int i = 0; i < kNumFunctions; ++i) {
+    f_jet[i] = Jet2(f[i]);
+    f_jet[i].v[0] = df_du[i];
+  }
+  const Eigen::Matrix<Jet2, 3, 1> truth =
+      ReferenceShape(f_jet, MakeAngles(Jet2(u, 0), Jet2(v, 1)), unit_exponents);
+  const ShapeAndAngleDerivatives got =
+      ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents);
+  for (int k = 0; k < 3; ++k) {
+    const double scale = 1.0 + std::abs(truth[k].a);
+    EXPECT_NEAR(got.shape[k], truth[k].a, 1e-13 * scale) << k;
+    EXPECT_NEAR(got.d_u[k], truth[k].v[0], 1e-11 * scale)
+        << "u " << u << " v " << v << " axis " << k;
+    EXPECT_NEAR(got.d_v[k], truth[k].v[1], 1e-11 * scale)
+        << "u " << u << " v " << v << " axis " << k;
+  }
+}
+
+struct State {
+  double f[kNumFunctions];
+  double df[kNumFunctions];
+};
+
+State RandomState(std::mt19937* random, bool unit_exponents, bool bent) {
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  State s;
+  const double values[kNumFunctions] = {40,  0.7, 0.6, 0.9, 1.0, 1.0, 3,
+                                        1.0, -2,  0.3, 0.2, 1.5, -1,  0.5};
+  for (int i = 0; i < kNumFunctions; ++i) {
+    s.f[i] = values[i] * (1.0 + 0.2 * uniform(*random));
+    s.df[i] = 0.3 * values[i] * uniform(*random);
+  }
+  if (unit_exponents) {
+    s.f[kEps1] = s.f[kEps2] = 1.0;
+    s.df[kEps1] = s.df[kEps2] = 0.0;
+  }
+  if (!bent) s.f[kB0] = s.df[kB0] = s.f[kB2] = s.df[kB2] = 0.0;
+  return s;
+}
+
+TEST(ShapeAngleDerivativeTest, MatchesJetDerivativesAtRandomPoints) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u_dist(-1.5707963, 0.5235988);
+  std::uniform_real_distribution<double> v_dist(-M_PI, M_PI);
+  for (bool unit : {true, false}) {
+    for (bool bent : {true, false}) {
+      for (int trial = 0; trial < 200; ++trial) {
+        const State s = RandomState(&random, unit, bent);
+        ExpectMatchesJet(s.f, s.df, u_dist(random), v_dist(random), unit);
+      }
+    }
+  }
+}
+
+// The apex pole (no v derivative left), the seam v = +-pi, the axes where a
+// cosine or sine and with it a signed power's base vanish, and a model with
+// no slopes at all.
+TEST(ShapeAngleDerivativeTest, MatchesJetDerivativesAtSingularPoints) {
+  std::mt19937 random(11);
+  const double us[] = {-M_PI / 2, -M_PI / 2 + 1e-9, -1.0, 0.0, M_PI / 6};
+  const double vs[] = {-M_PI, M_PI, 0.0, M_PI / 2, -M_PI / 2, 1e-12};
+  for (bool unit : {true, false}) {
+    State s = RandomState(&random, unit, true);
+    for (double u : us) {
+      for (double v : vs) ExpectMatchesJet(s.f, s.df, u, v, unit);
+    }
+    for (double& d : s.df) d = 0.0;
+    for (double u : us) {
+      for (double v : vs) ExpectMatchesJet(s.f, s.df, u, v, unit);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pfdm
