@@ -280,7 +280,7 @@ void BindModel(py::module_& m) {
       .def(
           "volume_ml",
           [](const Model& model, const py::object& w) {
-            const double surface = !w.is_none() ? w.cast<double>()
+            const double surface = !w.is_none()           ? w.cast<double>()
                                    : model.config.Solid() ? -1.0
                                                           : 0.0;
             return CavityVolumeMl(model, nullptr, surface);
@@ -486,9 +486,7 @@ void BindFit(py::module_& m) {
           "then fit.json's <volume_surface>_volume_fraction.")
       .def_property_readonly(
           "volume_surface",
-          [](const FitResult& r) {
-            return r.analysis.volume_surface;
-          },
+          [](const FitResult& r) { return r.analysis.volume_surface; },
           "What the volumes enclose: 'cavity', 'midwall' or 'epicardial'.")
       .def_property_readonly(
           "regions",
@@ -592,9 +590,9 @@ void BindFunctions(py::module_& m) {
       [](const py::object& points, const std::string& format,
          const std::string& contours, const std::string& base_plane,
          const std::string& model, int knots, const std::string& wall,
-         double smoothness, double prior,
-         double untracked_prior, const std::string& loss, double loss_scale,
-         int threads, const py::object& apex, const py::object& base,
+         double smoothness, double prior, double untracked_prior,
+         const std::string& loss, double loss_scale, int threads,
+         const py::object& apex, const py::object& base,
          const std::string& solver, const std::string& linear_solver,
          double time_step, double rest_tolerance, int max_steps,
          const std::string& damping, const std::string& damping_scale,

@@ -88,11 +88,12 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
           << c.edv_ml << ',' << c.esv_ml << ',' << c.es_frame << ',';
       if (c.volume_surface == "cavity") out << c.ejection_fraction;
       out << ',';
-      if (c.solid) out << c.lv_mass_g << ',' << c.wall_thickening_percent;
-      else out << ',';
-      out << ',' << c.net_twist_deg << ','
-          << c.longitudinal_shortening_percent << ','
-          << c.radial_contraction_percent << ',';
+      if (c.solid)
+        out << c.lv_mass_g << ',' << c.wall_thickening_percent;
+      else
+        out << ',';
+      out << ',' << c.net_twist_deg << ',' << c.longitudinal_shortening_percent
+          << ',' << c.radial_contraction_percent << ',';
       if (c.has_strain) {
         out << c.peak_gcs_percent << ',' << c.peak_gls_percent << ',';
       } else {

@@ -80,7 +80,7 @@ TEST(CliBatchTest, FitsInParallelRecordsFailuresAndResumes) {
       1.0 - std::stod(fields[6]) / std::stod(fields[5]);  // ES / ED volume.
   EXPECT_GT(fraction, 0.2);
   EXPECT_LT(fraction, 0.5);
-  EXPECT_EQ(fields[8], "");  // ejection_fraction
+  EXPECT_EQ(fields[8], "");              // ejection_fraction
   EXPECT_LT(std::stod(fields[3]), 1.5);  // max RMS, mm
 
   // Resume: the done cases are skipped; the repaired one is fitted.

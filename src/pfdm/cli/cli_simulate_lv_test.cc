@@ -96,8 +96,7 @@ TEST(LvPhantomCliTest, TagsThroughTheWallFitASolid) {
   run = RunPfdm("fit --local off --points " + dir + "/lv.csv --out " + dir +
                 "/solid");
   ASSERT_EQ(run.exit_code, 0) << run.error;
-  EXPECT_EQ(run.output.rfind("wall: solid (tags spread ", 0), 0u)
-      << run.output;
+  EXPECT_EQ(run.output.rfind("wall: solid (tags spread ", 0), 0u) << run.output;
   const nlohmann::json solid =
       nlohmann::json::parse(ReadText(dir + "/solid/fit.json"));
   EXPECT_EQ(solid["model"]["wall"], "solid");
@@ -109,9 +108,9 @@ TEST(LvPhantomCliTest, TagsThroughTheWallFitASolid) {
               1.05 * ed["myocardial_volume_ml"].get<double>(), 1e-9);
   // The phantom's ED cavity is 107 ml (lv_phantom.h).
   EXPECT_NEAR(ed["cavity_volume_ml"].get<double>(), 107.0, 5.0);
-  EXPECT_GT(solid["frames"][2]["clinical"]["wall_thickening_percent"]
-                .get<double>(),
-            10.0);
+  EXPECT_GT(
+      solid["frames"][2]["clinical"]["wall_thickening_percent"].get<double>(),
+      10.0);
   EXPECT_TRUE(solid["regions"][0].contains("thickening_percent"));
   EXPECT_TRUE(solid.contains("ejection_fraction"));
   EXPECT_NE(ReadText(dir + "/solid/report.html").find("LV mass at ED"),

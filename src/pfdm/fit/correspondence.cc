@@ -183,8 +183,8 @@ MaterialPoint Refine(const SurfacePoints& surface, const Model& model,
 }  // namespace
 
 template <typename T>
-Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u,
-                                    const T& v, double w) {
+Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u, const T& v,
+                                    double w) {
   const ModelConfig& config = model.config;
   const KnotGrid& grid = config.Grid();
   double u_value;

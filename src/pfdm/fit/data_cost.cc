@@ -44,8 +44,8 @@ ceres::CostFunction* MakePointCost(const Eigen::Vector3d& data, double u,
       return new ceres::NumericDiffCostFunction<PointResidual, ceres::CENTRAL,
                                                 3, 3, 4, kNumFunctions,
                                                 kNumFunctions, kNumFunctions>(
-          new PointResidual(data, u, v, knot_weight, free_mask,
-                            unit_exponents, w));
+          new PointResidual(data, u, v, knot_weight, free_mask, unit_exponents,
+                            w));
   }
   return nullptr;
 }

@@ -1,8 +1,8 @@
 #include "pfdm/fit/fitter.h"
 
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -163,19 +163,25 @@ void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
 // each frame's h by their noise, a thin wall's more (DeconvolvedThickness):
 // measures the noise on the tracked frames and takes it out of every
 // frame's h, then summarizes the frames again.
-void TakeOutTagNoise(const PointSequence& sequence, SequenceFit* result) {
+void TakeOutTagNoise(const PointSequence& sequence,
+                     const std::unordered_map<std::int64_t, int>& frames_per_id,
+                     SequenceFit* result) {
   double sum_squared = 0.0;
   int frames = 0;
   for (size_t t = 1; t < result->frames.size(); ++t) {
     const FrameFit& frame = result->frames[t];
+    // Tracked tags only: a contour point's closest point leaves it no
+    // residual along the wall.
     std::vector<size_t> tags;
     for (size_t i = 0; i < frame.material.size(); ++i) {
-      if (frame.material[i].w != 0.0) tags.push_back(i);
+      if (frames_per_id.at(sequence.frames[t].points[i].id) > 1) {
+        tags.push_back(i);
+      }
     }
     if (tags.empty()) continue;
-    const double sigma = TangentialNoiseMm(result->ModelAt(static_cast<int>(t)),
-                                           frame.residuals, frame.material,
-                                           tags);
+    const double sigma =
+        TangentialNoiseMm(result->ModelAt(static_cast<int>(t)), frame.residuals,
+                          frame.material, tags);
     sum_squared += sigma * sigma;
     ++frames;
   }
@@ -407,8 +413,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
       RerankDepths(model, points, tracked_tags, &fit.material);
     }
     auto solve_rounds = [&]() {
-      for (int round = 0; round < options.max_correspondence_rounds;
-           ++round) {
+      for (int round = 0; round < options.max_correspondence_rounds; ++round) {
         std::optional<double> rim_height;
         if (!reference && !unknown.empty()) {
           const double top = TopHeight(points, options, model);
@@ -418,11 +423,11 @@ SequenceFit FitSequence(const PointSequence& sequence,
             fit.trace.empty() ? SolverTracePoint{-1} : fit.trace.back();
         FitOptions round_options = options;
         if (options.trajectory_per_decade > 0) {
-          round_options.solver.on_step =
-              [&recorder, last](const SolverTracePoint& point) {
-                recorder.Step(last.iteration + 1 + point.iteration,
-                              last.pseudo_time + point.pseudo_time);
-              };
+          round_options.solver.on_step = [&recorder,
+                                          last](const SolverTracePoint& point) {
+            recorder.Step(last.iteration + 1 + point.iteration,
+                          last.pseudo_time + point.pseudo_time);
+          };
         }
         report =
             SolveFrame(points, fit.material, sliding, rim_height, kind,
@@ -485,8 +490,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
       if (options.wall == WallModel::kSolid || wall_seen) {
         model.config.MakeSolid();
         const double h = std::max(
-            0.0, ThicknessFromDepths(distances,
-                                     QuantileDepths(tag_u, distances)));
+            0.0,
+            ThicknessFromDepths(distances, QuantileDepths(tag_u, distances)));
         model.state.globals[kH] = h;
         for (FunctionValues& knot : model.state.knots) knot[kH] = h;
         if (options.wall == WallModel::kSolid) {
@@ -498,8 +503,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
         result.wall_reason +=
             ", but frame 0's mid-wall solve did not converge: one surface";
       } else {
-        result.wall_reason += ": one surface (under " +
-                              FormatMm(kMinWallSpreadMm) + " mm)";
+        result.wall_reason +=
+            ": one surface (under " + FormatMm(kMinWallSpreadMm) + " mm)";
       }
       wall_decided = true;
     }
@@ -574,7 +579,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
   }
   result.config = model.config;
   if (result.config.Solid()) result.surface = WallLayer::kAnywhere;
-  if (result.config.Solid() && has_tags) TakeOutTagNoise(sequence, &result);
+  if (result.config.Solid() && has_tags) {
+    TakeOutTagNoise(sequence, frames_per_id, &result);
+  }
   return result;
 }
 

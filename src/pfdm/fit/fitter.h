@@ -72,8 +72,8 @@ struct SequenceFit {
 // (options.wall, docs/gauge.md "The wall"): a solid when the first frame
 // has contours of both walls, or tags spread across the wall by at least
 // kMinWallSpreadMm after a converged mid-wall fit of that frame; a single
-// surface otherwise.  Throws InputError naming the frame when a frame has too few
-// points or the solver fails, and when --wall solid meets data with
+// surface otherwise.  Throws InputError naming the frame when a frame has too
+// few points or the solver fails, and when --wall solid meets data with
 // neither.
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options);

@@ -11,7 +11,7 @@ namespace pfdm {
 namespace {
 
 constexpr int kReferenceHeld[] = {kA3, kTau, kDtau, kWallShift,
-                                   kB0, kB1, kB2, kB3};
+                                  kB0, kB1,  kB2,   kB3};
 
 }  // namespace
 

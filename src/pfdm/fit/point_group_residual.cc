@@ -159,8 +159,9 @@ PointGroupResidual::PointGroupResidual(
   }
   compressed_ = columns_ > 0 && rows_ > columns_ + 1;
   const auto functions = [this](int knot) {
-    return entries_[knot] ? entries_[knot]->free()
-                          : std::vector<int>(kAllFunctions, kAllFunctions + kNumFunctions);
+    return entries_[knot]
+               ? entries_[knot]->free()
+               : std::vector<int>(kAllFunctions, kAllFunctions + kNumFunctions);
   };
   knots_alike_ = varied_[3] && varied_[4] && functions(1) == functions(2);
   pose_moments_ =

@@ -36,8 +36,8 @@ std::vector<double> MidwallDistances(
   distances.reserve(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
     const double u = material[i].u, v = material[i].v;
-    distances.push_back(SurfaceNormal(model, u, v)
-                            .dot(points[i] - model.WorldPoint(u, v)));
+    distances.push_back(
+        SurfaceNormal(model, u, v).dot(points[i] - model.WorldPoint(u, v)));
   }
   return distances;
 }
@@ -58,7 +58,8 @@ double WallSpreadMm(const Model& model,
     double distance_squared[2];
     tree.knnSearch(cloud.points[i].data(), 2, nearest, distance_squared);
     const size_t j = nearest[0] == i ? nearest[1] : nearest[0];
-    sum_squared += (distances[i] - distances[j]) * (distances[i] - distances[j]);
+    sum_squared +=
+        (distances[i] - distances[j]) * (distances[i] - distances[j]);
   }
   return std::sqrt(6.0 * sum_squared / material.size());
 }

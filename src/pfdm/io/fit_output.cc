@@ -344,38 +344,38 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
     const ClinicalSummary& summary = analysis.clinical[t];
     const GlobalStrain& strain = analysis.strain[t];
     json entry = {{"frame", frame.frame},
-         {"n_points", frame.residuals.size()},
-         {"rms_mm", frame.rms_mm},
-         {"mean_distance_mm", frame.mean_distance_mm},
-         {"max_distance_mm", frame.max_distance_mm},
-         {"iterations", frame.iterations},
-         {"correspondence_rounds", frame.correspondence_rounds},
-         {"solve_seconds", frame.solve_seconds},
-         {"termination", frame.termination},
-         {volume_key, summary.volume_ml}};
+                  {"n_points", frame.residuals.size()},
+                  {"rms_mm", frame.rms_mm},
+                  {"mean_distance_mm", frame.mean_distance_mm},
+                  {"max_distance_mm", frame.max_distance_mm},
+                  {"iterations", frame.iterations},
+                  {"correspondence_rounds", frame.correspondence_rounds},
+                  {"solve_seconds", frame.solve_seconds},
+                  {"termination", frame.termination},
+                  {volume_key, summary.volume_ml}};
     if (solid) {
       entry["myocardial_volume_ml"] = summary.myocardial_volume_ml;
       entry["lv_mass_g"] = summary.lv_mass_g;
     }
     entry.update(json{
-         {"pose",
-          {{"center_mm", frame.state.center},
-           {"quaternion_wxyz", frame.state.quaternion}}},
-         {"clinical",
-          {{"net_twist_deg", summary.net_twist_deg},
-           {"apex_rotation_deg", summary.apex_rotation_deg},
-           {"base_rotation_deg", summary.base_rotation_deg},
-           {"torsion_deg_per_cm", summary.torsion_deg_per_cm},
-           {"shear_angle_deg", summary.shear_angle_deg},
-           {"radial_contraction_percent", summary.radial_contraction_percent},
-           {"longitudinal_shortening_percent",
-            summary.longitudinal_shortening_percent},
-           {"gcs_percent", strain.gcs_percent},
-           {"gls_percent", strain.gls_percent},
-           {"gcl_percent", strain.gcl_percent},
-           {"radial_ratio_x_per_knot", summary.radial_ratio_x},
-           {"radial_ratio_y_per_knot", summary.radial_ratio_y},
-           {"longitudinal_ratio_per_knot", summary.longitudinal_ratio}}}});
+        {"pose",
+         {{"center_mm", frame.state.center},
+          {"quaternion_wxyz", frame.state.quaternion}}},
+        {"clinical",
+         {{"net_twist_deg", summary.net_twist_deg},
+          {"apex_rotation_deg", summary.apex_rotation_deg},
+          {"base_rotation_deg", summary.base_rotation_deg},
+          {"torsion_deg_per_cm", summary.torsion_deg_per_cm},
+          {"shear_angle_deg", summary.shear_angle_deg},
+          {"radial_contraction_percent", summary.radial_contraction_percent},
+          {"longitudinal_shortening_percent",
+           summary.longitudinal_shortening_percent},
+          {"gcs_percent", strain.gcs_percent},
+          {"gls_percent", strain.gls_percent},
+          {"gcl_percent", strain.gcl_percent},
+          {"radial_ratio_x_per_knot", summary.radial_ratio_x},
+          {"radial_ratio_y_per_knot", summary.radial_ratio_y},
+          {"longitudinal_ratio_per_knot", summary.longitudinal_ratio}}}});
     if (solid) {
       json& clinical = entry["clinical"];
       clinical["endo_apex_rotation_deg"] = summary.endo_apex_rotation_deg;
@@ -395,14 +395,14 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   }
   const EjectionFraction& ef = analysis.ejection_fraction;
   const bool cavity = analysis.volume_surface == "cavity";
-  json ejection = {{"ratio", ef.ratio},
-                   {"ed_frame", ef.ed_frame},
-                   {"es_frame", ef.es_frame},
-                   {"edv_ml", ef.edv_ml},
-                   {"esv_ml", ef.esv_ml},
-                   {"definition", cavity ? kEjectionDefinition
-                                         : kVolumeFractionDefinition},
-                   {"cavity_closure", CavityClosure(analysis)}};
+  json ejection = {
+      {"ratio", ef.ratio},
+      {"ed_frame", ef.ed_frame},
+      {"es_frame", ef.es_frame},
+      {"edv_ml", ef.edv_ml},
+      {"esv_ml", ef.esv_ml},
+      {"definition", cavity ? kEjectionDefinition : kVolumeFractionDefinition},
+      {"cavity_closure", CavityClosure(analysis)}};
   const std::vector<double> peak_ecc = PeakRegionEcc(analysis.region_motion);
   json regions = json::array();
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
@@ -457,11 +457,10 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   if (solid) document["wall_definition"] = kWallDefinition;
   document[cavity ? "ejection_fraction"
                   : analysis.volume_surface + "_volume_fraction"] = ejection;
-  document.update(json{
-                   {"regions_convention", kRegionsConvention},
-                   {"regions", regions},
-                   {"strain", strain},
-                   {"frames", frames}});
+  document.update(json{{"regions_convention", kRegionsConvention},
+                       {"regions", regions},
+                       {"strain", strain},
+                       {"frames", frames}});
   return document.dump(2) + "\n";
 }
 

@@ -38,8 +38,9 @@ Eigen::Matrix<T, 3, 1> ReferenceShape(const T* f, const Angles<A>& angles,
                                       bool unit_exponents, double w = 0.0) {
   Eigen::Matrix<T, 3, 1> e = Superellipsoid(f, angles, unit_exponents);
   if (w != 0.0) e += WallOffset(f, angles, w);
-  return Offset(f, Twist(TwistAt(f, w),
-                         Bend(f, e, RingHalfExtents(f, angles, unit_exponents))));
+  return Offset(f,
+                Twist(TwistAt(f, w),
+                      Bend(f, e, RingHalfExtents(f, angles, unit_exponents))));
 }
 
 // x = c + R(q) p with q = (w, x, y, z) a unit quaternion.

@@ -11,22 +11,22 @@ namespace pfdm {
 
 // Order of the functions inside one knot's parameter block.
 enum Function : int {
-  kA0 = 0,  // Overall scale (mm).
-  kA1,      // Radius along axis 1, as a fraction of a0.
-  kA2,      // Radius along axis 2, as a fraction of a0.
-  kA3,      // Half-length along axis 3, as a fraction of a0.
-  kEps1,    // Latitude squareness.
-  kEps2,    // Longitude squareness.
-  kB0,      // Bending amplitude across axis 1 (mm).
-  kB1,      // Bending shape across axis 1 (Model::CanonicalizeBending).
-  kB2,      // Bending amplitude across axis 2 (mm).
-  kB3,      // Bending shape across axis 2, likewise.
-  kTau,     // Twist about axis 3 (radians).
-  kE1o,     // Axis offset along axis 1 (mm).
-  kE2o,     // Axis offset along axis 2 (mm).
-  kE3o,     // Axis offset along axis 3 (mm).
-  kH,       // Wall thickness (mm): endocardium w = -1 to epicardium w = +1.
-  kDtau,    // Epicardial minus endocardial twist (radians).
+  kA0 = 0,     // Overall scale (mm).
+  kA1,         // Radius along axis 1, as a fraction of a0.
+  kA2,         // Radius along axis 2, as a fraction of a0.
+  kA3,         // Half-length along axis 3, as a fraction of a0.
+  kEps1,       // Latitude squareness.
+  kEps2,       // Longitude squareness.
+  kB0,         // Bending amplitude across axis 1 (mm).
+  kB1,         // Bending shape across axis 1 (Model::CanonicalizeBending).
+  kB2,         // Bending amplitude across axis 2 (mm).
+  kB3,         // Bending shape across axis 2, likewise.
+  kTau,        // Twist about axis 3 (radians).
+  kE1o,        // Axis offset along axis 1 (mm).
+  kE2o,        // Axis offset along axis 2 (mm).
+  kE3o,        // Axis offset along axis 3 (mm).
+  kH,          // Wall thickness (mm): endocardium w = -1 to epicardium w = +1.
+  kDtau,       // Epicardial minus endocardial twist (radians).
   kWallShift,  // The walls' middle, outward of the layer w = 0 (mm).
   kNumFunctions
 };

@@ -75,8 +75,9 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
 // half extents r1 = a1 Cu^e1, r2 = a2 Cu^e1 bring in
 // dg/dr = pi/2 J1(pi/2 r) cos(pi/2 b) (J0' = -J1).  Off the mid-wall the
 // primitive is e + k n with k = w h / 2 + w^2 s and n = m / |m|
-// (transmural.h), so de/dh = w n / 2, de/ds = w^2 n and de/da_i = k (I - n n^T) dm/da_i / |m| with
-// dm/da_i = -m_i / a_i along axis i; the twist angle is tau + w dtau / 2.
+// (transmural.h), so de/dh = w n / 2, de/ds = w^2 n and de/da_i = k (I - n n^T)
+// dm/da_i / |m| with dm/da_i = -m_i / a_i along axis i; the twist angle is tau
+// + w dtau / 2.
 Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
                                  const double* sines, const double* cosines,
                                  ShapeJacobian* jacobian) {
@@ -87,8 +88,7 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
                                   a0 * f[kA2] * cu.value * sv.value,
                                   a0 * f[kA3] * su.value);
   const double half_wall = WallDepth(f, prelude.w);
-  const Eigen::Vector3d e =
-      primitive + half_wall * prelude.wall_direction;
+  const Eigen::Vector3d e = primitive + half_wall * prelude.wall_direction;
 
   const double x1 = e[0] / a0;
   const double x2 = e[1] / a0;

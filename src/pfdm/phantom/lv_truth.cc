@@ -18,7 +18,7 @@ constexpr int kSurfaceCols = 256;
 constexpr int kSegmentRows = 60;
 constexpr int kSegmentCols = 120;
 constexpr double kLayerW[3] = {-1.0, 0.0, 1.0};  // Endo, mid, epi.
-constexpr int kLinePoints = 72;  // Transmural lines per ring.
+constexpr int kLinePoints = 72;                  // Transmural lines per ring.
 
 // A transmural line's material points: endocardium, epicardium, and four
 // mid-wall neighbours (nu + d, nu - d, phi + d, phi - d) for its normal.
@@ -277,8 +277,8 @@ LvFrameTruth LvTruthMeter::Measure(const Points& world0,
       contraction[s] +=
           wt * (1.0 - (world[i] - c).norm() / (world0[i] - c0).norm());
       thickening[s] +=
-          wt * LineStretch(world0, world,
-                           cell_line_begin_ + kLineStride * cell, 1);
+          wt *
+          LineStretch(world0, world, cell_line_begin_ + kLineStride * cell, 1);
     }
   }
   for (int s = 0; s < kSegments; ++s) {

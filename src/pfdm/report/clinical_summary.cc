@@ -33,10 +33,11 @@ double RadialContractionPercent(const Model& reference, const Model& current,
   for (int i = 0; i < kContractionRings; ++i) {
     const double u =
         RingAtHeightFraction(reference, (i + 0.5) / kContractionRings, w);
-    percent += 100.0 *
-               (1.0 - MeanRadius(SampleRing(current, u, kRingSamples, w)) /
-                          MeanRadius(SampleRing(reference, u, kRingSamples, w))) /
-               kContractionRings;
+    percent +=
+        100.0 *
+        (1.0 - MeanRadius(SampleRing(current, u, kRingSamples, w)) /
+                   MeanRadius(SampleRing(reference, u, kRingSamples, w))) /
+        kContractionRings;
   }
   return percent;
 }

@@ -46,14 +46,13 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames) {
     for (int k = 0; k < knots; ++k) {
       const double u = grid.KnotU(k);
       const Model& m = frames[t];
-      block.rows.push_back({static_cast<double>(k),
-                            m.FunctionAt(kA1, u) / ed.FunctionAt(kA1, u),
-                            m.FunctionAt(kA2, u) / ed.FunctionAt(kA2, u),
-                            m.FunctionAt(kA3, u) / ed.FunctionAt(kA3, u),
-                            m.FunctionAt(kTau, u) * kDegreesPerRadian,
-                            m.FunctionAt(kB0, u), m.FunctionAt(kB2, u),
-                            m.FunctionAt(kH, u),
-                            m.FunctionAt(kDtau, u) * kDegreesPerRadian});
+      block.rows.push_back(
+          {static_cast<double>(k), m.FunctionAt(kA1, u) / ed.FunctionAt(kA1, u),
+           m.FunctionAt(kA2, u) / ed.FunctionAt(kA2, u),
+           m.FunctionAt(kA3, u) / ed.FunctionAt(kA3, u),
+           m.FunctionAt(kTau, u) * kDegreesPerRadian, m.FunctionAt(kB0, u),
+           m.FunctionAt(kB2, u), m.FunctionAt(kH, u),
+           m.FunctionAt(kDtau, u) * kDegreesPerRadian});
     }
   }
   std::ostringstream colors;
@@ -130,8 +129,7 @@ SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
          << (volume_surface == "cavity"
                  ? "set title sprintf('cavity volume, EF %.1f %%', " +
                        std::to_string(100.0 * ef.ratio) + ")"
-                 : "set title '" + volume_surface +
-                       " volume (not the cavity)'")
+                 : "set title '" + volume_surface + " volume (not the cavity)'")
          << "\nset ylabel 'ml'\n"
          << "set label 1 'ED' at " << ef.ed_frame << ',' << ef.edv_ml
          << " offset 0.5,0.8\n"

@@ -84,11 +84,10 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   const ClinicalSummary& es = analysis.clinical[ef.es_frame];
   const ClinicalSummary& ed = analysis.clinical[ef.ed_frame];
   const bool cavity = analysis.volume_surface == "cavity";
-  const std::string volume_name =
-      cavity ? "cavity volume"
-      : analysis.volume_surface == "epicardial"
-          ? "volume inside the epicardium"
-          : "mid-wall enclosed volume";
+  const std::string volume_name = cavity ? "cavity volume"
+                                  : analysis.volume_surface == "epicardial"
+                                      ? "volume inside the epicardium"
+                                      : "mid-wall enclosed volume";
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
     << "<title>pfdm fit: " << EscapeMarkup(points.source) << "</title>"
@@ -118,18 +117,16 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     h << "<div>LV mass at ED<b>" << Fixed(ed.lv_mass_g, 0) << " g</b>"
       << "myocardium " << Fixed(ed.myocardial_volume_ml, 0)
       << " ml at 1.05 g/ml</div>"
-      << "<div>wall thickening at ES<b>"
-      << Fixed(es.wall_thickening_percent, 1) << " %</b>"
-      << Fixed(ed.wall_thickness_mm, 1) << " to "
+      << "<div>wall thickening at ES<b>" << Fixed(es.wall_thickening_percent, 1)
+      << " %</b>" << Fixed(ed.wall_thickness_mm, 1) << " to "
       << Fixed(es.wall_thickness_mm, 1) << " mm</div>"
-      << "<div>endo / epi net twist at ES<b>"
-      << Fixed(es.endo_net_twist_deg, 1) << " / "
-      << Fixed(es.epi_net_twist_deg, 1) << "&deg;</b>radial contraction "
+      << "<div>endo / epi net twist at ES<b>" << Fixed(es.endo_net_twist_deg, 1)
+      << " / " << Fixed(es.epi_net_twist_deg, 1)
+      << "&deg;</b>radial contraction "
       << Fixed(es.endo_radial_contraction_percent, 1) << " / "
       << Fixed(es.epi_radial_contraction_percent, 1) << " %</div>";
   }
-  h
-    << "<div>net twist at ES<b>" << Fixed(es.net_twist_deg, 1) << "&deg;</b>"
+  h << "<div>net twist at ES<b>" << Fixed(es.net_twist_deg, 1) << "&deg;</b>"
     << "apex " << Fixed(es.apex_rotation_deg, 1) << "&deg;, base "
     << Fixed(es.base_rotation_deg, 1) << "&deg;</div>"
     << "<div>torsion at ES<b>" << Fixed(es.torsion_deg_per_cm, 2)
@@ -163,12 +160,12 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
               "the mid-wall's normal, thickening its change against ED; the "
               "cavity is inside the endocardium and the myocardium between "
               "the walls. "
-            : cavity ? ""
-                     : "The data lie on one surface through the wall (tags "
-                       "on a mid-wall), so the volume it encloses includes "
-                       "part of the myocardium and is not the cavity: fit "
-                       "tags through the wall or contours of both walls for "
-                       "that. ")
+        : cavity ? ""
+                 : "The data lie on one surface through the wall (tags "
+                   "on a mid-wall), so the volume it encloses includes "
+                   "part of the myocardium and is not the cavity: fit "
+                   "tags through the wall or contours of both walls for "
+                   "that. ")
     << "Volumes close the fitted surface "
     << (analysis.base_planes.empty()
             ? "with a flat lid at the base rim"
@@ -207,8 +204,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   }
 
   h << "<h2>Per frame</h2>\n<table><tr><th>frame</th><th>points</th>"
-    << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>"
-    << volume_name << " ml</th>"
+    << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>" << volume_name
+    << " ml</th>"
     << "<th>net twist &deg;</th><th>apex &deg;</th><th>base &deg;</th>"
     << "<th>torsion &deg;/cm</th><th>radial %</th><th>longitudinal %</th>"
     << "<th>GCS %</th><th>GLS %</th>"

@@ -11,8 +11,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
-MaterialRing SampleRing(const Model& model, double u, int samples,
-                        double w) {
+MaterialRing SampleRing(const Model& model, double u, int samples, double w) {
   MaterialRing ring;
   for (int j = 0; j < samples; ++j) {
     const double v = -kPi + 2.0 * kPi * (j + 0.5) / samples;
@@ -78,8 +77,7 @@ double RingAtHeightFraction(const Model& reference, double h, double w) {
     double sum = 0.0;
     constexpr int kSamples = 24;
     for (int j = 0; j < kSamples; ++j) {
-      sum += reference.ModelPoint(u, -kPi + 2.0 * kPi * (j + 0.5) / kSamples,
-                                  w)
+      sum += reference.ModelPoint(u, -kPi + 2.0 * kPi * (j + 0.5) / kSamples, w)
                  .z();
     }
     return sum / kSamples;

@@ -24,8 +24,8 @@ ThickFit FitThickPhantom(LvTagLayer tags = LvTagLayer::kWall) {
   LvPhantomOptions options;
   options.tags = tags;
   ThickFit result{MakeLvPhantom(options), {}, {}};
-  result.fit = FitSequence(result.phantom.points, ModelConfig::Paper(17),
-                           FitOptions());
+  result.fit =
+      FitSequence(result.phantom.points, ModelConfig::Paper(17), FitOptions());
   std::vector<Model> models;
   for (size_t t = 0; t < result.fit.frames.size(); ++t) {
     models.push_back(result.fit.ModelAt(t));
@@ -84,27 +84,31 @@ TEST(LvThickWallTest, TagsThroughTheWallMakeASolid) {
         "%.2f (%.2f) base %.2f (%.2f)  RC endo %.1f (%.1f) epi %.1f (%.1f) "
         "thickening truth %.1f\n",
         t, f.fit.frames[t].rms_mm, c.volume_ml, truth.endo_volume_ml,
-        c.myocardial_volume_ml, truth.myocardial_volume_ml,
-        c.wall_thickness_mm, c.wall_thickening_percent,
-        c.endo_apex_rotation_deg, Rotation(truth.endo, kApicalRingFraction),
-        c.endo_base_rotation_deg, Rotation(truth.endo, kBasalRingFraction),
-        c.epi_apex_rotation_deg, Rotation(truth.epi, kApicalRingFraction),
-        c.epi_base_rotation_deg, Rotation(truth.epi, kBasalRingFraction),
+        c.myocardial_volume_ml, truth.myocardial_volume_ml, c.wall_thickness_mm,
+        c.wall_thickening_percent, c.endo_apex_rotation_deg,
+        Rotation(truth.endo, kApicalRingFraction), c.endo_base_rotation_deg,
+        Rotation(truth.endo, kBasalRingFraction), c.epi_apex_rotation_deg,
+        Rotation(truth.epi, kApicalRingFraction), c.epi_base_rotation_deg,
+        Rotation(truth.epi, kBasalRingFraction),
         c.endo_radial_contraction_percent, Contraction(truth.endo),
         c.epi_radial_contraction_percent, Contraction(truth.epi),
         Thickening(truth));
     const double truth_cavity = truth.endo_volume_ml;
     EXPECT_NEAR(c.volume_ml, truth_cavity, 0.05 * truth_cavity) << t;
     EXPECT_NEAR(c.endo_apex_rotation_deg,
-                Rotation(truth.endo, kApicalRingFraction), 1.0) << t;
+                Rotation(truth.endo, kApicalRingFraction), 1.0)
+        << t;
     EXPECT_NEAR(c.endo_base_rotation_deg,
-                Rotation(truth.endo, kBasalRingFraction), 1.0) << t;
+                Rotation(truth.endo, kBasalRingFraction), 1.0)
+        << t;
     EXPECT_NEAR(c.epi_apex_rotation_deg,
-                Rotation(truth.epi, kApicalRingFraction), 1.0) << t;
+                Rotation(truth.epi, kApicalRingFraction), 1.0)
+        << t;
     EXPECT_NEAR(c.epi_base_rotation_deg,
-                Rotation(truth.epi, kBasalRingFraction), 1.0) << t;
-    EXPECT_NEAR(c.endo_radial_contraction_percent, Contraction(truth.endo),
-                2.5) << t;
+                Rotation(truth.epi, kBasalRingFraction), 1.0)
+        << t;
+    EXPECT_NEAR(c.endo_radial_contraction_percent, Contraction(truth.endo), 2.5)
+        << t;
     EXPECT_NEAR(c.epi_radial_contraction_percent, Contraction(truth.epi), 2.5)
         << t;
     EXPECT_NEAR(c.wall_thickening_percent, Thickening(truth), 3.0) << t;
@@ -147,8 +151,7 @@ TEST(LvThickWallTest, SegmentsThicken) {
   const std::vector<LvSegmentTruth>& truth = f.phantom.truth[es].segments;
   for (size_t r = 0; r < motion.size(); ++r) {
     std::printf("segment %2zu thickening %.1f (truth %.1f)\n", r + 1,
-                motion[r].thickening_percent,
-                truth[r].wall_thickening_percent);
+                motion[r].thickening_percent, truth[r].wall_thickening_percent);
     EXPECT_GT(motion[r].thickening_percent, 10.0) << r;
   }
   double fit_mean = 0.0, truth_mean = 0.0;

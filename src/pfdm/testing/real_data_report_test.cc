@@ -156,9 +156,10 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
         << "frame " << t;
   }
   const double mass = analysis.clinical[0].lv_mass_g;
-  std::printf("LV mass at ED %.0f g (adult CMR reference: men about 85-180 g, "
-              "women 65-140 g); worst cavity deviation %.1f %%\n",
-              mass, 100 * worst);
+  std::printf(
+      "LV mass at ED %.0f g (adult CMR reference: men about 85-180 g, "
+      "women 65-140 g); worst cavity deviation %.1f %%\n",
+      mass, 100 * worst);
   EXPECT_LT(sum_deviation / 25, 0.04);
   EXPECT_GT(mass, 65.0);
   EXPECT_LT(mass, 250.0);
