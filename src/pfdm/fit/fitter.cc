@@ -278,13 +278,19 @@ std::vector<double> LayerDepths(const Frame& frame) {
   return w;
 }
 
-bool HasBothWalls(const Frame& frame) {
-  bool endo = false, epi = false;
+// Which walls a frame's contours name.
+struct WallsSeen {
+  bool endo = false;
+  bool epi = false;
+};
+
+WallsSeen WallsIn(const Frame& frame) {
+  WallsSeen seen;
   for (const DataPoint& p : frame.points) {
-    endo = endo || p.layer == WallLayer::kEndocardium;
-    epi = epi || p.layer == WallLayer::kEpicardium;
+    seen.endo = seen.endo || p.layer == WallLayer::kEndocardium;
+    seen.epi = seen.epi || p.layer == WallLayer::kEpicardium;
   }
-  return endo && epi;
+  return seen;
 }
 
 std::string FormatMm(double mm) {
@@ -325,9 +331,10 @@ SequenceFit FitSequence(const PointSequence& sequence,
   for (const DataPoint& p : first.points) {
     has_tags = has_tags || frames_per_id[p.id] > 1;
   }
+  const WallsSeen walls = WallsIn(first);
   if (options.wall == WallModel::kMidwall) {
     result.wall_reason = "--wall midwall";
-  } else if (HasBothWalls(first)) {
+  } else if (walls.endo && walls.epi) {
     model.config.MakeSolid();
     result.wall_reason = "endocardial and epicardial contours";
   } else if (!has_tags) {
@@ -339,15 +346,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
     result.wall_reason = "no tracked tags and no contours of both walls";
   }
   bool wall_decided = !result.wall_reason.empty();
-  if (!model.config.Solid()) {
-    bool endo = false, epi = false;
-    for (const DataPoint& p : first.points) {
-      endo = endo || p.layer == WallLayer::kEndocardium;
-      epi = epi || p.layer == WallLayer::kEpicardium;
-    }
-    if (endo != epi) {
-      result.surface = endo ? WallLayer::kEndocardium : WallLayer::kEpicardium;
-    }
+  if (!model.config.Solid() && walls.endo != walls.epi) {
+    result.surface =
+        walls.endo ? WallLayer::kEndocardium : WallLayer::kEpicardium;
   }
   ModelState prior = model.state;
   // Frame 0's pose, which later frames may tilt and move but not spin.
