@@ -38,22 +38,22 @@ double Rotation(const LvLayerRings& rings, double h) {
   return LvRingValueAt(rings.rotation_deg, h);
 }
 
-double Contraction(const LvLayerRings& rings) {
+// A ring array's mean over the summary's contraction rings, as the fit's
+// numbers average them.
+double OverContractionRings(const std::vector<double>& values) {
   double sum = 0.0;
   for (int i = 0; i < kContractionRings; ++i) {
-    sum += LvRingValueAt(rings.radial_contraction_percent,
-                         (i + 0.5) / kContractionRings);
+    sum += LvRingValueAt(values, (i + 0.5) / kContractionRings);
   }
   return sum / kContractionRings;
 }
 
+double Contraction(const LvLayerRings& rings) {
+  return OverContractionRings(rings.radial_contraction_percent);
+}
+
 double Thickening(const LvFrameTruth& truth) {
-  double sum = 0.0;
-  for (int i = 0; i < kContractionRings; ++i) {
-    sum += LvRingValueAt(truth.wall_thickening_percent,
-                         (i + 0.5) / kContractionRings);
-  }
-  return sum / kContractionRings;
+  return OverContractionRings(truth.wall_thickening_percent);
 }
 
 const ThickFit& Wall() {
