@@ -525,15 +525,16 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const std::vector<BasePlane>& base_planes,
                      VtkFormat vtk_format) {
   // Everything is rendered before the first file is written, so a failure
-  // (gnuplot missing, say) leaves no partial set behind.
+  // (gnuplot missing, say) leaves no partial set behind.  One gnuplot for
+  // the four plots (its start-up, not the plotting, was most of their
+  // time), starting while the fit is analysed and rendering while the
+  // other files are formatted.
+  SvgRendering plots;
   const FitAnalysis analysis = AnalyzeFit(fit, base_planes);
-  // One gnuplot for the four plots (its start-up, not the plotting, was
-  // most of their time), rendering while the other files are formatted.
-  SvgRendering plots(
-      {ParameterPlots(analysis.models),
-       CycleCurves(analysis.clinical, analysis.volume_surface),
-       StrainCurves(analysis.strain),
-       Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
+  plots.Render({ParameterPlots(analysis.models),
+                CycleCurves(analysis.clinical, analysis.volume_surface),
+                StrainCurves(analysis.strain),
+                Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::pair<std::string, std::string>> files;
   files.emplace_back("parameters.csv", ParametersCsv(analysis.models));
   std::vector<std::pair<double, std::string>> timesteps;

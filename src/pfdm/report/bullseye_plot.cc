@@ -14,8 +14,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegreesPerRadian = 180.0 / kPi;
 // Ring radii on the page: the apex cap inside 1, then one unit per level.
 constexpr double kCapRadius = 1.0;
-// Arc points every this many degrees: smooth at the rendered size.
-constexpr double kArcStepDeg = 2.0;
+// Arc points every this many degrees.  On the outer ring (4 units, about
+// 180 px) a chord then strays under a quarter pixel from its arc, r t^2 / 8.
+constexpr double kArcStepDeg = 6.0;
 
 double InnerRadius(RegionLevel level) {
   return level == kApical ? kCapRadius : level == kMid ? 2.0 : 3.0;
@@ -60,7 +61,7 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
   std::ostringstream script;
   script.precision(5);
   // The white dot at the centre makes gnuplot draw the colour box.
-  const PlotData centre{"centre", {{0.0, 0.0, 0.0}}};
+  std::vector<PlotData> data{{"centre", {{0.0, 0.0, 0.0}}}};
   script << "set multiplot layout 1," << panels
          << " margins 0.01,0.97,0.04,0.88 spacing 0.05,0\n"
          << "set size ratio -1\nunset border\nunset tics\nunset key\n"
@@ -68,32 +69,34 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
   for (int p = 0; p < panels; ++p) {
     const BullseyeMap& map = maps[p];
     const double scale = ScaleOf(map.values);
-    script << "unset object\nunset label\n"
+    script << "unset label\n"
            << PaletteOf(map.palette) << "set cbrange [" << -scale << ':'
            << scale << "]\n"
            << "set cbtics " << scale / 2 << " font 'sans,9'\n"
            << "set title '" << map.title << "' font 'sans,13'\n";
+    // The segments as data, (x, y, value) around each outline, two blank
+    // lines apart: a polygon object would have gnuplot parse each
+    // coordinate as an expression, two sigaction(2) calls apiece.
+    PlotData segments{"segments" + std::to_string(p), {}};
     for (size_t r = 0; r < regions.size() && r < map.values.size(); ++r) {
       const WallRegion& region = regions[r];
       const auto [begin, end] = BullseyeSpanDeg(region);
       const double inner = InnerRadius(region.level), outer = inner + 1.0;
       const int steps =
           std::max(2, static_cast<int>(std::ceil((end - begin) / kArcStepDeg)));
-      script << "set object polygon";
-      auto point = [&](double radius, double deg, const char* word) {
-        script << ' ' << word << ' '
-               << radius * std::cos(deg / kDegreesPerRadian) << ','
-               << radius * std::sin(deg / kDegreesPerRadian);
+      auto point = [&](double radius, double deg) {
+        segments.rows.push_back({radius * std::cos(deg / kDegreesPerRadian),
+                                 radius * std::sin(deg / kDegreesPerRadian),
+                                 map.values[r]});
       };
       for (int i = 0; i <= steps; ++i) {
-        point(outer, begin + (end - begin) * i / steps, i == 0 ? "from" : "to");
+        point(outer, begin + (end - begin) * i / steps);
       }
       for (int i = steps; i >= 0; --i) {
-        point(inner, begin + (end - begin) * i / steps, "to");
+        point(inner, begin + (end - begin) * i / steps);
       }
-      point(outer, begin, "to");
-      script << " fc palette cb " << map.values[r]
-             << " fs solid 1.0 border lc rgb '#404040' lw 1 front\n";
+      point(outer, begin);  // Closes the border line.
+      segments.rows.insert(segments.rows.end(), 2, std::vector<double>{});
       const double middle = (begin + end) / 2 / kDegreesPerRadian;
       const double radius = inner + 0.5;
       char value[32];
@@ -109,10 +112,21 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
               "'#777777'\n"
            << "set colorbox vertical user origin " << (p + 1.0) / panels - 0.035
            << ",0.18 size 0.012,0.6\n"
-           << "plot $centre using 1:2:3 with dots lc palette notitle\n";
+           << "plot ";
+    if (!segments.rows.empty()) {
+      // The border in a plot of its own: filledcurves draws it in the
+      // fill's colour.
+      script << '$' << segments.name
+             << " using 1:2:3 with filledcurves closed fillcolor palette"
+                " fs solid 1.0 noborder notitle, $"
+             << segments.name
+             << " using 1:2 with lines lc rgb '#404040' lw 1 notitle, ";
+      data.push_back(std::move(segments));
+    }
+    script << "$centre using 1:2:3 with dots lc palette notitle\n";
   }
   script << "unset multiplot\n";
-  return {"bullseye.svg", {centre}, script.str(), 400 * panels, 430};
+  return {"bullseye.svg", std::move(data), script.str(), 400 * panels, 430};
 }
 
 std::string BullseyeSvg(const std::vector<WallRegion>& regions,

@@ -45,8 +45,16 @@ TEST(BullseyePlotTest, PanelsLabelEverySegment) {
   EXPECT_EQ(CountOf(svg, ">8.0<"), 1);    // Rotation of segment 16.
   EXPECT_EQ(CountOf(svg, ">16<"), 2);     // Its number, once per panel.
   EXPECT_EQ(CountOf(svg, ">apex<"), 2);
-  // Segment borders: 16 per panel.
-  EXPECT_EQ(CountOf(svg, "stroke='rgb( 64,  64,  64)'"), 32);
+  // Segment borders: one path per panel, a closed outline (a move, M,
+  // then lines) for each of its 16 segments.
+  const std::string border = "stroke='rgb( 64,  64,  64)'";
+  EXPECT_EQ(CountOf(svg, border), 2);
+  int outlines = 0;
+  for (size_t at = svg.find(border); at != std::string::npos;
+       at = svg.find(border, at + 1)) {
+    outlines += CountOf(svg.substr(at, svg.find("/>", at) - at), "M");
+  }
+  EXPECT_EQ(outlines, 32);
   EXPECT_NE(svg.find("rgb(214,  96,  77)"), std::string::npos);
 }
 

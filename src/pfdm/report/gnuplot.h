@@ -29,17 +29,22 @@ struct SvgPlot {
 // throws InputError naming the plot that failed.
 std::vector<std::string> RenderSvgStrings(const std::vector<SvgPlot>& plots);
 
-// RenderSvgStrings in two halves: gnuplot starts here (throwing
-// InputError if it cannot) and renders while the caller does other work;
-// Finish waits for it and returns the SVGs or throws as RenderSvgStrings.
-// Destroyed unfinished, it waits for gnuplot, leaving no zombie behind.
+// RenderSvgStrings in three steps, so that gnuplot's start-up and its
+// rendering overlap the caller's work: gnuplot starts at construction
+// (throwing InputError if it cannot) and waits for its script on a pipe;
+// Render hands it the plots (once); Finish waits for it and returns the
+// SVGs or throws as RenderSvgStrings.  Destroyed unfinished, it ends
+// gnuplot's script and waits for it, leaving no zombie behind.
 class SvgRendering {
  public:
+  SvgRendering();
+  // SvgRendering() and Render(plots).
   explicit SvgRendering(const std::vector<SvgPlot>& plots);
   ~SvgRendering();
   SvgRendering(const SvgRendering&) = delete;
   SvgRendering& operator=(const SvgRendering&) = delete;
 
+  void Render(const std::vector<SvgPlot>& plots);
   std::vector<std::string> Finish();
 
  private:
@@ -53,11 +58,10 @@ std::string RenderSvgString(const SvgPlot& plot);
 
 // Runs `script` with the data blocks defined first and the terminal set to
 // SVG (width x height pixels), and returns the SVG.  gnuplot is started
-// without a shell, the script in an anonymous memory file (/dev/fd/3) and
-// the SVG on its standard output, so no file name of the caller's ever
-// reaches a shell or the script.
-// Throws InputError(what + ": gnuplot failed: <gnuplot's error>") if gnuplot
-// is missing or fails.
+// without a shell, the script on a pipe (/dev/fd/3) and the SVG on its
+// standard output (an anonymous memory file), so no file name of the caller's
+// ever reaches a shell or the script. Throws InputError(what + ": gnuplot
+// failed: <gnuplot's error>") if gnuplot is missing or fails.
 std::string RenderSvgString(const std::string& what,
                             const std::vector<PlotData>& data,
                             const std::string& script, int width = 900,

@@ -1,5 +1,7 @@
 #include "pfdm/report/gnuplot.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 
@@ -32,6 +34,35 @@ TEST(GnuplotTest, ScriptErrorsAreReportedInOneLineAndLeaveNoFile) {
                   "$missing");
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+// gnuplot gone before its script is all written: the error names the
+// plot, and the broken pipe does not end the caller's process.
+TEST(GnuplotTest, AGnuplotThatExitsEarlyIsAnErrorNotASignal) {
+  PlotData big{"big", std::vector<std::vector<double>>(
+                          400000, std::vector<double>{1.0, 2.0, 3.0})};
+  SvgRendering rendering;
+  rendering.Render({{"first.svg", {}, "exit", 400, 300},
+                    {"second.svg", {big}, "plot $big using 1:2", 400, 300}});
+  try {
+    rendering.Finish();
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("first.svg: gnuplot failed", 0),
+              0u)
+        << error.what();
+  }
+}
+
+// gnuplot may start long before it gets its plots.
+TEST(GnuplotTest, RendersPlotsHandedOverAfterItStarted) {
+  SvgRendering rendering;
+  usleep(50000);
+  rendering.Render(
+      {{"late.svg", {{"d", {{0, 1}, {1, 2}}}}, "plot $d", 300, 200}});
+  const std::vector<std::string> svgs = rendering.Finish();
+  ASSERT_EQ(svgs.size(), 1u);
+  EXPECT_NE(svgs[0].find("</svg>"), std::string::npos);
 }
 
 TEST(GnuplotTest, AllUndefinedDataNamesTheOutputNotAScript) {
@@ -95,7 +126,7 @@ TEST(GnuplotTest, RenderingRunsWhileTheCallerWorks) {
   const std::vector<std::string> svgs = rendering.Finish();
   ASSERT_EQ(svgs.size(), 2u);
   EXPECT_EQ(svgs[0], RenderSvgString(plot));
-  EXPECT_TRUE(SvgRendering({}).Finish().empty());
+  EXPECT_TRUE(SvgRendering(std::vector<SvgPlot>{}).Finish().empty());
 }
 
 TEST(GnuplotTest, AFailingPlotAmongSeveralIsNamed) {
@@ -109,7 +140,7 @@ TEST(GnuplotTest, AFailingPlotAmongSeveralIsNamed) {
   } catch (const InputError& error) {
     EXPECT_EQ(std::string(error.what()),
               // The line of the one script all the plots share.
-              "bad.svg: gnuplot failed: line 12: no datablock named $d");
+              "bad.svg: gnuplot failed: line 9: no datablock named $d");
   }
 }
 
