@@ -106,14 +106,23 @@ double Model::FunctionAt(int function, double u) const {
 }
 
 Eigen::Vector3d Model::ModelPoint(double u, double v, double w) const {
-  const FunctionValues f = FunctionsAt(u);
+  return ModelPointWith(FunctionsAt(u), u, v, w);
+}
+
+Eigen::Vector3d Model::WorldPoint(double u, double v, double w) const {
+  return WorldPointWith(FunctionsAt(u), u, v, w);
+}
+
+Eigen::Vector3d Model::ModelPointWith(const FunctionValues& f, double u,
+                                      double v, double w) const {
   return ReferenceShape(f.data(), MakeAngles(u, v), UnitExponents(), w) +
          state.local.Displacement(u, v);
 }
 
-Eigen::Vector3d Model::WorldPoint(double u, double v, double w) const {
+Eigen::Vector3d Model::WorldPointWith(const FunctionValues& f, double u,
+                                      double v, double w) const {
   return WorldFromModel(state.center.data(), state.quaternion.data(),
-                        ModelPoint(u, v, w));
+                        ModelPointWith(f, u, v, w));
 }
 
 namespace {

@@ -82,6 +82,11 @@ struct Model {
   Eigen::Vector3d ModelPoint(double u, double v, double w = 0.0) const;
   Eigen::Vector3d WorldPoint(double u, double v,
                              double w = 0.0) const;  // c + R p
+  // The same with f = FunctionsAt(u) given, which a ring's points share.
+  Eigen::Vector3d ModelPointWith(const FunctionValues& f, double u, double v,
+                                 double w = 0.0) const;
+  Eigen::Vector3d WorldPointWith(const FunctionValues& f, double u, double v,
+                                 double w = 0.0) const;
   // Rotation world_from_model.
   Eigen::Matrix3d Rotation() const;
 

@@ -1,6 +1,8 @@
 #include "pfdm/model/model_surface.h"
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 namespace pfdm {
 namespace {
@@ -10,6 +12,32 @@ constexpr double kPi = 3.14159265358979323846;
 // of the step, 0.07 % of a sphere's volume at this resolution.
 constexpr int kVolumeRings = 97;
 constexpr int kVolumeMeridians = 128;
+
+// Closes a MakeModelSurface mesh's open rings (the base rim; the apex
+// ring too when it is not a pole) with fans about their centroids, facing
+// outward as the surface does.  The rims are known from the layout: found
+// from the edges (CapBoundaryLoops) they cost more than the surface.
+TriangleMesh CapRims(ModelSurface surface, int meridians, bool apex_pole,
+                     bool top_pole) {
+  TriangleMesh mesh = std::move(surface.mesh);
+  const int n = static_cast<int>(mesh.points.size());
+  auto cap = [&](int first, bool reversed) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int j = 0; j < meridians; ++j) centroid += mesh.points[first + j];
+    const int c = static_cast<int>(mesh.points.size());
+    mesh.points.push_back(centroid / meridians);
+    for (int j = 0; j < meridians; ++j) {
+      const int a = first + j, b = first + (j + 1) % meridians;
+      mesh.triangles.push_back(reversed ? std::array<int, 3>{b, a, c}
+                                        : std::array<int, 3>{a, b, c});
+    }
+  };
+  // The surface runs j -> j + 1 along its first ring and back along its
+  // last: each lid runs the other way.
+  if (!apex_pole) cap(0, true);
+  if (!top_pole) cap(n - meridians, false);
+  return mesh;
+}
 
 }  // namespace
 
@@ -53,9 +81,12 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
 
 double CavityVolumeMl(const Model& model, const BasePlane* base, double w) {
   if (base == nullptr) {
-    const ModelSurface surface =
-        MakeModelSurface(model, kVolumeRings, kVolumeMeridians, {}, w);
-    return EnclosedVolume(CapBoundaryLoops(surface.mesh)) / 1000.0;
+    const auto pole = [](double u) { return std::abs(std::cos(u)) < 1e-9; };
+    return EnclosedVolume(CapRims(
+               MakeModelSurface(model, kVolumeRings, kVolumeMeridians, {}, w),
+               kVolumeMeridians, pole(model.config.u_min),
+               pole(model.config.u_max))) /
+           1000.0;
   }
   // Closed at both poles; twice the rings for twice the range of u.
   const ModelSurface closed =

@@ -53,6 +53,21 @@ TEST(ModelSurfaceTest, CappedEllipsoidMatchesTheAnalyticVolume) {
   EXPECT_NEAR(CavityVolumeMl(sphere), sphere_volume, 0.005 * sphere_volume);
 }
 
+// The rims closed from the layout are the boundary loops the edges give:
+// the same volume, with an apex pole and with an open apex ring.
+TEST(ModelSurfaceTest, TheVolumeClosesTheRimsTheEdgesFind) {
+  for (double u_min : {-kPi / 2, -1.2}) {
+    Model model = Ellipsoid();
+    model.config.u_min = u_min;
+    // model_surface.cc's volume resolution.
+    const ModelSurface surface = MakeModelSurface(model, 97, 128);
+    const double from_edges =
+        EnclosedVolume(CapBoundaryLoops(surface.mesh)) / 1000.0;
+    EXPECT_NEAR(CavityVolumeMl(model), from_edges, 1e-12 * from_edges)
+        << "u_min " << u_min;
+  }
+}
+
 TEST(ModelSurfaceTest, TwistOffsetsAndPoseKeepTheVolume) {
   // Twist turns and offsets shift each ring within its own plane, which
   // keeps every cross-section's area (Cavalieri); the pose moves it rigidly.

@@ -13,9 +13,10 @@ constexpr double kPi = 3.14159265358979323846;
 
 MaterialRing SampleRing(const Model& model, double u, int samples, double w) {
   MaterialRing ring;
+  const FunctionValues f = model.FunctionsAt(u);
   for (int j = 0; j < samples; ++j) {
     const double v = -kPi + 2.0 * kPi * (j + 0.5) / samples;
-    ring.points.push_back(model.WorldPoint(u, v, w));
+    ring.points.push_back(model.WorldPointWith(f, u, v, w));
     ring.centroid += ring.points.back();
   }
   ring.centroid /= samples;

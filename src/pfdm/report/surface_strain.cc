@@ -30,12 +30,26 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
   return {e(0, 0), e(1, 1), 0.5 * (e(0, 1) + e(1, 0))};
 }
 
+RingFunctions::RingFunctions(const Model& model, double u)
+    : u(u),
+      below(model.FunctionsAt(u - kStep)),
+      at(model.FunctionsAt(u)),
+      above(model.FunctionsAt(u + kStep)) {}
+
+void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
+                     Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
+  const double u = ring.u;
+  *xu = (model.WorldPointWith(ring.above, u + kStep, v) -
+         model.WorldPointWith(ring.below, u - kStep, v)) /
+        (2 * kStep);
+  *xv = (model.WorldPointWith(ring.at, u, v + kStep) -
+         model.WorldPointWith(ring.at, u, v - kStep)) /
+        (2 * kStep);
+}
+
 void SurfaceTangents(const Model& model, double u, double v,
                      Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
-  *xu = (model.WorldPoint(u + kStep, v) - model.WorldPoint(u - kStep, v)) /
-        (2 * kStep);
-  *xv = (model.WorldPoint(u, v + kStep) - model.WorldPoint(u, v - kStep)) /
-        (2 * kStep);
+  SurfaceTangents(model, RingFunctions(model, u), v, xu, xv);
 }
 
 SurfaceStrain StrainAt(const Model& reference, const Model& current, double u,

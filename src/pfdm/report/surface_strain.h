@@ -44,6 +44,16 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
 void SurfaceTangents(const Model& model, double u, double v,
                      Eigen::Vector3d* xu, Eigen::Vector3d* xv);
 
+// What SurfaceTangents needs of ring u's functions, for the ring's samples
+// to share.
+struct RingFunctions {
+  RingFunctions(const Model& model, double u);
+  double u;
+  FunctionValues below, at, above;  // At u - step, u, u + step.
+};
+void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
+                     Eigen::Vector3d* xu, Eigen::Vector3d* xv);
+
 SurfaceStrain StrainAt(const Model& reference, const Model& current, double u,
                        double v);
 

@@ -90,13 +90,14 @@ ReferenceSamples SampleReference(const Model& reference,
     const double u = std::asin(out.s_min + (out.s_max - out.s_min) * (i + 0.5) /
                                                kLatitudeSamples);
     const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
+    const RingFunctions ring(reference, u);
     for (int j = 0; j < kLongitudeSamples; ++j) {
       const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
       ReferenceSamples::Sample sample;
       sample.region = AssignRegion(reference, u, v, layout);
       sample.weight = AreaWeight(reference, u, v);
       sample.from = before.points[j] - before.centroid;
-      SurfaceTangents(reference, u, v, &sample.xu, &sample.xv);
+      SurfaceTangents(reference, ring, v, &sample.xu, &sample.xv);
       if (reference.config.Solid()) {
         sample.thickness = WallThickness(reference, u, v);
       }
@@ -117,6 +118,7 @@ std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
     const double u =
         std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudeSamples);
     const MaterialRing after = SampleRing(current, u, kLongitudeSamples);
+    const RingFunctions ring(current, u);
     const bool solid = current.config.Solid();
     for (int j = 0; j < kLongitudeSamples; ++j, ++sample) {
       const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
@@ -129,7 +131,7 @@ std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
       motion[r].radial_contraction_percent +=
           w * 100.0 * (1.0 - to.norm() / from.norm());
       Eigen::Vector3d xu, xv;
-      SurfaceTangents(current, u, v, &xu, &xv);
+      SurfaceTangents(current, ring, v, &xu, &xv);
       const SurfaceStrain strain =
           PlaneStrain(sample->xu, sample->xv, xu, xv, sample->xv, sample->xu);
       motion[r].ecc_percent += w * 100.0 * strain.ecc;
