@@ -94,6 +94,8 @@ void BM_FitFrame(benchmark::State& state) {
   const double iterations = std::max(frame.iterations, 1);
   const double per_iteration = frame.minimizer_seconds / iterations;
   state.counters["iterations"] = frame.iterations;
+  state.counters["jacobian_evaluations"] = frame.jacobian_evaluations;
+  state.counters["residual_evaluations"] = frame.residual_evaluations;
   state.counters["frame_ms"] = 1e3 * frame.solve_seconds;
   state.counters["setup_ms"] =
       1e3 * (frame.solve_seconds - frame.minimizer_seconds);

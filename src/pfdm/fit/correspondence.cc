@@ -8,6 +8,7 @@
 
 #include "Eigen/Dense"
 #include "ceres/jet.h"
+#include "glog/logging.h"
 #include "pfdm/model/shape_angle_derivative.h"
 #include "pfdm/util/point_cloud_tree.h"
 
@@ -225,14 +226,10 @@ template Eigen::Matrix<ceres::Jet<double, 2>, 3, 1> WorldPointAt(
 
 Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
                               double w) {
-  using Jet2 = ceres::Jet<double, 2>;
-  const Eigen::Matrix<Jet2, 3, 1> x =
-      WorldPointAt(model, Jet2(u, 0), Jet2(v, 1), w);
-  Eigen::Vector3d du, dv;
-  for (int i = 0; i < 3; ++i) {
-    du[i] = x[i].v[0];
-    dv[i] = x[i].v[1];
-  }
+  Eigen::Vector3d x;
+  Eigen::Matrix<double, 3, 2> tangents;
+  SurfacePoints(model, false).Evaluate(u, v, w, &x, &tangents);
+  const Eigen::Vector3d du = tangents.col(0), dv = tangents.col(1);
   // v turns counter-clockwise about +z and u runs up the axis, so
   // dv x du points out of the cavity, as the apex fallback does.
   const Eigen::Vector3d normal = dv.cross(du);
@@ -243,6 +240,7 @@ Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const CorrespondenceOptions& options) {
+  CHECK(options.hints.empty() || options.hints.size() == points.size());
   PointCloud cloud;
   std::vector<MaterialPoint> samples;
   cloud.points.reserve(kGridU * kGridV);
@@ -272,6 +270,13 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
       if (!options.surfaces.empty()) start.w = options.surfaces[i];
       if (nearest < static_cast<unsigned int>(kGridV)) {
         start.v = LongitudeAround(model, points[i], start.u);
+      }
+      if (!options.hints.empty() && options.hints[i].w == start.w &&
+          (WorldPointAt(model, options.hints[i].u, options.hints[i].v,
+                        start.w) -
+           points[i])
+                  .squaredNorm() <= distance_squared) {
+        start = options.hints[i];
       }
       result[i] = Refine(surface, model, points[i], start,
                          options.step_tolerance_mm, &range_evaluations);

@@ -38,6 +38,12 @@ struct CorrespondenceOptions {
   double step_tolerance_mm = 1e-8;
   // The surface w each point is sought on (empty: the mid-wall, w = 0).
   std::vector<double> surfaces;
+  // Where each point's search may start instead of the grid's nearest
+  // sample, when nearer than it and on the same surface: the material
+  // points of the round before (empty: none).  After a solve has moved the
+  // model a little, a point's old material point is a step or two from its
+  // new one, where the grid's sample is five or more.
+  std::vector<MaterialPoint> hints;
   // The same search with ceres::Jet derivatives, as before the closed-form
   // ones: slower, for tests and the benchmark's comparison; always for
   // points off the mid-wall (w != 0) and for a model with a local field,

@@ -63,12 +63,15 @@ double UpdateClosest(const Model& model,
                      const std::vector<Eigen::Vector3d>& points,
                      const std::vector<size_t>& which, int num_threads,
                      const std::vector<double>& layer_w,
-                     const std::vector<bool>& assign_depth,
+                     const std::vector<bool>& assign_depth, bool warm,
                      std::vector<MaterialPoint>* material) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
   CorrespondenceOptions correspondence;
   correspondence.num_threads = num_threads;
+  if (warm) {
+    for (size_t i : which) correspondence.hints.push_back((*material)[i]);
+  }
   std::vector<MaterialPoint> closest =
       ClosestMaterialPoints(model, subset, correspondence);
   if (model.config.Solid()) {
@@ -95,11 +98,13 @@ double UpdateClosest(const Model& model,
     CorrespondenceOptions on_surface = correspondence;
     on_surface.surfaces.clear();
     std::vector<Eigen::Vector3d> off_points;
+    on_surface.hints.clear();
     for (size_t j = 0; j < which.size(); ++j) {
       if (correspondence.surfaces[j] == 0.0) continue;
       off.push_back(j);
       off_points.push_back(subset[j]);
       on_surface.surfaces.push_back(correspondence.surfaces[j]);
+      if (warm) on_surface.hints.push_back((*material)[which[j]]);
     }
     const std::vector<MaterialPoint> refined =
         ClosestMaterialPoints(model, off_points, on_surface);
@@ -116,6 +121,51 @@ double UpdateClosest(const Model& model,
   }
   return moved;
 }
+
+// How far (mm) the model points of the listed points' material points lie
+// apart on `after` and on `before`.
+double MaxMoved(const Model& before, const Model& after,
+                const std::vector<size_t>& which,
+                const std::vector<MaterialPoint>& material) {
+  double moved = 0.0;
+  for (size_t i : which) {
+    const MaterialPoint& m = material[i];
+    moved = std::max(moved, (after.WorldPoint(m.u, m.v, m.w) -
+                             before.WorldPoint(m.u, m.v, m.w))
+                                .norm());
+  }
+  return moved;
+}
+
+void AddSolverCounts(const SolverReport& report, FrameFit* fit) {
+  fit->iterations += report.iterations;
+  fit->residual_evaluations += report.residual_evaluations;
+  fit->jacobian_evaluations += report.jacobian_evaluations;
+  fit->jacobian_seconds += report.jacobian_seconds;
+  fit->linear_solver_seconds += report.linear_solver_seconds;
+  fit->minimizer_seconds += report.minimizer_seconds;
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// The local field's contour rounds end when one lowers the field's cost by
+// less than this share: on biv-me's contours the cost falls 5 % in the
+// second round, then wanders within a percent for as many rounds as
+// allowed, points sliding back and forth along the surface by a millimetre
+// or two, never settling to the correspondence tolerance.
+constexpr double kMinLocalRoundGain = 0.01;
+
+// Frame 0 of at least twice this many points starts with a round on this
+// many of them (FitSequence).
+constexpr size_t kCoarsePoints = 4096;
+
+// A correspondence round's search is skipped as confirmation when the one
+// before moved no point by this many tolerances and the solve since moved
+// the surface little (FitSequence).
+constexpr double kConfirmBelow = 10.0;
 
 // Solves of a tracked frame of a solid, each after its tags were ranked:
 // the second changes thickening by under 0.1 point on the LV phantom, a
@@ -379,20 +429,51 @@ SequenceFit FitSequence(const PointSequence& sequence,
         assign_depth[i] = reference && frames_per_id[frame.points[i].id] > 1;
       }
     }
+    bool found_closest = false;  // Then searches start from the last.
     auto update_closest = [&]() {
       const auto closest_start = std::chrono::steady_clock::now();
       const double moved =
           UpdateClosest(model, points, unknown, options.solver.num_threads,
-                        layer_w, assign_depth, &fit.material);
+                        layer_w, assign_depth, found_closest, &fit.material);
+      found_closest = true;
       fit.correspondence_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                         closest_start)
               .count();
       return moved;
     };
-    update_closest();
     std::vector<bool> sliding(points.size(), false);
     for (size_t i : unknown) sliding[i] = true;
+    if (reference && unknown.size() >= 2 * kCoarsePoints) {
+      // Coarse to fine: a first round on every k-th point brings the
+      // initialized model to the data at a fraction of a round's cost, and
+      // the rounds on all points start from there (one round fewer).
+      std::vector<size_t> coarse;
+      const size_t stride = unknown.size() / kCoarsePoints;
+      for (size_t j = 0; j < unknown.size(); j += stride) {
+        coarse.push_back(unknown[j]);
+      }
+      const auto closest_start = std::chrono::steady_clock::now();
+      UpdateClosest(model, points, coarse, options.solver.num_threads, layer_w,
+                    assign_depth, false, &fit.material);
+      fit.correspondence_seconds += SecondsSince(closest_start);
+      std::vector<Eigen::Vector3d> coarse_points;
+      std::vector<MaterialPoint> coarse_material;
+      for (size_t i : coarse) {
+        coarse_points.push_back(points[i]);
+        coarse_material.push_back(fit.material[i]);
+      }
+      FitOptions coarse_options = options;
+      coarse_options.solver.on_step = nullptr;  // Not part of the path.
+      const SolverReport coarse_report =
+          SolveFrame(coarse_points, coarse_material,
+                     std::vector<bool>(coarse.size(), true), std::nullopt,
+                     FrameKind::kReference, prior, reference_quaternion,
+                     coarse_options, &model);
+      AddSolverCounts(coarse_report, &fit);
+      SpanAxialExtent(points, options, &model);
+    }
+    double moved = update_closest();
 
     const FrameKind kind = reference ? FrameKind::kReference
                            : unknown.size() == points.size()
@@ -430,16 +511,12 @@ SequenceFit FitSequence(const PointSequence& sequence,
                           last.pseudo_time + point.pseudo_time);
           };
         }
+        const Model before_solve = model;
         report =
             SolveFrame(points, fit.material, sliding, rim_height, kind,
                        kind == FrameKind::kUntracked ? reference_state : prior,
                        reference_quaternion, round_options, &model);
-        fit.iterations += report.iterations;
-        fit.residual_evaluations += report.residual_evaluations;
-        fit.jacobian_evaluations += report.jacobian_evaluations;
-        fit.jacobian_seconds += report.jacobian_seconds;
-        fit.linear_solver_seconds += report.linear_solver_seconds;
-        fit.minimizer_seconds += report.minimizer_seconds;
+        AddSolverCounts(report, &fit);
         ++fit.correspondence_rounds;
         for (SolverTracePoint point : report.trace) {
           point.iteration += last.iteration + 1;
@@ -464,7 +541,17 @@ SequenceFit FitSequence(const PointSequence& sequence,
         }
         if (unknown.empty()) break;
         if (reference) SpanAxialExtent(points, options, &model);
-        if (update_closest() < options.correspondence_tolerance_mm) break;
+        // Near convergence, how far the solve moved the surface under the
+        // points bounds how far their closest points can move (about that
+        // far, the points being close to a gently curved surface): under
+        // half the tolerance, the search that would confirm it is skipped.
+        if (moved < kConfirmBelow * options.correspondence_tolerance_mm &&
+            MaxMoved(before_solve, model, unknown, fit.material) <
+                0.5 * options.correspondence_tolerance_mm) {
+          break;
+        }
+        moved = update_closest();
+        if (moved < options.correspondence_tolerance_mm) break;
       }
     };
     solve_rounds();
@@ -498,7 +585,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
         if (options.wall == WallModel::kSolid) {
           result.wall_reason += " (--wall solid)";
         }
-        update_closest();
+        moved = update_closest();
         solve_rounds();
       } else if (!report.converged) {
         result.wall_reason +=
@@ -539,6 +626,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
         local_sliding[i] = true;
       }
       const auto local_start = std::chrono::steady_clock::now();
+      double last_cost = std::numeric_limits<double>::infinity();
       for (int round = 0; round < options.max_correspondence_rounds; ++round) {
         const SolverReport local =
             FitLocalField(points, fit.material, local_sliding, options, &model);
@@ -548,13 +636,17 @@ SequenceFit FitSequence(const PointSequence& sequence,
               sequence.source + ": frame " + std::to_string(frame.index) +
               ": local deformations: solver failed: " + local.message);
         }
-        if (contour.empty() ||
+        const double cost = local.trace.empty() ? 0.0 : local.trace.back().cost;
+        const bool stalled = cost > (1.0 - kMinLocalRoundGain) * last_cost;
+        last_cost = cost;
+        if (contour.empty()) break;
+        // Stalled or not, the contours' material points are then the
+        // closest on the final model, as their distances are reported.
+        const double moved =
             UpdateClosest(model, points, contour, options.solver.num_threads,
                           layer_w, std::vector<bool>(points.size(), false),
-                          &fit.material) <
-                options.correspondence_tolerance_mm) {
-          break;
-        }
+                          /*warm=*/true, &fit.material);
+        if (stalled || moved < options.correspondence_tolerance_mm) break;
       }
       fit.local_seconds = std::chrono::duration<double>(
                               std::chrono::steady_clock::now() - local_start)

@@ -1,5 +1,6 @@
 #include "pfdm/fit/frame_problem.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -101,6 +102,10 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   const bool analytic = options.jacobian == JacobianKind::kAnalytic;
   const size_t group_size = loss == nullptr ? kPointsPerGroup : 1;
   std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
+  const size_t group_capacity = std::min(group_size, points.size());
+  if (analytic) {
+    for (auto& group : groups) group.reserve(group_capacity);
+  }
   auto add_group = [&](int k0) {
     const std::array<const FreeEntries*, 3> entries = {
         blocks.entries(kGlobalsBlock), blocks.entries(k0),
@@ -112,7 +117,8 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                                               unit_exponents, entries, varied),
                        loss, true, {kGlobalsBlock, k0, k0 + 1},
                        FrameBlocks::Takes::kProblemBlocks);
-    groups[k0].clear();
+    groups[k0] = {};
+    groups[k0].reserve(group_capacity);
   };
   for (size_t i = 0; i < points.size(); ++i) {
     const KnotSpan span = grid.Span(material[i].u);

@@ -34,16 +34,17 @@ ceres::CostFunction* MakeLinearNodeCost(const RowMajorMatrix& rows) {
   return new LinearNodeCost(rows.col(rows.cols() - 1), std::move(blocks));
 }
 
-RowMajorMatrix LocalPointRows(const Eigen::Vector3d& global_point,
-                              const Eigen::Matrix3d& rotation,
-                              const ShapeWeights& shape,
-                              const Eigen::Vector3d& data,
-                              const Eigen::Vector3d* normal) {
-  const Eigen::MatrixXd projection =
-      normal != nullptr ? Eigen::MatrixXd(normal->transpose())
-                        : Eigen::MatrixXd(Eigen::Matrix3d::Identity());
-  RowMajorMatrix rows(projection.rows(), 3 * shape.count + 1);
-  const Eigen::MatrixXd moved = projection * rotation;
+LocalRows LocalPointRows(const Eigen::Vector3d& global_point,
+                         const Eigen::Matrix3d& rotation,
+                         const ShapeWeights& shape, const Eigen::Vector3d& data,
+                         const Eigen::Vector3d* normal) {
+  using Projection =
+      Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor, 3, 3>;
+  const Projection projection = normal != nullptr
+                                    ? Projection(normal->transpose())
+                                    : Projection(Eigen::Matrix3d::Identity());
+  LocalRows rows(projection.rows(), 3 * shape.count + 1);
+  const Projection moved = projection * rotation;
   for (int k = 0; k < shape.count; ++k) {
     rows.middleCols<3>(3 * k) = shape.weight[k] * moved;
   }

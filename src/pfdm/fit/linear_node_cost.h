@@ -52,11 +52,13 @@ ceres::CostFunction* MakeLinearNodeCost(const RowMajorMatrix& rows);
 // The rows [S_0 P R .. S_{count-1} P R  P (x_g - data)] of a data point's
 // cost below (P = I, or n^T with a normal), for stacking the points of one
 // element into one residual block in square-root form (local_fit.cc).
-RowMajorMatrix LocalPointRows(const Eigen::Vector3d& global_point,
-                              const Eigen::Matrix3d& rotation,
-                              const ShapeWeights& shape,
-                              const Eigen::Vector3d& data,
-                              const Eigen::Vector3d* normal);
+// At most 3 rows of 4 nodes' columns and the residual's, off the heap.
+using LocalRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
+                                Eigen::RowMajor, 3, 13>;
+LocalRows LocalPointRows(const Eigen::Vector3d& global_point,
+                         const Eigen::Matrix3d& rotation,
+                         const ShapeWeights& shape, const Eigen::Vector3d& data,
+                         const Eigen::Vector3d* normal);
 
 // r = sqrt_weight sum_k c_k q_k (3 rows): a finite difference of the nodal
 // vectors (membrane: c = (1, -1); thin plate: (1, -2, 1) or the mixed

@@ -122,53 +122,67 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   // form (square_root_form.h): the residual is linear in q_d, so its
   // n + 1 rows give the same cost as the points' own rows for every q_d,
   // and Ceres handles one block per element instead of one per point.
-  std::vector<std::vector<RowMajorMatrix>> element_rows((grid.rows - 1) *
-                                                        grid.cols);
-  std::vector<ShapeWeights> element_shape(element_rows.size());
+  // Each element sums its points' Gram matrices as they come, keeping
+  // their indices to stack their rows where it has too few for the form.
+  const int num_elements = (grid.rows - 1) * grid.cols;
+  std::vector<Eigen::MatrixXd> element_gram(num_elements);
+  std::vector<int> element_rows(num_elements, 0);
+  std::vector<std::vector<size_t>> element_points(num_elements);
+  std::vector<ShapeWeights> element_shape(num_elements);
   const Eigen::Matrix3d rotation = model->Rotation();
-  for (size_t i = 0; i < points.size(); ++i) {
+  auto point_rows = [&](size_t i) {
     const double u = material[i].u, v = material[i].v, w = material[i].w;
-    const LocalElement element = ElementAt(grid, u, v);
-    const int e = element.row * grid.cols + element.col;
     const ShapeWeights shape = ShapeAt(grid, u, v);
-    element_shape[e] = shape;
     // d moves every surface of a solid alike.
     const Eigen::Vector3d global = model->WorldPoint(u, v, w);
     if (sliding[i] && u < config.u_max) {
       const Eigen::Vector3d normal = SurfaceNormal(*model, u, v, w);
-      element_rows[e].push_back(
-          LocalPointRows(global, rotation, shape, points[i], &normal));
-    } else {
-      element_rows[e].push_back(
-          LocalPointRows(global, rotation, shape, points[i], nullptr));
+      return LocalPointRows(global, rotation, shape, points[i], &normal);
     }
+    return LocalPointRows(global, rotation, shape, points[i], nullptr);
+  };
+  for (size_t i = 0; i < points.size(); ++i) {
+    const LocalElement element = ElementAt(grid, material[i].u, material[i].v);
+    const int e = element.row * grid.cols + element.col;
+    element_shape[e] = ShapeAt(grid, material[i].u, material[i].v);
+    const LocalRows rows = point_rows(i);
+    if (element_gram[e].size() == 0) {
+      element_gram[e] = Eigen::MatrixXd::Zero(rows.cols(), rows.cols());
+    }
+    element_gram[e].noalias() += rows.transpose() * rows;
+    element_rows[e] += static_cast<int>(rows.rows());
+    element_points[e].push_back(i);
   }
   ceres::Problem problem;
-  for (size_t e = 0; e < element_rows.size(); ++e) {
-    if (element_rows[e].empty()) continue;
+  for (int e = 0; e < num_elements; ++e) {
+    if (element_points[e].empty()) continue;
     const ShapeWeights& shape = element_shape[e];
     std::vector<double*> nodes;
     for (int k = 0; k < shape.count; ++k) {
       nodes.push_back(&field.values[3 * shape.node[k]]);
     }
-    int height = 0;
-    for (const RowMajorMatrix& rows : element_rows[e]) height += rows.rows();
-    RowMajorMatrix stacked(height, 3 * shape.count + 1);
-    height = 0;
-    for (const RowMajorMatrix& rows : element_rows[e]) {
-      stacked.middleRows(height, rows.rows()) = rows;
-      height += rows.rows();
+    const auto stacked = [&] {
+      RowMajorMatrix rows(element_rows[e], 3 * shape.count + 1);
+      int height = 0;
+      for (size_t i : element_points[e]) {
+        const LocalRows point = point_rows(i);
+        rows.middleRows(height, point.rows()) = point;
+        height += static_cast<int>(point.rows());
+      }
+      return rows;
+    };
+    const int n = 3 * shape.count;
+    if (element_rows[e] <= n + 1) {
+      problem.AddResidualBlock(MakeLinearNodeCost(stacked()), nullptr, nodes);
+      continue;
     }
-    if (stacked.rows() > stacked.cols()) {
-      const SquareRootForm form = ToSquareRootForm(stacked);
-      const int n = static_cast<int>(form.r.cols());
-      RowMajorMatrix square = RowMajorMatrix::Zero(n + 1, n + 1);
-      square.topLeftCorner(n, n) = form.r;
-      square.col(n).head(n) = form.z;
-      square(n, n) = form.rho;
-      stacked = std::move(square);
-    }
-    problem.AddResidualBlock(MakeLinearNodeCost(stacked), nullptr, nodes);
+    const SquareRootForm form =
+        SquareRootFormFromGram(std::move(element_gram[e]), stacked);
+    RowMajorMatrix square = RowMajorMatrix::Zero(n + 1, n + 1);
+    square.topLeftCorner(n, n) = form.r;
+    square.col(n).head(n) = form.z;
+    square(n, n) = form.rho;
+    problem.AddResidualBlock(MakeLinearNodeCost(square), nullptr, nodes);
   }
   AddLocalRegularizer(*model, static_cast<int>(points.size()),
                       options.local.stiffness, &field, &problem);
@@ -176,6 +190,7 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   SolverOptions solver = options.solver;
   solver.on_step = nullptr;
   solver.damping_scale.clear();
+  solver.linear = true;
   const SolverReport report = SolveProblem(&problem, solver);
   model->state.local = std::move(field);
   return report;

@@ -8,6 +8,12 @@
 #include "pfdm/util/point_cloud_tree.h"
 
 namespace pfdm {
+namespace {
+
+// Tags whose neighbour WallSpreadMm compares, at most.
+constexpr size_t kMaxSpreadPairs = 4096;
+
+}  // namespace
 
 WallModel WallModelFromName(const std::string& name) {
   if (name == "auto") return WallModel::kAuto;
@@ -52,8 +58,14 @@ double WallSpreadMm(const Model& model,
   }
   PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
+  // The mean over at most kMaxSpreadPairs tags' pairs (every stride-th)
+  // estimates the mean over all to about 1 % (one in sqrt(2 x 4096)),
+  // plenty for a threshold, at a tenth of the queries of 50,000 tags.
+  const size_t stride =
+      (material.size() + kMaxSpreadPairs - 1) / kMaxSpreadPairs;
   double sum_squared = 0.0;
-  for (size_t i = 0; i < material.size(); ++i) {
+  size_t pairs = 0;
+  for (size_t i = 0; i < material.size(); i += stride, ++pairs) {
     unsigned int nearest[2];
     double distance_squared[2];
     tree.knnSearch(cloud.points[i].data(), 2, nearest, distance_squared);
@@ -61,7 +73,7 @@ double WallSpreadMm(const Model& model,
     sum_squared +=
         (distances[i] - distances[j]) * (distances[i] - distances[j]);
   }
-  return std::sqrt(6.0 * sum_squared / material.size());
+  return std::sqrt(6.0 * sum_squared / pairs);
 }
 
 std::vector<double> QuantileDepths(const std::vector<double>& u,

@@ -38,7 +38,8 @@ std::vector<double> MidwallDistances(
 // thickness h and about 2.4 sigma for points on one surface with noise of
 // sigma mm.  Neighbours, not the plain spread, so that where the surface
 // misses a shape (a valve, an outflow tract) its points, which all miss it
-// alike, do not read as a wall.
+// alike, do not read as a wall.  The mean is over every k-th point's pair,
+// at most 4,096 of them.
 double WallSpreadMm(const Model& model,
                     const std::vector<MaterialPoint>& material,
                     const std::vector<double>& distances);

@@ -97,6 +97,11 @@ SolverReport SolveDirect(ceres::Problem* problem,
   // active, and a step past one is clipped to it all the same.
   solver_options.max_num_line_search_step_size_iterations = 0;
   solver_options.logging_type = ceres::SILENT;
+  if (options.linear) {
+    solver_options.max_num_iterations = 1;
+    solver_options.initial_trust_region_radius =
+        solver_options.max_trust_region_radius;
+  }
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem, &summary);
   observer.RethrowError();
@@ -107,6 +112,11 @@ SolverReport SolveDirect(ceres::Problem* problem,
       summary.IsSolutionUsable() && summary.termination_type != ceres::FAILURE;
   report.converged = summary.termination_type == ceres::CONVERGENCE;
   report.termination = ceres::TerminationTypeToString(summary.termination_type);
+  if (options.linear && report.usable && summary.iterations.size() == 2 &&
+      summary.iterations.back().step_is_successful) {
+    report.converged = true;  // One exact step is the whole solve.
+    report.termination = ceres::TerminationTypeToString(ceres::CONVERGENCE);
+  }
   report.message = summary.message;
   report.residual_evaluations = summary.num_residual_evaluations;
   report.jacobian_evaluations = summary.num_jacobian_evaluations;
