@@ -14,6 +14,7 @@
 #include "pfdm/model/model_surface.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/gnuplot.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
 #include "pybind11/stl.h"
@@ -503,8 +504,9 @@ void BindFit(py::module_& m) {
             const VtkFormat format = VtkFormatFromName(vtk_format);
             py::gil_scoped_release release;
             CheckFitOutputFolder(dir, r.points.source);
-            WriteFitOutputs(dir, r.points, r.fit, r.options, r.base_planes,
-                            format);
+            SvgRendering plots;
+            WriteFitOutputs(dir, r.points, r.fit, r.analysis, r.options, format,
+                            &plots);
           },
           py::arg("out"), py::kw_only(),
           py::arg("vtk_format") = FitSettings().vtk_format,

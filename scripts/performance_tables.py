@@ -199,16 +199,21 @@ def job_table(document, batch):
                                   number(b["frame0_correspondence_ms"])),
                      "%s (%s)" % (number(b["tracked_ms"]),
                                   number(b["tracked_minimizer_ms"])),
+                     number(b.get("analysis_ms", float("nan"))),
                      number(b["outputs_ms"]),
                      "%.1f" % b["frame0_x_tracked"],
                      "%.0f %%" % (100 * b["outputs_share"]),
                      "%.0f %%" % (100 * b.get("outputs_cpu_share",
-                                               float("nan")))])
+                                               float("nan"))),
+                     "%.0f %%" % (100 * (b["outputs_ms"] +
+                                         b.get("analysis_ms", 0.0)) /
+                                  b["job_ms"])])
     text = table(["case", "threads", "job ms", "read ms",
                   "frame 0 ms (closest points)",
-                  "later frame ms (minimizer)", "outputs ms",
+                  "later frame ms (minimizer)", "analysis ms", "outputs ms",
                   "frame 0 / later frame", "outputs share",
-                  "outputs share of CPU time"], rows)
+                  "outputs share of CPU time",
+                  "analysis and outputs share"], rows)
     if closest:
         text += ("\n\nFrame 0's first closest-point search alone (20,000 "
                  "tags against the initialized model):\n\n")

@@ -15,6 +15,7 @@
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/point_source.h"
 #include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/gnuplot.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
 
@@ -78,9 +79,11 @@ std::string RunCase(const BatchCase& c, const std::string& out,
     const PointSequence points =
         ReadPoints(c.points, FLAGS_format,
                    c.contours.empty() ? FLAGS_contours : c.contours);
+    SvgRendering plots;  // gnuplot loads while the case is fitted.
     const SequenceFit fit = FitSequence(points, config, options);
-    WriteFitOutputs(dir, points, fit, options, BasePlanesFromFlags(c.points),
-                    VtkFormatFromFlags());
+    WriteFitOutputs(dir, points, fit,
+                    AnalyzeFit(fit, BasePlanesFromFlags(c.points)), options,
+                    VtkFormatFromFlags(), &plots);
     fs::remove(dir + "/error.txt");
   } catch (const std::exception& error) {
     // The case's error stays beside its (absent) outputs for the summary of

@@ -3,6 +3,8 @@
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/gnuplot.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -16,11 +18,14 @@ int RunFit() {
   // Before the minutes of work, not after them.
   CheckFitOutputFolder(FLAGS_out, FLAGS_points);
   const PointSequence points = PointsFromFlags();
+  // gnuplot loads while the frames are fitted.
+  SvgRendering plots;
   const SequenceFit fit = FitSequence(points, config, options);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
-  WriteFitOutputs(FLAGS_out, points, fit, options,
-                  BasePlanesFromFlags(FLAGS_points), vtk_format);
+  WriteFitOutputs(FLAGS_out, points, fit,
+                  AnalyzeFit(fit, BasePlanesFromFlags(FLAGS_points)), options,
+                  vtk_format, &plots);
   for (const FrameFit& frame : fit.frames) {
     std::printf("frame %3d  points %5zu  rms %.3f mm  max %.3f mm  %s\n",
                 frame.frame, frame.residuals.size(), frame.rms_mm,

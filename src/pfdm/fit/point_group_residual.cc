@@ -64,16 +64,19 @@ void ForEachShape(const std::vector<PointSample>& samples,
 // one matrix product each.
 class MomentSums {
  public:
-  MomentSums(int m, int num_rest)
-      : m_(m),
+  // The rest's first `plain` columns are only ever read summed with weight
+  // 1 and the others only with weights a and b (plain < 0: every column
+  // with all three), and are summed so.
+  MomentSums(int m, int num_rest, int plain = -1)
+      : plain_(plain),
+        m_(m),
         num_dd_(m * (m + 1) / 2),
         num_rest_(num_rest),
         dd_start_(m),
         dd_(kBatch, num_dd_),
         rest_(kBatch, num_rest),
-        dd_sums_(Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_dd_)),
-        rest_sums_(
-            Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, num_rest)) {
+        dd_sums_(Sums::Zero(3, num_dd_)),
+        rest_sums_(Sums::Zero(3, num_rest)) {
     for (int j = 0, at = 0; j < m; at += m - j, ++j) dd_start_[j] = at - j;
   }
 
@@ -103,11 +106,16 @@ class MomentSums {
     if (++in_batch_ == kBatch) Flush();
   }
 
+  // Plain loops, not a matrix product: for a 3-row result Eigen's product
+  // spent more on packing its operands than on the multiply-adds.
   void Flush() {
-    dd_sums_.noalias() +=
-        dd_weights_.topRows(in_batch_).transpose() * dd_.topRows(in_batch_);
-    rest_sums_.noalias() +=
-        rest_weights_.topRows(in_batch_).transpose() * rest_.topRows(in_batch_);
+    AddWeighted(dd_weights_, dd_, 0, num_dd_, 0, 3, &dd_sums_);
+    if (plain_ < 0) {
+      AddWeighted(rest_weights_, rest_, 0, num_rest_, 0, 3, &rest_sums_);
+    } else {
+      AddWeighted(rest_weights_, rest_, 0, plain_, 0, 1, &rest_sums_);
+      AddWeighted(rest_weights_, rest_, plain_, num_rest_, 1, 2, &rest_sums_);
+    }
     in_batch_ = 0;
   }
 
@@ -130,11 +138,43 @@ class MomentSums {
 
  private:
   static constexpr int kBatch = 32;
-  const int m_, num_dd_, num_rest_;
+  using Sums = Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor>;
+
+  // Over the batch's points p and columns j in [begin, end): sums(k, j) +=
+  // weights(p, k) rows(p, j) for the weights k in [first, first + count).
+  void AddWeighted(const Eigen::Matrix<double, kBatch, 3>& weights,
+                   const RowMajorMatrix& rows, int begin, int end, int first,
+                   int count, Sums* sums) const {
+    const int n = static_cast<int>(rows.cols());
+    double* s[3];
+    for (int k = 0; k < count; ++k) s[k] = sums->row(first + k).data();
+    for (int p = 0; p < in_batch_; ++p) {
+      const double* x = rows.data() + static_cast<size_t>(p) * n;
+      double w[3];
+      for (int k = 0; k < count; ++k) w[k] = weights(p, first + k);
+      // One loop per count, so that each vectorizes.
+      if (count == 3) {
+        for (int j = begin; j < end; ++j) {
+          s[0][j] += w[0] * x[j];
+          s[1][j] += w[1] * x[j];
+          s[2][j] += w[2] * x[j];
+        }
+      } else if (count == 2) {
+        for (int j = begin; j < end; ++j) {
+          s[0][j] += w[0] * x[j];
+          s[1][j] += w[1] * x[j];
+        }
+      } else {
+        for (int j = begin; j < end; ++j) s[0][j] += w[0] * x[j];
+      }
+    }
+  }
+
+  const int plain_, m_, num_dd_, num_rest_;
   std::vector<int> dd_start_;
   RowMajorMatrix dd_, rest_;
   Eigen::Matrix<double, kBatch, 3> dd_weights_, rest_weights_;
-  Eigen::Matrix<double, 3, Eigen::Dynamic> dd_sums_, rest_sums_;
+  Sums dd_sums_, rest_sums_;
   int in_batch_ = 0;
 };
 
@@ -380,7 +420,7 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
   // [D, s_a D for a = 0..2, D^T r] (weights a and b are used), D row major.
   constexpr int kOne = 0, kS = 1, kR = 4, kSS = 7, kSR = 16, kRR = 25;
   const int d_at = 26, sd_at = d_at + 3 * m, dr_at = sd_at + 9 * m;
-  MomentSums sums(m, dr_at + m);
+  MomentSums sums(m, dr_at + m, d_at);
   auto add_point = [&](int i, const Eigen::Vector3d& s,
                        const ShapeJacobian& ds) {
     const PointSample& sample = samples_[i];

@@ -524,17 +524,24 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
                      const std::vector<BasePlane>& base_planes,
                      VtkFormat vtk_format) {
+  // gnuplot starts while the fit is analysed.
+  SvgRendering plots;
+  WriteFitOutputs(dir, points, fit, AnalyzeFit(fit, base_planes), options,
+                  vtk_format, &plots);
+}
+
+void WriteFitOutputs(const std::string& dir, const PointSequence& points,
+                     const SequenceFit& fit, const FitAnalysis& analysis,
+                     const FitOptions& options, VtkFormat vtk_format,
+                     SvgRendering* plots) {
   // Everything is rendered before the first file is written, so a failure
   // (gnuplot missing, say) leaves no partial set behind.  One gnuplot for
   // the four plots (its start-up, not the plotting, was most of their
-  // time), starting while the fit is analysed and rendering while the
-  // other files are formatted.
-  SvgRendering plots;
-  const FitAnalysis analysis = AnalyzeFit(fit, base_planes);
-  plots.Render({ParameterPlots(analysis.models),
-                CycleCurves(analysis.clinical, analysis.volume_surface),
-                StrainCurves(analysis.strain),
-                Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
+  // time), rendering while the other files are formatted.
+  plots->Render({ParameterPlots(analysis.models),
+                 CycleCurves(analysis.clinical, analysis.volume_surface),
+                 StrainCurves(analysis.strain),
+                 Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::pair<std::string, std::string>> files;
   files.emplace_back("parameters.csv", ParametersCsv(analysis.models));
   std::vector<std::pair<double, std::string>> timesteps;
@@ -552,7 +559,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
   }
   files.emplace_back("fit.pvd", PvdCollection(timesteps));
   std::string json = FitJson(points, fit, options, analysis);
-  const std::vector<std::string> svgs = plots.Finish();
+  const std::vector<std::string> svgs = plots->Finish();
   files.emplace_back("parameters.svg", svgs[0]);
   files.emplace_back(
       "report.html",

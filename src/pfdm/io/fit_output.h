@@ -10,6 +10,7 @@
 #include "pfdm/io/vtk_writer.h"
 #include "pfdm/model/model.h"
 #include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/gnuplot.h"
 #include "pfdm/util/point_data.h"
 
 namespace pfdm {
@@ -68,6 +69,15 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
                      const std::vector<BasePlane>& base_planes = {},
                      VtkFormat vtk_format = VtkFormat::kBinary);
+
+// The same from the fit's analysis, made by the caller, with the plots
+// rendered by `plots`, which the caller started (its Render not called):
+// started before the fit, gnuplot's start-up (tens of ms, loading its
+// libraries) overlaps the fit instead of adding to the outputs.
+void WriteFitOutputs(const std::string& dir, const PointSequence& points,
+                     const SequenceFit& fit, const FitAnalysis& analysis,
+                     const FitOptions& options, VtkFormat vtk_format,
+                     SvgRendering* plots);
 
 }  // namespace pfdm
 

@@ -76,6 +76,8 @@ struct Model {
   bool UnitExponents() const;
   double FunctionAt(int function, double u) const;
   FunctionValues FunctionsAt(double u) const;
+  // d/du of FunctionsAt within u's knot span (0 for functions not free).
+  FunctionValues FunctionSlopesAt(double u) const;
   // p = s + d, model frame: the global shape and the local displacement, on
   // surface w (-1 endocardium, 0 mid-wall, +1 epicardium: transmural.h;
   // d moves every surface alike).

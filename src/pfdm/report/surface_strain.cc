@@ -1,15 +1,11 @@
 #include "pfdm/report/surface_strain.h"
 
 #include "Eigen/Dense"
+#include "ceres/jet.h"
+#include "pfdm/model/local_field.h"
+#include "pfdm/model/shape_angle_derivative.h"
 
 namespace pfdm {
-namespace {
-
-// Step in u and v: small against the knot spacing (about 0.13 for 17
-// knots), large against rounding (positions ~ 100 mm, 1e-16 relative).
-constexpr double kStep = 1e-5;
-
-}  // namespace
 
 SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
                           const Eigen::Vector3d& a, const Eigen::Vector3d& b,
@@ -31,20 +27,24 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
 }
 
 RingFunctions::RingFunctions(const Model& model, double u)
-    : u(u),
-      below(model.FunctionsAt(u - kStep)),
-      at(model.FunctionsAt(u)),
-      above(model.FunctionsAt(u + kStep)) {}
+    : u(u), at(model.FunctionsAt(u)), slopes(model.FunctionSlopesAt(u)) {}
 
 void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
                      Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
-  const double u = ring.u;
-  *xu = (model.WorldPointWith(ring.above, u + kStep, v) -
-         model.WorldPointWith(ring.below, u - kStep, v)) /
-        (2 * kStep);
-  *xv = (model.WorldPointWith(ring.at, u, v + kStep) -
-         model.WorldPointWith(ring.at, u, v - kStep)) /
-        (2 * kStep);
+  using Jet2 = ceres::Jet<double, 2>;
+  const ShapeAndAngleDerivatives shape =
+      ShapeAngleDerivatives(ring.at.data(), ring.slopes.data(),
+                            MakeAngles(ring.u, v), model.UnitExponents());
+  const Eigen::Matrix<Jet2, 3, 1> local =
+      LocalDisplacement(model.state.local, Jet2(ring.u, 0), Jet2(v, 1));
+  Eigen::Vector3d local_u, local_v;
+  for (int i = 0; i < 3; ++i) {
+    local_u[i] = local[i].v[0];
+    local_v[i] = local[i].v[1];
+  }
+  const Eigen::Matrix3d rotation = model.Rotation();
+  *xu = rotation * (shape.d_u + local_u);
+  *xv = rotation * (shape.d_v + local_v);
 }
 
 void SurfaceTangents(const Model& model, double u, double v,

@@ -35,12 +35,14 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
                           const Eigen::Vector3d& longitudinal);
 
 // The strain at material point (u, v) of `current` against `reference`
-// (frame 0): tangents X_u, X_v by central differences of WorldPoint;
+// (frame 0): tangents X_u, X_v (SurfaceTangents);
 // e_c along X_v (v counter-clockwise about the model's +z), e_l toward
 // increasing u, from the apex to the base.  Not defined at the apex pole,
 // where X_v vanishes.
-// The world-frame tangents dx/du, dx/dv at (u, v) by central differences,
-// as StrainAt takes them.
+// The world-frame tangents dx/du, dx/dv at (u, v) of the mid-wall, as
+// StrainAt takes them: the global shape's in closed form
+// (ShapeAngleDerivatives), the local field's through ceres::Jet.  On a
+// knot, or on an edge of the local field's elements, one side's slopes.
 void SurfaceTangents(const Model& model, double u, double v,
                      Eigen::Vector3d* xu, Eigen::Vector3d* xv);
 
@@ -49,7 +51,7 @@ void SurfaceTangents(const Model& model, double u, double v,
 struct RingFunctions {
   RingFunctions(const Model& model, double u);
   double u;
-  FunctionValues below, at, above;  // At u - step, u, u + step.
+  FunctionValues at, slopes;  // FunctionsAt(u), FunctionSlopesAt(u).
 };
 void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
                      Eigen::Vector3d* xu, Eigen::Vector3d* xv);

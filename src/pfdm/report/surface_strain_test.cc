@@ -15,8 +15,49 @@ Model Sphere(double radius_fraction) {
   return Model::Uniform(ModelConfig::Paper(17), values);
 }
 
-// Central differences of a piecewise-linear model: 1e-8 is their error.
 constexpr double kTolerance = 1e-7;
+
+// The closed-form tangents are the central differences of WorldPoint, on a
+// model with every kind of motion: functions varying along u, bends, a
+// local field and a pose.  Away from knots and element edges, where the
+// difference would straddle two slopes.
+TEST(SurfaceStrainTest, TangentsAreTheDerivativesOfTheWorldPoint) {
+  Model model = Sphere(0.7);
+  const int k = model.config.num_knots;
+  for (int i = 0; i < k; ++i) {
+    model.state.knots[i][kA1] = 0.6 + 0.01 * i;
+    model.state.knots[i][kTau] = 0.02 * i - 0.1;
+    model.state.knots[i][kE1o] = 2.0 * std::sin(i);
+  }
+  model.state.globals[kB0] = 0.05;
+  model.state.center = {3.0, -4.0, 5.0};
+  model.state.quaternion = {0.9, 0.1, -0.3, 0.2};
+  const double norm = Eigen::Vector4d(0.9, 0.1, -0.3, 0.2).norm();
+  for (double& q : model.state.quaternion) q /= norm;
+  LocalGrid grid;
+  grid.rows = 5;
+  grid.cols = 8;
+  grid.u_min = model.config.u_min;
+  grid.u_max = model.config.u_max;
+  model.state.local = LocalField::Zero(grid);
+  for (size_t i = 0; i < model.state.local.values.size(); ++i) {
+    model.state.local.values[i] = std::sin(1.7 * i);
+  }
+  const double h = 1e-6;
+  for (double u : {-1.23, -0.41, 0.07, 0.43}) {
+    const RingFunctions ring(model, u);
+    for (double v : {-2.93, 0.31, 1.77}) {
+      Eigen::Vector3d xu, xv;
+      SurfaceTangents(model, ring, v, &xu, &xv);
+      const Eigen::Vector3d du =
+          (model.WorldPoint(u + h, v) - model.WorldPoint(u - h, v)) / (2 * h);
+      const Eigen::Vector3d dv =
+          (model.WorldPoint(u, v + h) - model.WorldPoint(u, v - h)) / (2 * h);
+      EXPECT_LT((xu - du).norm(), 1e-6 * du.norm()) << u << " " << v;
+      EXPECT_LT((xv - dv).norm(), 1e-6 * dv.norm()) << u << " " << v;
+    }
+  }
+}
 
 TEST(SurfaceStrainTest, ScalingASphereStrainsBothWaysAlike) {
   const Model reference = Sphere(0.8);
