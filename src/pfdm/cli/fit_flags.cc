@@ -39,8 +39,9 @@ DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
 DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
 DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
-              "Ceres linear solver, e.g. SPARSE_NORMAL_CHOLESKY, "
-              "DENSE_NORMAL_CHOLESKY, DENSE_QR");
+              "Ceres linear solver of the global functions' solve, e.g. "
+              "SPARSE_NORMAL_CHOLESKY, DENSE_NORMAL_CHOLESKY, DENSE_QR (the "
+              "local field's is SPARSE_NORMAL_CHOLESKY)");
 DEFINE_double(time_step, kDefaults.time_step,
               "damped and integrator: pseudo-time step, 1e-6 to 1e12; 0 = "
               "default (integrator: 0.9 of its stability bound, damped: "
