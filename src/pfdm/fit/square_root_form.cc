@@ -62,10 +62,9 @@ SquareRootForm SquareRootFormFromGram(
   const double squared_norm = gram(n, n);
   const double rho_squared = squared_norm - form.z.squaredNorm();
   if (rho_squared < -kRoundingSlack * squared_norm) return FromQr(rows());
-  const Eigen::MatrixXd upper = ldlt.matrixU();
-  const Eigen::MatrixXd p =
-      ldlt.transpositionsP() * Eigen::MatrixXd::Identity(n, n);
-  form.r = root_d.asDiagonal() * upper * p;
+  // The permutation as column swaps, not a product with its matrix.
+  form.r = root_d.asDiagonal() * Eigen::MatrixXd(ldlt.matrixU());
+  form.r = form.r * ldlt.transpositionsP().transpose();
   form.rho = std::sqrt(std::max(rho_squared, 0.0));
   return form;
 }
