@@ -166,9 +166,9 @@ def cost_table(document):
              "BM_Analytic/1": "one point, analytic Jacobian",
              "BM_Autodiff/0": "one point, residual only (autodiff functor)",
              "BM_Autodiff/1": "one point, autodiff Jacobian",
-             "BM_PointGroup/0": "512-point group, residual only",
-             "BM_PointGroup/1": "512-point group, knots varied",
-             "BM_PointGroup/2": "512-point group, knots and pose varied"}
+             "BM_PointGroup/0": "1,024-point group, residual only",
+             "BM_PointGroup/1": "1,024-point group, knots varied",
+             "BM_PointGroup/2": "1,024-point group, knots and pose varied"}
     rows = []
     for key, b in medians(document).items():
         if key in names:
