@@ -115,10 +115,12 @@ class SurfacePoints {
 // evaluation, and is left out while J^T J + S is not positive definite.
 // Every evaluation brings its derivatives, so an accepted trial point is
 // the next step's linearization, and a step shorter than step_tolerance_mm
-// ends the search before it is evaluated.
+// ends the search before it is evaluated.  The model point found goes to
+// *best_point.
 MaterialPoint Refine(const SurfacePoints& surface, const Model& model,
                      const Eigen::Vector3d& target, MaterialPoint start,
-                     double step_tolerance_mm, std::int64_t* evaluations) {
+                     double step_tolerance_mm, std::int64_t* evaluations,
+                     Eigen::Vector3d* best_point) {
   MaterialPoint best = start;
   Eigen::Vector3d point;
   Eigen::Matrix<double, 3, 2> jacobian;
@@ -178,6 +180,7 @@ MaterialPoint Refine(const SurfacePoints& surface, const Model& model,
     // Converged, or no step along the gradient lowers the distance.
     if (converged || !improved) break;
   }
+  *best_point = target + residual;
   return best;
 }
 
@@ -239,8 +242,10 @@ Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
 
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
-    const CorrespondenceOptions& options) {
+    const CorrespondenceOptions& options,
+    std::vector<Eigen::Vector3d>* model_points) {
   CHECK(options.hints.empty() || options.hints.size() == points.size());
+  if (model_points != nullptr) model_points->resize(points.size());
   PointCloud cloud;
   std::vector<MaterialPoint> samples;
   cloud.points.reserve(kGridU * kGridV);
@@ -278,8 +283,10 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
                   .squaredNorm() <= distance_squared) {
         start = options.hints[i];
       }
+      Eigen::Vector3d found;
       result[i] = Refine(surface, model, points[i], start,
-                         options.step_tolerance_mm, &range_evaluations);
+                         options.step_tolerance_mm, &range_evaluations, &found);
+      if (model_points != nullptr) (*model_points)[i] = found;
     }
     evaluations += range_evaluations;
   };

@@ -58,10 +58,12 @@ struct CorrespondenceOptions {
 // on its surface w is nearest: the nearest sample of a (u, v) grid of the
 // mid-wall, then a few damped Newton steps on |x(u, v, w) - p|^2 with the
 // surface's derivatives (in closed form on the mid-wall of a model without
-// a local field) and its curvature learnt from the steps.
+// a local field) and its curvature learnt from the steps.  model_points,
+// when given, receives their model points.
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
-    const CorrespondenceOptions& options = {});
+    const CorrespondenceOptions& options = {},
+    std::vector<Eigen::Vector3d>* model_points = nullptr);
 
 }  // namespace pfdm
 

@@ -72,8 +72,9 @@ double UpdateClosest(const Model& model,
   if (warm) {
     for (size_t i : which) correspondence.hints.push_back((*material)[i]);
   }
+  std::vector<Eigen::Vector3d> found;
   std::vector<MaterialPoint> closest =
-      ClosestMaterialPoints(model, subset, correspondence);
+      ClosestMaterialPoints(model, subset, correspondence, &found);
   if (model.config.Solid()) {
     std::vector<size_t> tags;
     std::vector<Eigen::Vector3d> tag_points;
@@ -106,17 +107,20 @@ double UpdateClosest(const Model& model,
       on_surface.surfaces.push_back(correspondence.surfaces[j]);
       if (warm) on_surface.hints.push_back((*material)[which[j]]);
     }
+    std::vector<Eigen::Vector3d> found_off;
     const std::vector<MaterialPoint> refined =
-        ClosestMaterialPoints(model, off_points, on_surface);
-    for (size_t k = 0; k < off.size(); ++k) closest[off[k]] = refined[k];
+        ClosestMaterialPoints(model, off_points, on_surface, &found_off);
+    for (size_t k = 0; k < off.size(); ++k) {
+      closest[off[k]] = refined[k];
+      found[off[k]] = found_off[k];
+    }
   }
   double moved = 0.0;
   for (size_t j = 0; j < which.size(); ++j) {
     MaterialPoint& old = (*material)[which[j]];
     const MaterialPoint& now = closest[j];
-    moved = std::max(moved, (model.WorldPoint(now.u, now.v, now.w) -
-                             model.WorldPoint(old.u, old.v, old.w))
-                                .norm());
+    moved = std::max(moved,
+                     (found[j] - model.WorldPoint(old.u, old.v, old.w)).norm());
     old = now;
   }
   return moved;
