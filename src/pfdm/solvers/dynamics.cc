@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "ceres/crs_matrix.h"
@@ -48,10 +49,25 @@ struct State {
   int tangent_size = 0;
 };
 
+// The varied blocks in the order the residuals name them.  Not
+// GetParameterBlocks's order, which is by address: the integrator's sums
+// then ran in an order the allocator chose, and its rest test, which can
+// fire on a plateau, fell either way (a 2,000-tag frame after other fits in
+// one process rested at 3,367 steps, 1.2 % above the direct solve's RMS;
+// alone it ran its 10,000).
 State FreeBlocks(const ceres::Problem& problem) {
   State state;
+  std::vector<ceres::ResidualBlockId> residuals;
+  problem.GetResidualBlocks(&residuals);
   std::vector<double*> all;
-  problem.GetParameterBlocks(&all);
+  std::unordered_set<double*> seen;
+  for (const ceres::ResidualBlockId residual : residuals) {
+    std::vector<double*> blocks;
+    problem.GetParameterBlocksForResidualBlock(residual, &blocks);
+    for (double* block : blocks) {
+      if (seen.insert(block).second) all.push_back(block);
+    }
+  }
   for (double* block : all) {
     if (problem.IsParameterBlockConstant(block)) continue;
     state.blocks.push_back(block);

@@ -280,6 +280,48 @@ TEST(IntegratorTest, ScaledAndUnitDampingRestAtTheMinimum) {
   }
 }
 
+// Linear's residuals with x0 and x1 in blocks of their own.
+struct LinearInTwoBlocks {
+  template <typename T>
+  bool operator()(const T* x0, const T* x1, T* r) const {
+    const T x[2] = {x0[0], x1[0]};
+    return Linear()(x, r);
+  }
+};
+
+// The integrator's path is the same wherever the blocks lie in memory:
+// their order comes from the residuals, not from their addresses.
+TEST(IntegratorTest, ThePathDoesNotDependOnWhereTheBlocksLie) {
+  std::vector<double> path[2];
+  double ends[2][2];
+  for (int layout = 0; layout < 2; ++layout) {
+    double memory[2] = {0.0, 0.0};
+    // Layout 0 puts x0 first in memory, layout 1 x1.
+    double* x0 = &memory[layout];
+    double* x1 = &memory[1 - layout];
+    *x0 = 5.0;
+    *x1 = -3.0;
+    ceres::Problem problem;
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<LinearInTwoBlocks, 3, 1, 1>(
+            new LinearInTwoBlocks),
+        nullptr, x0, x1);
+    SolverOptions options;
+    options.kind = SolverKind::kIntegrator;
+    options.damping = DampingKind::kUnit;
+    options.on_step = [&](const SolverTracePoint& point) {
+      path[layout].push_back(point.cost);
+    };
+    SolveProblem(&problem, options);
+    ends[layout][0] = *x0;
+    ends[layout][1] = *x1;
+  }
+  ASSERT_GT(path[0].size(), 10u);
+  EXPECT_EQ(path[0], path[1]);  // Bit for bit.
+  EXPECT_EQ(ends[0][0], ends[1][0]);
+  EXPECT_EQ(ends[0][1], ends[1][1]);
+}
+
 TEST(IntegratorTest, BadDampingScalesAreRefused) {
   const std::vector<std::vector<double>> bad = {
       {1.0}, {1.0, 0.0}, {1.0, -2.0}, {std::nan(""), 1.0}};
