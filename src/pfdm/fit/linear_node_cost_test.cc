@@ -25,15 +25,7 @@ Model PosedModelWithField() {
   model.state.quaternion = {std::cos(half), std::sin(half) * axis.x(),
                             std::sin(half) * axis.y(),
                             std::sin(half) * axis.z()};
-  LocalGrid grid;
-  grid.rows = 5;
-  grid.cols = 8;
-  grid.u_min = model.config.u_min;
-  grid.u_max = model.config.u_max;
-  model.state.local = LocalField::Zero(grid);
-  for (size_t i = 0; i < model.state.local.values.size(); ++i) {
-    model.state.local.values[i] = std::sin(1.7 * i) * 2.0;
-  }
+  AddTestLocalField(2.0, &model);
   return model;
 }
 

@@ -4,6 +4,7 @@
 
 #include "Eigen/Geometry"
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
@@ -34,15 +35,7 @@ TEST(SurfaceStrainTest, TangentsAreTheDerivativesOfTheWorldPoint) {
   model.state.quaternion = {0.9, 0.1, -0.3, 0.2};
   const double norm = Eigen::Vector4d(0.9, 0.1, -0.3, 0.2).norm();
   for (double& q : model.state.quaternion) q /= norm;
-  LocalGrid grid;
-  grid.rows = 5;
-  grid.cols = 8;
-  grid.u_min = model.config.u_min;
-  grid.u_max = model.config.u_max;
-  model.state.local = LocalField::Zero(grid);
-  for (size_t i = 0; i < model.state.local.values.size(); ++i) {
-    model.state.local.values[i] = std::sin(1.7 * i);
-  }
+  AddTestLocalField(1.0, &model);
   const double h = 1e-6;
   for (double u : {-1.23, -0.41, 0.07, 0.43}) {
     const RingFunctions ring(model, u);

@@ -2,6 +2,9 @@
 #ifndef PFDM_TESTING_TEST_MODELS_H_
 #define PFDM_TESTING_TEST_MODELS_H_
 
+#include <cmath>
+
+#include "pfdm/model/local_field.h"
 #include "pfdm/model/model.h"
 
 namespace pfdm {
@@ -15,6 +18,20 @@ inline Model TestSpheroid(int num_knots) {
   values[kA1] = values[kA2] = 0.5;
   values[kA3] = 0.8;
   return Model::Uniform(ModelConfig::Paper(num_knots), values);
+}
+
+// Gives the model a local field of 5 x 8 nodes over its u range, node
+// values amplitude sin(1.7 i) mm: uneven, nowhere zero by accident.
+inline void AddTestLocalField(double amplitude, Model* model) {
+  LocalGrid grid;
+  grid.rows = 5;
+  grid.cols = 8;
+  grid.u_min = model->config.u_min;
+  grid.u_max = model->config.u_max;
+  model->state.local = LocalField::Zero(grid);
+  for (size_t i = 0; i < model->state.local.values.size(); ++i) {
+    model->state.local.values[i] = amplitude * std::sin(1.7 * i);
+  }
 }
 
 }  // namespace pfdm
