@@ -440,10 +440,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
           UpdateClosest(model, points, unknown, options.solver.num_threads,
                         layer_w, assign_depth, found_closest, &fit.material);
       found_closest = true;
-      fit.correspondence_seconds +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                        closest_start)
-              .count();
+      fit.correspondence_seconds += SecondsSince(closest_start);
       return moved;
     };
     std::vector<bool> sliding(points.size(), false);
@@ -646,11 +643,13 @@ SequenceFit FitSequence(const PointSequence& sequence,
         if (contour.empty()) break;
         // Stalled or not, the contours' material points are then the
         // closest on the final model, as their distances are reported.
-        const double moved =
+        const double contour_moved =
             UpdateClosest(model, points, contour, options.solver.num_threads,
                           layer_w, std::vector<bool>(points.size(), false),
                           /*warm=*/true, &fit.material);
-        if (stalled || moved < options.correspondence_tolerance_mm) break;
+        if (stalled || contour_moved < options.correspondence_tolerance_mm) {
+          break;
+        }
       }
       fit.local_seconds = std::chrono::duration<double>(
                               std::chrono::steady_clock::now() - local_start)
