@@ -76,17 +76,13 @@ class SurfacePoints {
     const double width = grid_.KnotU(k1) - grid_.KnotU(span.k0);
     const double weight =
         config.num_knots == 1 ? 0.0 : (u - grid_.KnotU(span.k0)) / width;
-    const FunctionValues& knot0 = model_.state.knots[span.k0];
-    const FunctionValues& knot1 = model_.state.knots[k1];
-    double f[kNumFunctions], df_du[kNumFunctions];
-    for (int i = 0; i < kNumFunctions; ++i) {
-      if ((free_mask_ >> i) & 1u) {
-        f[i] = (1.0 - weight) * knot0[i] + weight * knot1[i];
-        df_du[i] = config.num_knots == 1 ? 0.0 : (knot1[i] - knot0[i]) / width;
-      } else {
-        f[i] = model_.state.globals[i];
-        df_du[i] = 0.0;
-      }
+    const double* knot0 = model_.state.knots[span.k0].data();
+    const double* knot1 = model_.state.knots[k1].data();
+    double f[kNumFunctions], df_du[kNumFunctions] = {};
+    InterpolateFunctions(free_mask_, model_.state.globals.data(), knot0, knot1,
+                         weight, f);
+    if (config.num_knots > 1) {
+      InterpolateFunctionSlopes(free_mask_, knot0, knot1, width, df_du);
     }
     const ShapeAndAngleDerivatives shape =
         ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents_);

@@ -106,14 +106,10 @@ FunctionValues Model::FunctionSlopesAt(double u) const {
   if (config.num_knots < 2) return slopes;
   const KnotGrid& grid = config.Grid();
   const KnotSpan span = grid.Span(u);
-  const int k1 = std::min(span.k0 + 1, config.num_knots - 1);
-  const double width = grid.KnotU(k1) - grid.KnotU(span.k0);
-  const FunctionMask free = config.FreeMask();
-  for (int f = 0; f < kNumFunctions; ++f) {
-    if ((free >> f) & 1u) {
-      slopes[f] = (state.knots[k1][f] - state.knots[span.k0][f]) / width;
-    }
-  }
+  const int k1 = span.k0 + 1;
+  InterpolateFunctionSlopes(
+      config.FreeMask(), state.knots[span.k0].data(), state.knots[k1].data(),
+      grid.KnotU(k1) - grid.KnotU(span.k0), slopes.data());
   return slopes;
 }
 

@@ -31,6 +31,16 @@ void InterpolateFunctions(FunctionMask free_mask, const T* globals,
   }
 }
 
+// d f / du of InterpolateFunctions within a knot span `width` long in u:
+// (knot1 - knot0) / width for the free functions, 0 for the others.
+inline void InterpolateFunctionSlopes(FunctionMask free_mask,
+                                      const double* knot0, const double* knot1,
+                                      double width, double* slopes) {
+  for (int i = 0; i < kNumFunctions; ++i) {
+    slopes[i] = (free_mask >> i) & 1u ? (knot1[i] - knot0[i]) / width : 0.0;
+  }
+}
+
 // The point of surface w (transmural.h; 0: the mid-wall).  The bend's ring
 // mean is the mid-wall ring's on every surface.
 template <typename T, typename A>

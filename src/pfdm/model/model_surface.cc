@@ -13,6 +13,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kVolumeRings = 97;
 constexpr int kVolumeMeridians = 128;
 
+// A ring at u is the apex (or top) pole, one vertex.
+bool IsPole(double u) { return std::abs(std::cos(u)) < 1e-9; }
+
 // Closes a MakeModelSurface mesh's open rings (the base rim; the apex
 // ring too when it is not a pole) with fans about their centroids, facing
 // outward as the surface does.  The rims are known from the layout: found
@@ -57,7 +60,7 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
   std::vector<bool> pole(rings);
   for (int i = 0; i < rings; ++i) {
     const double u = u_min + (u_max - u_min) * i / (rings - 1);
-    pole[i] = std::abs(std::cos(u)) < 1e-9;
+    pole[i] = IsPole(u);
     first[i] = static_cast<int>(surface.mesh.points.size());
     for (int j = 0; j < (pole[i] ? 1 : meridians); ++j) {
       add(u, -kPi + 2.0 * kPi * j / meridians);
@@ -81,11 +84,10 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
 
 double CavityVolumeMl(const Model& model, const BasePlane* base, double w) {
   if (base == nullptr) {
-    const auto pole = [](double u) { return std::abs(std::cos(u)) < 1e-9; };
     return EnclosedVolume(CapRims(
                MakeModelSurface(model, kVolumeRings, kVolumeMeridians, {}, w),
-               kVolumeMeridians, pole(model.config.u_min),
-               pole(model.config.u_max))) /
+               kVolumeMeridians, IsPole(model.config.u_min),
+               IsPole(model.config.u_max))) /
            1000.0;
   }
   // Closed at both poles; twice the rings for twice the range of u.
