@@ -27,13 +27,25 @@ FrameBlocks::FrameBlocks(FrameKind kind, Model* model, ceres::Problem* problem)
 void FrameBlocks::AddResidual(ceres::CostFunction* cost,
                               ceres::LossFunction* loss, bool with_pose,
                               const std::vector<int>& blocks, Takes takes) {
-  std::vector<double*> parameters;
-  std::vector<const FreeEntries*> entries;
-  bool compact = false;
+  std::vector<double*> pose;
   if (with_pose) {
-    parameters = {model_->state.center.data(), model_->state.quaternion.data()};
-    entries = {nullptr, nullptr};
+    pose = {model_->state.center.data(), model_->state.quaternion.data()};
   }
+  Add(cost, loss, pose, blocks, takes);
+}
+
+void FrameBlocks::AddResidual(ceres::CostFunction* cost,
+                              const std::vector<double*>& own,
+                              const std::vector<int>& blocks) {
+  Add(cost, nullptr, own, blocks, Takes::kWholeBlocks);
+}
+
+void FrameBlocks::Add(ceres::CostFunction* cost, ceres::LossFunction* loss,
+                      const std::vector<double*>& leading,
+                      const std::vector<int>& blocks, Takes takes) {
+  std::vector<double*> parameters = leading;
+  std::vector<const FreeEntries*> entries(leading.size(), nullptr);
+  bool compact = false;
   for (int b : blocks) {
     const Block& block = blocks_[b + 1];
     parameters.push_back(block.parameters);

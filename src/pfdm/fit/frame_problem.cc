@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "ceres/ceres.h"
+#include "pfdm/fit/axis_gauge_chain.h"
 #include "pfdm/fit/correspondence.h"
 #include "pfdm/fit/data_cost.h"
 #include "pfdm/fit/frame_blocks.h"
@@ -184,13 +186,26 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
           nullptr, false, {k, k + 1});
     }
   }
+  std::optional<AxisGaugeChain> axis_gauge;
   if (config.modes[kE1o] == FunctionMode::kFree) {
-    std::vector<int> knots;
-    for (int k = 0; k < config.num_knots; ++k) knots.push_back(k);
-    blocks.AddResidual(
-        new AxisGaugeResidual(config.num_knots,
-                              kGaugeWeight * std::sqrt(points.size())),
-        nullptr, false, knots);
+    const double sqrt_weight = kGaugeWeight * std::sqrt(points.size());
+    if (options.solver.kind == SolverKind::kDirect) {
+      std::vector<const double*> knots;
+      for (const FunctionValues& knot : model->state.knots) {
+        knots.push_back(knot.data());
+      }
+      axis_gauge.emplace(knots, sqrt_weight);
+      for (int k = 0; k < config.num_knots; ++k) {
+        blocks.AddResidual(axis_gauge->Link(k), axis_gauge->LinkSums(k), {k});
+      }
+      problem.AddResidualBlock(axis_gauge->End(), nullptr,
+                               axis_gauge->sum(config.num_knots - 1));
+    } else {
+      std::vector<int> knots;
+      for (int k = 0; k < config.num_knots; ++k) knots.push_back(k);
+      blocks.AddResidual(new AxisGaugeResidual(config.num_knots, sqrt_weight),
+                         nullptr, false, knots);
+    }
   }
   const double prior_weight = kind == FrameKind::kUntracked
                                   ? options.untracked_prior_weight

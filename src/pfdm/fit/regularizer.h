@@ -72,11 +72,33 @@ class PriorResidual {
   FunctionValues prior_;
 };
 
+// Knot k's term of AxisGaugeResidual's r (below), (m e1o_k, m e2o_k, t e1o_k,
+// t e2o_k): its mean coefficient m = sqrt(w) / K and trend coefficient
+// t = sqrt(w) c_k / K.
+struct AxisGaugeCoefficients {
+  AxisGaugeCoefficients(int k, int num_knots, double sqrt_weight)
+      : mean(sqrt_weight / num_knots),
+        trend(sqrt_weight * (k - 0.5 * (num_knots - 1)) / num_knots) {}
+  // The term for knot values `knot` (a whole block).
+  void Term(const double* knot, double* term) const {
+    term[0] = mean * knot[kE1o];
+    term[1] = mean * knot[kE2o];
+    term[2] = trend * knot[kE1o];
+    term[3] = trend * knot[kE2o];
+  }
+  // d term / d knot, 4 x kNumFunctions row major, scaled by `scale`.
+  void Jacobian(double scale, double* jacobian) const;
+
+  double mean, trend;
+};
+
 // r = sqrt(w) (sum_k e1o_k, sum_k e2o_k, sum_k c_k e1o_k, sum_k c_k e2o_k)
 // / K with c_k = k - (K - 1) / 2, over the K knot blocks: zero when the
 // ring centres scatter about the model axis with no mean and no linear
 // trend, i.e. the axis is their least-squares line.  A strong weight makes
 // it the frame-0 gauge that lets the pose alone carry the axis.
+// AxisGaugeChain (axis_gauge_chain.h) is the same penalty with a sparse
+// J^T J.
 class AxisGaugeResidual : public ceres::CostFunction {
  public:
   AxisGaugeResidual(int num_knots, double sqrt_weight);
@@ -84,8 +106,7 @@ class AxisGaugeResidual : public ceres::CostFunction {
                 double** jacobians) const override;
 
  private:
-  std::vector<double> mean_coefficients_;
-  std::vector<double> trend_coefficients_;
+  std::vector<AxisGaugeCoefficients> coefficients_;
 };
 
 }  // namespace pfdm

@@ -49,6 +49,10 @@ SolverReport SolveProblem(ceres::Problem* problem,
 
 namespace {
 
+// The direct solve's first trust-region radius: LM damping of 1e-8 of the
+// scaled diagonal (see SolveDirect).
+constexpr double kInitialTrustRegionRadius = 1e8;
+
 // Hands each iteration to SolverOptions::on_step with the parameter blocks
 // at that iterate.  What on_step throws must not unwind through Ceres: it
 // is kept, the solve aborted, and rethrown after it.
@@ -97,6 +101,15 @@ SolverReport SolveDirect(ceres::Problem* problem,
   // active, and a step past one is clipped to it all the same.
   solver_options.max_num_line_search_step_size_iterations = 0;
   solver_options.logging_type = ceres::SILENT;
+  // Nearly undamped Gauss-Newton steps from the start (Ceres' default
+  // radius, 1e4, damps by 1e-4 of the scaled diagonal).  A fit starts near
+  // its minimum (the previous frame's fit, or the previous correspondence
+  // round's) where the steps' quality ratio is 1.00; the default damping
+  // held back the softest directions (the ring centres' gauge, the partial
+  // sums of AxisGaugeChain) for five more iterations, or stopped the solve
+  // on the function tolerance short of the minimum.  A step that overshoots
+  // is rejected and the radius shrinks as before.
+  solver_options.initial_trust_region_radius = kInitialTrustRegionRadius;
   if (options.linear) {
     solver_options.max_num_iterations = 1;
     solver_options.initial_trust_region_radius =
