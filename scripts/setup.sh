@@ -2,7 +2,7 @@
 # Installs pfdm's Debian dependencies (when missing) and builds Release into build/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-packages=(cmake g++ make libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
+packages=(cmake g++ make libceres-dev liblapack-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libfccp-dev libnanoflann-dev
   libjemalloc-dev gnuplot-nox pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
 missing=()

@@ -24,25 +24,29 @@ FrameBlocks::FrameBlocks(FrameKind kind, Model* model, ceres::Problem* problem)
   }
 }
 
-void FrameBlocks::AddResidual(ceres::CostFunction* cost,
-                              ceres::LossFunction* loss, bool with_pose,
-                              const std::vector<int>& blocks, Takes takes) {
+ceres::ResidualBlockId FrameBlocks::AddResidual(ceres::CostFunction* cost,
+                                                ceres::LossFunction* loss,
+                                                bool with_pose,
+                                                const std::vector<int>& blocks,
+                                                Takes takes) {
   std::vector<double*> pose;
   if (with_pose) {
     pose = {model_->state.center.data(), model_->state.quaternion.data()};
   }
-  Add(cost, loss, pose, blocks, takes);
+  return Add(cost, loss, pose, blocks, takes);
 }
 
-void FrameBlocks::AddResidual(ceres::CostFunction* cost,
-                              const std::vector<double*>& own,
-                              const std::vector<int>& blocks) {
-  Add(cost, nullptr, own, blocks, Takes::kWholeBlocks);
+ceres::ResidualBlockId FrameBlocks::AddResidual(
+    ceres::CostFunction* cost, const std::vector<double*>& own,
+    const std::vector<int>& blocks) {
+  return Add(cost, nullptr, own, blocks, Takes::kWholeBlocks);
 }
 
-void FrameBlocks::Add(ceres::CostFunction* cost, ceres::LossFunction* loss,
-                      const std::vector<double*>& leading,
-                      const std::vector<int>& blocks, Takes takes) {
+ceres::ResidualBlockId FrameBlocks::Add(ceres::CostFunction* cost,
+                                        ceres::LossFunction* loss,
+                                        const std::vector<double*>& leading,
+                                        const std::vector<int>& blocks,
+                                        Takes takes) {
   std::vector<double*> parameters = leading;
   std::vector<const FreeEntries*> entries(leading.size(), nullptr);
   bool compact = false;
@@ -55,7 +59,7 @@ void FrameBlocks::Add(ceres::CostFunction* cost, ceres::LossFunction* loss,
   if (compact && takes == Takes::kWholeBlocks) {
     cost = new FreeEntriesCost(cost, std::move(entries));
   }
-  problem_->AddResidualBlock(cost, loss, parameters);
+  return problem_->AddResidualBlock(cost, loss, parameters);
 }
 
 void FrameBlocks::Store() const {

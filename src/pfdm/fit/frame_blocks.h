@@ -30,13 +30,15 @@ class FrameBlocks {
   // each as the problem holds it.  A cost over whole blocks is wrapped in
   // FreeEntriesCost; one that takes the blocks as they are says so.
   enum class Takes { kWholeBlocks, kProblemBlocks };
-  void AddResidual(ceres::CostFunction* cost, ceres::LossFunction* loss,
-                   bool with_pose, const std::vector<int>& blocks,
-                   Takes takes = Takes::kWholeBlocks);
+  ceres::ResidualBlockId AddResidual(ceres::CostFunction* cost,
+                                     ceres::LossFunction* loss, bool with_pose,
+                                     const std::vector<int>& blocks,
+                                     Takes takes = Takes::kWholeBlocks);
   // As AddResidual without the pose, over the caller's own parameter blocks
   // `own` (passed as they are) and then the listed blocks (whole).
-  void AddResidual(ceres::CostFunction* cost, const std::vector<double*>& own,
-                   const std::vector<int>& blocks);
+  ceres::ResidualBlockId AddResidual(ceres::CostFunction* cost,
+                                     const std::vector<double*>& own,
+                                     const std::vector<int>& blocks);
 
   // Calls f(parameter block, its free functions) for each free block.
   template <typename F>
@@ -57,9 +59,10 @@ class FrameBlocks {
 
   void Add(double* values, const std::vector<int>& held);
   // `cost` over `leading` (passed through) and then the listed blocks.
-  void Add(ceres::CostFunction* cost, ceres::LossFunction* loss,
-           const std::vector<double*>& leading, const std::vector<int>& blocks,
-           Takes takes);
+  ceres::ResidualBlockId Add(ceres::CostFunction* cost,
+                             ceres::LossFunction* loss,
+                             const std::vector<double*>& leading,
+                             const std::vector<int>& blocks, Takes takes);
 
   Model* model_;
   ceres::Problem* problem_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,6 +16,7 @@
 #include "pfdm/fit/meridian_gauge_residual.h"
 #include "pfdm/fit/point_group_residual.h"
 #include "pfdm/fit/point_residual.h"
+#include "pfdm/fit/precomputed_groups.h"
 #include "pfdm/fit/regularizer.h"
 #include "pfdm/fit/spin_gauge_residual.h"
 #include "pfdm/util/error.h"
@@ -93,17 +95,25 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const FitOptions& options, Model* model) {
   const ModelConfig& config = model->config;
   const KnotGrid grid = config.Grid();
-  ceres::Problem problem;
+  // Analytic points go into PointGroupResidual blocks, which take the
+  // problem's blocks as they are: many points between the same two knots,
+  // or one each when every point carries its own robust loss.  With
+  // threads, those are evaluated ahead of Ceres (precomputed_groups.h).
+  const bool analytic = options.jacobian == JacobianKind::kAnalytic;
+  std::unique_ptr<PrecomputedGroups> precomputed;
+  ceres::Problem::Options problem_options;
+  if (analytic && options.solver.num_threads > 1) {
+    precomputed =
+        std::make_unique<PrecomputedGroups>(options.solver.num_threads);
+    problem_options.evaluation_callback = precomputed.get();
+  }
+  ceres::Problem problem(problem_options);
   FrameBlocks blocks(kind, model, &problem);
   const bool reference = kind == FrameKind::kReference;
 
   ceres::LossFunction* loss = MakeLoss(options);
   const FunctionMask free_mask = config.FreeMask();
   const bool unit_exponents = model->UnitExponents();
-  // Analytic points go into PointGroupResidual blocks, which take the
-  // problem's blocks as they are: many points between the same two knots,
-  // or one each when every point carries its own robust loss.
-  const bool analytic = options.jacobian == JacobianKind::kAnalytic;
   const size_t group_size = loss == nullptr ? kPointsPerGroup : 1;
   std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
   const size_t group_capacity = std::min(group_size, points.size());
@@ -117,10 +127,16 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     const std::array<bool, 5> varied = {true, true, entries[0] != nullptr,
                                         entries[1] != nullptr,
                                         entries[2] != nullptr};
-    blocks.AddResidual(new PointGroupResidual(std::move(groups[k0]), free_mask,
-                                              unit_exponents, entries, varied),
-                       loss, true, {kGlobalsBlock, k0, k0 + 1},
-                       FrameBlocks::Takes::kProblemBlocks);
+    auto* group = new PointGroupResidual(std::move(groups[k0]), free_mask,
+                                         unit_exponents, entries, varied);
+    const ceres::ResidualBlockId id =
+        blocks.AddResidual(group, loss, true, {kGlobalsBlock, k0, k0 + 1},
+                           FrameBlocks::Takes::kProblemBlocks);
+    if (precomputed) {
+      std::vector<double*> parameters;
+      problem.GetParameterBlocksForResidualBlock(id, &parameters);
+      precomputed->Add(group, std::move(parameters));
+    }
     groups[k0] = {};
     groups[k0].reserve(group_capacity);
   };

@@ -213,21 +213,17 @@ PointGroupResidual::PointGroupResidual(
 
 bool PointGroupResidual::Evaluate(double const* const* parameters,
                                   double* residuals, double** jacobians) const {
-  FunctionValues whole[3];
-  const double* blocks[5] = {parameters[0], parameters[1], parameters[2],
-                             parameters[3], parameters[4]};
-  for (int b = 0; b < 3; ++b) {
-    if (!entries_[b]) continue;
-    entries_[b]->Expand(parameters[2 + b], whole[b].data());
-    blocks[2 + b] = whole[b].data();
-  }
-  const Eigen::Matrix3d rotation = RotationMatrix(parameters[1]);
+  const bool with_jacobians = jacobians != nullptr;
   if (!compressed_) {
+    FunctionValues whole[3];
+    const double* blocks[5];
+    WholeBlocks(parameters, whole, blocks);
+    const Eigen::Matrix3d rotation = RotationMatrix(parameters[1]);
     RowLayout layout = CompactLayout(entries_);
     for (int b = 0; b < 5; ++b) layout.stride[b] = widths_[b];
     int row = 0;
     for (const PointSample& sample : samples_) {
-      for (int b = 0; jacobians != nullptr && b < 5; ++b) {
+      for (int b = 0; with_jacobians && b < 5; ++b) {
         layout.first[b] =
             jacobians[b] ? jacobians[b] + row * widths_[b] : nullptr;
       }
@@ -237,20 +233,79 @@ bool PointGroupResidual::Evaluate(double const* const* parameters,
     }
     return true;
   }
-
-  const int n = columns_;
-  std::fill(residuals, residuals + n + 1, 0.0);
-  auto stacked = [&] { return StackedRows(blocks, rotation); };
-  if (jacobians == nullptr) {
-    residuals[0] = ResidualNorm(blocks, rotation);
-    return true;
+  if (precomputed_.with_jacobians == with_jacobians &&
+      IsAt(precomputed_, parameters)) {
+    Write(precomputed_, residuals, jacobians);
+  } else {
+    Write(Compute(parameters, with_jacobians), residuals, jacobians);
   }
-  const SquareRootForm form =
+  return true;
+}
+
+void PointGroupResidual::WholeBlocks(double const* const* parameters,
+                                     FunctionValues whole[3],
+                                     const double* blocks[5]) const {
+  std::copy(parameters, parameters + 5, blocks);
+  for (int b = 0; b < 3; ++b) {
+    if (!entries_[b]) continue;
+    entries_[b]->Expand(parameters[2 + b], whole[b].data());
+    blocks[2 + b] = whole[b].data();
+  }
+}
+
+void PointGroupResidual::Precompute(double const* const* parameters,
+                                    bool with_jacobians) const {
+  if (compressed_) precomputed_ = Compute(parameters, with_jacobians);
+}
+
+bool PointGroupResidual::IsAt(const Result& result,
+                              double const* const* parameters) const {
+  if (result.at.empty()) return false;
+  const double* at = result.at.data();
+  for (int b = 0; b < 5; ++b) {
+    if (!std::equal(parameters[b], parameters[b] + widths_[b], at)) {
+      return false;
+    }
+    at += widths_[b];
+  }
+  return true;
+}
+
+PointGroupResidual::Result PointGroupResidual::Compute(
+    double const* const* parameters, bool with_jacobians) const {
+  Result result;
+  result.with_jacobians = with_jacobians;
+  for (int b = 0; b < 5; ++b) {
+    result.at.insert(result.at.end(), parameters[b],
+                     parameters[b] + widths_[b]);
+  }
+  FunctionValues whole[3];
+  const double* blocks[5];
+  WholeBlocks(parameters, whole, blocks);
+  const Eigen::Matrix3d rotation = RotationMatrix(parameters[1]);
+  if (!with_jacobians) {
+    result.norm = ResidualNorm(blocks, rotation);
+    return result;
+  }
+  auto stacked = [&] { return StackedRows(blocks, rotation); };
+  result.form =
       pose_moments_
           ? SquareRootFormFromGram(PoseMomentGram(blocks, rotation), stacked)
       : knots_alike_
           ? SquareRootFormFromGram(MomentGram(blocks, rotation), stacked)
           : ToSquareRootForm(stacked());
+  return result;
+}
+
+void PointGroupResidual::Write(const Result& result, double* residuals,
+                               double** jacobians) const {
+  const int n = columns_;
+  std::fill(residuals, residuals + n + 1, 0.0);
+  if (jacobians == nullptr) {
+    residuals[0] = result.norm;
+    return;
+  }
+  const SquareRootForm& form = result.form;
   std::copy(form.z.data(), form.z.data() + n, residuals);
   residuals[n] = form.rho;
   for (int b = 0; b < 5; ++b) {
@@ -260,7 +315,6 @@ bool PointGroupResidual::Evaluate(double const* const* parameters,
     jacobian.topRows(n) = form.r.middleCols(offsets_[b], widths_[b]);
     jacobian.row(n).setZero();
   }
-  return true;
 }
 
 // The norm of the stacked residual rows.

@@ -39,8 +39,29 @@ class PointGroupResidual : public ceres::CostFunction {
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override;
   bool compressed() const { return compressed_; }
+  int num_samples() const { return static_cast<int>(samples_.size()); }
+
+  // Computes the square-root form (with_jacobians) or the residual norm at
+  // `parameters` ahead of Ceres, for Evaluate to hand out while it is asked
+  // at the same parameter values (PrecomputedGroups).  Not thread-safe
+  // against Evaluate; Ceres calls neither during the other.
+  void Precompute(double const* const* parameters, bool with_jacobians) const;
 
  private:
+  // What a compressed group hands Ceres at one set of parameter values.
+  struct Result {
+    std::vector<double> at;  // The parameter values, block after block.
+    bool with_jacobians = false;
+    double norm = 0.0;    // Without Jacobians.
+    SquareRootForm form;  // With.
+  };
+  // The globals and knots whole, from their free entries (into `whole`).
+  void WholeBlocks(double const* const* parameters, FunctionValues whole[3],
+                   const double* blocks[5]) const;
+  Result Compute(double const* const* parameters, bool with_jacobians) const;
+  void Write(const Result& result, double* residuals, double** jacobians) const;
+  bool IsAt(const Result& result, double const* const* parameters) const;
+
   double ResidualNorm(const double* const* blocks,
                       const Eigen::Matrix3d& rotation) const;
   RowMajorMatrix StackedRows(const double* const* blocks,
@@ -64,6 +85,7 @@ class PointGroupResidual : public ceres::CostFunction {
   // Knots alike, the pose varied, the globals held and no point-to-plane
   // sample (a tracked frame): the pose's columns come from moments of s.
   bool pose_moments_ = false;
+  mutable Result precomputed_;  // Empty `at` until Precompute.
 };
 
 }  // namespace pfdm

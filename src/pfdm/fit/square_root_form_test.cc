@@ -2,6 +2,7 @@
 
 #include <random>
 
+#include "Eigen/Cholesky"
 #include "gtest/gtest.h"
 
 namespace pfdm {
@@ -56,6 +57,35 @@ TEST(SquareRootFormTest, HandlesZeroAndDependentColumns) {
   // weight): J^T J is singular, not just at a zero column.
   a.col(4) = 0.3 * a.col(1);
   ExpectSquareRootForm(a);
+}
+
+// A pivot that elimination leaves exactly 0 before a regular one fails
+// Eigen's LDLT, which pivots on the diagonal it started with: here the
+// copy of column 0 (diagonal 4) comes before column 2 (diagonal 1).  The
+// pivoted Cholesky takes it without the QR of the rows.
+TEST(SquareRootFormTest, AnExactlyZeroPivotNeedsNoQr) {
+  RowMajorMatrix a = RowMajorMatrix::Zero(6, 4);
+  a.col(0) << 2.0, 0.0, 0.0, 0.0, 0.0, 0.0;
+  a.col(1) = a.col(0);
+  a.col(2) << 0.0, 1.0, 0.0, 0.0, 0.0, 0.0;
+  a.col(3) << 1.0, -2.0, 3.0, 0.5, 0.0, 1.0;
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(4, 4);
+  gram.selfadjointView<Eigen::Lower>().rankUpdate(a.transpose());
+  ASSERT_NE(Eigen::LDLT<Eigen::MatrixXd>(gram.topLeftCorner(3, 3)).info(),
+            Eigen::Success);
+  bool asked_for_rows = false;
+  const SquareRootForm form = SquareRootFormFromGram(gram, [&] {
+    asked_for_rows = true;
+    return a;
+  });
+  EXPECT_FALSE(asked_for_rows);
+  const Eigen::MatrixXd j = a.leftCols(3);
+  const Eigen::VectorXd r = a.col(3);
+  EXPECT_LT((form.r.transpose() * form.r - j.transpose() * j).norm(), 1e-14);
+  EXPECT_LT((form.r.transpose() * form.z - j.transpose() * r).norm(), 1e-14);
+  EXPECT_NEAR(form.z.squaredNorm() + form.rho * form.rho, r.squaredNorm(),
+              1e-14);
+  EXPECT_NEAR(form.rho, std::sqrt(3.0 * 3.0 + 0.5 * 0.5 + 1.0), 1e-14);
 }
 
 }  // namespace
