@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "glog/logging.h"
 #include "pfdm/fit/point_sample_rows.h"
@@ -21,21 +22,28 @@ using internal::Supplies;
 
 namespace {
 
+// Points whose nonzero entries of ds/df make a tracked group's pattern
+// (PoseMomentGram).
+constexpr int kPatternSamples = 32;
+
 // Calls visit(i, s, ds) for each sample i in turn with its shape s and, if
 // with_jacobian, ds = ds/df (else ds is not set), taking the samples'
 // sines and cosines a batch at a time.
+// Only the first `limit` samples when limit >= 0.
 template <typename Visit>
 void ForEachShape(const std::vector<PointSample>& samples,
                   FunctionMask free_mask, bool unit_exponents,
-                  const double* const* blocks, bool with_jacobian,
-                  Visit visit) {
+                  const double* const* blocks, bool with_jacobian, Visit visit,
+                  int limit = -1) {
   constexpr int kBatch = 32;
   double f[kBatch][kNumFunctions];
   ShapePrelude preludes[kBatch];
   double angles[kBatch * kNumShapeAngles];
   double sines[kBatch * kNumShapeAngles], cosines[kBatch * kNumShapeAngles];
   ShapeJacobian ds;
-  const int num_samples = static_cast<int>(samples.size());
+  const int num_samples =
+      limit < 0 ? static_cast<int>(samples.size())
+                : std::min(limit, static_cast<int>(samples.size()));
   for (int first = 0; first < num_samples; first += kBatch) {
     const int count = std::min(kBatch, num_samples - first);
     for (int i = 0; i < count; ++i) {
@@ -469,26 +477,53 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
   const int* knot_functions = layout.functions[1];
   const Eigen::Matrix3d model_from_world = rotation.transpose();
   const Eigen::Vector3d center(blocks[0]);
+  // D's entries (row major, row * m + column) that the first points have
+  // nonzero: ds/df is sparse, and the same way at every point of a surface
+  // (the bends move z only, the twist and the offsets x and y only), so
+  // its moments need only those.  A later point with another nonzero
+  // entry makes the group start over with all of them.
+  std::vector<int> pattern;
+  {
+    std::vector<bool> nonzero(3 * m, false);
+    ForEachShape(
+        samples_, free_mask_, unit_exponents_, blocks, true,
+        [&](int, const Eigen::Vector3d&, const ShapeJacobian& ds) {
+          for (int c = 0; c < m; ++c) {
+            if (!Supplies(1, free_mask_, knot_functions[c])) continue;
+            for (int row = 0; row < 3; ++row) {
+              if (ds(row, knot_functions[c]) != 0.0) {
+                nonzero[row * m + c] = true;
+              }
+            }
+          }
+        },
+        kPatternSamples);
+    for (int e = 0; e < 3 * m; ++e) {
+      if (nonzero[e]) pattern.push_back(e);
+    }
+  }
+  std::optional<MomentSums> sums;
+  std::vector<int> at(3 * m, -1);  // Where each entry of D sits, or -1.
+  int num_pattern = 0, sd_at = 0, dr_at = 0;
   // A point's moments, one row of `rest` weighted by (1, a, b) in a batch's
-  // product: [1, s, r, s s^T, s r^T, r^T r] (weight 1 is used) then
-  // [D, s_a D for a = 0..2, D^T r] (weights a and b are used), D row major.
+  // sums: [1, s, r, s s^T, s r^T, r^T r] (weight 1 is used) then
+  // [D, s_a D for a = 0..2, D^T r] (weights a and b are used), D's entries
+  // those of `pattern`.
   constexpr int kOne = 0, kS = 1, kR = 4, kSS = 7, kSR = 16, kRR = 25;
-  const int d_at = 26, sd_at = d_at + 3 * m, dr_at = sd_at + 9 * m;
-  MomentSums sums(m, dr_at + m, d_at);
+  constexpr int d_at = 26;
+  bool outside = false;
   auto add_point = [&](int i, const Eigen::Vector3d& s,
                        const ShapeJacobian& ds) {
     const PointSample& sample = samples_[i];
-    double* x = sums.rest_row();
-    double* d = x + d_at;
+    double d[3 * kNumFunctions];  // D, row major.
     for (int c = 0; c < m; ++c) {
-      if (Supplies(1, free_mask_, knot_functions[c])) {
-        for (int row = 0; row < 3; ++row) {
-          d[row * m + c] = ds(row, knot_functions[c]);
-        }
-      } else {
-        for (int row = 0; row < 3; ++row) d[row * m + c] = 0.0;
+      const bool supplied = Supplies(1, free_mask_, knot_functions[c]);
+      for (int row = 0; row < 3; ++row) {
+        d[row * m + c] = supplied ? ds(row, knot_functions[c]) : 0.0;
+        if (d[row * m + c] != 0.0 && at[row * m + c] < 0) outside = true;
       }
     }
+    double* x = sums->rest_row();
     const Eigen::Vector3d r = s + model_from_world * (center - sample.data);
     x[kOne] = 1.0;
     for (int a = 0; a < 3; ++a) {
@@ -500,20 +535,35 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
       }
     }
     x[kRR] = r.squaredNorm();
+    for (int k = 0; k < num_pattern; ++k) x[d_at + k] = d[pattern[k]];
     for (int a = 0; a < 3; ++a) {
-      double* sd = x + sd_at + 3 * a * m;
-      for (int j = 0; j < 3 * m; ++j) sd[j] = s[a] * d[j];
+      double* sd = x + sd_at + a * num_pattern;
+      for (int k = 0; k < num_pattern; ++k) sd[k] = s[a] * d[pattern[k]];
     }
     double* dr = x + dr_at;
     for (int j = 0; j < m; ++j) {
       dr[j] = d[j] * r[0] + d[m + j] * r[1] + d[2 * m + j] * r[2];
     }
-    double* p_dd = sums.dd_row();
-    for (int row = 0; row < 3; ++row) sums.AddKnotProducts(d + row * m, p_dd);
-    sums.EndPoint(sample.knot_weight);
+    double* p_dd = sums->dd_row();
+    for (int row = 0; row < 3; ++row) sums->AddKnotProducts(d + row * m, p_dd);
+    sums->EndPoint(sample.knot_weight);
   };
-  ForEachShape(samples_, free_mask_, unit_exponents_, blocks, true, add_point);
-  sums.Flush();
+  for (int attempt = 0;; ++attempt) {
+    std::fill(at.begin(), at.end(), -1);
+    num_pattern = static_cast<int>(pattern.size());
+    for (int k = 0; k < num_pattern; ++k) at[pattern[k]] = k;
+    sd_at = d_at + num_pattern;
+    dr_at = sd_at + 3 * num_pattern;
+    sums.emplace(m, dr_at + m, d_at);
+    outside = false;
+    ForEachShape(samples_, free_mask_, unit_exponents_, blocks, true,
+                 add_point);
+    sums->Flush();
+    if (!outside) break;
+    CHECK_EQ(attempt, 0) << "D's entries outside all of D";
+    pattern.resize(3 * m);
+    for (int e = 0; e < 3 * m; ++e) pattern[e] = e;
+  }
 
   // W_a (world, 3 x 4), V_a = R^T W_a (model frame) and U_a = V_a^T,
   // a = 0..2.  Every block is taken in the model frame, as MomentGram
@@ -528,13 +578,15 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
     u[a] = v[a].transpose();
   }
   const int n = columns_, t = 0, q = 3, k1 = 7, k2 = 7 + m;
-  auto one = [&](int at) { return sums.rest_sum(0, at); };
+  auto one = [&](int index) { return sums->rest_sum(0, index); };
   // sum_a s_a-weighted moments with weight row `weight` (1: a, 2: b).
   auto sd = [&](int weight, int a, int row, int l) {
-    return sums.rest_sum(weight, sd_at + (3 * a + row) * m + l);
+    const int k = at[row * m + l];
+    return k < 0 ? 0.0 : sums->rest_sum(weight, sd_at + a * num_pattern + k);
   };
   auto d_sum = [&](int weight, int row, int l) {
-    return sums.rest_sum(weight, d_at + row * m + l);
+    const int k = at[row * m + l];
+    return k < 0 ? 0.0 : sums->rest_sum(weight, d_at + k);
   };
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n + 1, n + 1);
   // Center against center, quaternion and residual.
@@ -580,10 +632,10 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
       for (int a = 0; a < 3; ++a) quaternions += u[a] * sd_l[a];
       for (int i = 0; i < 3; ++i) gram(first + l, t + i) = centers[i];
       for (int j = 0; j < 4; ++j) gram(first + l, q + j) = quaternions[j];
-      gram(n, first + l) = sums.rest_sum(weight, dr_at + l);
+      gram(n, first + l) = sums->rest_sum(weight, dr_at + l);
     }
   }
-  sums.FillKnotBlocks(k1, &gram);
+  sums->FillKnotBlocks(k1, &gram);
   gram(n, n) = one(kRR);
   return gram;
 }

@@ -21,6 +21,7 @@ struct GroupCase {
   std::array<bool, 5> varied;
   std::vector<int> globals_free, knot0_free, knot1_free;
   bool point_to_plane = true;  // Every fourth point against a plane.
+  int mid_wall_first = 0;      // The first this many points at w = 0.
 };
 
 // A group against its points one by one: the square-root form must give
@@ -34,6 +35,7 @@ void ExpectStackedNormalEquations(const GroupCase& group_case) {
   knot0 = knot1 = globals;
   knot0[kA1] = 0.4, knot1[kA1] = 0.45, knot0[kB0] = 2.0, knot1[kTau] = 0.1;
   knot1[kB2] = -1.5, knot1[kB3] = 0.7;
+  knot0[kH] = knot1[kH] = 8.0;  // Off the mid-wall, ds/df fills in.
   const std::vector<int>* lists[3] = {
       &group_case.globals_free, &group_case.knot0_free, &group_case.knot1_free};
   FunctionValues* values[3] = {&globals, &knot0, &knot1};
@@ -53,7 +55,8 @@ void ExpectStackedNormalEquations(const GroupCase& group_case) {
     const Eigen::Vector3d data(30 * unit(random), 30 * unit(random),
                                30 * unit(random));
     const double u = 1.2 * unit(random), v = 3.1 * unit(random);
-    const double w = 0.5 + 0.5 * unit(random);
+    const double w =
+        i < group_case.mid_wall_first ? 0.0 : 0.5 + 0.5 * unit(random);
     samples.push_back(
         group_case.point_to_plane && i % 4 == 0
             ? PointSample(data, u, v, w, Eigen::Vector3d(0, 0.6, 0.8))
@@ -177,6 +180,14 @@ TEST(PointGroupResidualTest, SquareRootFormOfPoseAndKnots) {
                     FreeFunctions(),
                     false};
   ExpectStackedNormalEquations(tracked);
+  // On the mid-wall ds/df has half its entries zero, which the moments
+  // leave out (the first points say which); points off it after the first
+  // fill more in, and the group starts over with all.
+  tracked.mid_wall_first = 60;
+  ExpectStackedNormalEquations(tracked);
+  tracked.mid_wall_first = 40;
+  ExpectStackedNormalEquations(tracked);
+  tracked.mid_wall_first = 0;
   tracked.point_to_plane = true;
   ExpectStackedNormalEquations(tracked);
 }
