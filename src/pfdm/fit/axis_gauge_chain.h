@@ -14,9 +14,16 @@
 // 2K d = 2 (r - K d) gives d = r / 2K), the chain costs
 //   K (2K / 2) |r / 2K|^2 + (2 / 2) |r / 2|^2 = 1/2 |r|^2,
 // AxisGaugeResidual's cost exactly: the same penalty on the knots, so the
-// same minimum, reached with a banded J^T J.  The damped and integrator
-// solvers keep AxisGaugeResidual: there the sums would be state with a
-// path of their own.
+// same minimum, reached with a banded J^T J.
+//
+// Only tracked frames' direct solves use it.  The sums must move far when
+// the offsets shift together, and LM damps them as it damps everything:
+// a solve that needs damping (frame 0's rounds, which start far off) then
+// creeps, as the solid's frame 0 did (1,058 iterations, not converged,
+// against 236).  Tracked frames start at the previous frame's fit and take
+// undamped steps (SolveDirect).  The damped and integrator solvers keep
+// AxisGaugeResidual too: there the sums would be state with a path of
+// their own.
 #ifndef PFDM_FIT_AXIS_GAUGE_CHAIN_H_
 #define PFDM_FIT_AXIS_GAUGE_CHAIN_H_
 

@@ -10,9 +10,22 @@
 #include "ceres/jet.h"
 #include "glog/logging.h"
 #include "pfdm/model/shape_angle_derivative.h"
+#include "pfdm/model/world_points.h"
 #include "pfdm/util/point_cloud_tree.h"
 
 namespace pfdm {
+
+static_assert(sizeof(MaterialPoint) == 3 * sizeof(double),
+              "WorldPoints reads material points as {u, v, w} triples");
+
+std::vector<Eigen::Vector3d> WorldPoints(
+    const Model& model, const std::vector<MaterialPoint>& material) {
+  std::vector<Eigen::Vector3d> points(material.size());
+  if (material.empty()) return points;
+  WorldPoints(model, material.size(), &material[0].u, &material[0].v,
+              &material[0].w, 3, points.data());
+  return points;
+}
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;

@@ -16,6 +16,10 @@ struct MaterialPoint {
   double w = 0.0;  // Transmural: -1 endocardium, 0 mid-wall, +1 epicardium.
 };
 
+// model.WorldPoint at each material point, in batches (world_points.h).
+std::vector<Eigen::Vector3d> WorldPoints(
+    const Model& model, const std::vector<MaterialPoint>& material);
+
 // The model's world-space point x(u, v, w), for any scalar (a Jet when u
 // and v are differentiated).
 template <typename T>

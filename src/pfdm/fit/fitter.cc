@@ -131,12 +131,14 @@ double UpdateClosest(const Model& model,
 double MaxMoved(const Model& before, const Model& after,
                 const std::vector<size_t>& which,
                 const std::vector<MaterialPoint>& material) {
+  std::vector<MaterialPoint> listed;
+  listed.reserve(which.size());
+  for (size_t i : which) listed.push_back(material[i]);
+  const std::vector<Eigen::Vector3d> now = WorldPoints(after, listed);
+  const std::vector<Eigen::Vector3d> then = WorldPoints(before, listed);
   double moved = 0.0;
-  for (size_t i : which) {
-    const MaterialPoint& m = material[i];
-    moved = std::max(moved, (after.WorldPoint(m.u, m.v, m.w) -
-                             before.WorldPoint(m.u, m.v, m.w))
-                                .norm());
+  for (size_t j = 0; j < listed.size(); ++j) {
+    moved = std::max(moved, (now[j] - then[j]).norm());
   }
   return moved;
 }
@@ -257,9 +259,10 @@ void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
                FrameFit* fit) {
   double sum_squared = 0.0, sum = 0.0, max = 0.0;
   fit->residuals.clear();
+  const std::vector<Eigen::Vector3d> model_points =
+      WorldPoints(model, fit->material);
   for (size_t i = 0; i < points.size(); ++i) {
-    const MaterialPoint& m = fit->material[i];
-    const Eigen::Vector3d r = model.WorldPoint(m.u, m.v, m.w) - points[i];
+    const Eigen::Vector3d r = model_points[i] - points[i];
     fit->residuals.push_back(r);
     sum_squared += r.squaredNorm();
     sum += r.norm();

@@ -205,7 +205,8 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   std::optional<AxisGaugeChain> axis_gauge;
   if (config.modes[kE1o] == FunctionMode::kFree) {
     const double sqrt_weight = kGaugeWeight * std::sqrt(points.size());
-    if (options.solver.kind == SolverKind::kDirect) {
+    if (options.solver.kind == SolverKind::kDirect &&
+        kind == FrameKind::kTracked) {
       std::vector<const double*> knots;
       for (const FunctionValues& knot : model->state.knots) {
         knots.push_back(knot.data());
@@ -242,6 +243,10 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   }
 
   SolverOptions solver = options.solver;
+  // The groups' threads are PrecomputedGroups'; Ceres' own would only copy
+  // the results, and waking them cost more than that at a few thousand
+  // points.
+  if (precomputed) solver.num_threads = 1;
   if (solver.kind == SolverKind::kIntegrator) {
     AddDampingScales(problem, blocks, options.damping_groups, model, &solver);
   }

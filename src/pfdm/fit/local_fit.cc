@@ -130,11 +130,12 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   std::vector<std::vector<size_t>> element_points(num_elements);
   std::vector<ShapeWeights> element_shape(num_elements);
   const Eigen::Matrix3d rotation = model->Rotation();
+  // d moves every surface of a solid alike.
+  const std::vector<Eigen::Vector3d> globals = WorldPoints(*model, material);
   auto point_rows = [&](size_t i) {
     const double u = material[i].u, v = material[i].v, w = material[i].w;
     const ShapeWeights shape = ShapeAt(grid, u, v);
-    // d moves every surface of a solid alike.
-    const Eigen::Vector3d global = model->WorldPoint(u, v, w);
+    const Eigen::Vector3d& global = globals[i];
     if (sliding[i] && u < config.u_max) {
       const Eigen::Vector3d normal = SurfaceNormal(*model, u, v, w);
       return LocalPointRows(global, rotation, shape, points[i], &normal);

@@ -8,6 +8,14 @@
 #include "unsupported/Eigen/CXX11/ThreadPool"
 
 namespace pfdm {
+namespace {
+
+// Fewer points than this are evaluated on the calling thread alone: at
+// 1,000 points, waking a second thread cost more than it saved (1.48 ms an
+// LM iteration against 1.28 with one thread).
+constexpr int kMinPointsForThreads = 4096;
+
+}  // namespace
 
 PrecomputedGroups::PrecomputedGroups(int num_threads)
     : num_threads_(num_threads),
@@ -19,6 +27,7 @@ PrecomputedGroups::~PrecomputedGroups() = default;
 void PrecomputedGroups::Add(const PointGroupResidual* group,
                             std::vector<double*> blocks) {
   groups_.push_back({group, std::move(blocks)});
+  num_points_ += group->num_samples();
   sorted_ = false;
 }
 
@@ -30,6 +39,12 @@ void PrecomputedGroups::PrepareForEvaluation(bool evaluate_jacobians,
           return a.residual->num_samples() > b.residual->num_samples();
         });
     sorted_ = true;
+  }
+  if (num_points_ < kMinPointsForThreads) {
+    for (const Group& group : groups_) {
+      group.residual->Precompute(group.blocks.data(), evaluate_jacobians);
+    }
+    return;
   }
   std::atomic<size_t> next(0);
   auto work = [&] {

@@ -48,6 +48,7 @@ class PrecomputedGroups : public ceres::EvaluationCallback {
   int num_threads_;
   std::unique_ptr<Eigen::ThreadPoolTempl<Eigen::StlThreadEnvironment>> pool_;
   std::vector<Group> groups_;
+  int num_points_ = 0;
   bool sorted_ = false;  // Largest first.
 };
 

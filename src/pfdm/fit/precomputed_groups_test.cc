@@ -14,7 +14,8 @@ namespace {
 
 constexpr int kSizes[5] = {3, 4, kNumFunctions, kNumFunctions, kNumFunctions};
 
-// Groups of different sizes over the same five whole blocks.
+// Groups of different sizes over the same five whole blocks, enough points
+// in all (6,500) for PrecomputedGroups to use its threads.
 struct Groups {
   Groups() {
     globals = knot0 = knot1 = DefaultFunctionValues();
@@ -23,7 +24,7 @@ struct Groups {
     std::mt19937 random(3);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     const FunctionMask mask = ModelConfig::Paper(17).FreeMask();
-    for (int size : {40, 300, 90, 700, 150}) {
+    for (int size : {400, 3000, 900, 700, 1500}) {
       std::vector<PointSample> samples;
       for (int i = 0; i < size; ++i) {
         samples.emplace_back(
@@ -111,7 +112,7 @@ TEST(PrecomputedGroupsTest, OtherParameterValuesAreComputedAfresh) {
 TEST(PrecomputedGroupsTest, TwoThreadsFitWhatOneFits) {
   PhantomOptions phantom_options;
   phantom_options.num_frames = 2;
-  phantom_options.num_points = 3000;
+  phantom_options.num_points = 6000;
   const Phantom phantom = MakePhantom(phantom_options);
   FitOptions options;
   const SequenceFit one =

@@ -38,12 +38,15 @@ const char* WallModelName(WallModel model) {
 std::vector<double> MidwallDistances(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const std::vector<MaterialPoint>& material) {
+  std::vector<MaterialPoint> midwall = material;
+  for (MaterialPoint& m : midwall) m.w = 0.0;
+  const std::vector<Eigen::Vector3d> model_points = WorldPoints(model, midwall);
   std::vector<double> distances;
   distances.reserve(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
     const double u = material[i].u, v = material[i].v;
     distances.push_back(
-        SurfaceNormal(model, u, v).dot(points[i] - model.WorldPoint(u, v)));
+        SurfaceNormal(model, u, v).dot(points[i] - model_points[i]));
   }
   return distances;
 }
@@ -52,10 +55,10 @@ double WallSpreadMm(const Model& model,
                     const std::vector<MaterialPoint>& material,
                     const std::vector<double>& distances) {
   if (material.size() < 2) return 0.0;
+  std::vector<MaterialPoint> midwall = material;
+  for (MaterialPoint& m : midwall) m.w = 0.0;
   PointCloud cloud;
-  for (const MaterialPoint& m : material) {
-    cloud.points.push_back(model.WorldPoint(m.u, m.v));
-  }
+  cloud.points = WorldPoints(model, midwall);
   PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
   // The mean over at most kMaxSpreadPairs tags' pairs (every stride-th)

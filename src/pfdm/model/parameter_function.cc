@@ -25,11 +25,7 @@ int FunctionFromName(const std::string& name) {
 }
 
 KnotGrid::KnotGrid(int num_knots, double u_min, double u_max)
-    : num_knots_(num_knots),
-      u_min_(u_min),
-      u_max_(u_max),
-      s_min_(std::sin(u_min)),
-      s_max_(std::sin(u_max)) {
+    : num_knots_(num_knots), u_min_(u_min), u_max_(u_max) {
   CHECK_GE(num_knots, 1);
   CHECK_LT(u_min, u_max);
   if (num_knots == 1) {
@@ -49,12 +45,11 @@ KnotSpan KnotGrid::Span(double u) const {
   KnotSpan span;
   if (num_knots_ == 1) return span;
   u = std::clamp(u, u_min_, u_max_);
-  const double t =
-      (std::sin(u) - s_min_) / (s_max_ - s_min_) * (num_knots_ - 1);
-  span.k0 = std::clamp(static_cast<int>(std::floor(t)), 0, num_knots_ - 2);
-  // asin and sin round: make sure u lies in [KnotU(k0), KnotU(k0 + 1)].
-  while (span.k0 > 0 && u < KnotU(span.k0)) --span.k0;
-  while (span.k0 < num_knots_ - 2 && u > KnotU(span.k0 + 1)) ++span.k0;
+  // A binary search of the knots: exact, and cheaper than the sine that
+  // would place u on the grid (this runs at every model evaluation).
+  const auto next = std::upper_bound(knot_u_.begin(), knot_u_.end(), u);
+  span.k0 = std::clamp(static_cast<int>(next - knot_u_.begin()) - 1, 0,
+                       num_knots_ - 2);
   const double u0 = KnotU(span.k0), u1 = KnotU(span.k0 + 1);
   span.weight = std::clamp((u - u0) / (u1 - u0), 0.0, 1.0);
   return span;

@@ -62,10 +62,6 @@ class KnotGrid {
   int num_knots_;
   double u_min_;
   double u_max_;
-  // sin(u_min), sin(u_max): Span runs at every model evaluation, and these
-  // were two of its three sines.
-  double s_min_;
-  double s_max_;
   std::vector<double> knot_u_;
 };
 
