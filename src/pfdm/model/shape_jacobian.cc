@@ -101,18 +101,23 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
   const Eigen::Vector3d shape = t + Eigen::Vector3d(f[kE1o], f[kE2o], f[kE3o]);
   if (jacobian == nullptr) return shape;
 
-  // de/df: only a0, a1..a3 and the exponents enter the primitive.
-  Eigen::Matrix<double, 3, kNumFunctions> de =
-      Eigen::Matrix<double, 3, kNumFunctions>::Zero();
-  de.col(kA0) = primitive / a0;
-  de(0, kA1) = a0 * cu.value * cv.value;
-  de(1, kA2) = a0 * cu.value * sv.value;
-  de(2, kA3) = a0 * su.value;
-  de(0, kEps1) = a0 * f[kA1] * cu.d_exponent * cv.value;
-  de(1, kEps1) = a0 * f[kA2] * cu.d_exponent * sv.value;
-  de(2, kEps1) = a0 * f[kA3] * su.d_exponent;
-  de(0, kEps2) = a0 * f[kA1] * cu.value * cv.d_exponent;
-  de(1, kEps2) = a0 * f[kA2] * cu.value * sv.d_exponent;
+  // The columns that pass through e (a0..a3 and the exponents, and h and
+  // the wall shift off the mid-wall) take the bend's coupling into z and
+  // the twist alike: ds_j = T (B_e de_j).  The rest enter at one step
+  // each.  Only the nonzero entries are computed; most of ds is zero.
+  const double gx1 = -kHalfPi * sines[kPhase1];
+  const double gx2 = -kHalfPi * sines[kPhase2];
+  const double beta1 = f[kB0] * gx1 / a0, beta2 = f[kB2] * gx2 / a0;
+  ShapeJacobian& ds = *jacobian;
+  ds.setZero();
+  auto through_e = [&](int j, double e0, double e1, double e2) {
+    ds(0, j) = c * e0 - s * e1;
+    ds(1, j) = s * e0 + c * e1;
+    ds(2, j) = e2 + beta1 * e0 + beta2 * e1;
+  };
+  Eigen::Vector3d de_da[3] = {Eigen::Vector3d(a0 * cu.value * cv.value, 0, 0),
+                              Eigen::Vector3d(0, a0 * cu.value * sv.value, 0),
+                              Eigen::Vector3d(0, 0, a0 * su.value)};
   if (prelude.w != 0.0) {
     const Eigen::Vector3d& n = prelude.wall_direction;
     const Eigen::Matrix3d project =
@@ -120,45 +125,49 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
         (half_wall * prelude.wall_inverse_norm);
     // m_i = n_i |m|, so dm_i/da_i = -n_i |m| / a_i.
     for (int i = 0; i < 3; ++i) {
-      de.col(kA1 + i) -=
+      de_da[i] -=
           project.col(i) * (n[i] / (prelude.wall_inverse_norm * f[kA1 + i]));
     }
-    de.col(kH) = 0.5 * prelude.w * n;
-    de.col(kWallShift) = prelude.w * prelude.w * n;
+    const Eigen::Vector3d de_dh = 0.5 * prelude.w * n;
+    const Eigen::Vector3d de_dshift = prelude.w * prelude.w * n;
+    through_e(kH, de_dh[0], de_dh[1], de_dh[2]);
+    through_e(kWallShift, de_dshift[0], de_dshift[1], de_dshift[2]);
   }
+  const Eigen::Vector3d de_da0 = primitive / a0;
+  through_e(kA0, de_da0[0], de_da0[1], de_da0[2]);
+  for (int i = 0; i < 3; ++i) {
+    through_e(kA1 + i, de_da[i][0], de_da[i][1], de_da[i][2]);
+  }
+  through_e(kEps1, a0 * f[kA1] * cu.d_exponent * cv.value,
+            a0 * f[kA2] * cu.d_exponent * sv.value,
+            a0 * f[kA3] * su.d_exponent);
+  through_e(kEps2, a0 * f[kA1] * cu.value * cv.d_exponent,
+            a0 * f[kA2] * cu.value * sv.d_exponent, 0.0);
 
-  // db/df = B_e de/df + the bend's own dependence on a0 and b0..b3.
-  const double gx1 = -kHalfPi * sines[kPhase1];
-  const double gx2 = -kHalfPi * sines[kPhase2];
-  const double beta1 = f[kB0] * gx1 / a0, beta2 = f[kB2] * gx2 / a0;
-  Eigen::Matrix<double, 3, kNumFunctions> db = de;
-  db.row(2) += beta1 * de.row(0) + beta2 * de.row(1);
-  db(2, kA0) -= beta1 * x1 + beta2 * x2;  // x_i = e_i / a0 with e_i held.
-  db(2, kB0) += g1;
-  db(2, kB1) +=
+  // The bend's own dependence on a0 (x_i = e_i / a0 with e_i held) and on
+  // b0..b3, and the ring means through r1 = a1 Cu^e1 and r2 = a2 Cu^e1: z
+  // only, which the twist leaves alone.
+  ds(2, kA0) -= beta1 * x1 + beta2 * x2;
+  ds(2, kB0) = g1;
+  ds(2, kB1) =
       f[kB0] * kHalfPi * (sines[kPhase1] + prelude.j0[0] * sines[kBend1]);
-  db(2, kB2) += g2;
-  db(2, kB3) +=
+  ds(2, kB2) = g2;
+  ds(2, kB3) =
       f[kB2] * kHalfPi * (sines[kPhase2] + prelude.j0[1] * sines[kBend2]);
-  // The ring means through r1 = a1 Cu^e1 and r2 = a2 Cu^e1.
   const double gr1 = f[kB0] * kHalfPi * prelude.j1[0] * cosines[kBend1];
   const double gr2 = f[kB2] * kHalfPi * prelude.j1[1] * cosines[kBend2];
-  db(2, kA1) += gr1 * cu.value;
-  db(2, kA2) += gr2 * cu.value;
-  db(2, kEps1) += (gr1 * f[kA1] + gr2 * f[kA2]) * cu.d_exponent;
+  ds(2, kA1) += gr1 * cu.value;
+  ds(2, kA2) += gr2 * cu.value;
+  ds(2, kEps1) += (gr1 * f[kA1] + gr2 * f[kA2]) * cu.d_exponent;
 
-  // Twist rotates the first two rows; tau itself turns b; offsets add.
-  ShapeJacobian& ds = *jacobian;
-  ds.row(0) = c * db.row(0) - s * db.row(1);
-  ds.row(1) = s * db.row(0) + c * db.row(1);
-  ds.row(2) = db.row(2);
-  ds(0, kTau) += -s * b[0] - c * b[1];
-  ds(1, kTau) += c * b[0] - s * b[1];
+  // tau itself turns b; offsets add.
+  ds(0, kTau) = -s * b[0] - c * b[1];
+  ds(1, kTau) = c * b[0] - s * b[1];
   ds(0, kDtau) = 0.5 * prelude.w * ds(0, kTau);
   ds(1, kDtau) = 0.5 * prelude.w * ds(1, kTau);
-  ds(0, kE1o) += 1.0;
-  ds(1, kE2o) += 1.0;
-  ds(2, kE3o) += 1.0;
+  ds(0, kE1o) = 1.0;
+  ds(1, kE2o) = 1.0;
+  ds(2, kE3o) = 1.0;
   return shape;
 }
 
