@@ -7,6 +7,7 @@
 #include "Eigen/Geometry"
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/test_models.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -178,10 +179,7 @@ TEST(FitterTest, ScaledDataGivesScaledLengths) {
 // compact knot blocks; autodiff gives one 3-row block per point.  Same LM
 // iterates, so the same parameters and iteration counts.
 TEST(FitterTest, GroupedSquareRootFormTakesTheSameSteps) {
-  PhantomOptions phantom_options;
-  phantom_options.num_frames = 2;
-  phantom_options.num_points = 600;
-  const Phantom phantom = MakePhantom(phantom_options);
+  const Phantom phantom = MakeTestPhantom(600, 2);
   FitOptions options;
   options.jacobian = JacobianKind::kAutodiff;
   const SequenceFit per_point =
@@ -203,10 +201,7 @@ TEST(FitterTest, GroupedSquareRootFormTakesTheSameSteps) {
 // iterations.  Under Ceres' default damping the partial sums of
 // AxisGaugeChain took five more.
 TEST(FitterTest, TrackedFramesConvergeInThreeIterations) {
-  PhantomOptions phantom_options;
-  phantom_options.num_frames = 3;
-  phantom_options.num_points = 2000;
-  const SequenceFit fit = FitSequence(MakePhantom(phantom_options).points,
+  const SequenceFit fit = FitSequence(MakeTestPhantom(2000, 3).points,
                                       ModelConfig::Paper(17), FitOptions());
   for (int frame = 1; frame < 3; ++frame) {
     EXPECT_LE(fit.frames[frame].iterations, 3) << "frame " << frame;

@@ -7,7 +7,7 @@
 #include "gtest/gtest.h"
 #include "pfdm/fit/fitter.h"
 #include "pfdm/model/model.h"
-#include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
@@ -110,10 +110,7 @@ TEST(PrecomputedGroupsTest, OtherParameterValuesAreComputedAfresh) {
 // thread, whose are not: the same frames to round-off (Ceres sums the
 // blocks' gradients in another order).
 TEST(PrecomputedGroupsTest, TwoThreadsFitWhatOneFits) {
-  PhantomOptions phantom_options;
-  phantom_options.num_frames = 2;
-  phantom_options.num_points = 6000;
-  const Phantom phantom = MakePhantom(phantom_options);
+  const Phantom phantom = MakeTestPhantom(6000, 2);
   FitOptions options;
   const SequenceFit one =
       FitSequence(phantom.points, ModelConfig::Paper(17), options);

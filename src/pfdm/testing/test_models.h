@@ -6,6 +6,7 @@
 
 #include "pfdm/model/local_field.h"
 #include "pfdm/model/model.h"
+#include "pfdm/phantom/phantom.h"
 
 namespace pfdm {
 
@@ -32,6 +33,14 @@ inline void AddTestLocalField(double amplitude, Model* model) {
   for (size_t i = 0; i < model->state.local.values.size(); ++i) {
     model->state.local.values[i] = amplitude * std::sin(1.7 * i);
   }
+}
+
+// The default phantom with num_points points over num_frames frames.
+inline Phantom MakeTestPhantom(int num_points, int num_frames) {
+  PhantomOptions options;
+  options.num_points = num_points;
+  options.num_frames = num_frames;
+  return MakePhantom(options);
 }
 
 }  // namespace pfdm
