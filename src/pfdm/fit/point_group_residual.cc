@@ -27,41 +27,31 @@ namespace {
 constexpr int kPatternSamples = 32;
 
 // Calls visit(i, s, ds) for each sample i in turn with its shape s and, if
-// with_jacobian, ds = ds/df (else ds is not set), taking the samples'
-// sines and cosines a batch at a time.
-// Only the first `limit` samples when limit >= 0.
+// with_jacobian, ds = ds/df (else ds is not set), a batch at a time
+// (ShapesOfBatch).  Only the first `limit` samples when limit >= 0.
 template <typename Visit>
 void ForEachShape(const std::vector<PointSample>& samples,
                   FunctionMask free_mask, bool unit_exponents,
                   const double* const* blocks, bool with_jacobian, Visit visit,
                   int limit = -1) {
-  constexpr int kBatch = 32;
-  double f[kBatch][kNumFunctions];
-  ShapePrelude preludes[kBatch];
-  double angles[kBatch * kNumShapeAngles];
-  double sines[kBatch * kNumShapeAngles], cosines[kBatch * kNumShapeAngles];
-  ShapeJacobian ds;
+  FunctionValues f[kShapeBatch];
+  Angles<double> angles[kShapeBatch];
+  double w[kShapeBatch];
   const int num_samples =
       limit < 0 ? static_cast<int>(samples.size())
                 : std::min(limit, static_cast<int>(samples.size()));
-  for (int first = 0; first < num_samples; first += kBatch) {
-    const int count = std::min(kBatch, num_samples - first);
+  for (int first = 0; first < num_samples; first += kShapeBatch) {
+    const int count = std::min(kShapeBatch, num_samples - first);
     for (int i = 0; i < count; ++i) {
       const PointSample& sample = samples[first + i];
       InterpolateFunctions(free_mask, blocks[2], blocks[3], blocks[4],
-                           sample.knot_weight, f[i]);
-      preludes[i] = PrepareShape(f[i], sample.angles, unit_exponents, sample.w);
-      std::copy(preludes[i].angles, preludes[i].angles + kNumShapeAngles,
-                angles + i * kNumShapeAngles);
+                           sample.knot_weight, f[i].data());
+      angles[i] = sample.angles;
+      w[i] = sample.w;
     }
-    SinCosMany(angles, count * kNumShapeAngles, sines, cosines);
-    for (int i = 0; i < count; ++i) {
-      const int at = i * kNumShapeAngles;
-      const Eigen::Vector3d s =
-          ShapeAndJacobian(f[i], preludes[i], sines + at, cosines + at,
-                           with_jacobian ? &ds : nullptr);
-      visit(first + i, s, ds);
-    }
+    ShapesOfBatch(count, f, angles, w, unit_exponents, with_jacobian,
+                  [&](int i, const Eigen::Vector3d& s,
+                      const ShapeJacobian& ds) { visit(first + i, s, ds); });
   }
 }
 

@@ -3,9 +3,12 @@
 #ifndef PFDM_MODEL_SHAPE_JACOBIAN_H_
 #define PFDM_MODEL_SHAPE_JACOBIAN_H_
 
+#include <algorithm>
+
 #include "Eigen/Core"
 #include "pfdm/model/parameter_function.h"
 #include "pfdm/model/superellipsoid.h"
+#include "pfdm/util/batch_trig.h"
 
 namespace pfdm {
 
@@ -40,6 +43,35 @@ ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
 Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
                                  const double* sines, const double* cosines,
                                  ShapeJacobian* jacobian);
+
+// The shapes of `count` <= kShapeBatch points, their sines and cosines in
+// one SinCosMany (batch_trig.h): for each i < count, in turn, calls
+// visit(i, s, ds) with s the shape for f[i] at angles[i] on surface w[i]
+// and, if with_jacobian, ds = ds/df (else ds is not set).
+constexpr int kShapeBatch = 32;
+template <typename Visit>
+void ShapesOfBatch(int count, const FunctionValues* f,
+                   const Angles<double>* angles, const double* w,
+                   bool unit_exponents, bool with_jacobian, Visit visit) {
+  ShapePrelude preludes[kShapeBatch];
+  double shape_angles[kShapeBatch * kNumShapeAngles] = {};
+  double sines[kShapeBatch * kNumShapeAngles];
+  double cosines[kShapeBatch * kNumShapeAngles];
+  for (int i = 0; i < count; ++i) {
+    preludes[i] = PrepareShape(f[i].data(), angles[i], unit_exponents, w[i]);
+    std::copy(preludes[i].angles, preludes[i].angles + kNumShapeAngles,
+              shape_angles + i * kNumShapeAngles);
+  }
+  SinCosMany(shape_angles, count * kNumShapeAngles, sines, cosines);
+  ShapeJacobian ds;
+  for (int i = 0; i < count; ++i) {
+    const int at = i * kNumShapeAngles;
+    const Eigen::Vector3d s =
+        ShapeAndJacobian(f[i].data(), preludes[i], sines + at, cosines + at,
+                         with_jacobian ? &ds : nullptr);
+    visit(i, s, ds);
+  }
+}
 
 // Returns s = T_o(T_twist(T_b(e))) for the function values f at the
 // material point with the given angles on surface w and, when jacobian is

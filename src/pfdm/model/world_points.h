@@ -2,7 +2,8 @@
 // point's shape takes seven scalar sines and cosines (u, v, the bends'
 // phases and shapes, the twist); here they come from SinCosMany
 // (batch_trig.h) a batch of points at a time, and the shape from its closed
-// form (ShapeAndJacobian), which matches ReferenceShape to round-off.  For
+// form (ShapesOfBatch, as the point groups take theirs), which matches
+// ReferenceShape to round-off.  For
 // the per-frame passes over every point: residuals, the wall's distances,
 // the local field's rows.
 #ifndef PFDM_MODEL_WORLD_POINTS_H_
