@@ -253,7 +253,12 @@ void PointGroupResidual::WholeBlocks(double const* const* parameters,
 
 void PointGroupResidual::Precompute(double const* const* parameters,
                                     bool with_jacobians) const {
-  if (compressed_) precomputed_ = Compute(parameters, with_jacobians);
+  if (!compressed_) return;
+  precomputed_ = Compute(parameters, with_jacobians);
+  for (int b = 0; b < 5; ++b) {
+    precomputed_.at.insert(precomputed_.at.end(), parameters[b],
+                           parameters[b] + widths_[b]);
+  }
 }
 
 bool PointGroupResidual::IsAt(const Result& result,
@@ -273,10 +278,6 @@ PointGroupResidual::Result PointGroupResidual::Compute(
     double const* const* parameters, bool with_jacobians) const {
   Result result;
   result.with_jacobians = with_jacobians;
-  for (int b = 0; b < 5; ++b) {
-    result.at.insert(result.at.end(), parameters[b],
-                     parameters[b] + widths_[b]);
-  }
   FunctionValues whole[3];
   const double* blocks[5];
   WholeBlocks(parameters, whole, blocks);

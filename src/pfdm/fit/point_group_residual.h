@@ -50,7 +50,8 @@ class PointGroupResidual : public ceres::CostFunction {
  private:
   // What a compressed group hands Ceres at one set of parameter values.
   struct Result {
-    std::vector<double> at;  // The parameter values, block after block.
+    // The parameter values, block after block (Precompute's only).
+    std::vector<double> at;
     bool with_jacobians = false;
     double norm = 0.0;    // Without Jacobians.
     SquareRootForm form;  // With.

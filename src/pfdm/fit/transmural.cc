@@ -13,6 +13,14 @@ namespace {
 // Tags whose neighbour WallSpreadMm compares, at most.
 constexpr size_t kMaxSpreadPairs = 4096;
 
+// The mid-wall's points (w = 0) at the material points' (u, v).
+std::vector<Eigen::Vector3d> MidwallPoints(
+    const Model& model, const std::vector<MaterialPoint>& material) {
+  std::vector<MaterialPoint> midwall = material;
+  for (MaterialPoint& m : midwall) m.w = 0.0;
+  return WorldPoints(model, midwall);
+}
+
 }  // namespace
 
 WallModel WallModelFromName(const std::string& name) {
@@ -38,9 +46,8 @@ const char* WallModelName(WallModel model) {
 std::vector<double> MidwallDistances(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const std::vector<MaterialPoint>& material) {
-  std::vector<MaterialPoint> midwall = material;
-  for (MaterialPoint& m : midwall) m.w = 0.0;
-  const std::vector<Eigen::Vector3d> model_points = WorldPoints(model, midwall);
+  const std::vector<Eigen::Vector3d> model_points =
+      MidwallPoints(model, material);
   std::vector<double> distances;
   distances.reserve(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
@@ -55,10 +62,8 @@ double WallSpreadMm(const Model& model,
                     const std::vector<MaterialPoint>& material,
                     const std::vector<double>& distances) {
   if (material.size() < 2) return 0.0;
-  std::vector<MaterialPoint> midwall = material;
-  for (MaterialPoint& m : midwall) m.w = 0.0;
   PointCloud cloud;
-  cloud.points = WorldPoints(model, midwall);
+  cloud.points = MidwallPoints(model, material);
   PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
   // The mean over at most kMaxSpreadPairs tags' pairs (every stride-th)
