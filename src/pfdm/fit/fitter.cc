@@ -55,6 +55,15 @@ std::vector<Eigen::Vector3d> Positions(const Frame& frame) {
   return positions;
 }
 
+// The listed points' material points.
+std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
+                                  const std::vector<size_t>& which) {
+  std::vector<MaterialPoint> listed;
+  listed.reserve(which.size());
+  for (size_t i : which) listed.push_back(material[i]);
+  return listed;
+}
+
 // Fills material[i] for the listed points with their closest material points
 // and returns how far (mm) the farthest one moved on the model.  In a solid,
 // a point is sought on its surface: layer_w[i] for a contour of one wall,
@@ -115,13 +124,12 @@ double UpdateClosest(const Model& model,
       found[off[k]] = found_off[k];
     }
   }
+  const std::vector<Eigen::Vector3d> before =
+      WorldPoints(model, Listed(*material, which));
   double moved = 0.0;
   for (size_t j = 0; j < which.size(); ++j) {
-    MaterialPoint& old = (*material)[which[j]];
-    const MaterialPoint& now = closest[j];
-    moved = std::max(moved,
-                     (found[j] - model.WorldPoint(old.u, old.v, old.w)).norm());
-    old = now;
+    moved = std::max(moved, (found[j] - before[j]).norm());
+    (*material)[which[j]] = closest[j];
   }
   return moved;
 }
@@ -131,9 +139,7 @@ double UpdateClosest(const Model& model,
 double MaxMoved(const Model& before, const Model& after,
                 const std::vector<size_t>& which,
                 const std::vector<MaterialPoint>& material) {
-  std::vector<MaterialPoint> listed;
-  listed.reserve(which.size());
-  for (size_t i : which) listed.push_back(material[i]);
+  const std::vector<MaterialPoint> listed = Listed(material, which);
   const std::vector<Eigen::Vector3d> now = WorldPoints(after, listed);
   const std::vector<Eigen::Vector3d> then = WorldPoints(before, listed);
   double moved = 0.0;

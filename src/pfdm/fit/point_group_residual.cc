@@ -57,9 +57,9 @@ void ForEachShape(const std::vector<PointSample>& samples,
 
 // Per-point moments summed over a group: each point fills a row of `dd`
 // (the knot functions' D^T D, lower triangle packed column by column) and a
-// row of `rest` (the other moments); a batch of points' rows, weighted by
-// (a^2, ab, b^2) and (1, a, b) respectively (a = 1 - w, b = w), is then
-// one matrix product each.
+// row of `rest` (the other moments); a batch of points' rows is then
+// summed weighted by (a^2, ab, b^2) and (1, a, b) respectively (a = 1 - w,
+// b = w).
 class MomentSums {
  public:
   // The rest's first `plain` columns are only ever read summed with weight
@@ -473,20 +473,24 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
   // (the bends move z only, the twist and the offsets x and y only), so
   // its moments need only those.  A later point with another nonzero
   // entry makes the group start over with all of them.
+  // D (row major) of a point: its knot functions' columns of ds/df.
+  auto knot_columns = [&](const ShapeJacobian& ds, double* d) {
+    for (int c = 0; c < m; ++c) {
+      const bool supplied = Supplies(1, free_mask_, knot_functions[c]);
+      for (int row = 0; row < 3; ++row) {
+        d[row * m + c] = supplied ? ds(row, knot_functions[c]) : 0.0;
+      }
+    }
+  };
   std::vector<int> pattern;
   {
     std::vector<bool> nonzero(3 * m, false);
     ForEachShape(
         samples_, free_mask_, unit_exponents_, blocks, true,
         [&](int, const Eigen::Vector3d&, const ShapeJacobian& ds) {
-          for (int c = 0; c < m; ++c) {
-            if (!Supplies(1, free_mask_, knot_functions[c])) continue;
-            for (int row = 0; row < 3; ++row) {
-              if (ds(row, knot_functions[c]) != 0.0) {
-                nonzero[row * m + c] = true;
-              }
-            }
-          }
+          double d[3 * kNumFunctions];
+          knot_columns(ds, d);
+          for (int e = 0; e < 3 * m; ++e) nonzero[e] = nonzero[e] || d[e] != 0;
         },
         kPatternSamples);
     for (int e = 0; e < 3 * m; ++e) {
@@ -506,13 +510,10 @@ Eigen::MatrixXd PointGroupResidual::PoseMomentGram(
   auto add_point = [&](int i, const Eigen::Vector3d& s,
                        const ShapeJacobian& ds) {
     const PointSample& sample = samples_[i];
-    double d[3 * kNumFunctions];  // D, row major.
-    for (int c = 0; c < m; ++c) {
-      const bool supplied = Supplies(1, free_mask_, knot_functions[c]);
-      for (int row = 0; row < 3; ++row) {
-        d[row * m + c] = supplied ? ds(row, knot_functions[c]) : 0.0;
-        if (d[row * m + c] != 0.0 && at[row * m + c] < 0) outside = true;
-      }
+    double d[3 * kNumFunctions];
+    knot_columns(ds, d);
+    for (int e = 0; e < 3 * m; ++e) {
+      if (d[e] != 0.0 && at[e] < 0) outside = true;
     }
     double* x = sums->rest_row();
     const Eigen::Vector3d r = s + model_from_world * (center - sample.data);
