@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <thread>
 
 #include "Eigen/Dense"
@@ -114,6 +115,36 @@ class SurfacePoints {
   const Eigen::Vector3d center_;
 };
 
+// a^-1 b for a symmetric 2 x 2 a: Cramer's rule when a is positive
+// definite (Eigen's LDLT, with its pivoting, was 7 % of a profile of the
+// search), else the LDLT.
+Eigen::Vector2d SolveSymmetric2(const Eigen::Matrix2d& a,
+                                const Eigen::Vector2d& b) {
+  const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(0, 1);
+  if (a(0, 0) > 0.0 && det > 0.0) {
+    return Eigen::Vector2d(a(1, 1) * b[0] - a(0, 1) * b[1],
+                           a(0, 0) * b[1] - a(0, 1) * b[0]) /
+           det;
+  }
+  return a.ldlt().solve(b);
+}
+
+// A material point with its model point and dx/d(u, v).
+struct SurfaceSample {
+  MaterialPoint at;
+  Eigen::Vector3d point;
+  Eigen::Matrix<double, 3, 2> jacobian;
+};
+
+SurfaceSample Sample(const SurfacePoints& surface, const MaterialPoint& at,
+                     std::int64_t* evaluations) {
+  SurfaceSample sample;
+  sample.at = at;
+  surface.Evaluate(at.u, at.v, at.w, &sample.point, &sample.jacobian);
+  ++*evaluations;
+  return sample;
+}
+
 // Damped Newton on |x(u, v) - p|^2 / 2, whose Hessian is J^T J + S with
 // S = sum_k r_k d2x_k/d(u, v)2, the surface's curvature seen from the
 // point.  Gauss-Newton (S = 0) converges only linearly, at a rate near
@@ -122,20 +153,17 @@ class SurfacePoints {
 // the steps taken (the structured secant update of NL2SOL: S delta =
 // (J_new - J_old)^T r_new, a symmetric rank-one change), which costs no
 // evaluation, and is left out while J^T J + S is not positive definite.
-// Every evaluation brings its derivatives, so an accepted trial point is
-// the next step's linearization, and a step shorter than step_tolerance_mm
-// ends the search before it is evaluated.  The model point found goes to
-// *best_point.
+// Every evaluation brings its derivatives, so the start and an accepted
+// trial point are the next step's linearization, and a step shorter than
+// step_tolerance_mm ends the search before it is evaluated.  The model
+// point found goes to *best_point.
 MaterialPoint Refine(const SurfacePoints& surface, const Model& model,
-                     const Eigen::Vector3d& target, MaterialPoint start,
+                     const Eigen::Vector3d& target, const SurfaceSample& start,
                      double step_tolerance_mm, std::int64_t* evaluations,
                      Eigen::Vector3d* best_point) {
-  MaterialPoint best = start;
-  Eigen::Vector3d point;
-  Eigen::Matrix<double, 3, 2> jacobian;
-  surface.Evaluate(best.u, best.v, best.w, &point, &jacobian);
-  ++*evaluations;
-  Eigen::Vector3d residual = point - target;
+  MaterialPoint best = start.at;
+  Eigen::Matrix<double, 3, 2> jacobian = start.jacobian;
+  Eigen::Vector3d residual = start.point - target;
   double best_cost = residual.squaredNorm();
   double lambda = 1e-3;
   Eigen::Matrix2d curvature = Eigen::Matrix2d::Zero();
@@ -149,7 +177,7 @@ MaterialPoint Refine(const SurfacePoints& surface, const Model& model,
     for (int attempt = 0; attempt < 8 && !improved; ++attempt) {
       Eigen::Matrix2d damped = normal;
       damped.diagonal() += lambda * (normal.diagonal().array() + 1e-9).matrix();
-      const Eigen::Vector2d delta = -damped.ldlt().solve(gradient);
+      const Eigen::Vector2d delta = -SolveSymmetric2(damped, gradient);
       // A step this short is where the search ends: converging faster than
       // linearly, what is left is far shorter still, and evaluating the
       // step would only confirm it.
@@ -236,17 +264,44 @@ template Eigen::Matrix<ceres::Jet<double, 2>, 3, 1> WorldPointAt(
     const Model&, const ceres::Jet<double, 2>&, const ceres::Jet<double, 2>&,
     double);
 
-Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
-                              double w) {
-  Eigen::Vector3d x;
-  Eigen::Matrix<double, 3, 2> tangents;
-  SurfacePoints(model, false).Evaluate(u, v, w, &x, &tangents);
+namespace {
+
+// The unit normal from the tangents dx/du and dx/dv.
+Eigen::Vector3d NormalFromTangents(
+    const Model& model, const Eigen::Matrix<double, 3, 2>& tangents) {
   const Eigen::Vector3d du = tangents.col(0), dv = tangents.col(1);
   // v turns counter-clockwise about +z and u runs up the axis, so
   // dv x du points out of the cavity, as the apex fallback does.
   const Eigen::Vector3d normal = dv.cross(du);
   if (normal.norm() > 1e-9 * du.squaredNorm()) return normal.normalized();
   return -model.Rotation().col(2);
+}
+
+}  // namespace
+
+Eigen::Vector3d SurfaceNormal(const Model& model, double u, double v,
+                              double w) {
+  Eigen::Vector3d x;
+  Eigen::Matrix<double, 3, 2> tangents;
+  SurfacePoints(model, false).Evaluate(u, v, w, &x, &tangents);
+  return NormalFromTangents(model, tangents);
+}
+
+std::vector<Eigen::Vector3d> SurfaceNormals(
+    const Model& model, const std::vector<MaterialPoint>& material,
+    std::vector<Eigen::Vector3d>* surface_points) {
+  const SurfacePoints surface(model, false);
+  std::vector<Eigen::Vector3d> normals(material.size());
+  if (surface_points != nullptr) surface_points->resize(material.size());
+  Eigen::Vector3d x;
+  Eigen::Matrix<double, 3, 2> tangents;
+  for (size_t i = 0; i < material.size(); ++i) {
+    surface.Evaluate(material[i].u, material[i].v, material[i].w, &x,
+                     &tangents);
+    normals[i] = NormalFromTangents(model, tangents);
+    if (surface_points != nullptr) (*surface_points)[i] = x;
+  }
+  return normals;
 }
 
 std::vector<MaterialPoint> ClosestMaterialPoints(
@@ -285,15 +340,17 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
       if (nearest < static_cast<unsigned int>(kGridV)) {
         start.v = LongitudeAround(model, points[i], start.u);
       }
-      if (!options.hints.empty() && options.hints[i].w == start.w &&
-          (WorldPointAt(model, options.hints[i].u, options.hints[i].v,
-                        start.w) -
-           points[i])
-                  .squaredNorm() <= distance_squared) {
-        start = options.hints[i];
+      // The hint's evaluation, when it wins, is the search's first.
+      std::optional<SurfaceSample> from;
+      if (!options.hints.empty() && options.hints[i].w == start.w) {
+        from = Sample(surface, options.hints[i], &range_evaluations);
+        if ((from->point - points[i]).squaredNorm() > distance_squared) {
+          from.reset();
+        }
       }
+      if (!from) from = Sample(surface, start, &range_evaluations);
       Eigen::Vector3d found;
-      result[i] = Refine(surface, model, points[i], start,
+      result[i] = Refine(surface, model, points[i], *from,
                          options.step_tolerance_mm, &range_evaluations, &found);
       if (model_points != nullptr) (*model_points)[i] = found;
     }

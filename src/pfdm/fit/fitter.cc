@@ -577,9 +577,10 @@ SequenceFit FitSequence(const PointSequence& sequence,
         tag_material.push_back(fit.material[i]);
         tag_u.push_back(fit.material[i].u);
       }
+      std::vector<Eigen::Vector3d> midwall_points;
       const std::vector<double> distances =
-          MidwallDistances(model, tag_points, tag_material);
-      const double spread = WallSpreadMm(model, tag_material, distances);
+          MidwallDistances(model, tag_points, tag_material, &midwall_points);
+      const double spread = WallSpreadMm(midwall_points, distances);
       result.wall_reason =
           "tags spread " + FormatMm(spread) + " mm across the wall";
       // An unfinished solve leaves tags far from the surface too: only a

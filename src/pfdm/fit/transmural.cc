@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include "pfdm/util/error.h"
 #include "pfdm/util/point_cloud_tree.h"
@@ -12,14 +13,6 @@ namespace {
 
 // Tags whose neighbour WallSpreadMm compares, at most.
 constexpr size_t kMaxSpreadPairs = 4096;
-
-// The mid-wall's points (w = 0) at the material points' (u, v).
-std::vector<Eigen::Vector3d> MidwallPoints(
-    const Model& model, const std::vector<MaterialPoint>& material) {
-  std::vector<MaterialPoint> midwall = material;
-  for (MaterialPoint& m : midwall) m.w = 0.0;
-  return WorldPoints(model, midwall);
-}
 
 }  // namespace
 
@@ -45,35 +38,37 @@ const char* WallModelName(WallModel model) {
 
 std::vector<double> MidwallDistances(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
-    const std::vector<MaterialPoint>& material) {
-  const std::vector<Eigen::Vector3d> model_points =
-      MidwallPoints(model, material);
+    const std::vector<MaterialPoint>& material,
+    std::vector<Eigen::Vector3d>* midwall_points) {
+  std::vector<MaterialPoint> midwall = material;
+  for (MaterialPoint& m : midwall) m.w = 0.0;
+  std::vector<Eigen::Vector3d> model_points;
+  const std::vector<Eigen::Vector3d> normals =
+      SurfaceNormals(model, midwall, &model_points);
   std::vector<double> distances;
   distances.reserve(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    const double u = material[i].u, v = material[i].v;
-    distances.push_back(
-        SurfaceNormal(model, u, v).dot(points[i] - model_points[i]));
+    distances.push_back(normals[i].dot(points[i] - model_points[i]));
   }
+  if (midwall_points != nullptr) *midwall_points = std::move(model_points);
   return distances;
 }
 
-double WallSpreadMm(const Model& model,
-                    const std::vector<MaterialPoint>& material,
+double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
                     const std::vector<double>& distances) {
-  if (material.size() < 2) return 0.0;
+  if (midwall_points.size() < 2) return 0.0;
   PointCloud cloud;
-  cloud.points = MidwallPoints(model, material);
+  cloud.points = midwall_points;
   PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
   // The mean over at most kMaxSpreadPairs tags' pairs (every stride-th)
   // estimates the mean over all to about 1 % (one in sqrt(2 x 4096)),
   // plenty for a threshold, at a tenth of the queries of 50,000 tags.
-  const size_t stride =
-      (material.size() + kMaxSpreadPairs - 1) / kMaxSpreadPairs;
+  const size_t num_points = midwall_points.size();
+  const size_t stride = (num_points + kMaxSpreadPairs - 1) / kMaxSpreadPairs;
   double sum_squared = 0.0;
   size_t pairs = 0;
-  for (size_t i = 0; i < material.size(); i += stride, ++pairs) {
+  for (size_t i = 0; i < num_points; i += stride, ++pairs) {
     unsigned int nearest[2];
     double distance_squared[2];
     tree.knnSearch(cloud.points[i].data(), 2, nearest, distance_squared);

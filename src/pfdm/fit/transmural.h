@@ -26,22 +26,23 @@ const char* WallModelName(WallModel model);
 constexpr double kMinWallSpreadMm = 4.0;
 
 // Signed distance (mm, + outward) of each point from the mid-wall, along
-// the surface normal at its material point's (u, v).
+// the surface normal at its material point's (u, v), and, when
+// midwall_points is given, the mid-wall's points there.
 std::vector<double> MidwallDistances(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
-    const std::vector<MaterialPoint>& material);
+    const std::vector<MaterialPoint>& material,
+    std::vector<Eigen::Vector3d>* midwall_points = nullptr);
 
 // The thickness of the wall the points fill, read from how much each
 // point's distance differs from that of its nearest neighbour along the
-// mid-wall (the points' material points there): sqrt(6 mean (d_i -
+// mid-wall (midwall_points: MidwallDistances'): sqrt(6 mean (d_i -
 // d_j)^2), which is h for points spread uniformly through a wall of
 // thickness h and about 2.4 sigma for points on one surface with noise of
 // sigma mm.  Neighbours, not the plain spread, so that where the surface
 // misses a shape (a valve, an outflow tract) its points, which all miss it
 // alike, do not read as a wall.  The mean is over every k-th point's pair,
 // at most 4,096 of them.
-double WallSpreadMm(const Model& model,
-                    const std::vector<MaterialPoint>& material,
+double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
                     const std::vector<double>& distances);
 
 // w of tags spread through the wall.  Tags sample the wall uniformly across

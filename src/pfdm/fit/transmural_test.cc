@@ -79,8 +79,9 @@ TEST(TransmuralDepthTest, WallSpreadComparesNeighbours) {
     wall.push_back(across(random));
     missed.push_back(6.0 + 2.0 * std::sin(material.back().u));
   }
-  EXPECT_NEAR(WallSpreadMm(model, material, wall), 8.0, 0.5);
-  EXPECT_LT(WallSpreadMm(model, material, missed), 0.5);
+  const std::vector<Eigen::Vector3d> midwall = WorldPoints(model, material);
+  EXPECT_NEAR(WallSpreadMm(midwall, wall), 8.0, 0.5);
+  EXPECT_LT(WallSpreadMm(midwall, missed), 0.5);
 }
 
 TEST(TransmuralDepthTest, WallModelNames) {

@@ -23,7 +23,11 @@ TEST(PhantomTest, NoiseFreeTagsLieOnTheTruthAndKeepTheirIds) {
       EXPECT_EQ(frame.points[i].id, static_cast<int>(i));
       positions.push_back(frame.points[i].position);
     }
-    const auto material = ClosestMaterialPoints(phantom.truth[t], positions);
+    // Searched to the end: the default stops within 1e-4 mm.
+    CorrespondenceOptions exhaustive;
+    exhaustive.step_tolerance_mm = 0.0;
+    const auto material =
+        ClosestMaterialPoints(phantom.truth[t], positions, exhaustive);
     for (size_t i = 0; i < positions.size(); ++i) {
       EXPECT_LT((phantom.truth[t].WorldPoint(material[i].u, material[i].v) -
                  positions[i])
