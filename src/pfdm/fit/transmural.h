@@ -40,8 +40,9 @@ std::vector<double> MidwallDistances(
 // thickness h and about 2.4 sigma for points on one surface with noise of
 // sigma mm.  Neighbours, not the plain spread, so that where the surface
 // misses a shape (a valve, an outflow tract) its points, which all miss it
-// alike, do not read as a wall.  The mean is over every k-th point's pair,
-// at most 4,096 of them.
+// alike, do not read as a wall.  Neighbours are sought among at most
+// 16,384 of the points (every m-th), and the mean is over every k-th of
+// those's pair, at most 4,096 of them.
 double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
                     const std::vector<double>& distances);
 
