@@ -140,14 +140,26 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     groups[k0] = {};
     groups[k0].reserve(group_capacity);
   };
+  // The sliding points' normals, in one batch (plane_at[i]: point i's).
+  std::vector<MaterialPoint> plane_material;
+  std::vector<int> plane_at(points.size(), -1);
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (sliding[i] && material[i].u < config.u_max) {
+      plane_at[i] = static_cast<int>(plane_material.size());
+      plane_material.push_back(material[i]);
+    }
+  }
+  const std::vector<Eigen::Vector3d> normals =
+      SurfaceNormals(*model, plane_material);
   for (size_t i = 0; i < points.size(); ++i) {
     const KnotSpan span = grid.Span(material[i].u);
     const double u = material[i].u, v = material[i].v, w = material[i].w;
-    const bool plane = sliding[i] && u < config.u_max;
+    const bool plane = plane_at[i] >= 0;
+    const Eigen::Vector3d normal =
+        plane ? normals[plane_at[i]] : Eigen::Vector3d::Zero();
     if (analytic) {
       groups[span.k0].push_back(
-          plane ? PointSample(points[i], u, v, span.weight,
-                              SurfaceNormal(*model, u, v, w))
+          plane ? PointSample(points[i], u, v, span.weight, normal)
                 : PointSample(points[i], u, v, span.weight));
       groups[span.k0].back().w = w;
       if (groups[span.k0].size() == group_size) add_group(span.k0);
@@ -155,8 +167,7 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     }
     ceres::CostFunction* cost =
         plane ? MakeSurfaceCost(points[i], u, v, span.weight, free_mask,
-                                unit_exponents, SurfaceNormal(*model, u, v, w),
-                                options.jacobian, w)
+                                unit_exponents, normal, options.jacobian, w)
               : MakePointCost(points[i], u, v, span.weight, free_mask,
                               unit_exponents, options.jacobian, w);
     blocks.AddResidual(cost, loss, true, {kGlobalsBlock, span.k0, span.k0 + 1});
