@@ -39,8 +39,8 @@ std::vector<Eigen::Vector3d> SurfaceNormals(
     std::vector<Eigen::Vector3d>* surface_points = nullptr);
 
 struct CorrespondenceOptions {
-  // Points are split into this many contiguous chunks, one per thread; the
-  // result does not depend on it.
+  // Threads that share the points, taking blocks of them as they free up;
+  // the result does not depend on it.
   int num_threads = 1;
   // A refinement step that would move the model point by less than this
   // (mm) ends the search for that point; 0 runs every step until none
