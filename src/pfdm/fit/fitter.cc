@@ -153,7 +153,7 @@ void AddSolverCounts(const SolverReport& report, FrameFit* fit) {
   fit->iterations += report.iterations;
   fit->residual_evaluations += report.residual_evaluations;
   fit->jacobian_evaluations += report.jacobian_evaluations;
-  fit->jacobian_seconds += report.jacobian_seconds;
+  fit->evaluation_seconds += report.evaluation_seconds;
   fit->linear_solver_seconds += report.linear_solver_seconds;
   fit->minimizer_seconds += report.minimizer_seconds;
 }

@@ -37,7 +37,7 @@ struct FrameFit {
   double solve_seconds = 0.0;
   int residual_evaluations = 0;  // Summed over the rounds.
   int jacobian_evaluations = 0;
-  double jacobian_seconds = 0.0;       // Summed over the solver's iterations.
+  double evaluation_seconds = 0.0;     // Summed over the solver's iterations.
   double linear_solver_seconds = 0.0;  // Likewise.
   double minimizer_seconds = 0.0;      // Likewise; see SolverReport.
   // Closest material points of the untracked points, over the rounds.

@@ -231,7 +231,7 @@ bool PointGroupResidual::Evaluate(double const* const* parameters,
     }
     return true;
   }
-  if (precomputed_.with_jacobians == with_jacobians &&
+  if ((precomputed_.with_jacobians || !with_jacobians) &&
       IsAt(precomputed_, parameters)) {
     Write(precomputed_, residuals, jacobians);
   } else {
@@ -251,14 +251,15 @@ void PointGroupResidual::WholeBlocks(double const* const* parameters,
   }
 }
 
-void PointGroupResidual::Precompute(double const* const* parameters,
-                                    bool with_jacobians) const {
-  if (!compressed_) return;
+double PointGroupResidual::Precompute(double const* const* parameters,
+                                      bool with_jacobians) const {
+  if (!compressed_) return 0.0;
   precomputed_ = Compute(parameters, with_jacobians);
   for (int b = 0; b < 5; ++b) {
     precomputed_.at.insert(precomputed_.at.end(), parameters[b],
                            parameters[b] + widths_[b]);
   }
+  return precomputed_.norm * precomputed_.norm;
 }
 
 bool PointGroupResidual::IsAt(const Result& result,
@@ -293,6 +294,8 @@ PointGroupResidual::Result PointGroupResidual::Compute(
       : knots_alike_
           ? SquareRootFormFromGram(MomentGram(blocks, rotation), stacked)
           : ToSquareRootForm(stacked());
+  result.norm = std::sqrt(result.form.z.squaredNorm() +
+                          result.form.rho * result.form.rho);
   return result;
 }
 

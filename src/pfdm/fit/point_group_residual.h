@@ -43,9 +43,11 @@ class PointGroupResidual : public ceres::CostFunction {
 
   // Computes the square-root form (with_jacobians) or the residual norm at
   // `parameters` ahead of Ceres, for Evaluate to hand out while it is asked
-  // at the same parameter values (PrecomputedGroups).  Not thread-safe
-  // against Evaluate; Ceres calls neither during the other.
-  void Precompute(double const* const* parameters, bool with_jacobians) const;
+  // at the same parameter values (PrecomputedGroups), the form also when
+  // asked without Jacobians.  Returns the squared residual norm (0 for a
+  // group too small to compress, which computes on demand).  Not
+  // thread-safe against Evaluate; Ceres calls neither during the other.
+  double Precompute(double const* const* parameters, bool with_jacobians) const;
 
  private:
   // What a compressed group hands Ceres at one set of parameter values.
@@ -53,7 +55,7 @@ class PointGroupResidual : public ceres::CostFunction {
     // The parameter values, block after block (Precompute's only).
     std::vector<double> at;
     bool with_jacobians = false;
-    double norm = 0.0;    // Without Jacobians.
+    double norm = 0.0;    // |r|, with Jacobians or without.
     SquareRootForm form;  // With.
   };
   // The globals and knots whole, from their free entries (into `whole`).

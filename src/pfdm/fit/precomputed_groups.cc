@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
+#include <numeric>
 #include <utility>
 
 #define EIGEN_USE_THREADS
@@ -17,10 +19,12 @@ constexpr int kMinPointsForThreads = 4096;
 
 }  // namespace
 
-PrecomputedGroups::PrecomputedGroups(int num_threads)
+PrecomputedGroups::PrecomputedGroups(int num_threads, bool speculate)
     : num_threads_(num_threads),
-      pool_(std::make_unique<Eigen::ThreadPool>(num_threads - 1,
-                                                /*allow_spinning=*/false)) {}
+      pool_(num_threads > 1 ? std::make_unique<Eigen::ThreadPool>(
+                                  num_threads - 1, /*allow_spinning=*/false)
+                            : nullptr),
+      speculate_(speculate) {}
 
 PrecomputedGroups::~PrecomputedGroups() = default;
 
@@ -31,8 +35,41 @@ void PrecomputedGroups::Add(const PointGroupResidual* group,
   sorted_ = false;
 }
 
+// Ceres' trust-region minimizer asks for: (Jacobians, new point) at the
+// start; (no Jacobians, new point) at each step's candidate; (Jacobians,
+// same point) when it accepts the candidate.  A candidate after a
+// candidate means the first was rejected.
 void PrecomputedGroups::PrepareForEvaluation(bool evaluate_jacobians,
-                                             bool /*new_evaluation_point*/) {
+                                             bool new_evaluation_point) {
+  if (!new_evaluation_point && (have_jacobians_ || !evaluate_jacobians)) {
+    // The groups already hold what is asked at this point.
+  } else {
+    bool with_jacobians = evaluate_jacobians;
+    if (!evaluate_jacobians && speculate_) {
+      with_jacobians = !candidate_pending_ && last_decrease_ > kSpeculateAbove;
+    }
+    cost_ = Compute(with_jacobians);
+    have_jacobians_ = with_jacobians;
+  }
+  if (!evaluate_jacobians) {
+    // A candidate; the one before it, if still pending, was rejected.
+    if (candidate_pending_) last_decrease_ = 0.0;
+    candidate_pending_ = true;
+  } else if (new_evaluation_point) {
+    // A start: no step taken yet, the first candidate speculates.
+    accepted_cost_ = cost_;
+    last_decrease_ = std::numeric_limits<double>::infinity();
+    candidate_pending_ = false;
+  } else {
+    last_decrease_ =
+        accepted_cost_ > 0.0 ? (accepted_cost_ - cost_) / accepted_cost_ : 0.0;
+    accepted_cost_ = cost_;
+    candidate_pending_ = false;
+  }
+}
+
+double PrecomputedGroups::Compute(bool with_jacobians) {
+  ++(with_jacobians ? jacobian_evaluations_ : residual_evaluations_);
   if (!sorted_) {
     std::stable_sort(
         groups_.begin(), groups_.end(), [](const Group& a, const Group& b) {
@@ -40,28 +77,31 @@ void PrecomputedGroups::PrepareForEvaluation(bool evaluate_jacobians,
         });
     sorted_ = true;
   }
-  if (num_points_ < kMinPointsForThreads) {
-    for (const Group& group : groups_) {
-      group.residual->Precompute(group.blocks.data(), evaluate_jacobians);
+  std::vector<double> costs(groups_.size(), 0.0);
+  if (num_threads_ == 1 || num_points_ < kMinPointsForThreads) {
+    for (size_t i = 0; i < groups_.size(); ++i) {
+      costs[i] = groups_[i].residual->Precompute(groups_[i].blocks.data(),
+                                                 with_jacobians);
     }
-    return;
-  }
-  std::atomic<size_t> next(0);
-  auto work = [&] {
-    for (size_t i = next++; i < groups_.size(); i = next++) {
-      groups_[i].residual->Precompute(groups_[i].blocks.data(),
-                                      evaluate_jacobians);
+  } else {
+    std::atomic<size_t> next(0);
+    auto work = [&] {
+      for (size_t i = next++; i < groups_.size(); i = next++) {
+        costs[i] = groups_[i].residual->Precompute(groups_[i].blocks.data(),
+                                                   with_jacobians);
+      }
+    };
+    Eigen::Barrier done(num_threads_ - 1);
+    for (int t = 1; t < num_threads_; ++t) {
+      pool_->Schedule([&] {
+        work();
+        done.Notify();
+      });
     }
-  };
-  Eigen::Barrier done(num_threads_ - 1);
-  for (int t = 1; t < num_threads_; ++t) {
-    pool_->Schedule([&] {
-      work();
-      done.Notify();
-    });
+    work();
+    done.Wait();
   }
-  work();
-  done.Wait();
+  return std::accumulate(costs.begin(), costs.end(), 0.0);
 }
 
 }  // namespace pfdm

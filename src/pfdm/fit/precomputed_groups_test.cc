@@ -62,25 +62,73 @@ struct Groups {
 };
 
 TEST(PrecomputedGroupsTest, HandsOutWhatEachGroupWouldCompute) {
-  Groups groups;
-  Eigen::Map<Eigen::Vector4d>(groups.quaternion).normalize();
   for (bool with_jacobians : {true, false}) {
-    std::vector<std::vector<double>> expected;
-    for (const auto& group : groups.residuals) {
-      expected.push_back(groups.Evaluate(*group, with_jacobians));
-    }
-    PrecomputedGroups precomputed(3);
+    Groups reference, groups;
+    Eigen::Map<Eigen::Vector4d>(reference.quaternion).normalize();
+    Eigen::Map<Eigen::Vector4d>(groups.quaternion).normalize();
+    PrecomputedGroups precomputed(3, false);
     for (const auto& group : groups.residuals) {
       precomputed.Add(group.get(), groups.blocks());
     }
     precomputed.PrepareForEvaluation(with_jacobians, true);
-    for (size_t g = 0; g < expected.size(); ++g) {
+    for (size_t g = 0; g < groups.residuals.size(); ++g) {
       EXPECT_EQ(groups.Evaluate(*groups.residuals[g], with_jacobians),
-                expected[g])
+                reference.Evaluate(*reference.residuals[g], with_jacobians))
           << "group " << g << (with_jacobians ? " with" : " without")
           << " Jacobians";
     }
   }
+}
+
+// Speculating, a candidate is evaluated with its Jacobians, which serve
+// Ceres' next request once it accepts the step; its residuals are the
+// square-root form's norm, the same cost to round-off.  A rejected
+// candidate, or a step that lowered the cost by under kSpeculateAbove,
+// ends the speculation.
+TEST(PrecomputedGroupsTest, SpeculatesWhileStepsAreAcceptedAndLarge) {
+  Groups reference, groups;
+  Eigen::Map<Eigen::Vector4d>(reference.quaternion).normalize();
+  Eigen::Map<Eigen::Vector4d>(groups.quaternion).normalize();
+  PrecomputedGroups precomputed(2, true);
+  for (const auto& group : groups.residuals) {
+    precomputed.Add(group.get(), groups.blocks());
+  }
+  // Smaller a1 lowers these groups' cost (2 % from 0.45 to 0.35).
+  auto move_to = [&](double a1) {
+    groups.knot1[kA1] = reference.knot1[kA1] = a1;
+  };
+  precomputed.PrepareForEvaluation(true, true);  // The start.
+  move_to(0.35);                                 // A candidate,
+  precomputed.PrepareForEvaluation(false, true);
+  EXPECT_EQ(precomputed.jacobian_evaluations(), 2);
+  for (size_t g = 0; g < groups.residuals.size(); ++g) {
+    const double norm = groups.Evaluate(*groups.residuals[g], false)[0];
+    EXPECT_NEAR(norm, reference.Evaluate(*reference.residuals[g], false)[0],
+                1e-12 * norm)
+        << "group " << g;
+  }
+  precomputed.PrepareForEvaluation(true, false);  // accepted.
+  EXPECT_EQ(precomputed.jacobian_evaluations(), 2);
+  for (size_t g = 0; g < groups.residuals.size(); ++g) {
+    EXPECT_EQ(groups.Evaluate(*groups.residuals[g], true),
+              reference.Evaluate(*reference.residuals[g], true))
+        << "group " << g;
+  }
+  move_to(0.3);  // A candidate, then another: the first was rejected.
+  precomputed.PrepareForEvaluation(false, true);
+  move_to(0.32);
+  precomputed.PrepareForEvaluation(false, true);
+  EXPECT_EQ(precomputed.jacobian_evaluations(), 3);
+  EXPECT_EQ(precomputed.residual_evaluations(), 1);
+  precomputed.PrepareForEvaluation(true, false);  // Accepted at last,
+  EXPECT_EQ(precomputed.jacobian_evaluations(), 4);
+  move_to(0.32 - 1e-9);  // so the next candidate speculates; it lowers
+  precomputed.PrepareForEvaluation(false, true);  // the cost by a hair,
+  precomputed.PrepareForEvaluation(true, false);
+  move_to(0.32 - 2e-9);  // and the one after does not speculate.
+  precomputed.PrepareForEvaluation(false, true);
+  EXPECT_EQ(precomputed.jacobian_evaluations(), 5);
+  EXPECT_EQ(precomputed.residual_evaluations(), 2);
 }
 
 // Asked at other values than it precomputed (no PrepareForEvaluation in
@@ -88,7 +136,7 @@ TEST(PrecomputedGroupsTest, HandsOutWhatEachGroupWouldCompute) {
 TEST(PrecomputedGroupsTest, OtherParameterValuesAreComputedAfresh) {
   Groups groups;
   Eigen::Map<Eigen::Vector4d>(groups.quaternion).normalize();
-  PrecomputedGroups precomputed(2);
+  PrecomputedGroups precomputed(2, false);
   for (const auto& group : groups.residuals) {
     precomputed.Add(group.get(), groups.blocks());
   }

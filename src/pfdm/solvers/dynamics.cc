@@ -484,7 +484,8 @@ SolverReport SolveDamped(ceres::Problem* problem,
   report.message = summary.message;
   report.residual_evaluations = summary.num_residual_evaluations;
   report.jacobian_evaluations = summary.num_jacobian_evaluations;
-  report.jacobian_seconds = summary.jacobian_evaluation_time_in_seconds;
+  report.evaluation_seconds = summary.residual_evaluation_time_in_seconds +
+                              summary.jacobian_evaluation_time_in_seconds;
   report.linear_solver_seconds = summary.linear_solver_time_in_seconds;
   report.minimizer_seconds = summary.minimizer_time_in_seconds;
   return report;

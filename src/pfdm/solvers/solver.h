@@ -83,7 +83,9 @@ struct SolverReport {
   std::string message;
   int residual_evaluations = 0;
   int jacobian_evaluations = 0;
-  double jacobian_seconds = 0.0;
+  // Evaluating residuals and Jacobians: a speculating solve
+  // (PrecomputedGroups) computes a candidate's Jacobians with its residuals.
+  double evaluation_seconds = 0.0;
   double linear_solver_seconds = 0.0;
   // Iterating, without the set-up (Ceres' preprocessing) or the summary.
   double minimizer_seconds = 0.0;
