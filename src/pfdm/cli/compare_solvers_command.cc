@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "pfdm/cli/commands.h"
+#include "pfdm/fit/fitter.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/solvers/solver.h"
@@ -127,9 +128,11 @@ int RunCompareSolvers() {
             << ',' << p.gradient_norm << ',' << std::sqrt(2.0 * p.cost / n)
             << '\n';
       }
-      std::printf("%-10s frame %3d  iterations %6d  %8.3f s  rms %.6f mm  %s\n",
-                  SolverName(kind), frame.frame, frame.iterations,
-                  frame.solve_seconds, frame.rms_mm, frame.termination.c_str());
+      std::printf(
+          "%-10s frame %3d  iterations %6d  %8.3f s  rms %.6f mm  %s%s\n",
+          SolverName(kind), frame.frame, frame.iterations, frame.solve_seconds,
+          frame.rms_mm, frame.termination.c_str(),
+          UnsettledNote(frame).c_str());
       seconds[kind] += frame.solve_seconds;
       iterations[kind] += frame.iterations;
     }

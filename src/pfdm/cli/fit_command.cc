@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "pfdm/cli/commands.h"
+#include "pfdm/fit/fitter.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
@@ -27,9 +28,10 @@ int RunFit() {
                   AnalyzeFit(fit, BasePlanesFromFlags(FLAGS_points)), options,
                   vtk_format, &plots);
   for (const FrameFit& frame : fit.frames) {
-    std::printf("frame %3d  points %5zu  rms %.3f mm  max %.3f mm  %s\n",
+    std::printf("frame %3d  points %5zu  rms %.3f mm  max %.3f mm  %s%s\n",
                 frame.frame, frame.residuals.size(), frame.rms_mm,
-                frame.max_distance_mm, frame.termination.c_str());
+                frame.max_distance_mm, frame.termination.c_str(),
+                UnsettledNote(frame).c_str());
   }
   std::printf(
       "wrote %s/fit.json, parameters.csv, parameters.svg, report.html, "

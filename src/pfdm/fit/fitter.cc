@@ -364,6 +364,15 @@ std::string FormatMm(double mm) {
 
 }  // namespace
 
+std::string UnsettledNote(const FrameFit& frame) {
+  if (frame.unsettled_mm <= 0.0) return "";
+  char text[80];
+  std::snprintf(text, sizeof(text),
+                "; closest points unsettled (%.2f mm in the last search)",
+                frame.unsettled_mm);
+  return text;
+}
+
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options) {
   if (sequence.frames.empty()) {
@@ -505,6 +514,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
       RerankDepths(model, points, tracked_tags, &fit.material);
     }
     auto solve_rounds = [&]() {
+      fit.unsettled_mm = 0.0;
       for (int round = 0; round < options.max_correspondence_rounds; ++round) {
         std::optional<double> rim_height;
         if (!reference && !unknown.empty()) {
@@ -562,6 +572,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
         }
         moved = update_closest();
         if (moved < options.correspondence_tolerance_mm) break;
+        if (round + 1 == options.max_correspondence_rounds) {
+          fit.unsettled_mm = moved;
+        }
       }
     };
     solve_rounds();

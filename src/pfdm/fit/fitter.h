@@ -34,6 +34,11 @@ struct FrameFit {
   double max_distance_mm = 0.0;
   int iterations = 0;
   int correspondence_rounds = 0;
+  // When the rounds ran out (FitOptions::max_correspondence_rounds) with
+  // closest points still moving by the tolerance or more: how far the last
+  // search moved one (mm), the fit resting on correspondences that had not
+  // settled.  0 when they settled.
+  double unsettled_mm = 0.0;
   double solve_seconds = 0.0;
   int residual_evaluations = 0;  // Summed over the rounds.
   int jacobian_evaluations = 0;
@@ -77,6 +82,10 @@ struct SequenceFit {
 // neither.
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options);
+
+// "" for a frame whose correspondences settled, else what to append to its
+// termination: "; closest points unsettled (0.94 mm in the last search)".
+std::string UnsettledNote(const FrameFit& frame);
 
 }  // namespace pfdm
 

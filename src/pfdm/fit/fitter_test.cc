@@ -209,6 +209,35 @@ TEST(FitterTest, TrackedFramesConvergeInThreeIterations) {
   }
 }
 
+// Points seen in one frame each (contours) find their closest points in
+// rounds.  Out of rounds while they still move, a frame says by how much;
+// settled, it says nothing.
+TEST(FitterTest, FramesSayWhenTheirClosestPointsHaveNotSettled) {
+  PointSequence contours = MakeTestPhantom(2000, 2).points;
+  for (Frame& frame : contours.frames) {
+    for (DataPoint& p : frame.points) p.id += 1000000 * frame.index;
+  }
+  FitOptions options;
+  const SequenceFit settled =
+      FitSequence(contours, ModelConfig::Paper(17), options);
+  options.max_correspondence_rounds = 1;
+  const SequenceFit cut_short =
+      FitSequence(contours, ModelConfig::Paper(17), options);
+  for (int t = 0; t < 2; ++t) {
+    EXPECT_LT(settled.frames[t].correspondence_rounds, 10) << t;
+    EXPECT_EQ(settled.frames[t].unsettled_mm, 0.0) << t;
+    EXPECT_EQ(UnsettledNote(settled.frames[t]), "") << t;
+    // Frame 0's one round starts from the initialized model, frame 1's
+    // from frame 0's fit: either moves its points by more than 0.05 mm.
+    EXPECT_GE(cut_short.frames[t].unsettled_mm,
+              options.correspondence_tolerance_mm)
+        << t;
+    EXPECT_NE(UnsettledNote(cut_short.frames[t]).find("unsettled"),
+              std::string::npos)
+        << t;
+  }
+}
+
 TEST(FitterTest, PointOrderDoesNotMatter) {
   PointSequence shuffled = DefaultPhantom().points;
   std::mt19937 random(7);

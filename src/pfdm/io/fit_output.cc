@@ -350,6 +350,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                   {"max_distance_mm", frame.max_distance_mm},
                   {"iterations", frame.iterations},
                   {"correspondence_rounds", frame.correspondence_rounds},
+                  {"correspondence_unsettled_mm", frame.unsettled_mm},
                   {"solve_seconds", frame.solve_seconds},
                   {"termination", frame.termination},
                   {volume_key, summary.volume_ml}};

@@ -43,6 +43,8 @@ TEST(FitOutputTest, JsonHasVolumesEjectionFractionAndRegions) {
   for (const auto& frame : json["frames"]) {
     volumes.push_back(frame["midwall_volume_ml"].get<double>());
     EXPECT_FALSE(frame.contains("cavity_volume_ml"));
+    // Tags: frame 0's rounds settle, later frames search nothing.
+    EXPECT_EQ(frame["correspondence_unsettled_mm"].get<double>(), 0.0);
   }
   // Tags on one surface: named what it is, no ejection fraction.
   EXPECT_EQ(json["model"]["wall"], "midwall");

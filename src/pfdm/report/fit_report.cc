@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "pfdm/fit/fitter.h"
 #include "pfdm/util/markup_escape.h"
 
 namespace pfdm {
@@ -231,8 +232,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
       << "</td><td>"
       << (t < analysis.strain.size() ? Fixed(analysis.strain[t].gls_percent, 1)
                                      : "")
-      << "</td><td class=\"l\">" << EscapeMarkup(f.termination)
-      << "</td></tr>\n";
+      << "</td><td class=\"l\">"
+      << EscapeMarkup(f.termination + UnsettledNote(f)) << "</td></tr>\n";
   }
   h << "</table>\n";
 

@@ -27,6 +27,7 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
     frame.state = phantom.truth[t].state;
     frame.rms_mm = 0.5 + t;
     frame.termination = "CONVERGENCE";
+    if (t == 3) frame.unsettled_mm = 0.94;
     fit.frames.push_back(frame);
   }
   PointSequence points = phantom.points;
@@ -55,6 +56,11 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   EXPECT_NE(cavity_html.find(ef), std::string::npos) << ef;
   EXPECT_NE(html.find("4 ES"), std::string::npos);
   EXPECT_NE(html.find("<td>4.50</td>"), std::string::npos);  // RMS frame 4.
+  // Frame 3's correspondences had not settled; the others' had.
+  EXPECT_NE(html.find("CONVERGENCE; closest points unsettled (0.94 mm in the "
+                      "last search)"),
+            std::string::npos);
+  EXPECT_EQ(CountOf(html, "unsettled"), 1);
   // 5 frame rows and 16 segment rows, each a <tr> after its table's head.
   EXPECT_EQ(CountOf(html, "<tr>"), 2 + 5 + 16);
   EXPECT_NE(html.find("apical 4"), std::string::npos);
