@@ -21,6 +21,7 @@ struct Groups {
     globals = knot0 = knot1 = DefaultFunctionValues();
     globals[kA0] = 60.0;
     knot0[kA1] = 0.4, knot1[kA1] = 0.45, knot1[kTau] = 0.1;
+    Eigen::Map<Eigen::Vector4d>(quaternion).normalize();
     std::mt19937 random(3);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     const FunctionMask mask = ModelConfig::Paper(17).FreeMask();
@@ -35,6 +36,14 @@ struct Groups {
       residuals.push_back(
           std::make_unique<PointGroupResidual>(std::move(samples), mask, true));
     }
+  }
+  // A PrecomputedGroups over every group.
+  std::unique_ptr<PrecomputedGroups> Precomputed(int num_threads,
+                                                 bool speculate) {
+    auto precomputed =
+        std::make_unique<PrecomputedGroups>(num_threads, speculate);
+    for (const auto& group : residuals) precomputed->Add(group.get(), blocks());
+    return precomputed;
   }
   std::vector<double*> blocks() {
     return {center, quaternion, globals.data(), knot0.data(), knot1.data()};
@@ -64,13 +73,8 @@ struct Groups {
 TEST(PrecomputedGroupsTest, HandsOutWhatEachGroupWouldCompute) {
   for (bool with_jacobians : {true, false}) {
     Groups reference, groups;
-    Eigen::Map<Eigen::Vector4d>(reference.quaternion).normalize();
-    Eigen::Map<Eigen::Vector4d>(groups.quaternion).normalize();
-    PrecomputedGroups precomputed(3, false);
-    for (const auto& group : groups.residuals) {
-      precomputed.Add(group.get(), groups.blocks());
-    }
-    precomputed.PrepareForEvaluation(with_jacobians, true);
+    const auto precomputed = groups.Precomputed(3, false);
+    precomputed->PrepareForEvaluation(with_jacobians, true);
     for (size_t g = 0; g < groups.residuals.size(); ++g) {
       EXPECT_EQ(groups.Evaluate(*groups.residuals[g], with_jacobians),
                 reference.Evaluate(*reference.residuals[g], with_jacobians))
@@ -87,64 +91,54 @@ TEST(PrecomputedGroupsTest, HandsOutWhatEachGroupWouldCompute) {
 // ends the speculation.
 TEST(PrecomputedGroupsTest, SpeculatesWhileStepsAreAcceptedAndLarge) {
   Groups reference, groups;
-  Eigen::Map<Eigen::Vector4d>(reference.quaternion).normalize();
-  Eigen::Map<Eigen::Vector4d>(groups.quaternion).normalize();
-  PrecomputedGroups precomputed(2, true);
-  for (const auto& group : groups.residuals) {
-    precomputed.Add(group.get(), groups.blocks());
-  }
+  const auto precomputed = groups.Precomputed(2, true);
   // Smaller a1 lowers these groups' cost (2 % from 0.45 to 0.35).
   auto move_to = [&](double a1) {
     groups.knot1[kA1] = reference.knot1[kA1] = a1;
   };
-  precomputed.PrepareForEvaluation(true, true);  // The start.
-  move_to(0.35);                                 // A candidate,
-  precomputed.PrepareForEvaluation(false, true);
-  EXPECT_EQ(precomputed.jacobian_evaluations(), 2);
+  precomputed->PrepareForEvaluation(true, true);  // The start.
+  move_to(0.35);                                  // A candidate,
+  precomputed->PrepareForEvaluation(false, true);
+  EXPECT_EQ(precomputed->jacobian_evaluations(), 2);
   for (size_t g = 0; g < groups.residuals.size(); ++g) {
     const double norm = groups.Evaluate(*groups.residuals[g], false)[0];
     EXPECT_NEAR(norm, reference.Evaluate(*reference.residuals[g], false)[0],
                 1e-12 * norm)
         << "group " << g;
   }
-  precomputed.PrepareForEvaluation(true, false);  // accepted.
-  EXPECT_EQ(precomputed.jacobian_evaluations(), 2);
+  precomputed->PrepareForEvaluation(true, false);  // accepted.
+  EXPECT_EQ(precomputed->jacobian_evaluations(), 2);
   for (size_t g = 0; g < groups.residuals.size(); ++g) {
     EXPECT_EQ(groups.Evaluate(*groups.residuals[g], true),
               reference.Evaluate(*reference.residuals[g], true))
         << "group " << g;
   }
   move_to(0.3);  // A candidate, then another: the first was rejected.
-  precomputed.PrepareForEvaluation(false, true);
+  precomputed->PrepareForEvaluation(false, true);
   move_to(0.32);
-  precomputed.PrepareForEvaluation(false, true);
-  EXPECT_EQ(precomputed.jacobian_evaluations(), 3);
-  EXPECT_EQ(precomputed.residual_evaluations(), 1);
-  precomputed.PrepareForEvaluation(true, false);  // Accepted at last,
-  EXPECT_EQ(precomputed.jacobian_evaluations(), 4);
+  precomputed->PrepareForEvaluation(false, true);
+  EXPECT_EQ(precomputed->jacobian_evaluations(), 3);
+  EXPECT_EQ(precomputed->residual_evaluations(), 1);
+  precomputed->PrepareForEvaluation(true, false);  // Accepted at last,
+  EXPECT_EQ(precomputed->jacobian_evaluations(), 4);
   move_to(0.32 - 1e-9);  // so the next candidate speculates; it lowers
-  precomputed.PrepareForEvaluation(false, true);  // the cost by a hair,
-  precomputed.PrepareForEvaluation(true, false);
+  precomputed->PrepareForEvaluation(false, true);  // the cost by a hair,
+  precomputed->PrepareForEvaluation(true, false);
   move_to(0.32 - 2e-9);  // and the one after does not speculate.
-  precomputed.PrepareForEvaluation(false, true);
-  EXPECT_EQ(precomputed.jacobian_evaluations(), 5);
-  EXPECT_EQ(precomputed.residual_evaluations(), 2);
+  precomputed->PrepareForEvaluation(false, true);
+  EXPECT_EQ(precomputed->jacobian_evaluations(), 5);
+  EXPECT_EQ(precomputed->residual_evaluations(), 2);
 }
 
 // Asked at other values than it precomputed (no PrepareForEvaluation in
 // between), a group computes afresh rather than hand out a stale result.
 TEST(PrecomputedGroupsTest, OtherParameterValuesAreComputedAfresh) {
   Groups groups;
-  Eigen::Map<Eigen::Vector4d>(groups.quaternion).normalize();
-  PrecomputedGroups precomputed(2, false);
-  for (const auto& group : groups.residuals) {
-    precomputed.Add(group.get(), groups.blocks());
-  }
-  precomputed.PrepareForEvaluation(true, true);
+  const auto precomputed = groups.Precomputed(2, false);
+  precomputed->PrepareForEvaluation(true, true);
   groups.knot1[kA1] += 0.01;
   groups.center[2] -= 0.5;
   Groups fresh;
-  Eigen::Map<Eigen::Vector4d>(fresh.quaternion).normalize();
   fresh.knot1[kA1] += 0.01;
   fresh.center[2] -= 0.5;
   for (size_t g = 0; g < groups.residuals.size(); ++g) {
