@@ -56,6 +56,14 @@ ceres::ResidualBlockId FrameBlocks::Add(ceres::CostFunction* cost,
     entries.push_back(block.entries.get());
     compact = compact || block.entries != nullptr;
   }
+  if (loss == nullptr && !compact &&
+      std::all_of(parameters.begin(), parameters.end(),
+                  [this](double* parameter) {
+                    return problem_->IsParameterBlockConstant(parameter);
+                  })) {
+    delete cost;
+    return nullptr;
+  }
   if (compact && takes == Takes::kWholeBlocks) {
     cost = new FreeEntriesCost(cost, std::move(entries));
   }

@@ -28,7 +28,11 @@ class FrameBlocks {
 
   // Adds `cost` over the pose (when with_pose) and then the listed blocks,
   // each as the problem holds it.  A cost over whole blocks is wrapped in
-  // FreeEntriesCost; one that takes the blocks as they are says so.
+  // FreeEntriesCost; one that takes the blocks as they are says so.  A cost
+  // without a loss over constant blocks only is a constant: it is deleted,
+  // not added, and nullptr returned (Ceres would evaluate it once before
+  // solving, telling the problem's EvaluationCallback of the start point
+  // first: a pass over every point of the frame for nothing).
   enum class Takes { kWholeBlocks, kProblemBlocks };
   ceres::ResidualBlockId AddResidual(ceres::CostFunction* cost,
                                      ceres::LossFunction* loss, bool with_pose,

@@ -1,10 +1,20 @@
 #include "pfdm/fit/frame_blocks.h"
 
+#include "ceres/autodiff_cost_function.h"
 #include "gtest/gtest.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
+
+// r = x[0] - 1 over a block of the functions.
+struct Offset {
+  template <typename T>
+  bool operator()(const T* x, T* r) const {
+    r[0] = x[0] - T(1.0);
+    return true;
+  }
+};
 
 TEST(FrameBlocksTest, ReferenceFrameVariesThePoseAndTheGaugeFreeEntries) {
   Model model = TestSpheroid(5);
@@ -38,6 +48,24 @@ TEST(FrameBlocksTest, TrackedFrameVariesThePoseAndStoresItsEntries) {
   int free_blocks = 0;
   blocks.ForEachFree([&](double*, const std::vector<int>&) { ++free_blocks; });
   EXPECT_EQ(free_blocks, 5);
+}
+
+// A cost over the held globals alone is a constant and is not added; one
+// over a knot's free entries is.
+TEST(FrameBlocksTest, ACostOverConstantBlocksOnlyIsNotAdded) {
+  Model model = TestSpheroid(5);
+  ceres::Problem problem;
+  FrameBlocks blocks(FrameKind::kReference, &model, &problem);
+  ASSERT_EQ(blocks.entries(kGlobalsBlock), nullptr);
+  auto* constant =
+      new ceres::AutoDiffCostFunction<Offset, 1, kNumFunctions>(new Offset);
+  EXPECT_EQ(blocks.AddResidual(constant, nullptr, false, {kGlobalsBlock}),
+            nullptr);
+  EXPECT_EQ(problem.NumResidualBlocks(), 0);
+  auto* free =
+      new ceres::AutoDiffCostFunction<Offset, 1, kNumFunctions>(new Offset);
+  EXPECT_NE(blocks.AddResidual(free, nullptr, false, {2}), nullptr);
+  EXPECT_EQ(problem.NumResidualBlocks(), 1);
 }
 
 }  // namespace
