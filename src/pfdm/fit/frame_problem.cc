@@ -98,17 +98,16 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   // Analytic points go into PointGroupResidual blocks, which take the
   // problem's blocks as they are: many points between the same two knots,
   // or one each when every point carries its own robust loss.  Those are
-  // evaluated ahead of Ceres (precomputed_groups.h), on the threads, and
-  // a tracked frame's direct solve evaluates each candidate point with its
-  // Jacobians.
+  // evaluated ahead of Ceres (precomputed_groups.h), on the threads, each
+  // trust-region candidate with its Jacobians (the integrator, which calls
+  // Problem::Evaluate, has no candidates).
   const bool analytic = options.jacobian == JacobianKind::kAnalytic;
   std::unique_ptr<PrecomputedGroups> precomputed;
   ceres::Problem::Options problem_options;
   if (analytic) {
     precomputed = std::make_unique<PrecomputedGroups>(
         options.solver.num_threads,
-        /*speculate=*/options.solver.kind == SolverKind::kDirect &&
-            kind == FrameKind::kTracked);
+        /*speculate=*/options.solver.kind != SolverKind::kIntegrator);
     problem_options.evaluation_callback = precomputed.get();
   }
   ceres::Problem problem(problem_options);
