@@ -304,6 +304,27 @@ std::vector<Eigen::Vector3d> SurfaceNormals(
   return normals;
 }
 
+std::vector<Eigen::Vector3d> SlidingNormals(
+    const Model& model, const std::vector<MaterialPoint>& material,
+    const std::vector<bool>& sliding) {
+  std::vector<size_t> planes;
+  std::vector<MaterialPoint> plane_material;
+  for (size_t i = 0; i < material.size(); ++i) {
+    if (sliding[i] && material[i].u < model.config.u_max) {
+      planes.push_back(i);
+      plane_material.push_back(material[i]);
+    }
+  }
+  const std::vector<Eigen::Vector3d> plane_normals =
+      SurfaceNormals(model, plane_material);
+  std::vector<Eigen::Vector3d> normals(material.size(),
+                                       Eigen::Vector3d::Zero());
+  for (size_t j = 0; j < planes.size(); ++j) {
+    normals[planes[j]] = plane_normals[j];
+  }
+  return normals;
+}
+
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const CorrespondenceOptions& options,

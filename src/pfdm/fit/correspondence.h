@@ -38,6 +38,14 @@ std::vector<Eigen::Vector3d> SurfaceNormals(
     const Model& model, const std::vector<MaterialPoint>& material,
     std::vector<Eigen::Vector3d>* surface_points = nullptr);
 
+// The normals along which sliding points pull (point-to-plane), in one
+// SurfaceNormals batch: SurfaceNormal at material[i] for the points with
+// sliding[i] below the rim (u < u_max; a point on the rim pulls with its
+// whole vector), zero for the others.
+std::vector<Eigen::Vector3d> SlidingNormals(
+    const Model& model, const std::vector<MaterialPoint>& material,
+    const std::vector<bool>& sliding);
+
 struct CorrespondenceOptions {
   // Threads that share the points, taking blocks of them as they free up;
   // the result does not depend on it.

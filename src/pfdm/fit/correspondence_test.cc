@@ -108,6 +108,22 @@ TEST(CorrespondenceTest, SurfaceNormalsMatchTheOneAtATimeNormal) {
   }
 }
 
+// Sliding points below the rim get SurfaceNormal; the others, and a
+// sliding point on the rim, zero.
+TEST(CorrespondenceTest, SlidingNormalsAreThoseOfSlidingPointsBelowTheRim) {
+  const Model model = TruthModel();
+  const double u_max = model.config.u_max;
+  const std::vector<MaterialPoint> material = {
+      {-1.0, 0.4, 0.0}, {0.2, -2.0, 0.0}, {u_max, 1.0, 0.0}, {0.1, 3.0, 0.0}};
+  const std::vector<Eigen::Vector3d> normals =
+      SlidingNormals(model, material, {true, false, true, true});
+  ASSERT_EQ(normals.size(), 4u);
+  EXPECT_EQ(normals[0], SurfaceNormal(model, -1.0, 0.4));
+  EXPECT_EQ(normals[1], Eigen::Vector3d::Zero());
+  EXPECT_EQ(normals[2], Eigen::Vector3d::Zero());
+  EXPECT_EQ(normals[3], SurfaceNormal(model, 0.1, 3.0));
+}
+
 // The search stops once a step moves the model point by less than
 // step_tolerance_mm; running every step instead (tolerance 0, the search as
 // it was before the early stop) must find the same material points, on the

@@ -143,23 +143,13 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     groups[k0] = {};
     groups[k0].reserve(group_capacity);
   };
-  // The sliding points' normals, in one batch (plane_at[i]: point i's).
-  std::vector<MaterialPoint> plane_material;
-  std::vector<int> plane_at(points.size(), -1);
-  for (size_t i = 0; i < points.size(); ++i) {
-    if (sliding[i] && material[i].u < config.u_max) {
-      plane_at[i] = static_cast<int>(plane_material.size());
-      plane_material.push_back(material[i]);
-    }
-  }
   const std::vector<Eigen::Vector3d> normals =
-      SurfaceNormals(*model, plane_material);
+      SlidingNormals(*model, material, sliding);
   for (size_t i = 0; i < points.size(); ++i) {
     const KnotSpan span = grid.Span(material[i].u);
     const double u = material[i].u, v = material[i].v, w = material[i].w;
-    const bool plane = plane_at[i] >= 0;
-    const Eigen::Vector3d normal =
-        plane ? normals[plane_at[i]] : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d& normal = normals[i];
+    const bool plane = normal != Eigen::Vector3d::Zero();
     if (analytic) {
       groups[span.k0].push_back(
           plane ? PointSample(points[i], u, v, span.weight, normal)

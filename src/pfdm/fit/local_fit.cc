@@ -132,15 +132,13 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   const Eigen::Matrix3d rotation = model->Rotation();
   // d moves every surface of a solid alike.
   const std::vector<Eigen::Vector3d> globals = WorldPoints(*model, material);
+  const std::vector<Eigen::Vector3d> normals =
+      SlidingNormals(*model, material, sliding);
   auto point_rows = [&](size_t i) {
-    const double u = material[i].u, v = material[i].v, w = material[i].w;
-    const ShapeWeights shape = ShapeAt(grid, u, v);
-    const Eigen::Vector3d& global = globals[i];
-    if (sliding[i] && u < config.u_max) {
-      const Eigen::Vector3d normal = SurfaceNormal(*model, u, v, w);
-      return LocalPointRows(global, rotation, shape, points[i], &normal);
-    }
-    return LocalPointRows(global, rotation, shape, points[i], nullptr);
+    const ShapeWeights shape = ShapeAt(grid, material[i].u, material[i].v);
+    const bool plane = normals[i] != Eigen::Vector3d::Zero();
+    return LocalPointRows(globals[i], rotation, shape, points[i],
+                          plane ? &normals[i] : nullptr);
   };
   for (size_t i = 0; i < points.size(); ++i) {
     const LocalElement element = ElementAt(grid, material[i].u, material[i].v);
