@@ -155,12 +155,11 @@ SurfaceSample Sample(const SurfacePoints& surface, const MaterialPoint& at,
 // evaluation, and is left out while J^T J + S is not positive definite.
 // Every evaluation brings its derivatives, so the start and an accepted
 // trial point are the next step's linearization, and a step shorter than
-// step_tolerance_mm ends the search before it is evaluated.  The model
-// point found goes to *best_point.
-MaterialPoint Refine(const SurfacePoints& surface, const Model& model,
+// step_tolerance_mm ends the search before it is evaluated: the sample
+// returned is the last one evaluated, derivatives included.
+SurfaceSample Refine(const SurfacePoints& surface, const Model& model,
                      const Eigen::Vector3d& target, const SurfaceSample& start,
-                     double step_tolerance_mm, std::int64_t* evaluations,
-                     Eigen::Vector3d* best_point) {
+                     double step_tolerance_mm, std::int64_t* evaluations) {
   MaterialPoint best = start.at;
   Eigen::Matrix<double, 3, 2> jacobian = start.jacobian;
   Eigen::Vector3d residual = start.point - target;
@@ -217,8 +216,7 @@ MaterialPoint Refine(const SurfacePoints& surface, const Model& model,
     // Converged, or no step along the gradient lowers the distance.
     if (converged || !improved) break;
   }
-  *best_point = target + residual;
-  return best;
+  return {best, target + residual, jacobian};
 }
 
 }  // namespace
@@ -304,13 +302,17 @@ std::vector<Eigen::Vector3d> SurfaceNormals(
   return normals;
 }
 
+bool PullsAlongNormal(const ModelConfig& config, const MaterialPoint& at) {
+  return at.u < config.u_max;
+}
+
 std::vector<Eigen::Vector3d> SlidingNormals(
     const Model& model, const std::vector<MaterialPoint>& material,
     const std::vector<bool>& sliding) {
   std::vector<size_t> planes;
   std::vector<MaterialPoint> plane_material;
   for (size_t i = 0; i < material.size(); ++i) {
-    if (sliding[i] && material[i].u < model.config.u_max) {
+    if (sliding[i] && PullsAlongNormal(model.config, material[i])) {
       planes.push_back(i);
       plane_material.push_back(material[i]);
     }
@@ -328,9 +330,11 @@ std::vector<Eigen::Vector3d> SlidingNormals(
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const CorrespondenceOptions& options,
-    std::vector<Eigen::Vector3d>* model_points) {
+    std::vector<Eigen::Vector3d>* model_points,
+    std::vector<Eigen::Vector3d>* normals) {
   CHECK(options.hints.empty() || options.hints.size() == points.size());
   if (model_points != nullptr) model_points->resize(points.size());
+  if (normals != nullptr) normals->resize(points.size());
   std::vector<MaterialPoint> samples;
   samples.reserve(kGridU * kGridV);
   for (int i = 0; i < kGridU; ++i) {
@@ -370,10 +374,14 @@ std::vector<MaterialPoint> ClosestMaterialPoints(
         }
       }
       if (!from) from = Sample(surface, start, &range_evaluations);
-      Eigen::Vector3d found;
-      result[i] = Refine(surface, model, points[i], *from,
-                         options.step_tolerance_mm, &range_evaluations, &found);
-      if (model_points != nullptr) (*model_points)[i] = found;
+      const SurfaceSample found =
+          Refine(surface, model, points[i], *from, options.step_tolerance_mm,
+                 &range_evaluations);
+      result[i] = found.at;
+      if (model_points != nullptr) (*model_points)[i] = found.point;
+      if (normals != nullptr) {
+        (*normals)[i] = NormalFromTangents(model, found.jacobian);
+      }
     }
     evaluations += range_evaluations;
   };

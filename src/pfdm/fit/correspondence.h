@@ -38,10 +38,15 @@ std::vector<Eigen::Vector3d> SurfaceNormals(
     const Model& model, const std::vector<MaterialPoint>& material,
     std::vector<Eigen::Vector3d>* surface_points = nullptr);
 
-// The normals along which sliding points pull (point-to-plane), in one
-// SurfaceNormals batch: SurfaceNormal at material[i] for the points with
-// sliding[i] below the rim (u < u_max; a point on the rim pulls with its
-// whole vector), zero for the others.
+// Whether a sliding point at this material point pulls along the surface's
+// normal (point-to-plane): below the rim (u < u_max).  On the rim the plane
+// says nothing about how far past it the point lies, so it pulls with its
+// whole vector.
+bool PullsAlongNormal(const ModelConfig& config, const MaterialPoint& at);
+
+// The normals along which sliding points pull, in one SurfaceNormals batch:
+// SurfaceNormal at material[i] for the points with sliding[i] that
+// PullsAlongNormal, zero for the others.
 std::vector<Eigen::Vector3d> SlidingNormals(
     const Model& model, const std::vector<MaterialPoint>& material,
     const std::vector<bool>& sliding);
@@ -80,11 +85,14 @@ struct CorrespondenceOptions {
 // mid-wall, then a few damped Newton steps on |x(u, v, w) - p|^2 with the
 // surface's derivatives (in closed form on the mid-wall of a model without
 // a local field) and its curvature learnt from the steps.  model_points,
-// when given, receives their model points.
+// when given, receives their model points; normals their SurfaceNormal,
+// from the search's last evaluation (equal to SurfaceNormal's but for
+// CorrespondenceOptions::jet_derivatives' round-off).
 std::vector<MaterialPoint> ClosestMaterialPoints(
     const Model& model, const std::vector<Eigen::Vector3d>& points,
     const CorrespondenceOptions& options = {},
-    std::vector<Eigen::Vector3d>* model_points = nullptr);
+    std::vector<Eigen::Vector3d>* model_points = nullptr,
+    std::vector<Eigen::Vector3d>* normals = nullptr);
 
 }  // namespace pfdm
 

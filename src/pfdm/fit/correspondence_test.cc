@@ -124,6 +124,43 @@ TEST(CorrespondenceTest, SlidingNormalsAreThoseOfSlidingPointsBelowTheRim) {
   EXPECT_EQ(normals[3], SurfaceNormal(model, 0.1, 3.0));
 }
 
+// The search hands its last evaluation's normal to the solve after it,
+// which then need not evaluate the surface again: it must be SurfaceNormal
+// at the material point found, bit for bit, from the grid or from a hint,
+// on the mid-wall (closed-form derivatives) and off it in a solid (Jets).
+TEST(CorrespondenceTest, SearchGivesTheSurfaceNormalsOfItsMaterialPoints) {
+  Phantom phantom;
+  const std::vector<Eigen::Vector3d> points =
+      PhantomPositions(400, 3, &phantom);
+  Model solid = phantom.truth[3];
+  solid.config.MakeSolid();
+  solid.state.globals[kH] = 8.0;
+  for (FunctionValues& knot : solid.state.knots) knot[kH] = 8.0;
+  for (const Model& model : {phantom.truth[3], solid}) {
+    CorrespondenceOptions options;
+    if (model.config.Solid()) options.surfaces.assign(points.size(), 0.6);
+    std::vector<Eigen::Vector3d> found, normals;
+    const std::vector<MaterialPoint> cold =
+        ClosestMaterialPoints(model, points, options, &found, &normals);
+    options.hints = cold;
+    for (MaterialPoint& hint : options.hints) hint.u -= 0.01;
+    std::vector<Eigen::Vector3d> warm_found, warm_normals;
+    const std::vector<MaterialPoint> warm = ClosestMaterialPoints(
+        model, points, options, &warm_found, &warm_normals);
+    ASSERT_EQ(normals.size(), points.size());
+    ASSERT_EQ(warm_normals.size(), points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+      EXPECT_EQ(normals[i],
+                SurfaceNormal(model, cold[i].u, cold[i].v, cold[i].w))
+          << i;
+      EXPECT_EQ(warm_normals[i],
+                SurfaceNormal(model, warm[i].u, warm[i].v, warm[i].w))
+          << i;
+      EXPECT_NEAR(normals[i].norm(), 1.0, 1e-12) << i;
+    }
+  }
+}
+
 // The search stops once a step moves the model point by less than
 // step_tolerance_mm; running every step instead (tolerance 0, the search as
 // it was before the early stop) must find the same material points, on the

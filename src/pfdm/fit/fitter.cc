@@ -64,16 +64,20 @@ std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
   return listed;
 }
 
-// Fills material[i] for the listed points with their closest material points
-// and returns how far (mm) the farthest one moved on the model.  In a solid,
-// a point is sought on its surface: layer_w[i] for a contour of one wall,
-// or, when depths are assigned (frame 0's tags), QuantileDepths' w.
-double UpdateClosest(const Model& model,
-                     const std::vector<Eigen::Vector3d>& points,
-                     const std::vector<size_t>& which, int num_threads,
-                     const std::vector<double>& layer_w,
-                     const std::vector<bool>& assign_depth, bool warm,
-                     std::vector<MaterialPoint>* material) {
+// Fills material[i] for the listed points with their closest material
+// points, normals[i] with the normals they pull along (zero where they do
+// not: PullsAlongNormal) and found[j] with their model points, in the
+// listed order.  In a solid, a point is sought on its surface: layer_w[i]
+// for a contour of one wall, or, when depths are assigned (frame 0's tags),
+// QuantileDepths' w.
+void UpdateClosest(const Model& model,
+                   const std::vector<Eigen::Vector3d>& points,
+                   const std::vector<size_t>& which, int num_threads,
+                   const std::vector<double>& layer_w,
+                   const std::vector<bool>& assign_depth, bool warm,
+                   std::vector<MaterialPoint>* material,
+                   std::vector<Eigen::Vector3d>* normals,
+                   std::vector<Eigen::Vector3d>* found) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
   CorrespondenceOptions correspondence;
@@ -81,9 +85,9 @@ double UpdateClosest(const Model& model,
   if (warm) {
     for (size_t i : which) correspondence.hints.push_back((*material)[i]);
   }
-  std::vector<Eigen::Vector3d> found;
-  std::vector<MaterialPoint> closest =
-      ClosestMaterialPoints(model, subset, correspondence, &found);
+  std::vector<Eigen::Vector3d> found_normals;
+  std::vector<MaterialPoint> closest = ClosestMaterialPoints(
+      model, subset, correspondence, found, &found_normals);
   if (model.config.Solid()) {
     std::vector<size_t> tags;
     std::vector<Eigen::Vector3d> tag_points;
@@ -116,37 +120,31 @@ double UpdateClosest(const Model& model,
       on_surface.surfaces.push_back(correspondence.surfaces[j]);
       if (warm) on_surface.hints.push_back((*material)[which[j]]);
     }
-    std::vector<Eigen::Vector3d> found_off;
-    const std::vector<MaterialPoint> refined =
-        ClosestMaterialPoints(model, off_points, on_surface, &found_off);
+    std::vector<Eigen::Vector3d> found_off, normals_off;
+    const std::vector<MaterialPoint> refined = ClosestMaterialPoints(
+        model, off_points, on_surface, &found_off, &normals_off);
     for (size_t k = 0; k < off.size(); ++k) {
       closest[off[k]] = refined[k];
-      found[off[k]] = found_off[k];
+      (*found)[off[k]] = found_off[k];
+      found_normals[off[k]] = normals_off[k];
     }
   }
-  const std::vector<Eigen::Vector3d> before =
-      WorldPoints(model, Listed(*material, which));
-  double moved = 0.0;
   for (size_t j = 0; j < which.size(); ++j) {
-    moved = std::max(moved, (found[j] - before[j]).norm());
     (*material)[which[j]] = closest[j];
+    (*normals)[which[j]] = PullsAlongNormal(model.config, closest[j])
+                               ? found_normals[j]
+                               : Eigen::Vector3d::Zero();
   }
-  return moved;
 }
 
-// How far (mm) the model points of the listed points' material points lie
-// apart on `after` and on `before`.
-double MaxMoved(const Model& before, const Model& after,
-                const std::vector<size_t>& which,
-                const std::vector<MaterialPoint>& material) {
-  const std::vector<MaterialPoint> listed = Listed(material, which);
-  const std::vector<Eigen::Vector3d> now = WorldPoints(after, listed);
-  const std::vector<Eigen::Vector3d> then = WorldPoints(before, listed);
-  double moved = 0.0;
-  for (size_t j = 0; j < listed.size(); ++j) {
-    moved = std::max(moved, (now[j] - then[j]).norm());
+// The largest distance (mm) between paired points.
+double MaxDistance(const std::vector<Eigen::Vector3d>& a,
+                   const std::vector<Eigen::Vector3d>& b) {
+  double distance = 0.0;
+  for (size_t j = 0; j < a.size(); ++j) {
+    distance = std::max(distance, (a[j] - b[j]).norm());
   }
-  return moved;
+  return distance;
 }
 
 void AddSolverCounts(const SolverReport& report, FrameFit* fit) {
@@ -451,13 +449,29 @@ SequenceFit FitSequence(const PointSequence& sequence,
         assign_depth[i] = reference && frames_per_id[frame.points[i].id] > 1;
       }
     }
+    // What the last search found: the unknown points' model points (in
+    // their order) on the model it searched, and the normals along which
+    // the points pull, current until a solve moves the model.
+    std::vector<Eigen::Vector3d> found;
+    std::vector<Eigen::Vector3d> normals(points.size(),
+                                         Eigen::Vector3d::Zero());
+    bool normals_current = true;
     bool found_closest = false;  // Then searches start from the last.
-    auto update_closest = [&]() {
+    // Returns how far (mm) the farthest point's model point moved: from
+    // `now`, its model point before the search (computed when not given).
+    auto update_closest = [&](std::vector<Eigen::Vector3d> now = {}) {
       const auto closest_start = std::chrono::steady_clock::now();
-      const double moved =
-          UpdateClosest(model, points, unknown, options.solver.num_threads,
-                        layer_w, assign_depth, found_closest, &fit.material);
+      if (found_closest && now.empty()) {
+        now = WorldPoints(model, Listed(fit.material, unknown));
+      }
+      UpdateClosest(model, points, unknown, options.solver.num_threads, layer_w,
+                    assign_depth, found_closest, &fit.material, &normals,
+                    &found);
+      const double moved = found_closest || unknown.empty()
+                               ? MaxDistance(now, found)
+                               : std::numeric_limits<double>::infinity();
       found_closest = true;
+      normals_current = true;
       fit.correspondence_seconds += SecondsSince(closest_start);
       return moved;
     };
@@ -474,21 +488,21 @@ SequenceFit FitSequence(const PointSequence& sequence,
       }
       const auto closest_start = std::chrono::steady_clock::now();
       UpdateClosest(model, points, coarse, options.solver.num_threads, layer_w,
-                    assign_depth, false, &fit.material);
+                    assign_depth, false, &fit.material, &normals, &found);
       fit.correspondence_seconds += SecondsSince(closest_start);
-      std::vector<Eigen::Vector3d> coarse_points;
+      std::vector<Eigen::Vector3d> coarse_points, coarse_normals;
       std::vector<MaterialPoint> coarse_material;
       for (size_t i : coarse) {
         coarse_points.push_back(points[i]);
         coarse_material.push_back(fit.material[i]);
+        coarse_normals.push_back(normals[i]);
       }
       FitOptions coarse_options = options;
       coarse_options.solver.on_step = nullptr;  // Not part of the path.
       const SolverReport coarse_report =
-          SolveFrame(coarse_points, coarse_material,
-                     std::vector<bool>(coarse.size(), true), std::nullopt,
-                     FrameKind::kReference, prior, reference_quaternion,
-                     coarse_options, &model);
+          SolveFrame(coarse_points, coarse_material, coarse_normals,
+                     std::nullopt, FrameKind::kReference, prior,
+                     reference_quaternion, coarse_options, &model);
       AddSolverCounts(coarse_report, &fit);
       SpanAxialExtent(points, options, &model);
     }
@@ -531,11 +545,14 @@ SequenceFit FitSequence(const PointSequence& sequence,
                           last.pseudo_time + point.pseudo_time);
           };
         }
-        const Model before_solve = model;
+        if (!normals_current) {
+          normals = SlidingNormals(model, fit.material, sliding);
+        }
         report =
-            SolveFrame(points, fit.material, sliding, rim_height, kind,
+            SolveFrame(points, fit.material, normals, rim_height, kind,
                        kind == FrameKind::kUntracked ? reference_state : prior,
                        reference_quaternion, round_options, &model);
+        normals_current = false;
         AddSolverCounts(report, &fit);
         ++fit.correspondence_rounds;
         for (SolverTracePoint point : report.trace) {
@@ -565,12 +582,15 @@ SequenceFit FitSequence(const PointSequence& sequence,
         // points bounds how far their closest points can move (about that
         // far, the points being close to a gently curved surface): under
         // half the tolerance, the search that would confirm it is skipped.
-        if (moved < kConfirmBelow * options.correspondence_tolerance_mm &&
-            MaxMoved(before_solve, model, unknown, fit.material) <
-                0.5 * options.correspondence_tolerance_mm) {
-          break;
+        std::vector<Eigen::Vector3d> now;
+        if (moved < kConfirmBelow * options.correspondence_tolerance_mm) {
+          now = WorldPoints(model, Listed(fit.material, unknown));
+          if (MaxDistance(now, found) <
+              0.5 * options.correspondence_tolerance_mm) {
+            break;
+          }
         }
-        moved = update_closest();
+        moved = update_closest(std::move(now));
         if (moved < options.correspondence_tolerance_mm) break;
         if (round + 1 == options.max_correspondence_rounds) {
           fit.unsettled_mm = moved;
@@ -666,10 +686,13 @@ SequenceFit FitSequence(const PointSequence& sequence,
         if (contour.empty()) break;
         // Stalled or not, the contours' material points are then the
         // closest on the final model, as their distances are reported.
-        const double contour_moved =
-            UpdateClosest(model, points, contour, options.solver.num_threads,
-                          layer_w, std::vector<bool>(points.size(), false),
-                          /*warm=*/true, &fit.material);
+        const std::vector<Eigen::Vector3d> before =
+            WorldPoints(model, Listed(fit.material, contour));
+        std::vector<Eigen::Vector3d> contour_found;
+        UpdateClosest(model, points, contour, options.solver.num_threads,
+                      layer_w, std::vector<bool>(points.size(), false),
+                      /*warm=*/true, &fit.material, &normals, &contour_found);
+        const double contour_moved = MaxDistance(before, contour_found);
         if (stalled || contour_moved < options.correspondence_tolerance_mm) {
           break;
         }

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "ceres/ceres.h"
+#include "glog/logging.h"
 #include "pfdm/fit/axis_gauge_chain.h"
 #include "pfdm/fit/correspondence.h"
 #include "pfdm/fit/data_cost.h"
@@ -88,11 +89,12 @@ ceres::LossFunction* MakeLoss(const FitOptions& options) {
 
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<MaterialPoint>& material,
-                        const std::vector<bool>& sliding,
+                        const std::vector<Eigen::Vector3d>& normals,
                         std::optional<double> rim_height, FrameKind kind,
                         const ModelState& prior,
                         const std::array<double, 4>& reference_quaternion,
                         const FitOptions& options, Model* model) {
+  CHECK_EQ(normals.size(), points.size());
   const ModelConfig& config = model->config;
   const KnotGrid grid = config.Grid();
   // Analytic points go into PointGroupResidual blocks, which take the
@@ -143,8 +145,6 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
     groups[k0] = {};
     groups[k0].reserve(group_capacity);
   };
-  const std::vector<Eigen::Vector3d> normals =
-      SlidingNormals(*model, material, sliding);
   for (size_t i = 0; i < points.size(); ++i) {
     const KnotSpan span = grid.Span(material[i].u);
     const double u = material[i].u, v = material[i].v, w = material[i].w;

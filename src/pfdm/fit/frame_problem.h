@@ -17,9 +17,10 @@
 
 namespace pfdm {
 
-// Points listed in `sliding` get the point-to-plane residual, except where
-// they lie past the base rim: there the plane says nothing about how far,
-// so they pull with the whole distance.  rim_height, when given, is where
+// A point with a non-zero normal (unit, world frame) pulls along it
+// (point-to-plane), the others with their whole distance; sliding points
+// take theirs from the search that found their material points on *model,
+// or from SlidingNormals (correspondence.h).  rim_height, when given, is where
 // the base rim must sit (RimResidual), along the model's axis from its
 // centre as the solve starts.  `prior` is the state the prior term pulls
 // toward (the previous frame's; frame 0's for untracked frames, with
@@ -28,7 +29,7 @@ namespace pfdm {
 // solution in *model.
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<MaterialPoint>& material,
-                        const std::vector<bool>& sliding,
+                        const std::vector<Eigen::Vector3d>& normals,
                         std::optional<double> rim_height, FrameKind kind,
                         const ModelState& prior,
                         const std::array<double, 4>& reference_quaternion,

@@ -29,10 +29,11 @@ TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
   }
   FitOptions options;
   options.prior_weight = 0.0;
-  const SolverReport report =
-      SolveFrame(points, material, std::vector<bool>(points.size(), false),
-                 std::nullopt, FrameKind::kTracked, model.state,
-                 model.state.quaternion, options, &model);
+  const SolverReport report = SolveFrame(
+      points, material,
+      std::vector<Eigen::Vector3d>(points.size(), Eigen::Vector3d::Zero()),
+      std::nullopt, FrameKind::kTracked, model.state, model.state.quaternion,
+      options, &model);
   ASSERT_TRUE(report.usable);
   for (int k = 1; k < 5; ++k) {
     EXPECT_NEAR(model.state.knots[k][kA1], 0.42, 1e-6) << k;
