@@ -535,28 +535,23 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitAnalysis& analysis,
                      const FitOptions& options, VtkFormat vtk_format,
                      SvgRendering* plots) {
-  // Everything is rendered before the first file is written, so a failure
-  // (gnuplot missing, say) leaves no partial set behind.  One gnuplot for
-  // the four plots (its start-up, not the plotting, was most of their
-  // time), rendering while the other files are formatted.
+  // Everything that can fail (gnuplot missing, say) is done before the
+  // first file is written, so a failure leaves no partial set behind.  One
+  // gnuplot for the four plots (its start-up, not the plotting, was most of
+  // their time), rendering while the other files are formatted.
   plots->Render({ParameterPlots(analysis.models),
                  CycleCurves(analysis.clinical, analysis.volume_surface),
                  StrainCurves(analysis.strain),
                  Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::pair<std::string, std::string>> files;
   files.emplace_back("parameters.csv", ParametersCsv(analysis.models));
+  std::vector<std::string> frame_names;
   std::vector<std::pair<double, std::string>> timesteps;
-  for (size_t t = 0; t < fit.frames.size(); ++t) {
+  for (const FrameFit& frame : fit.frames) {
     char name[32];
-    std::snprintf(name, sizeof(name), "frame_%03d", fit.frames[t].frame);
-    const VtkPolyData data =
-        FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
-    files.emplace_back(
-        std::string(name) + ".vtk",
-        ToLegacyVtk(data, std::string("pfdm ") + name, vtk_format));
-    files.emplace_back(std::string(name) + ".vtp",
-                       ToVtkXmlPolyData(data, vtk_format));
-    timesteps.emplace_back(fit.frames[t].frame, std::string(name) + ".vtp");
+    std::snprintf(name, sizeof(name), "frame_%03d", frame.frame);
+    frame_names.push_back(name);
+    timesteps.emplace_back(frame.frame, std::string(name) + ".vtp");
   }
   files.emplace_back("fit.pvd", PvdCollection(timesteps));
   std::string json = FitJson(points, fit, options, analysis);
@@ -565,12 +560,16 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
   files.emplace_back(
       "report.html",
       FitReportHtml(points, fit, analysis, svgs[0], svgs[1], svgs[2], svgs[3]));
-  files.emplace_back("fit.json", std::move(json));  // Last: marks the set.
 
   EnsureDirectory(dir);
   // A folder where a file goes stops the write before anything is touched.
   std::vector<std::string> older = OutputNamesIn(dir);
   for (const auto& [name, contents] : files) older.push_back(name);
+  for (const std::string& name : frame_names) {
+    older.push_back(name + ".vtk");
+    older.push_back(name + ".vtp");
+  }
+  older.push_back("fit.json");
   for (const std::string& name : older) {
     std::error_code error;
     if (std::filesystem::is_directory(
@@ -586,11 +585,25 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     RemoveOutputFile(dir, name);
   }
   std::vector<std::string> written;
+  const auto write = [&](const std::string& name, const std::string& contents) {
+    WriteFileAtomically(dir + "/" + name, contents);
+    written.push_back(name);
+  };
   try {
-    for (const auto& [name, contents] : files) {
-      WriteFileAtomically(dir + "/" + name, contents);
-      written.push_back(name);
+    for (const auto& [name, contents] : files) write(name, contents);
+    // Each frame's meshes are written as soon as they are formatted, so
+    // the next frame's reuse their memory: held until the end, the
+    // megabytes of every frame were fresh pages, and their faults were
+    // most of the writing.
+    for (size_t t = 0; t < fit.frames.size(); ++t) {
+      const VtkPolyData data =
+          FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
+      const std::string& name = frame_names[t];
+      write(name + ".vtk",
+            ToLegacyVtk(data, std::string("pfdm ") + name, vtk_format));
+      write(name + ".vtp", ToVtkXmlPolyData(data, vtk_format));
     }
+    write("fit.json", json);  // Last: marks the set.
   } catch (const InputError&) {
     for (const std::string& name : written) {
       std::remove((dir + "/" + name).c_str());

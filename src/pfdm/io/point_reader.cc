@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <string>
@@ -73,29 +75,62 @@ InputError Restate(const std::string& path, const io::error::base& error) {
 // written files read back bit for bit.
 double ParseCoordinate(const std::string& path, unsigned line, const char* name,
                        const char* text) {
-  const std::string where =
-      path + ":" + std::to_string(line) + ": column '" + name + "'";
+  // Only for a message: built for every value, it was most of the reading.
+  const auto where = [&] {
+    return path + ":" + std::to_string(line) + ": column '" + name + "'";
+  };
   double value = 0.0;
   const char* end = text + std::strlen(text);
   // from_chars refuses the explicit plus sign that strtod and writers allow.
   const char* begin = text[0] == '+' && text[1] != '-' ? text + 1 : text;
   const auto [rest, error] = std::from_chars(begin, end, value);
   if (error == std::errc::result_out_of_range) {
-    throw InputError(where + " is out of range: '" + Clip(text) + "'");
+    throw InputError(where() + " is out of range: '" + Clip(text) + "'");
   }
   if (error != std::errc() || rest != end || rest == begin) {
-    throw InputError(where + " is not a number: '" + Clip(text) + "'");
+    throw InputError(where() + " is not a number: '" + Clip(text) + "'");
   }
   if (!std::isfinite(value)) {
-    throw InputError(where + " is not a finite number");
+    throw InputError(where() + " is not a finite number");
   }
   // Squares of 1e155 overflow inside the solver (a Ceres CHECK aborted the
   // program, issue 14); no heart lies a kilometre from the scanner origin.
   if (std::abs(value) > kMaxCoordinateMm) {
-    throw InputError(where + " is out of range: '" + Clip(text) +
+    throw InputError(where() + " is out of range: '" + Clip(text) +
                      "' (more than 1e6 mm from the origin)");
   }
   return value;
+}
+
+// Each id once in a frame, checked by sorting once the file is read (a set
+// per frame took a tree node per point): a repeat is named at its own line,
+// the file's first such line when there are several.
+void CheckIdsOncePerFrame(
+    const std::string& path,
+    const std::map<long long, std::vector<DataPoint>>& frames,
+    const std::map<long long, std::vector<unsigned>>& lines) {
+  unsigned first_line = std::numeric_limits<unsigned>::max();
+  std::string what;
+  for (const auto& [frame, points] : frames) {
+    const std::vector<unsigned>& at = lines.at(frame);
+    std::vector<size_t> order(points.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      return std::make_pair(points[a].id, at[a]) <
+             std::make_pair(points[b].id, at[b]);
+    });
+    for (size_t j = 1; j < order.size(); ++j) {
+      const size_t i = order[j];
+      if (points[i].id == points[order[j - 1]].id && at[i] < first_line) {
+        first_line = at[i];
+        what = "id " + std::to_string(points[i].id) +
+               " appears twice in frame " + std::to_string(frame);
+      }
+    }
+  }
+  if (!what.empty()) {
+    throw InputError(path + ":" + std::to_string(first_line) + ": " + what);
+  }
 }
 
 // Orders frames and checks that 0..F-1 are all there.
@@ -122,7 +157,7 @@ PointSequence ReadPointsCsv(const std::string& path) {
   // Read whole first: a folder, FIFO or NUL byte is refused up front.
   const std::string text = ReadInputFile(path);
   std::map<long long, std::vector<DataPoint>> frames;
-  std::map<long long, std::set<long long>> ids;
+  std::map<long long, std::vector<unsigned>> lines;  // Each point's.
   try {
     // Blank lines (a trailing one, say) are skipped, not short rows.
     io::CSVReader<5, io::trim_chars<' ', '\t'>,
@@ -132,24 +167,31 @@ PointSequence ReadPointsCsv(const std::string& path) {
     in.read_header(io::ignore_extra_column, "frame", "id", "x", "y", "z");
     long long frame, id;
     char *x = nullptr, *y = nullptr, *z = nullptr;
+    // The rows of a frame mostly come together: its lists, looked up once.
+    long long listed = -1;
+    std::vector<DataPoint>* points = nullptr;
+    std::vector<unsigned>* point_lines = nullptr;
     while (in.read_row(frame, id, x, y, z)) {
       const unsigned line = in.get_file_line();
-      const std::string where = path + ":" + std::to_string(line);
       const Eigen::Vector3d position(ParseCoordinate(path, line, "x", x),
                                      ParseCoordinate(path, line, "y", y),
                                      ParseCoordinate(path, line, "z", z));
       if (frame < 0) {
-        throw InputError(where + ": negative frame " + std::to_string(frame));
+        throw InputError(path + ":" + std::to_string(line) +
+                         ": negative frame " + std::to_string(frame));
       }
-      if (!ids[frame].insert(id).second) {
-        throw InputError(where + ": id " + std::to_string(id) +
-                         " appears twice in frame " + std::to_string(frame));
+      if (points == nullptr || frame != listed) {
+        listed = frame;
+        points = &frames[frame];
+        point_lines = &lines[frame];
       }
-      frames[frame].push_back({id, position});
+      points->push_back({id, position});
+      point_lines->push_back(line);
     }
   } catch (const io::error::base& error) {
     throw Restate(path, error);
   }
+  CheckIdsOncePerFrame(path, frames, lines);
   return Assemble(path, std::move(frames));
 }
 

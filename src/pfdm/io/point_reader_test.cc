@@ -70,6 +70,14 @@ TEST(PointReaderTest, BadInputNamesTheFileAndLine) {
             "points.csv: frame 1 has no points");
   EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,2,3,4\n0,1,2,3,5\n"),
             "points.csv:3: id 1 appears twice in frame 0");
+  // Repeats are found once the file is read: the first line that repeats
+  // an id is named, whichever frame, whichever order the ids came in.
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,7,2,3,4\n1,5,2,3,4\n0,2,2,3,4\n"
+                    "1,5,2,3,5\n0,7,2,3,5\n0,2,1,1,1\n1,5,0,0,0\n"),
+            "points.csv:5: id 5 appears twice in frame 1");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,9,2,3,4\n0,3,2,3,4\n0,3,1,1,1\n"
+                    "0,9,0,0,0\n"),
+            "points.csv:4: id 3 appears twice in frame 0");
   EXPECT_EQ(ErrorOf("frame,id,x,y,z\n-1,1,2,3,4\n"),
             "points.csv:2: negative frame -1");
   EXPECT_EQ(ErrorOf("frame,id,x,y,z\n0,1,inf,3,4\n"),

@@ -2,9 +2,12 @@
 
 #include <cstdint>
 #include <cstring>
+#include <list>
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "glog/logging.h"
 #include "pfdm/util/markup_escape.h"
@@ -42,31 +45,48 @@ static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double),
               "vectors of points are copied as packed doubles");
 
 // The appended raw form: the XML names each array with its offset into the
-// bytes after the '_' that opens <AppendedData>.
+// bytes after the '_' that opens <AppendedData>.  The arrays' bytes are
+// copied once, by Close, into a string reserved for them: built up by
+// appending, the file's megabytes were copied three times over into fresh
+// memory, whose page faults were most of the writing.
 class AppendedArrays {
  public:
-  // Declares an array of `count` values at `data` (copied now) with the
-  // given XML attributes (type, name, components).
+  // Declares an array of `count` values at `data` with the given XML
+  // attributes (type, name, components); data must live until Close.
   template <typename Value>
   void Add(const std::string& attributes, const Value* data, size_t count,
            std::string* xml) {
     static_assert(std::is_trivially_copyable_v<Value>);
     *xml += "        <DataArray " + attributes +
-            " format=\"appended\" offset=\"" + std::to_string(bytes_.size()) +
-            "\"/>\n";
+            " format=\"appended\" offset=\"" + std::to_string(size_) + "\"/>\n";
     const std::uint64_t size = count * sizeof(Value);
-    bytes_.append(reinterpret_cast<const char*>(&size), sizeof(size));
-    bytes_.append(reinterpret_cast<const char*>(data), size);
+    arrays_.push_back({reinterpret_cast<const char*>(data), size});
+    size_ += sizeof(size) + size;
+  }
+
+  // Add for values this object keeps.
+  void Add(const std::string& attributes, std::vector<std::int64_t> values,
+           std::string* xml) {
+    kept_.push_back(std::move(values));
+    Add(attributes, kept_.back().data(), kept_.back().size(), xml);
   }
 
   void Close(std::string* xml) const {
-    *xml += "  <AppendedData encoding=\"raw\">\n   _";
-    *xml += bytes_;
-    *xml += "\n  </AppendedData>\n";
+    constexpr const char* kOpen = "  <AppendedData encoding=\"raw\">\n   _";
+    constexpr const char* kEnd = "\n  </AppendedData>\n</VTKFile>\n";
+    xml->reserve(xml->size() + std::strlen(kOpen) + size_ + std::strlen(kEnd));
+    *xml += kOpen;
+    for (const auto& [data, size] : arrays_) {
+      xml->append(reinterpret_cast<const char*>(&size), sizeof(size));
+      xml->append(data, size);
+    }
+    *xml += kEnd;
   }
 
  private:
-  std::string bytes_;
+  std::vector<std::pair<const char*, std::uint64_t>> arrays_;
+  std::list<std::vector<std::int64_t>> kept_;  // Stay put as it grows.
+  std::uint64_t size_ = 0;
 };
 
 constexpr const char* kByteOrder =
@@ -110,16 +130,14 @@ std::string AppendedRawPolyData(const VtkPolyData& data) {
   xml += "      </Points>\n";
   const auto cells = [&](const char* element, const std::vector<int>& indices,
                          int cell_size) {
-    std::vector<std::int64_t> connectivity(indices.begin(), indices.end());
     std::vector<std::int64_t> offsets;
     for (size_t end = cell_size; end <= indices.size(); end += cell_size) {
       offsets.push_back(static_cast<std::int64_t>(end));
     }
     xml += std::string("      <") + element + ">\n";
-    arrays.Add("type=\"Int64\" Name=\"connectivity\"", connectivity.data(),
-               connectivity.size(), &xml);
-    arrays.Add("type=\"Int64\" Name=\"offsets\"", offsets.data(),
-               offsets.size(), &xml);
+    arrays.Add("type=\"Int64\" Name=\"connectivity\"",
+               std::vector<std::int64_t>(indices.begin(), indices.end()), &xml);
+    arrays.Add("type=\"Int64\" Name=\"offsets\"", std::move(offsets), &xml);
     xml += std::string("      </") + element + ">\n";
   };
   if (!data.vertices.empty()) cells("Verts", data.vertices, 1);
@@ -133,7 +151,6 @@ std::string AppendedRawPolyData(const VtkPolyData& data) {
   }
   xml += "    </Piece>\n  </PolyData>\n";
   arrays.Close(&xml);
-  xml += "</VTKFile>\n";
   return xml;
 }
 

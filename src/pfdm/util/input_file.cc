@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <sstream>
 
 #include "pfdm/util/error.h"
 
@@ -27,12 +26,16 @@ void CheckRegularFile(const std::string& path) {
 
 std::string ReadInputFile(const std::string& path) {
   CheckRegularFile(path);
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read the file");
-  std::string contents = text.str();
+  // One read of the size the file has (a regular file): a stream copy grew
+  // its buffer by doubling and then copied the text once more.
+  const std::streamoff size = in.tellg();
+  in.seekg(0);
+  std::string contents(size < 0 ? 0 : static_cast<size_t>(size), '\0');
+  if (size < 0 || !in.read(contents.data(), size) || in.peek() != EOF) {
+    throw InputError(path + ": cannot read the file (did it change?)");
+  }
   const size_t nul = contents.find('\0');
   if (nul != std::string::npos) {
     const long line =

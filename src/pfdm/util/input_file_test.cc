@@ -1,0 +1,47 @@
+#include "pfdm/util/input_file.h"
+
+#include <string>
+
+#include "gtest/gtest.h"
+#include "pfdm/testing/test_util.h"
+#include "pfdm/util/atomic_file.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+std::string ErrorOf(const std::string& path) {
+  try {
+    ReadInputFile(path);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// The file's bytes exactly, whatever their size: empty, one byte, and past
+// the reader's first guesses (a megabyte of every byte value but NUL).
+TEST(InputFileTest, ReadsTheWholeFileExactly) {
+  const std::string dir = ScratchDirectory("input_file");
+  std::string large;
+  for (int i = 0; i < (1 << 20) + 7; ++i)
+    large += static_cast<char>(1 + i % 255);
+  for (const std::string& contents :
+       {std::string(), std::string("x"), std::string("a,b\r\n1,2"), large}) {
+    WriteFileAtomically(dir + "/f.txt", contents);
+    EXPECT_EQ(ReadInputFile(dir + "/f.txt"), contents) << contents.size();
+  }
+}
+
+TEST(InputFileTest, RefusesWhatIsNotARegularTextFile) {
+  const std::string dir = ScratchDirectory("input_file_bad");
+  EXPECT_EQ(ErrorOf(dir + "/missing.txt"),
+            dir + "/missing.txt: cannot open the file");
+  EXPECT_EQ(ErrorOf(dir), dir + ": is a folder, not a file");
+  WriteFileAtomically(dir + "/nul.txt", std::string("a\nb\nc\0d\n", 8));
+  EXPECT_EQ(ErrorOf(dir + "/nul.txt"),
+            dir + "/nul.txt:3: contains a NUL byte (not a text file?)");
+}
+
+}  // namespace
+}  // namespace pfdm
