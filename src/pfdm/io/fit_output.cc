@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "ceres/types.h"
@@ -535,16 +536,15 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitAnalysis& analysis,
                      const FitOptions& options, VtkFormat vtk_format,
                      SvgRendering* plots) {
-  // Everything that can fail (gnuplot missing, say) is done before the
-  // first file is written, so a failure leaves no partial set behind.  One
-  // gnuplot for the four plots (its start-up, not the plotting, was most of
-  // their time), rendering while the other files are formatted.
+  // Nothing replaces the older set until everything that can fail
+  // (gnuplot missing, say) has been done: the files go to temporaries
+  // first, the frames' meshes while gnuplot renders the plots (one gnuplot
+  // for the four: its start-up, not the plotting, was most of their time),
+  // and they are renamed into place together at the end.
   plots->Render({ParameterPlots(analysis.models),
                  CycleCurves(analysis.clinical, analysis.volume_surface),
                  StrainCurves(analysis.strain),
                  Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
-  std::vector<std::pair<std::string, std::string>> files;
-  files.emplace_back("parameters.csv", ParametersCsv(analysis.models));
   std::vector<std::string> frame_names;
   std::vector<std::pair<double, std::string>> timesteps;
   for (const FrameFit& frame : fit.frames) {
@@ -553,23 +553,18 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     frame_names.push_back(name);
     timesteps.emplace_back(frame.frame, std::string(name) + ".vtp");
   }
-  files.emplace_back("fit.pvd", PvdCollection(timesteps));
-  std::string json = FitJson(points, fit, options, analysis);
-  const std::vector<std::string> svgs = plots->Finish();
-  files.emplace_back("parameters.svg", svgs[0]);
-  files.emplace_back(
-      "report.html",
-      FitReportHtml(points, fit, analysis, svgs[0], svgs[1], svgs[2], svgs[3]));
+  std::vector<std::string> names = {"parameters.csv", "fit.pvd",
+                                    "parameters.svg", "report.html"};
+  for (const std::string& name : frame_names) {
+    names.push_back(name + ".vtk");
+    names.push_back(name + ".vtp");
+  }
+  names.push_back("fit.json");
 
   EnsureDirectory(dir);
   // A folder where a file goes stops the write before anything is touched.
   std::vector<std::string> older = OutputNamesIn(dir);
-  for (const auto& [name, contents] : files) older.push_back(name);
-  for (const std::string& name : frame_names) {
-    older.push_back(name + ".vtk");
-    older.push_back(name + ".vtp");
-  }
-  older.push_back("fit.json");
+  older.insert(older.end(), names.begin(), names.end());
   for (const std::string& name : older) {
     std::error_code error;
     if (std::filesystem::is_directory(
@@ -578,36 +573,47 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                        ": is a folder where pfdm writes a file");
     }
   }
+  std::vector<StagedFile> staged;
+  // Each frame's meshes are written as soon as they are formatted, so the
+  // next frame's reuse their memory: held until the end, the megabytes of
+  // every frame were fresh pages, and their faults were most of the
+  // writing.
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    const VtkPolyData data =
+        FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
+    const std::string path = dir + "/" + frame_names[t];
+    staged.emplace_back(
+        path + ".vtk", ToLegacyVtk(data, "pfdm " + frame_names[t], vtk_format));
+    staged.emplace_back(path + ".vtp", ToVtkXmlPolyData(data, vtk_format));
+  }
+  staged.emplace_back(dir + "/parameters.csv", ParametersCsv(analysis.models));
+  staged.emplace_back(dir + "/fit.pvd", PvdCollection(timesteps));
+  const std::string json = FitJson(points, fit, options, analysis);
+  const std::vector<std::string> svgs = plots->Finish();
+  staged.emplace_back(dir + "/parameters.svg", svgs[0]);
+  staged.emplace_back(
+      dir + "/report.html",
+      FitReportHtml(points, fit, analysis, svgs[0], svgs[1], svgs[2], svgs[3]));
+  staged.emplace_back(dir + "/fit.json", json);  // Last: marks the set.
+
   // No fit.json, no set: from here until the new one is in place a kill
   // leaves a folder that says "not done".
   RemoveOutputFile(dir, "fit.json");
-  for (const std::string& name : OutputNamesIn(dir)) {
-    RemoveOutputFile(dir, name);
+  std::set<std::string> ours;
+  for (const StagedFile& file : staged) {
+    ours.insert(std::filesystem::path(file.temporary()).filename().string());
   }
-  std::vector<std::string> written;
-  const auto write = [&](const std::string& name, const std::string& contents) {
-    WriteFileAtomically(dir + "/" + name, contents);
-    written.push_back(name);
-  };
+  for (const std::string& name : OutputNamesIn(dir)) {
+    if (ours.count(name) == 0) RemoveOutputFile(dir, name);
+  }
+  std::vector<std::string> committed;
   try {
-    for (const auto& [name, contents] : files) write(name, contents);
-    // Each frame's meshes are written as soon as they are formatted, so
-    // the next frame's reuse their memory: held until the end, the
-    // megabytes of every frame were fresh pages, and their faults were
-    // most of the writing.
-    for (size_t t = 0; t < fit.frames.size(); ++t) {
-      const VtkPolyData data =
-          FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
-      const std::string& name = frame_names[t];
-      write(name + ".vtk",
-            ToLegacyVtk(data, std::string("pfdm ") + name, vtk_format));
-      write(name + ".vtp", ToVtkXmlPolyData(data, vtk_format));
+    for (StagedFile& file : staged) {
+      file.Commit();
+      committed.push_back(file.path());
     }
-    write("fit.json", json);  // Last: marks the set.
   } catch (const InputError&) {
-    for (const std::string& name : written) {
-      std::remove((dir + "/" + name).c_str());
-    }
+    for (const std::string& path : committed) std::remove(path.c_str());
     throw;
   }
 }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include "pfdm/util/error.h"
 
@@ -30,17 +31,37 @@ std::string Reason() {
 }  // namespace
 
 void WriteFileAtomically(const std::string& path, const std::string& contents) {
-  const std::string temporary = path + ".tmp." + std::to_string(getpid());
+  StagedFile(path, contents).Commit();
+}
+
+StagedFile::StagedFile(std::string path, const std::string& contents)
+    : path_(std::move(path)),
+      temporary_(path_ + ".tmp." + std::to_string(getpid())) {
   errno = 0;
-  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-  if (!out) Fail(path, temporary);
+  std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
+  if (!out) Fail(path_, temporary_);
   out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
   out.flush();
   // Some file systems (NFS, a full disk) only report the failure on close.
   out.close();
-  if (!out) Fail(path, temporary);
+  if (!out) Fail(path_, temporary_);
+}
+
+StagedFile::StagedFile(StagedFile&& other) noexcept
+    : path_(std::move(other.path_)),
+      temporary_(std::exchange(other.temporary_, std::string())) {}
+
+StagedFile::~StagedFile() {
+  if (!temporary_.empty()) std::remove(temporary_.c_str());
+}
+
+void StagedFile::Commit() {
   errno = 0;
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, temporary);
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
+    const std::string temporary = std::exchange(temporary_, std::string());
+    Fail(path_, temporary);
+  }
+  temporary_.clear();
 }
 
 void EnsureDirectory(const std::string& dir) {
