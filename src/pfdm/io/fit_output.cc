@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <set>
 #include <sstream>
 
 #include "ceres/types.h"
@@ -536,11 +535,9 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitAnalysis& analysis,
                      const FitOptions& options, VtkFormat vtk_format,
                      SvgRendering* plots) {
-  // Nothing replaces the older set until everything that can fail
-  // (gnuplot missing, say) has been done: the files go to temporaries
-  // first, the frames' meshes while gnuplot renders the plots (one gnuplot
-  // for the four: its start-up, not the plotting, was most of their time),
-  // and they are renamed into place together at the end.
+  // The frames' meshes are formatted and written while gnuplot renders the
+  // plots (one gnuplot for the four: its start-up, not the plotting, was
+  // most of their time).
   plots->Render({ParameterPlots(analysis.models),
                  CycleCurves(analysis.clinical, analysis.volume_surface),
                  StrainCurves(analysis.strain),
@@ -553,13 +550,12 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     frame_names.push_back(name);
     timesteps.emplace_back(frame.frame, std::string(name) + ".vtp");
   }
-  std::vector<std::string> names = {"parameters.csv", "fit.pvd",
-                                    "parameters.svg", "report.html"};
+  std::vector<std::string> names = {
+      "parameters.csv", "fit.pvd", "parameters.svg", "report.html", "fit.json"};
   for (const std::string& name : frame_names) {
     names.push_back(name + ".vtk");
     names.push_back(name + ".vtp");
   }
-  names.push_back("fit.json");
 
   EnsureDirectory(dir);
   // A folder where a file goes stops the write before anything is touched.
@@ -573,47 +569,44 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                        ": is a folder where pfdm writes a file");
     }
   }
-  std::vector<StagedFile> staged;
-  // Each frame's meshes are written as soon as they are formatted, so the
-  // next frame's reuse their memory: held until the end, the megabytes of
-  // every frame were fresh pages, and their faults were most of the
-  // writing.
-  for (size_t t = 0; t < fit.frames.size(); ++t) {
-    const VtkPolyData data =
-        FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
-    const std::string path = dir + "/" + frame_names[t];
-    staged.emplace_back(
-        path + ".vtk", ToLegacyVtk(data, "pfdm " + frame_names[t], vtk_format));
-    staged.emplace_back(path + ".vtp", ToVtkXmlPolyData(data, vtk_format));
-  }
-  staged.emplace_back(dir + "/parameters.csv", ParametersCsv(analysis.models));
-  staged.emplace_back(dir + "/fit.pvd", PvdCollection(timesteps));
-  const std::string json = FitJson(points, fit, options, analysis);
-  const std::vector<std::string> svgs = plots->Finish();
-  staged.emplace_back(dir + "/parameters.svg", svgs[0]);
-  staged.emplace_back(
-      dir + "/report.html",
-      FitReportHtml(points, fit, analysis, svgs[0], svgs[1], svgs[2], svgs[3]));
-  staged.emplace_back(dir + "/fit.json", json);  // Last: marks the set.
-
-  // No fit.json, no set: from here until the new one is in place a kill
-  // leaves a folder that says "not done".
+  // No fit.json, no set: from here until the new one is in place a kill, or
+  // a failure, leaves a folder that says "not done".  The older set goes
+  // first: new files written while it was still there (to keep it until
+  // gnuplot had finished) made the writing of 50,000 tags' meshes take
+  // half as long again.
   RemoveOutputFile(dir, "fit.json");
-  std::set<std::string> ours;
-  for (const StagedFile& file : staged) {
-    ours.insert(std::filesystem::path(file.temporary()).filename().string());
-  }
   for (const std::string& name : OutputNamesIn(dir)) {
-    if (ours.count(name) == 0) RemoveOutputFile(dir, name);
+    RemoveOutputFile(dir, name);
   }
-  std::vector<std::string> committed;
+  std::vector<std::string> written;
+  const auto write = [&](const std::string& name, const std::string& contents) {
+    WriteFileAtomically(dir + "/" + name, contents);
+    written.push_back(name);
+  };
   try {
-    for (StagedFile& file : staged) {
-      file.Commit();
-      committed.push_back(file.path());
+    // Each frame's meshes are written as soon as they are formatted, so
+    // the next frame's reuse their memory: held until the end, the
+    // megabytes of every frame were fresh pages, and their faults were
+    // most of the writing.
+    for (size_t t = 0; t < fit.frames.size(); ++t) {
+      const VtkPolyData data =
+          FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
+      const std::string& name = frame_names[t];
+      write(name + ".vtk", ToLegacyVtk(data, "pfdm " + name, vtk_format));
+      write(name + ".vtp", ToVtkXmlPolyData(data, vtk_format));
     }
+    write("parameters.csv", ParametersCsv(analysis.models));
+    write("fit.pvd", PvdCollection(timesteps));
+    const std::string json = FitJson(points, fit, options, analysis);
+    const std::vector<std::string> svgs = plots->Finish();
+    write("parameters.svg", svgs[0]);
+    write("report.html", FitReportHtml(points, fit, analysis, svgs[0], svgs[1],
+                                       svgs[2], svgs[3]));
+    write("fit.json", json);  // Last: marks the set.
   } catch (const InputError&) {
-    for (const std::string& path : committed) std::remove(path.c_str());
+    for (const std::string& name : written) {
+      std::remove((dir + "/" + name).c_str());
+    }
     throw;
   }
 }

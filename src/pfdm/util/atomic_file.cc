@@ -9,7 +9,6 @@
 #include <fstream>
 #include <string>
 #include <system_error>
-#include <utility>
 
 #include "pfdm/util/error.h"
 
@@ -31,37 +30,17 @@ std::string Reason() {
 }  // namespace
 
 void WriteFileAtomically(const std::string& path, const std::string& contents) {
-  StagedFile(path, contents).Commit();
-}
-
-StagedFile::StagedFile(std::string path, const std::string& contents)
-    : path_(std::move(path)),
-      temporary_(path_ + ".tmp." + std::to_string(getpid())) {
+  const std::string temporary = path + ".tmp." + std::to_string(getpid());
   errno = 0;
-  std::ofstream out(temporary_, std::ios::binary | std::ios::trunc);
-  if (!out) Fail(path_, temporary_);
+  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+  if (!out) Fail(path, temporary);
   out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
   out.flush();
   // Some file systems (NFS, a full disk) only report the failure on close.
   out.close();
-  if (!out) Fail(path_, temporary_);
-}
-
-StagedFile::StagedFile(StagedFile&& other) noexcept
-    : path_(std::move(other.path_)),
-      temporary_(std::exchange(other.temporary_, std::string())) {}
-
-StagedFile::~StagedFile() {
-  if (!temporary_.empty()) std::remove(temporary_.c_str());
-}
-
-void StagedFile::Commit() {
+  if (!out) Fail(path, temporary);
   errno = 0;
-  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
-    const std::string temporary = std::exchange(temporary_, std::string());
-    Fail(path_, temporary);
-  }
-  temporary_.clear();
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) Fail(path, temporary);
 }
 
 void EnsureDirectory(const std::string& dir) {
