@@ -8,12 +8,7 @@ namespace pfdm {
 namespace {
 
 std::string ErrorOf(const std::string& path) {
-  try {
-    ReadManifest(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
+  return InputErrorOf([&] { ReadManifest(path); });
 }
 
 TEST(BatchManifestTest, ReadsCasesResolvingPathsAgainstTheManifest) {

@@ -2,19 +2,9 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/testing/test_util.h"
-#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-std::string ErrorOf(const std::function<void()>& run) {
-  try {
-    run();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
 
 TEST(MeshReaderTest, ObjVerticesAndFacesInEveryForm) {
   const std::string path = ScratchDirectory("obj") + "/m.obj";
@@ -32,12 +22,12 @@ TEST(MeshReaderTest, ObjVerticesAndFacesInEveryForm) {
 TEST(MeshReaderTest, ObjErrorsNameFileAndLine) {
   const std::string dir = ScratchDirectory("obj");
   WriteText(dir + "/a.obj", "v 0 0 0\nv 1 x 0\n");
-  EXPECT_EQ(ErrorOf([&] { ReadObj(dir + "/a.obj"); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadObj(dir + "/a.obj"); }),
             dir + "/a.obj:2: 'x' is not a number");
   WriteText(dir + "/b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
-  EXPECT_EQ(ErrorOf([&] { ReadObj(dir + "/b.obj"); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadObj(dir + "/b.obj"); }),
             dir + "/b.obj:4: vertex 8 out of range");
-  EXPECT_EQ(ErrorOf([&] { ReadObj(dir + "/none.obj"); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadObj(dir + "/none.obj"); }),
             dir + "/none.obj: cannot open the file");
 }
 
@@ -58,7 +48,7 @@ TEST(MeshReaderTest, LegacyVtkPointsPolygonsAndLabels) {
   WriteText(path,
             "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\n"
             "POINTS 2 float\n0 0 0\n1 zz 0\n");
-  EXPECT_EQ(ErrorOf([&] { ReadLegacyVtkPolyData(path); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadLegacyVtkPolyData(path); }),
             path + ":7: 'zz' is not a number");
 }
 
@@ -70,18 +60,18 @@ TEST(MeshReaderTest, PointDataMustMatchThePointsAndCoordinatesBeBounded) {
             "# vtk DataFile Version 3.0\nvtk output\nASCII\nDATASET POLYDATA\n"
             "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
             "POINT_DATA 2\nSCALARS s float\nLOOKUP_TABLE default\n0 1\n");
-  EXPECT_EQ(ErrorOf([&] { ReadLegacyVtkPolyData(path); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadLegacyVtkPolyData(path); }),
             path + ":7: POINT_DATA 2 does not match POINTS 3");
   WriteText(path,
             "# vtk DataFile Version 3.0\nvtk output\nASCII\nDATASET POLYDATA\n"
             "POINTS 2 float\n0 0 0 1e200 0 0\n");
-  EXPECT_EQ(ErrorOf([&] { ReadLegacyVtkPolyData(path); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadLegacyVtkPolyData(path); }),
             path +
                 ":6: coordinate '1e200' is out of range (more than 1e6 mm "
                 "from the origin)");
   const std::string obj = ScratchDirectory("obj") + "/m.obj";
   WriteText(obj, std::string("v 0 0 0\nv 1 0 0\nv 0 1") + '\0' + "\n");
-  EXPECT_EQ(ErrorOf([&] { ReadObj(obj); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadObj(obj); }),
             obj + ":3: contains a NUL byte (not a text file?)");
 }
 
@@ -99,10 +89,10 @@ TEST(MeshReaderTest, CapMeanShapeIsFourSurfacesOfXyzPoints) {
   const auto faces = ReadCapFaces(dir + "/surface_face.csv", 2);
   ASSERT_EQ(faces.size(), 2u);
   EXPECT_EQ(faces[1], (std::array<int, 3>{1, 0, 1}));
-  EXPECT_EQ(ErrorOf([&] { ReadCapFaces(dir + "/surface_face.csv", 1); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadCapFaces(dir + "/surface_face.csv", 1); }),
             dir + "/surface_face.csv:1: vertex 2 out of range 1..1");
   WriteText(dir + "/short.csv", "1\n2\n3\n");
-  EXPECT_EQ(ErrorOf([&] { ReadCapMeanShape(dir + "/short.csv"); }),
+  EXPECT_EQ(InputErrorOf([&] { ReadCapMeanShape(dir + "/short.csv"); }),
             dir + "/short.csv: 3 values, not 4 surfaces of x y z points");
 }
 
@@ -113,7 +103,7 @@ TEST(MeshReaderTest, VerticesBecomeTrackedPoints) {
   EXPECT_EQ(sequence.frames[1].index, 1);
   EXPECT_EQ(sequence.frames[1].points[1].id, 1);
   EXPECT_EQ(sequence.frames[1].points[1].position, Eigen::Vector3d(1, 0, 1));
-  EXPECT_EQ(ErrorOf([] {
+  EXPECT_EQ(InputErrorOf([] {
               MeshPointSequence("m", {{{0, 0, 0}}, {}});
             }),
             "m: frame 1 has 0 vertices, frame 0 1");

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/error.h"
 
 namespace pfdm {
 
@@ -50,6 +51,15 @@ std::string ReadText(const std::string& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
+}
+
+std::string InputErrorOf(const std::function<void()>& run) {
+  try {
+    run();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
 }
 
 CommandResult RunPfdm(const std::string& arguments) {

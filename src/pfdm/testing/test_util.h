@@ -3,6 +3,7 @@
 #define PFDM_TESTING_TEST_UTIL_H_
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +19,8 @@ void WriteText(const std::string& path, const std::string& text);
 // How often `what` occurs in text (overlaps counted).
 int CountOf(const std::string& text, const std::string& what);
 std::string ReadText(const std::string& path);
+// The message of the InputError that run throws, or "" if it throws none.
+std::string InputErrorOf(const std::function<void()>& run);
 
 struct CommandResult {
   int exit_code = 0;

@@ -5,19 +5,9 @@
 #include "gtest/gtest.h"
 #include "pfdm/testing/test_util.h"
 #include "pfdm/util/atomic_file.h"
-#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-std::string ErrorOf(const std::string& path) {
-  try {
-    ReadInputFile(path);
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
 
 // The file's bytes exactly, whatever their size: empty, one byte, and past
 // the reader's first guesses (a megabyte of every byte value but NUL).
@@ -35,11 +25,12 @@ TEST(InputFileTest, ReadsTheWholeFileExactly) {
 
 TEST(InputFileTest, RefusesWhatIsNotARegularTextFile) {
   const std::string dir = ScratchDirectory("input_file_bad");
-  EXPECT_EQ(ErrorOf(dir + "/missing.txt"),
+  EXPECT_EQ(InputErrorOf([&] { ReadInputFile(dir + "/missing.txt"); }),
             dir + "/missing.txt: cannot open the file");
-  EXPECT_EQ(ErrorOf(dir), dir + ": is a folder, not a file");
+  EXPECT_EQ(InputErrorOf([&] { ReadInputFile(dir); }),
+            dir + ": is a folder, not a file");
   WriteFileAtomically(dir + "/nul.txt", std::string("a\nb\nc\0d\n", 8));
-  EXPECT_EQ(ErrorOf(dir + "/nul.txt"),
+  EXPECT_EQ(InputErrorOf([&] { ReadInputFile(dir + "/nul.txt"); }),
             dir + "/nul.txt:3: contains a NUL byte (not a text file?)");
 }
 
