@@ -12,7 +12,6 @@
 #include "pfdm/fit/frame_problem.h"
 #include "pfdm/fit/gauge.h"
 #include "pfdm/fit/local_fit.h"
-#include "pfdm/fit/round_relaxation.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -530,7 +529,6 @@ SequenceFit FitSequence(const PointSequence& sequence,
     }
     auto solve_rounds = [&]() {
       fit.unsettled_mm = 0.0;
-      RoundRelaxation relaxation(model.config);
       for (int round = 0; round < options.max_correspondence_rounds; ++round) {
         std::optional<double> rim_height;
         if (!reference && !unknown.empty()) {
@@ -550,7 +548,6 @@ SequenceFit FitSequence(const PointSequence& sequence,
         if (!normals_current) {
           normals = SlidingNormals(model, fit.material, sliding);
         }
-        const Model round_start = model;
         report =
             SolveFrame(points, fit.material, normals, rim_height, kind,
                        kind == FrameKind::kUntracked ? reference_state : prior,
@@ -569,7 +566,6 @@ SequenceFit FitSequence(const PointSequence& sequence,
                            std::to_string(frame.index) +
                            ": solver failed: " + report.message);
         }
-        if (!unknown.empty()) relaxation.AfterSolve(round_start, &model);
         if (rerank_depths) {
           // Ranks settle in a round or two; later rounds only trade noise
           // between tags (kRerankRounds).

@@ -24,10 +24,6 @@ TEST(RealDataTest, BivMePatientContoursFitWithinTwoAndAHalfMillimetres) {
   for (const FrameFit& frame : fit.frames) {
     EXPECT_LT(frame.rms_mm, 2.5) << "frame " << frame.frame;
     EXPECT_GT(frame.rms_mm, 0.3) << "frame " << frame.frame;  // Not degenerate.
-    // Rounds that swing between two poses (RoundRelaxation) ended frames
-    // 8-10 with points still moving 2.6-2.9 mm; what is left is the slow
-    // slide of points along the surface, up to 0.35 mm.
-    EXPECT_LT(frame.unsettled_mm, 0.5) << "frame " << frame.frame;
     // The bending gauge: shape functions' means in [0, 2).
     for (int shape : {kB1, kB3}) {
       double mean = 0.0;
