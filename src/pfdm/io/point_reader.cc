@@ -75,7 +75,7 @@ InputError Restate(const std::string& path, const io::error::base& error) {
 // written files read back bit for bit.
 double ParseCoordinate(const std::string& path, unsigned line, const char* name,
                        const char* text) {
-  // Only for a message: built for every value, it was most of the reading.
+  // Only for a message: built for every value, it was a third of reading.
   const auto where = [&] {
     return path + ":" + std::to_string(line) + ": column '" + name + "'";
   };
