@@ -587,7 +587,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     // Each frame's meshes are written as soon as they are formatted, so
     // the next frame's reuse their memory: held until the end, the
     // megabytes of every frame were fresh pages, and their faults were
-    // most of the writing.
+    // half of the writing.
     for (size_t t = 0; t < fit.frames.size(); ++t) {
       const VtkPolyData data =
           FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);

@@ -48,7 +48,7 @@ static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double),
 // bytes after the '_' that opens <AppendedData>.  The arrays' bytes are
 // copied once, by Close, into a string reserved for them: built up by
 // appending, the file's megabytes were copied three times over into fresh
-// memory, whose page faults were most of the writing.
+// memory, whose page faults were half of the writing.
 class AppendedArrays {
  public:
   // Declares an array of `count` values at `data` with the given XML
@@ -71,10 +71,14 @@ class AppendedArrays {
     Add(attributes, kept_.back().data(), kept_.back().size(), xml);
   }
 
+  // Appends the <AppendedData> element, with room reserved for the file's
+  // closing tag after it.
   void Close(std::string* xml) const {
     constexpr const char* kOpen = "  <AppendedData encoding=\"raw\">\n   _";
-    constexpr const char* kEnd = "\n  </AppendedData>\n</VTKFile>\n";
-    xml->reserve(xml->size() + std::strlen(kOpen) + size_ + std::strlen(kEnd));
+    constexpr const char* kEnd = "\n  </AppendedData>\n";
+    constexpr size_t kClosingTag = 16;
+    xml->reserve(xml->size() + std::strlen(kOpen) + size_ + std::strlen(kEnd) +
+                 kClosingTag);
     *xml += kOpen;
     for (const auto& [data, size] : arrays_) {
       xml->append(reinterpret_cast<const char*>(&size), sizeof(size));
@@ -151,6 +155,7 @@ std::string AppendedRawPolyData(const VtkPolyData& data) {
   }
   xml += "    </Piece>\n  </PolyData>\n";
   arrays.Close(&xml);
+  xml += "</VTKFile>\n";
   return xml;
 }
 
