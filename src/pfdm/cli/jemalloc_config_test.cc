@@ -8,7 +8,7 @@
 namespace pfdm {
 namespace {
 
-TEST(JemallocConfigTest, TheCliAllocatesWithHugePagesAndKeepsFreedPages) {
+TEST(JemallocConfigTest, TheCliAllocatesWithHugePagesAndReusesFreedPages) {
 #ifndef PFDM_JEMALLOC
   GTEST_SKIP() << "built with PFDM_JEMALLOC=OFF";
 #endif
@@ -24,6 +24,7 @@ TEST(JemallocConfigTest, TheCliAllocatesWithHugePagesAndKeepsFreedPages) {
   EXPECT_NE(stats.find("opt.thp: \"always\""), std::string::npos) << stats;
   EXPECT_NE(stats.find("opt.dirty_decay_ms: -1"), std::string::npos);
   EXPECT_NE(stats.find("opt.muzzy_decay_ms: -1"), std::string::npos);
+  EXPECT_NE(stats.find("opt.oversize_threshold: 0"), std::string::npos);
 }
 
 }  // namespace
