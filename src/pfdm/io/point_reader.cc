@@ -111,7 +111,11 @@ void CheckIdsOncePerFrame(
     const std::map<long long, std::vector<unsigned>>& lines) {
   unsigned first_line = std::numeric_limits<unsigned>::max();
   std::string what;
-  for (const auto& [frame, points] : frames) {
+  for (const auto& entry : frames) {
+    // Not a structured binding: C++17 lambdas cannot capture one (clang,
+    // which the fuzz build uses, refuses it).
+    const long long frame = entry.first;
+    const std::vector<DataPoint>& points = entry.second;
     const std::vector<unsigned>& at = lines.at(frame);
     std::vector<size_t> order(points.size());
     std::iota(order.begin(), order.end(), 0);
