@@ -1,10 +1,11 @@
-// libFuzzer harness: ReadLegacyVtkPolyData, ASCII legacy VTK polydata.
+// libFuzzer harness: ReadLegacyVtkPolyData, legacy VTK polydata (ASCII or
+// binary).
 // Any input must end in a result or an InputError, nothing else.
 #include <cstddef>
 #include <cstdint>
 
 #include "fuzz_input.h"
-#include "pfdm/io/mesh_reader.h"
+#include "pfdm/io/legacy_vtk_reader.h"
 #include "pfdm/util/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -558,9 +558,9 @@ void BindFunctions(py::module_& m) {
       py::arg("cap_surfaces") = mesh_defaults.cap_surfaces,
       "Reads a PointSequence: the vertices of corresponding meshes as tracked "
       "points (id = vertex "
-      "index), as `pfdm mesh-points` reads them: a folder of .obj files "
-      "(one frame each, name order), an ASCII legacy .vtk polydata or the "
-      "CAP mean_shape.csv.");
+      "index), as `pfdm mesh-points` reads them: a folder of .obj or .vtk "
+      "files (one frame each, name order), a legacy .vtk polydata (ASCII or "
+      "binary) or the CAP mean_shape.csv.");
 
   m.def(
       "simulate",

@@ -17,11 +17,11 @@ const pfdm::MeshSettings kDefaults;
 }  // namespace
 
 DEFINE_string(mesh, "",
-              "mesh-points: an .obj or legacy .vtk file, a folder "
-              "of .obj files (one frame each, in name order) or a CAP "
-              "mean_shape.csv");
+              "mesh-points: an .obj or legacy .vtk file (ASCII or binary), "
+              "a folder of .obj or .vtk files (one frame each, in name "
+              "order) or a CAP mean_shape.csv");
 DEFINE_string(mesh_filter, "",
-              "mesh-points: in a folder, only .obj files "
+              "mesh-points: in a folder, only the files "
               "whose name contains this");
 DEFINE_string(mesh_format, kDefaults.mesh_format.c_str(),
               "mesh-points: obj, vtk, cap-mean or auto");

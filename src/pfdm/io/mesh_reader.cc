@@ -1,11 +1,8 @@
 #include "pfdm/io/mesh_reader.h"
 
-#include <charconv>
-#include <cmath>
-#include <cstring>
-#include <fstream>
 #include <sstream>
 
+#include "pfdm/io/mesh_fields.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/input_file.h"
 
@@ -15,82 +12,6 @@ namespace {
 std::istringstream Open(const std::string& path) {
   return std::istringstream(ReadInputFile(path));
 }
-
-double ToNumber(const std::string& where, const std::string& text) {
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [rest, error] = std::from_chars(text.data(), end, value);
-  if (error != std::errc() || rest != end || text.empty()) {
-    throw InputError(where + ": '" + Clip(text) + "' is not a number");
-  }
-  if (!std::isfinite(value)) throw InputError(where + ": not a finite number");
-  return value;
-}
-
-double ToCoordinate(const std::string& where, const std::string& text) {
-  const double value = ToNumber(where, text);
-  if (std::abs(value) > kMaxCoordinateMm) {
-    throw InputError(where + ": coordinate '" + Clip(text) +
-                     "' is out of range (more than 1e6 mm from the origin)");
-  }
-  return value;
-}
-
-long long ToInteger(const std::string& where, const std::string& text) {
-  long long value = 0;
-  const char* end = text.data() + text.size();
-  const auto [rest, error] = std::from_chars(text.data(), end, value);
-  if (error != std::errc() || rest != end || text.empty()) {
-    throw InputError(where + ": '" + Clip(text) + "' is not an integer");
-  }
-  return value;
-}
-
-void AddFan(const std::string& where, const std::vector<long long>& polygon,
-            size_t num_points, TriangleMesh* mesh) {
-  for (long long index : polygon) {
-    if (index < 0 || index >= static_cast<long long>(num_points)) {
-      throw InputError(where + ": vertex " + std::to_string(index) +
-                       " out of range");
-    }
-  }
-  for (size_t i = 1; i + 1 < polygon.size(); ++i) {
-    mesh->triangles.push_back({static_cast<int>(polygon[0]),
-                               static_cast<int>(polygon[i]),
-                               static_cast<int>(polygon[i + 1])});
-  }
-}
-
-// Whitespace-separated tokens with the line each came from, for errors.
-class Tokens {
- public:
-  explicit Tokens(const std::string& path) : path_(path), in_(Open(path)) {}
-  bool Next(std::string* token) {
-    while (!(line_stream_ >> *token)) {
-      std::string line;
-      if (!std::getline(in_, line)) return false;
-      ++line_;
-      line_stream_.clear();
-      line_stream_.str(line);
-    }
-    return true;
-  }
-  std::string Need(const char* what) {
-    std::string token;
-    if (!Next(&token)) throw InputError(path_ + ": ends before " + what);
-    return token;
-  }
-  std::string Where() const { return path_ + ":" + std::to_string(line_); }
-  double Number(const char* what) { return ToNumber(Where(), Need(what)); }
-  double Coordinate() { return ToCoordinate(Where(), Need("a coordinate")); }
-  long long Integer(const char* what) { return ToInteger(Where(), Need(what)); }
-
- private:
-  std::string path_;
-  std::istringstream in_;
-  std::istringstream line_stream_;
-  int line_ = 0;
-};
 
 }  // namespace
 
@@ -132,90 +53,6 @@ TriangleMesh ReadObj(const std::string& path) {
            &mesh);
   }
   return mesh;
-}
-
-VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
-  Tokens tokens(path);
-  VtkMesh result;
-  std::string line;
-  {
-    std::istringstream in = Open(path);
-    std::getline(in, line);
-    if (line.rfind("# vtk DataFile", 0) != 0) {
-      throw InputError(path + ":1: not a legacy VTK file");
-    }
-  }
-  // Skip the version line, title line and format keyword by tokens: the
-  // title may hold anything, so find "ASCII" or "BINARY" first.
-  std::string token;
-  while (tokens.Next(&token) && token != "ASCII" && token != "BINARY") {
-  }
-  if (token != "ASCII")
-    throw InputError(tokens.Where() + ": only ASCII VTK is read");
-  if (tokens.Need("DATASET") != "DATASET" ||
-      tokens.Need("POLYDATA") != "POLYDATA") {
-    throw InputError(tokens.Where() + ": only DATASET POLYDATA is read");
-  }
-  size_t data_points = 0;
-  while (tokens.Next(&token)) {
-    if (token == "POINTS") {
-      const long long n = tokens.Integer("the point count");
-      tokens.Need("the point type");
-      for (long long i = 0; i < n; ++i) {
-        const double x = tokens.Coordinate();
-        const double y = tokens.Coordinate();
-        result.mesh.points.emplace_back(x, y, tokens.Coordinate());
-      }
-    } else if (token == "POLYGONS" || token == "VERTICES" || token == "LINES" ||
-               token == "TRIANGLE_STRIPS") {
-      const long long cells = tokens.Integer("the cell count");
-      tokens.Integer("the cell list size");
-      for (long long c = 0; c < cells; ++c) {
-        const long long size = tokens.Integer("a cell size");
-        std::vector<long long> cell;
-        for (long long i = 0; i < size; ++i)
-          cell.push_back(tokens.Integer("an index"));
-        if (token == "POLYGONS") {
-          AddFan(tokens.Where(), cell, result.mesh.points.size(), &result.mesh);
-        }
-      }
-    } else if (token == "POINT_DATA") {
-      const long long n = tokens.Integer("the point-data count");
-      // Scalars of another count would be paired with the wrong points.
-      if (n != static_cast<long long>(result.mesh.points.size())) {
-        throw InputError(tokens.Where() + ": POINT_DATA " + std::to_string(n) +
-                         " does not match POINTS " +
-                         std::to_string(result.mesh.points.size()));
-      }
-      data_points = static_cast<size_t>(n);
-    } else if (token == "SCALARS") {
-      const std::string name = tokens.Need("a scalar name");
-      tokens.Need("a scalar type");
-      std::string next = tokens.Need("LOOKUP_TABLE");
-      if (next != "LOOKUP_TABLE") {
-        if (ToInteger(tokens.Where(), next) != 1) {
-          throw InputError(tokens.Where() +
-                           ": only one-component scalars are read");
-        }
-        next = tokens.Need("LOOKUP_TABLE");
-      }
-      tokens.Need("a lookup table name");
-      std::vector<double>& values = result.point_scalars[name];
-      for (size_t i = 0; i < data_points; ++i)
-        values.push_back(tokens.Number("a scalar"));
-    } else if (token == "LOOKUP_TABLE") {  // A table's definition: RGBA rows.
-      tokens.Need("a lookup table name");
-      const long long size = tokens.Integer("the table size");
-      for (long long i = 0; i < 4 * size; ++i) tokens.Number("a colour");
-    } else if (token == "CELL_DATA" || token == "FIELD" || token == "NORMALS" ||
-               token == "VECTORS" || token == "TEXTURE_COORDINATES") {
-      break;  // Nothing pfdm uses follows.
-    } else {
-      throw InputError(tokens.Where() + ": unexpected '" + Clip(token) + "'");
-    }
-  }
-  if (result.mesh.points.empty()) throw InputError(path + ": no points");
-  return result;
 }
 
 std::vector<std::vector<Eigen::Vector3d>> ReadCapMeanShape(

@@ -1,9 +1,9 @@
-// Reads the surface meshes other LV tools write: Wavefront OBJ, ASCII legacy
-// VTK polydata and the Cardiac Atlas Project's mean-shape vector.
+// Reads the surface meshes other LV tools write: Wavefront OBJ and the
+// Cardiac Atlas Project's mean-shape vector (legacy VTK:
+// legacy_vtk_reader.h), and frames of meshes as tracked points.
 #ifndef PFDM_IO_MESH_READER_H_
 #define PFDM_IO_MESH_READER_H_
 
-#include <map>
 #include <string>
 #include <vector>
 
@@ -16,14 +16,6 @@ namespace pfdm {
 // forms; polygons are fanned into triangles); other lines are ignored.
 // Throws InputError "PATH:LINE: ...".
 TriangleMesh ReadObj(const std::string& path);
-
-// An ASCII legacy VTK POLYDATA file: its points, its POLYGONS (fanned) and
-// its one-component point SCALARS by name.
-struct VtkMesh {
-  TriangleMesh mesh;
-  std::map<std::string, std::vector<double>> point_scalars;
-};
-VtkMesh ReadLegacyVtkPolyData(const std::string& path);
 
 // The CAP mean shape (cap-lv-mean/mean_shape.csv): one coordinate per line,
 // x y z of each point in turn, four surfaces of equal size one after the

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "pfdm/io/legacy_vtk_reader.h"
 #include "pfdm/io/mesh_reader.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/input_file.h"
@@ -77,6 +78,38 @@ TriangleMesh KeepLabel(const VtkMesh& vtk, const std::string& path,
   return kept;
 }
 
+// The files of `path` with `extension` whose names contain `filter`, in
+// name order: one frame each; or `path` itself when it is a file.
+std::vector<std::string> FrameFiles(const fs::path& path,
+                                    const std::string& extension,
+                                    const std::string& filter) {
+  if (!fs::is_directory(path)) return {path.string()};
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(path)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() == extension &&
+        name.find(filter) != std::string::npos) {
+      files.push_back(entry.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) {
+    throw InputError(path.string() + ": no " + extension + " file matching '" +
+                     filter + "'");
+  }
+  return files;
+}
+
+// A folder's format: its meshes' extension, .obj where it has both.
+std::string FolderFormat(const fs::path& path) {
+  bool vtk = false;
+  for (const auto& entry : fs::directory_iterator(path)) {
+    if (entry.path().extension() == ".obj") return "obj";
+    vtk = vtk || entry.path().extension() == ".vtk";
+  }
+  return vtk ? "vtk" : "obj";
+}
+
 }  // namespace
 
 std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
@@ -84,39 +117,27 @@ std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
   std::string format = settings.mesh_format;
   const fs::path p(path);
   if (format == "auto") {
-    format = fs::is_directory(p) || p.extension() == ".obj" ? "obj"
-             : p.extension() == ".vtk"                      ? "vtk"
-             : p.extension() == ".csv"                      ? "cap-mean"
-                                                            : "";
+    format = fs::is_directory(p)       ? FolderFormat(p)
+             : p.extension() == ".obj" ? "obj"
+             : p.extension() == ".vtk" ? "vtk"
+             : p.extension() == ".csv" ? "cap-mean"
+                                       : "";
     if (format.empty()) {
       throw InputError(path + ": unknown mesh format (use --mesh_format)");
     }
   }
   std::vector<TriangleMesh> frames;
   if (format == "obj") {
-    std::vector<std::string> files;
-    if (fs::is_directory(p)) {
-      for (const auto& entry : fs::directory_iterator(p)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.path().extension() == ".obj" &&
-            name.find(settings.mesh_filter) != std::string::npos) {
-          files.push_back(entry.path().string());
-        }
-      }
-      std::sort(files.begin(), files.end());
-      if (files.empty()) {
-        throw InputError(path + ": no .obj file matching '" +
-                         settings.mesh_filter + "'");
-      }
-    } else {
-      files.push_back(path);
-    }
-    for (const std::string& file : files) frames.push_back(ReadObj(file));
+    for (const std::string& file : FrameFiles(p, ".obj", settings.mesh_filter))
+      frames.push_back(ReadObj(file));
   } else if (format == "vtk") {
-    const VtkMesh vtk = ReadLegacyVtkPolyData(path);
-    frames.push_back(settings.label.empty()
-                         ? vtk.mesh
-                         : KeepLabel(vtk, path, settings.label));
+    for (const std::string& file :
+         FrameFiles(p, ".vtk", settings.mesh_filter)) {
+      const VtkMesh vtk = ReadLegacyVtkPolyData(file);
+      frames.push_back(settings.label.empty()
+                           ? vtk.mesh
+                           : KeepLabel(vtk, file, settings.label));
+    }
   } else if (format == "cap-mean") {
     const auto surfaces = ReadCapMeanShape(path);
     const auto faces =

@@ -1,5 +1,5 @@
 // Frames of meshes whose vertices correspond (pfdm mesh-points): a folder
-// of OBJ files, a legacy VTK file, or the CAP mean shape.
+// of OBJ or legacy VTK files, one such file, or the CAP mean shape.
 #ifndef PFDM_IO_MESH_SOURCE_H_
 #define PFDM_IO_MESH_SOURCE_H_
 
@@ -15,14 +15,15 @@ namespace pfdm {
 // defaults (the Python module's keyword arguments too).
 struct MeshSettings {
   std::string mesh_format = "auto";  // obj, vtk, cap-mean or auto.
-  std::string mesh_filter;  // In a folder, the .obj names containing it.
+  std::string mesh_filter;  // In a folder, the file names containing it.
   std::string label;        // VTK: keep the points whose scalar is this.
   std::string cap_surfaces = "ED-endo,ES-endo";  // CAP: the frames.
 };
 
-// One mesh per frame: the .obj files of a folder in name order, one .obj
-// or .vtk file, or the CAP surfaces listed (their faces from
-// surface_face.csv beside mean_shape.csv).  Throws InputError.
+// One mesh per frame: the .obj files of a folder in name order (or its .vtk
+// files, where it has no .obj or mesh_format is vtk), one .obj or .vtk
+// file, or the CAP surfaces listed (their faces from surface_face.csv beside
+// mean_shape.csv).  Throws InputError.
 std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
                                          const MeshSettings& settings);
 

@@ -24,7 +24,7 @@ void CheckRegularFile(const std::string& path) {
   }
 }
 
-std::string ReadInputFile(const std::string& path) {
+std::string ReadInputBytes(const std::string& path) {
   CheckRegularFile(path);
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path + ": cannot open the file");
@@ -36,6 +36,10 @@ std::string ReadInputFile(const std::string& path) {
   if (size < 0 || !in.read(contents.data(), size) || in.peek() != EOF) {
     throw InputError(path + ": cannot read the file (did it change?)");
   }
+  return contents;
+}
+
+void CheckNoNul(const std::string& path, const std::string& contents) {
   const size_t nul = contents.find('\0');
   if (nul != std::string::npos) {
     const long line =
@@ -43,6 +47,11 @@ std::string ReadInputFile(const std::string& path) {
     throw InputError(path + ":" + std::to_string(line) +
                      ": contains a NUL byte (not a text file?)");
   }
+}
+
+std::string ReadInputFile(const std::string& path) {
+  std::string contents = ReadInputBytes(path);
+  CheckNoNul(path, contents);
   return contents;
 }
 

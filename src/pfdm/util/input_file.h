@@ -17,10 +17,16 @@ inline constexpr double kMaxCoordinateMm = 1e6;
 // reader).
 void CheckRegularFile(const std::string& path);
 
-// The whole of a regular file.  Throws InputError("PATH:LINE: contains a NUL
-// byte") for binary data: the readers split lines as C strings, and a NUL
-// would silently cut a row short.
+// The whole of a regular file, as bytes (binary formats).
+std::string ReadInputBytes(const std::string& path);
+
+// The whole of a regular text file.  Throws InputError("PATH:LINE: contains
+// a NUL byte") for binary data: the readers split lines as C strings, and a
+// NUL would silently cut a row short.
 std::string ReadInputFile(const std::string& path);
+
+// The same refusal for contents read as bytes that turned out to be text.
+void CheckNoNul(const std::string& path, const std::string& contents);
 
 // text, cut to max characters followed by "...", to echo a field in a
 // one-line error without echoing megabytes.

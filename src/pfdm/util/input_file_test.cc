@@ -34,5 +34,15 @@ TEST(InputFileTest, RefusesWhatIsNotARegularTextFile) {
             dir + "/nul.txt:3: contains a NUL byte (not a text file?)");
 }
 
+// Binary formats take every byte, NUL included, with the same refusals.
+TEST(InputFileTest, BytesKeepNulAndRefuseWhatIsNotARegularFile) {
+  const std::string dir = ScratchDirectory("input_bytes");
+  const std::string bytes("\0\x01\n\xff\0", 5);
+  WriteFileAtomically(dir + "/b.bin", bytes);
+  EXPECT_EQ(ReadInputBytes(dir + "/b.bin"), bytes);
+  EXPECT_EQ(InputErrorOf([&] { ReadInputBytes(dir); }),
+            dir + ": is a folder, not a file");
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -1,0 +1,351 @@
+#include "pfdm/io/legacy_vtk_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <utility>
+
+#include "pfdm/io/mesh_fields.h"
+#include "pfdm/util/error.h"
+#include "pfdm/util/input_file.h"
+
+namespace pfdm {
+namespace {
+
+bool IsSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' ||
+         c == '\f';
+}
+
+// A binary section's number type: its size in bytes and how to read them.
+struct BinaryType {
+  int size;
+  bool floating;
+  bool is_signed;
+};
+
+BinaryType BinaryTypeOf(const std::string& where, const std::string& name) {
+  static const std::map<std::string, BinaryType> types = {
+      {"float", {4, true, true}},         {"double", {8, true, true}},
+      {"char", {1, false, true}},         {"unsigned_char", {1, false, false}},
+      {"short", {2, false, true}},        {"unsigned_short", {2, false, false}},
+      {"int", {4, false, true}},          {"unsigned_int", {4, false, false}},
+      {"vtktypeint32", {4, false, true}}, {"vtktypeuint32", {4, false, false}},
+      {"vtktypeint64", {8, false, true}}, {"vtktypeuint64", {8, false, false}}};
+  const auto it = types.find(name);
+  if (it != types.end()) return it->second;
+  if (name == "long" || name == "unsigned_long" || name == "vtkIdType") {
+    throw InputError(where + ": binary '" + name +
+                     "' has the size of the writer's platform; write the "
+                     "file as ASCII or with vtktypeint64");
+  }
+  throw InputError(where + ": unknown data type '" + Clip(name) + "'");
+}
+
+// The legacy format's binary numbers are big-endian whatever the machine.
+double DecodeBigEndian(const char* bytes, const BinaryType& type) {
+  std::uint64_t bits = 0;
+  for (int i = 0; i < type.size; ++i) {
+    bits = bits << 8 | static_cast<unsigned char>(bytes[i]);
+  }
+  if (type.floating && type.size == 4) {
+    const auto narrow = static_cast<std::uint32_t>(bits);
+    float value;
+    std::memcpy(&value, &narrow, sizeof(value));
+    return value;
+  }
+  if (type.floating) {
+    double value;
+    std::memcpy(&value, &bits, sizeof(value));
+    return value;
+  }
+  if (type.is_signed && type.size < 8) {
+    const int unused = 64 - 8 * type.size;
+    return static_cast<double>(static_cast<std::int64_t>(bits << unused) >>
+                               unused);
+  }
+  return type.is_signed ? static_cast<double>(static_cast<std::int64_t>(bits))
+                        : static_cast<double>(bits);
+}
+
+// A legacy VTK file: keywords and counts are whitespace-separated text, and
+// each section's numbers are text too (ASCII) or big-endian bytes from the
+// line after the section's header (BINARY).  Errors name the line, or the
+// byte once binary data has been passed (its bytes may hold line breaks).
+class VtkCursor {
+ public:
+  VtkCursor(const std::string& path, std::string bytes)
+      : path_(path), bytes_(std::move(bytes)) {}
+
+  const std::string& bytes() const { return bytes_; }
+
+  // The rest of the current line, without its line break; false at the end.
+  bool Line(std::string* line) {
+    if (position_ >= bytes_.size()) return false;
+    const size_t end = std::min(bytes_.find('\n', position_), bytes_.size());
+    *line = bytes_.substr(position_, end - position_);
+    const size_t last = line->find_last_not_of(" \t\r");
+    line->erase(last == std::string::npos ? 0 : last + 1);
+    line->erase(0, std::min(line->find_first_not_of(" \t"), line->size()));
+    position_ = std::min(end + 1, bytes_.size());
+    ++line_;
+    return true;
+  }
+
+  bool Next(std::string* token) {
+    while (position_ < bytes_.size() && IsSpace(bytes_[position_])) {
+      line_ += bytes_[position_] == '\n';
+      ++position_;
+    }
+    if (position_ >= bytes_.size()) return false;
+    token_start_ = position_;
+    while (position_ < bytes_.size() && !IsSpace(bytes_[position_])) {
+      ++position_;
+    }
+    *token = bytes_.substr(token_start_, position_ - token_start_);
+    return true;
+  }
+
+  // Whether the next token is `keyword`; consumes it only if so.
+  bool NextIs(const std::string& keyword) {
+    const VtkCursor saved = *this;
+    std::string token;
+    if (Next(&token) && token == keyword) return true;
+    *this = saved;
+    return false;
+  }
+
+  std::string Need(const char* what) {
+    std::string token;
+    if (!Next(&token)) throw InputError(path_ + ": ends before " + what);
+    return token;
+  }
+
+  std::string Where() const {
+    return binary_seen_ ? path_ + ": byte " + std::to_string(token_start_)
+                        : path_ + ":" + std::to_string(line_);
+  }
+
+  long long Integer(const char* what) { return ToInteger(Where(), Need(what)); }
+
+  // A section's number type, checked where it stands in a binary file.
+  std::string Type(const char* what) {
+    std::string type = Need(what);
+    if (binary_) BinaryTypeOf(Where(), type);
+    return type;
+  }
+
+  // A count of items that each take at least a byte of the file: bounded,
+  // so that the counts' products cannot overflow.
+  long long Count(const char* what) {
+    const long long count = Integer(what);
+    if (count < 0 || count > static_cast<long long>(bytes_.size())) {
+      throw InputError(Where() + ": " + std::to_string(count) + " is not " +
+                       what + " of a file of " + std::to_string(bytes_.size()) +
+                       " bytes");
+    }
+    return count;
+  }
+
+  // `count` numbers of `type` (the section's, as its header names it): text
+  // in an ASCII file, big-endian bytes in a BINARY one.  Coordinates are
+  // bounded (kMaxCoordinateMm); integers must be whole.
+  enum class Kind { kNumber, kCoordinate, kInteger };
+  std::vector<double> Numbers(const std::string& type, long long count,
+                              const char* what, Kind kind) {
+    std::vector<double> values;
+    if (!binary_) {
+      for (long long i = 0; i < count; ++i) {
+        const std::string token = Need(what);
+        values.push_back(kind == Kind::kInteger
+                             ? static_cast<double>(ToInteger(Where(), token))
+                         : kind == Kind::kCoordinate
+                             ? ToCoordinate(Where(), token)
+                             : ToNumber(Where(), token));
+      }
+      return values;
+    }
+    const BinaryType binary = BinaryTypeOf(Where(), type);
+    if (kind == Kind::kInteger && binary.floating) {
+      throw InputError(Where() + ": " + what + " as '" + type +
+                       "', not an integer type");
+    }
+    const char* at = Take(count, binary.size, what);
+    values.reserve(count);
+    for (long long i = 0; i < count; ++i, at += binary.size) {
+      const double value = DecodeBigEndian(at, binary);
+      token_start_ = at - bytes_.data();
+      if (!std::isfinite(value)) {
+        throw InputError(Where() + ": not a finite number");
+      }
+      if (kind == Kind::kCoordinate && std::abs(value) > kMaxCoordinateMm) {
+        throw InputError(Where() + ": coordinate " + std::to_string(value) +
+                         " is out of range (more than 1e6 mm from the "
+                         "origin)");
+      }
+      values.push_back(value);
+    }
+    return values;
+  }
+
+  void SetBinary(bool binary) { binary_ = binary; }
+
+  // METADATA (VTK 5.1): lines up to the first blank one.
+  void SkipMetadata() {
+    std::string line;
+    Line(&line);  // The keyword's own.
+    while (Line(&line) && !line.empty()) {
+    }
+  }
+
+ private:
+  // The section's bytes: from the line after its header, count * size.
+  const char* Take(long long count, int size, const char* what) {
+    const size_t end = bytes_.find('\n', position_);
+    position_ = end == std::string::npos ? bytes_.size() : end + 1;
+    binary_seen_ = true;
+    token_start_ = position_;
+    if (static_cast<unsigned long long>(count) >
+        (bytes_.size() - position_) / size) {
+      throw InputError(Where() + ": the file ends inside " + what);
+    }
+    const char* at = bytes_.data() + position_;
+    position_ += count * size;
+    return at;
+  }
+
+  std::string path_;
+  std::string bytes_;
+  size_t position_ = 0;
+  size_t token_start_ = 0;
+  int line_ = 1;
+  bool binary_ = false;
+  bool binary_seen_ = false;
+};
+
+}  // namespace
+
+VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
+  VtkCursor in(path, ReadInputBytes(path));
+  std::string line;
+  if (!in.Line(&line) || line.rfind("# vtk DataFile", 0) != 0) {
+    throw InputError(path + ":1: not a legacy VTK file");
+  }
+  in.Line(&line);  // The title, which may hold anything.
+  std::string format;
+  in.Line(&format);
+  if (format == "ASCII") {
+    CheckNoNul(path, in.bytes());
+  } else if (format != "BINARY") {
+    throw InputError(path + ":3: '" + Clip(format) +
+                     "' where ASCII or BINARY belongs");
+  }
+  in.SetBinary(format == "BINARY");
+  if (in.Need("DATASET") != "DATASET" || in.Need("POLYDATA") != "POLYDATA") {
+    throw InputError(in.Where() + ": only DATASET POLYDATA is read");
+  }
+  using Kind = VtkCursor::Kind;
+  VtkMesh result;
+  size_t data_points = 0;
+  std::string token;
+  while (in.Next(&token)) {
+    if (token == "POINTS") {
+      const long long n = in.Count("the point count");
+      const std::string type = in.Type("the point type");
+      const std::vector<double> xyz =
+          in.Numbers(type, 3 * n, "the points", Kind::kCoordinate);
+      for (size_t i = 0; i < xyz.size(); i += 3) {
+        result.mesh.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+      }
+    } else if (token == "POLYGONS" || token == "VERTICES" || token == "LINES" ||
+               token == "TRIANGLE_STRIPS") {
+      const long long first = in.Count("the cell count");
+      const long long second = in.Count("the cell list size");
+      std::vector<std::vector<long long>> cells;
+      if (in.NextIs("OFFSETS")) {
+        // VTK 5.1: first + 1 offsets into second indices.
+        const std::vector<double> offsets = in.Numbers(
+            in.Type("the offsets' type"), first, "the offsets", Kind::kInteger);
+        if (in.Need("CONNECTIVITY") != "CONNECTIVITY") {
+          throw InputError(in.Where() + ": CONNECTIVITY expected");
+        }
+        const std::vector<double> connectivity =
+            in.Numbers(in.Type("the connectivity's type"), second,
+                       "the connectivity", Kind::kInteger);
+        for (size_t c = 0; c + 1 < offsets.size(); ++c) {
+          if (offsets[c] < 0 || offsets[c + 1] < offsets[c] ||
+              offsets[c + 1] > second) {
+            throw InputError(in.Where() + ": offsets not increasing within " +
+                             std::to_string(second) + " indices");
+          }
+          cells.emplace_back(
+              connectivity.begin() + static_cast<std::ptrdiff_t>(offsets[c]),
+              connectivity.begin() +
+                  static_cast<std::ptrdiff_t>(offsets[c + 1]));
+        }
+      } else {
+        // first cells, each its size and indices: second numbers.
+        const std::vector<double> list =
+            in.Numbers("int", second, "the cells", Kind::kInteger);
+        size_t at = 0;
+        for (long long c = 0; c < first; ++c) {
+          const double size = at < list.size() ? list[at] : -1.0;
+          if (size < 0 || size > static_cast<double>(list.size() - at - 1)) {
+            throw InputError(in.Where() + ": " + std::to_string(first) +
+                             " cells do not fit a list of " +
+                             std::to_string(second));
+          }
+          const auto begin = list.begin() + static_cast<std::ptrdiff_t>(at);
+          cells.emplace_back(begin + 1,
+                             begin + 1 + static_cast<std::ptrdiff_t>(size));
+          at += 1 + static_cast<size_t>(size);
+        }
+      }
+      if (token == "POLYGONS") {
+        for (const auto& cell : cells) {
+          AddFan(in.Where(), cell, result.mesh.points.size(), &result.mesh);
+        }
+      }
+    } else if (token == "POINT_DATA") {
+      const long long n = in.Count("the point-data count");
+      // Scalars of another count would be paired with the wrong points.
+      if (n != static_cast<long long>(result.mesh.points.size())) {
+        throw InputError(in.Where() + ": POINT_DATA " + std::to_string(n) +
+                         " does not match POINTS " +
+                         std::to_string(result.mesh.points.size()));
+      }
+      data_points = static_cast<size_t>(n);
+    } else if (token == "SCALARS") {
+      const std::string name = in.Need("a scalar name");
+      const std::string type = in.Type("a scalar type");
+      std::string next = in.Need("LOOKUP_TABLE");
+      if (next != "LOOKUP_TABLE") {
+        if (ToInteger(in.Where(), next) != 1) {
+          throw InputError(in.Where() +
+                           ": only one-component scalars are read");
+        }
+        next = in.Need("LOOKUP_TABLE");
+      }
+      in.Need("a lookup table name");
+      result.point_scalars[name] =
+          in.Numbers(type, data_points, "a scalar", Kind::kNumber);
+    } else if (token == "LOOKUP_TABLE") {  // A table's definition: RGBA rows.
+      in.Need("a lookup table name");
+      const long long size = in.Count("the table size");
+      in.Numbers("unsigned_char", 4 * size, "a colour", Kind::kNumber);
+    } else if (token == "METADATA") {
+      in.SkipMetadata();
+    } else if (token == "CELL_DATA" || token == "FIELD" || token == "NORMALS" ||
+               token == "VECTORS" || token == "TEXTURE_COORDINATES") {
+      break;  // Nothing pfdm uses follows.
+    } else {
+      throw InputError(in.Where() + ": unexpected '" + Clip(token) + "'");
+    }
+  }
+  if (result.mesh.points.empty()) throw InputError(path + ": no points");
+  return result;
+}
+
+}  // namespace pfdm
