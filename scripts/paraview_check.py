@@ -2,7 +2,10 @@
 # checks what ParaView itself reads: one time step per frame, the point
 # arrays u, v and twist_deg, and a surface that moves over time.  With
 # --screenshots PREFIX it also renders the first and last frame coloured by
-# twist to PREFIX_first.png and PREFIX_last.png, for a look by eye.
+# twist to PREFIX_first.png and PREFIX_last.png, for a look by eye.  With
+# --legacy PREFIX it saves the first frame through ParaView's own legacy
+# VTK writer (VTK 9: file version 5.1) as PREFIX_ascii.vtk and
+# PREFIX_binary.vtk, for pfdm mesh-points to read back.
 #
 #   pvpython --force-offscreen-rendering scripts/paraview_check.py \
 #       out/fit/fit.pvd 5 [--screenshots out/fit/paraview]
@@ -24,6 +27,7 @@ def main():
     parser.add_argument("pvd")
     parser.add_argument("frames", type=int)
     parser.add_argument("--screenshots", default="")
+    parser.add_argument("--legacy", default="")
     args = parser.parse_args()
 
     reader = simple.PVDReader(FileName=args.pvd)
@@ -57,6 +61,12 @@ def main():
           "last frame twist %.1f..%.1f deg"
           % (args.pvd, len(times), first[5] - first[4], last[5] - last[4],
              twist_ranges[-1][0], twist_ranges[-1][1]))
+
+    if args.legacy:
+        reader.UpdatePipeline(times[0])
+        for file_type in ("Ascii", "Binary"):
+            simple.SaveData("%s_%s.vtk" % (args.legacy, file_type.lower()),
+                            proxy=reader, FileType=file_type)
 
     if args.screenshots:
         view = simple.CreateView("RenderView")

@@ -3,7 +3,9 @@
 # the fit.pvd in ParaView (scripts/paraview_check.py).  Exits 77 (CTest:
 # skipped) when pvpython is not installed: ParaView is an optional viewer,
 # not a dependency (apt-get install paraview python3-paraview xvfb).  With
-# xvfb-run it also saves screenshots of the first and last frame.
+# xvfb-run it also saves screenshots of the first and last frame.  Then
+# pfdm mesh-points reads frame 0 back as ParaView's legacy VTK writer saves
+# it, ASCII and binary.
 #   scripts/paraview_check.sh BUILD_DIR OUT_DIR
 set -euo pipefail
 build=$1
@@ -15,8 +17,28 @@ rm -rf "$out" && mkdir -p "$out"
 "$build/pfdm" fit --points "$out/phantom.csv" --out "$out/fit" > /dev/null
 if command -v xvfb-run > /dev/null; then
   xvfb-run -a -s "-screen 0 1024x1024x24" pvpython "$here/paraview_check.py" \
-    "$out/fit/fit.pvd" 5 --screenshots "$out/paraview"
+    "$out/fit/fit.pvd" 5 --screenshots "$out/paraview" --legacy "$out/legacy"
   echo "screenshots: $out/paraview_first.png $out/paraview_last.png"
 else
-  pvpython "$here/paraview_check.py" "$out/fit/fit.pvd" 5
+  pvpython "$here/paraview_check.py" "$out/fit/fit.pvd" 5 --legacy "$out/legacy"
 fi
+# ParaView's legacy files of frame 0 read back by pfdm mesh-points as pfdm's
+# own frame_000.vtk does: the same vertices and the same measures (the
+# binary file's doubles exactly; the text's to the printed digits).
+measure() {
+  "$build/pfdm" mesh-points --mesh "$1" --label is_data=0 --out "$2" | tail -n 1
+}
+own=$(measure "$out/fit/frame_000.vtk" "$out/own.csv")
+for file_type in binary ascii; do
+  theirs=$(measure "$out/legacy_$file_type.vtk" "$out/$file_type.csv")
+  if [ "$theirs" != "$own" ]; then
+    echo "ParaView's $file_type legacy VTK measures '$theirs', pfdm's own" \
+      "frame '$own'" >&2
+    exit 1
+  fi
+done
+cmp -s "$out/own.csv" "$out/binary.csv" || {
+  echo "ParaView's binary legacy VTK gives other points than pfdm's own" >&2
+  exit 1
+}
+echo "ParaView's legacy VTK (ASCII and binary) reads back: $own"

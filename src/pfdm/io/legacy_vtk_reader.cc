@@ -159,11 +159,10 @@ class VtkCursor {
     if (!binary_) {
       for (long long i = 0; i < count; ++i) {
         const std::string token = Need(what);
-        values.push_back(kind == Kind::kInteger
-                             ? static_cast<double>(ToInteger(Where(), token))
-                         : kind == Kind::kCoordinate
-                             ? ToCoordinate(Where(), token)
-                             : ToNumber(Where(), token));
+        values.push_back(
+            kind == Kind::kInteger ? CheckInteger(ToInteger(Where(), token))
+            : kind == Kind::kCoordinate ? ToCoordinate(Where(), token)
+                                        : ToNumber(Where(), token));
       }
       return values;
     }
@@ -180,6 +179,7 @@ class VtkCursor {
       if (!std::isfinite(value)) {
         throw InputError(Where() + ": not a finite number");
       }
+      if (kind == Kind::kInteger) CheckInteger(value);
       if (kind == Kind::kCoordinate && std::abs(value) > kMaxCoordinateMm) {
         throw InputError(Where() + ": coordinate " + std::to_string(value) +
                          " is out of range (more than 1e6 mm from the "
@@ -191,6 +191,16 @@ class VtkCursor {
   }
 
   void SetBinary(bool binary) { binary_ = binary; }
+
+  // Indices and offsets travel as doubles, exact to 2^53, and are turned
+  // back into integers: beyond that the conversion is undefined.
+  double CheckInteger(double value) const {
+    if (std::abs(value) > 9007199254740992.0) {
+      throw InputError(Where() + ": integer " + std::to_string(value) +
+                       " is out of range");
+    }
+    return value;
+  }
 
   // METADATA (VTK 5.1): lines up to the first blank one.
   void SkipMetadata() {
@@ -248,7 +258,17 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
   }
   using Kind = VtkCursor::Kind;
   VtkMesh result;
-  size_t data_points = 0;
+  // The current attribute section's: POINT_DATA's (point_data) or
+  // CELL_DATA's count, before either none.
+  long long attribute_count = 0;
+  bool point_data = false;
+  // A point section's one-component arrays are its scalars, by name.
+  const auto keep = [&](const std::string& name, long long components,
+                        std::vector<double> values) {
+    if (point_data && components == 1) {
+      result.point_scalars[name] = std::move(values);
+    }
+  };
   std::string token;
   while (in.Next(&token)) {
     if (token == "POINTS") {
@@ -316,30 +336,72 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
                          " does not match POINTS " +
                          std::to_string(result.mesh.points.size()));
       }
-      data_points = static_cast<size_t>(n);
+      attribute_count = n;
+      point_data = true;
+    } else if (token == "CELL_DATA") {
+      // Read past, for the POINT_DATA that VTK writes after it.
+      attribute_count = in.Count("the cell-data count");
+      point_data = false;
     } else if (token == "SCALARS") {
       const std::string name = in.Need("a scalar name");
       const std::string type = in.Type("a scalar type");
       std::string next = in.Need("LOOKUP_TABLE");
+      long long components = 1;
       if (next != "LOOKUP_TABLE") {
-        if (ToInteger(in.Where(), next) != 1) {
-          throw InputError(in.Where() +
-                           ": only one-component scalars are read");
+        components = ToInteger(in.Where(), next);
+        if (components < 1 || components > 4) {
+          throw InputError(in.Where() + ": " + std::to_string(components) +
+                           " components, not 1 to 4");
         }
         next = in.Need("LOOKUP_TABLE");
       }
       in.Need("a lookup table name");
-      result.point_scalars[name] =
-          in.Numbers(type, data_points, "a scalar", Kind::kNumber);
+      keep(name, components,
+           in.Numbers(type, components * attribute_count, "a scalar",
+                      Kind::kNumber));
+    } else if (token == "VECTORS" || token == "NORMALS" || token == "TENSORS") {
+      in.Need("an array name");
+      const std::string type = in.Type("an array type");
+      in.Numbers(type, (token == "TENSORS" ? 9 : 3) * attribute_count,
+                 "an array value", Kind::kNumber);
+    } else if (token == "TEXTURE_COORDINATES") {
+      in.Need("an array name");
+      const long long dimension = in.Integer("the texture dimension");
+      if (dimension < 1 || dimension > 3) {
+        throw InputError(in.Where() + ": texture dimension " +
+                         std::to_string(dimension) + ", not 1 to 3");
+      }
+      in.Numbers(in.Type("an array type"), dimension * attribute_count,
+                 "a texture coordinate", Kind::kNumber);
+    } else if (token == "FIELD") {
+      // Arrays of any name and shape, as ParaView writes point data: a
+      // one-component array of a value per point is a point scalar.
+      in.Need("a field name");
+      const long long arrays = in.Count("the field's array count");
+      for (long long i = 0; i < arrays; ++i) {
+        const std::string name = in.Need("an array name");
+        const long long components = in.Count("the array's components");
+        const long long tuples = in.Count("the array's tuples");
+        const std::string type = in.Type("the array's type");
+        if (components * tuples > static_cast<long long>(in.bytes().size())) {
+          throw InputError(in.Where() + ": " + std::to_string(components) +
+                           " x " + std::to_string(tuples) +
+                           " values do not fit the file");
+        }
+        std::vector<double> values = in.Numbers(
+            type, components * tuples, "an array value", Kind::kNumber);
+        if (tuples == attribute_count)
+          keep(name, components, std::move(values));
+        if (in.NextIs("METADATA")) in.SkipMetadata();
+      }
     } else if (token == "LOOKUP_TABLE") {  // A table's definition: RGBA rows.
       in.Need("a lookup table name");
       const long long size = in.Count("the table size");
       in.Numbers("unsigned_char", 4 * size, "a colour", Kind::kNumber);
     } else if (token == "METADATA") {
       in.SkipMetadata();
-    } else if (token == "CELL_DATA" || token == "FIELD" || token == "NORMALS" ||
-               token == "VECTORS" || token == "TEXTURE_COORDINATES") {
-      break;  // Nothing pfdm uses follows.
+    } else if (token == "COLOR_SCALARS") {
+      break;  // Nothing pfdm uses, in a layout of its own; stop here.
     } else {
       throw InputError(in.Where() + ": unexpected '" + Clip(token) + "'");
     }

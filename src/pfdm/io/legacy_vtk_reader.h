@@ -12,8 +12,10 @@ namespace pfdm {
 
 // A legacy VTK POLYDATA file, ASCII or BINARY, in the classic cell layout
 // or VTK 5.1's (OFFSETS and CONNECTIVITY): its points, its POLYGONS
-// (fanned) and its one-component point SCALARS by name.  Throws InputError
-// "PATH:LINE: ..." ("PATH: byte N: ..." past binary data).
+// (fanned) and its one-component point arrays by name, SCALARS or FIELD
+// arrays (as ParaView saves them); cell data, vectors and the like are read
+// past.  Throws InputError "PATH:LINE: ..." ("PATH: byte N: ..." past
+// binary data).
 struct VtkMesh {
   TriangleMesh mesh;
   std::map<std::string, std::vector<double>> point_scalars;

@@ -182,6 +182,45 @@ TEST(LegacyVtkReaderTest, Version51OffsetsConnectivityAndMetadata) {
             (std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 1}}));
 }
 
+// ParaView saves point arrays as FIELD data (each array followed by its
+// METADATA), after CELL_DATA; vectors and many-component arrays are read
+// past; a one-component array of a value per point is a scalar.
+TEST(LegacyVtkReaderTest, FieldArraysAndCellDataBeforePointData) {
+  const std::string path = ScratchDirectory("vtk_field") + "/m.vtk";
+  const std::string head = "# vtk DataFile Version 5.1\nvtk output\n";
+  const std::string cells =
+      "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\n"
+      "CONNECTIVITY vtktypeint64\n0 1 2\n";
+  WriteText(path, head +
+                      "ASCII\nDATASET POLYDATA\nPOINTS 3 double\n"
+                      "0 0 0 1 0 0 0 1 0\n" +
+                      cells +
+                      "CELL_DATA 1\nSCALARS area double 1\n"
+                      "LOOKUP_TABLE default\n0.5\n"
+                      "POINT_DATA 3\nVECTORS residual double\n"
+                      "1 2 3 4 5 6 7 8 9\nSCALARS rgb float 3\n"
+                      "LOOKUP_TABLE default\n0 0 0 1 1 1 0 1 0\n"
+                      "FIELD FieldData 2\nis_data 1 3 double\n0 0 1\n"
+                      "METADATA\nINFORMATION 0\n\n"
+                      "normal 3 3 float\n0 0 1 0 0 1 0 0 1\n");
+  VtkMesh vtk = ReadLegacyVtkPolyData(path);
+  ASSERT_EQ(vtk.point_scalars.size(), 1u);
+  EXPECT_EQ(vtk.point_scalars.at("is_data"), (std::vector<double>{0, 0, 1}));
+  EXPECT_EQ(vtk.mesh.triangles.size(), 1u);
+  WriteText(path, head + "BINARY\nDATASET POLYDATA\nPOINTS 3 double\n" +
+                      Doubles({0, 0, 0, 1, 0, 0, 0, 1, 0}) +
+                      "\nPOLYGONS 2 3\nOFFSETS vtktypeint64\n" +
+                      Integers({0, 3}, 8) + "\nCONNECTIVITY vtktypeint64\n" +
+                      Integers({0, 1, 2}, 8) +
+                      "\nPOINT_DATA 3\nFIELD FieldData 2\nu 1 3 double\n" +
+                      Doubles({-1.5, 0.25, 1}) +
+                      "\nMETADATA\nINFORMATION 0\n\nlabel 1 3 int\n" +
+                      Integers({7, 8, 10}, 4) + "\n");
+  vtk = ReadLegacyVtkPolyData(path);
+  EXPECT_EQ(vtk.point_scalars.at("u"), (std::vector<double>{-1.5, 0.25, 1}));
+  EXPECT_EQ(vtk.point_scalars.at("label"), (std::vector<double>{7, 8, 10}));
+}
+
 // Past binary data an error names the byte, where a line number would count
 // line breaks that are data.
 TEST(LegacyVtkReaderTest, BinaryErrorsNameTheByte) {
@@ -207,6 +246,16 @@ TEST(LegacyVtkReaderTest, BinaryErrorsNameTheByte) {
             path + ": byte " + std::to_string(data + 72) +
                 ": binary 'long' has the size of the writer's platform; "
                 "write the file as ASCII or with vtktypeint64");
+  // An index past 2^53 (fuzzing: its conversion was undefined).
+  const std::string polygons = "\nPOLYGONS 2 3\nOFFSETS vtktypeint64\n";
+  WriteText(path,
+            head + points + Doubles({1, 2, 3, 4, 5, 6}) + polygons +
+                Integers({0, 3}, 8) + "\nCONNECTIVITY vtktypeint64\n" +
+                Integers({0, 1, std::numeric_limits<std::int64_t>::max()}, 8));
+  EXPECT_EQ(InputErrorOf([&] { ReadLegacyVtkPolyData(path); }),
+            path + ": byte " +
+                std::to_string(data + 48 + polygons.size() + 16 + 27 + 16) +
+                ": integer 9223372036854775808.000000 is out of range");
   WriteText(path, "# vtk DataFile Version 3.0\nt\nXML\n");
   EXPECT_EQ(InputErrorOf([&] { ReadLegacyVtkPolyData(path); }),
             path + ":3: 'XML' where ASCII or BINARY belongs");
