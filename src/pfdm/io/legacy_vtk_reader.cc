@@ -5,7 +5,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <map>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "pfdm/io/mesh_fields.h"
 #include "pfdm/util/error.h"
@@ -110,10 +113,13 @@ class VtkCursor {
 
   // Whether the next token is `keyword`; consumes it only if so.
   bool NextIs(const std::string& keyword) {
-    const VtkCursor saved = *this;
+    const size_t position = position_, token_start = token_start_;
+    const int line = line_;
     std::string token;
     if (Next(&token) && token == keyword) return true;
-    *this = saved;
+    position_ = position;
+    token_start_ = token_start;
+    line_ = line;
     return false;
   }
 
