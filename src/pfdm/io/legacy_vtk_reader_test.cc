@@ -67,23 +67,23 @@ std::string BigEndian(std::uint64_t bits, int size) {
   }
   return bytes;
 }
-std::string Floats(const std::vector<float>& values) {
+// IEEE floats or doubles as their bit patterns.
+template <typename Real, typename Bits>
+std::string Reals(const std::vector<Real>& values) {
+  static_assert(sizeof(Real) == sizeof(Bits));
   std::string bytes;
-  for (float value : values) {
-    std::uint32_t bits;
+  for (Real value : values) {
+    Bits bits;
     std::memcpy(&bits, &value, sizeof(bits));
-    bytes += BigEndian(bits, 4);
+    bytes += BigEndian(bits, sizeof(bits));
   }
   return bytes;
 }
+std::string Floats(const std::vector<float>& values) {
+  return Reals<float, std::uint32_t>(values);
+}
 std::string Doubles(const std::vector<double>& values) {
-  std::string bytes;
-  for (double value : values) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &value, sizeof(bits));
-    bytes += BigEndian(bits, 8);
-  }
-  return bytes;
+  return Reals<double, std::uint64_t>(values);
 }
 std::string Integers(const std::vector<std::int64_t>& values, int size) {
   std::string bytes;
