@@ -241,6 +241,54 @@ class VtkCursor {
   bool binary_seen_ = false;
 };
 
+// A cell section's cells after its header's two counts: VTK 5.1's OFFSETS
+// (first of them) into CONNECTIVITY (second indices), or the classic list
+// of `first` cells, each its size and indices, `second` numbers in all.
+std::vector<std::vector<long long>> ReadCells(long long first, long long second,
+                                              VtkCursor* in) {
+  using Kind = VtkCursor::Kind;
+  std::vector<std::vector<long long>> cells;
+  if (in->NextIs("OFFSETS")) {
+    // VTK 5.1: first + 1 offsets into second indices.
+    const std::vector<double> offsets = in->Numbers(
+        in->Type("the offsets' type"), first, "the offsets", Kind::kInteger);
+    if (in->Need("CONNECTIVITY") != "CONNECTIVITY") {
+      throw InputError(in->Where() + ": CONNECTIVITY expected");
+    }
+    const std::vector<double> connectivity =
+        in->Numbers(in->Type("the connectivity's type"), second,
+                    "the connectivity", Kind::kInteger);
+    for (size_t c = 0; c + 1 < offsets.size(); ++c) {
+      if (offsets[c] < 0 || offsets[c + 1] < offsets[c] ||
+          offsets[c + 1] > second) {
+        throw InputError(in->Where() + ": offsets not increasing within " +
+                         std::to_string(second) + " indices");
+      }
+      cells.emplace_back(
+          connectivity.begin() + static_cast<std::ptrdiff_t>(offsets[c]),
+          connectivity.begin() + static_cast<std::ptrdiff_t>(offsets[c + 1]));
+    }
+  } else {
+    // first cells, each its size and indices: second numbers.
+    const std::vector<double> list =
+        in->Numbers("int", second, "the cells", Kind::kInteger);
+    size_t at = 0;
+    for (long long c = 0; c < first; ++c) {
+      const double size = at < list.size() ? list[at] : -1.0;
+      if (size < 0 || size > static_cast<double>(list.size() - at - 1)) {
+        throw InputError(in->Where() + ": " + std::to_string(first) +
+                         " cells do not fit a list of " +
+                         std::to_string(second));
+      }
+      const auto begin = list.begin() + static_cast<std::ptrdiff_t>(at);
+      cells.emplace_back(begin + 1,
+                         begin + 1 + static_cast<std::ptrdiff_t>(size));
+      at += 1 + static_cast<size_t>(size);
+    }
+  }
+  return cells;
+}
+
 }  // namespace
 
 VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
@@ -289,46 +337,8 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
                token == "TRIANGLE_STRIPS") {
       const long long first = in.Count("the cell count");
       const long long second = in.Count("the cell list size");
-      std::vector<std::vector<long long>> cells;
-      if (in.NextIs("OFFSETS")) {
-        // VTK 5.1: first + 1 offsets into second indices.
-        const std::vector<double> offsets = in.Numbers(
-            in.Type("the offsets' type"), first, "the offsets", Kind::kInteger);
-        if (in.Need("CONNECTIVITY") != "CONNECTIVITY") {
-          throw InputError(in.Where() + ": CONNECTIVITY expected");
-        }
-        const std::vector<double> connectivity =
-            in.Numbers(in.Type("the connectivity's type"), second,
-                       "the connectivity", Kind::kInteger);
-        for (size_t c = 0; c + 1 < offsets.size(); ++c) {
-          if (offsets[c] < 0 || offsets[c + 1] < offsets[c] ||
-              offsets[c + 1] > second) {
-            throw InputError(in.Where() + ": offsets not increasing within " +
-                             std::to_string(second) + " indices");
-          }
-          cells.emplace_back(
-              connectivity.begin() + static_cast<std::ptrdiff_t>(offsets[c]),
-              connectivity.begin() +
-                  static_cast<std::ptrdiff_t>(offsets[c + 1]));
-        }
-      } else {
-        // first cells, each its size and indices: second numbers.
-        const std::vector<double> list =
-            in.Numbers("int", second, "the cells", Kind::kInteger);
-        size_t at = 0;
-        for (long long c = 0; c < first; ++c) {
-          const double size = at < list.size() ? list[at] : -1.0;
-          if (size < 0 || size > static_cast<double>(list.size() - at - 1)) {
-            throw InputError(in.Where() + ": " + std::to_string(first) +
-                             " cells do not fit a list of " +
-                             std::to_string(second));
-          }
-          const auto begin = list.begin() + static_cast<std::ptrdiff_t>(at);
-          cells.emplace_back(begin + 1,
-                             begin + 1 + static_cast<std::ptrdiff_t>(size));
-          at += 1 + static_cast<size_t>(size);
-        }
-      }
+      const std::vector<std::vector<long long>> cells =
+          ReadCells(first, second, &in);
       if (token == "POLYGONS") {
         for (const auto& cell : cells) {
           AddFan(in.Where(), cell, result.mesh.points.size(), &result.mesh);
