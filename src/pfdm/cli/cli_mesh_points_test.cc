@@ -123,6 +123,17 @@ TEST(CliMeshPointsTest, FitMeshesReadBackAsFramesOfTheirVolume) {
     }
     EXPECT_EQ(measured.size(), 3u) << run.output;
   }
+  // Without the label the data points would join the vertices.
+  const CommandResult unlabelled =
+      RunPfdm("mesh-points --mesh " + dir + "/fit_binary --out " + dir +
+              "/unlabelled.csv");
+  EXPECT_EQ(unlabelled.exit_code, 1);
+  EXPECT_EQ(unlabelled.error,
+            "pfdm: error: " + dir +
+                "/fit_binary/frame_000.vtk: a pfdm frame with its data points "
+                "(is_data = 1); --label is_data=0 keeps the model's "
+                "vertices\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/unlabelled.csv"));
   ASSERT_EQ(volumes[0].size(), volumes[1].size());
   for (size_t t = 0; t < volumes[0].size(); ++t) {
     EXPECT_NEAR(volumes[0][t], volumes[1][t], 0.01) << t;

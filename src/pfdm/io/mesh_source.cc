@@ -78,6 +78,22 @@ TriangleMesh KeepLabel(const VtkMesh& vtk, const std::string& path,
   return kept;
 }
 
+// pfdm fit's own frames hold the data points after the model's vertices
+// (point scalar is_data = 1), in each frame's order: taken as vertices of
+// one mesh, they would pair points of different frames by position in the
+// file.  Refused, with the flag that keeps the vertices.
+void CheckNotPfdmData(const VtkMesh& vtk, const std::string& path) {
+  const auto it = vtk.point_scalars.find("is_data");
+  if (it == vtk.point_scalars.end()) return;
+  for (double value : it->second) {
+    if (value != 0.0) {
+      throw InputError(path +
+                       ": a pfdm frame with its data points (is_data = 1); "
+                       "--label is_data=0 keeps the model's vertices");
+    }
+  }
+}
+
 // The files of `path` with `extension` whose names contain `filter`, in
 // name order: one frame each; or `path` itself when it is a file.
 std::vector<std::string> FrameFiles(const fs::path& path,
@@ -134,6 +150,7 @@ std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
     for (const std::string& file :
          FrameFiles(p, ".vtk", settings.mesh_filter)) {
       const VtkMesh vtk = ReadLegacyVtkPolyData(file);
+      if (settings.label.empty()) CheckNotPfdmData(vtk, file);
       frames.push_back(settings.label.empty()
                            ? vtk.mesh
                            : KeepLabel(vtk, file, settings.label));
