@@ -417,7 +417,15 @@ VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
     } else if (token == "METADATA") {
       in.SkipMetadata();
     } else if (token == "COLOR_SCALARS") {
-      break;  // Nothing pfdm uses, in a layout of its own; stop here.
+      // Colours: floats in text, unsigned chars in binary.
+      in.Need("an array name");
+      const long long components = in.Integer("the colour components");
+      if (components < 1 || components > 4) {
+        throw InputError(in.Where() + ": " + std::to_string(components) +
+                         " colour components, not 1 to 4");
+      }
+      in.Numbers("unsigned_char", components * attribute_count, "a colour",
+                 Kind::kNumber);
     } else {
       throw InputError(in.Where() + ": unexpected '" + Clip(token) + "'");
     }

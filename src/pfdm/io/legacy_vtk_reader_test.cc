@@ -183,8 +183,8 @@ TEST(LegacyVtkReaderTest, Version51OffsetsConnectivityAndMetadata) {
 }
 
 // ParaView saves point arrays as FIELD data (each array followed by its
-// METADATA), after CELL_DATA; vectors and many-component arrays are read
-// past; a one-component array of a value per point is a scalar.
+// METADATA), after CELL_DATA; vectors, colours and many-component arrays
+// are read past; a one-component array of a value per point is a scalar.
 TEST(LegacyVtkReaderTest, FieldArraysAndCellDataBeforePointData) {
   const std::string path = ScratchDirectory("vtk_field") + "/m.vtk";
   const std::string head = "# vtk DataFile Version 5.1\nvtk output\n";
@@ -198,7 +198,8 @@ TEST(LegacyVtkReaderTest, FieldArraysAndCellDataBeforePointData) {
                       "CELL_DATA 1\nSCALARS area double 1\n"
                       "LOOKUP_TABLE default\n0.5\n"
                       "POINT_DATA 3\nVECTORS residual double\n"
-                      "1 2 3 4 5 6 7 8 9\nSCALARS rgb float 3\n"
+                      "1 2 3 4 5 6 7 8 9\nCOLOR_SCALARS c 3\n"
+                      "1 0 0 0 1 0 0 0 1\nSCALARS rgb float 3\n"
                       "LOOKUP_TABLE default\n0 0 0 1 1 1 0 1 0\n"
                       "FIELD FieldData 2\nis_data 1 3 double\n0 0 1\n"
                       "METADATA\nINFORMATION 0\n\n"
@@ -207,15 +208,17 @@ TEST(LegacyVtkReaderTest, FieldArraysAndCellDataBeforePointData) {
   ASSERT_EQ(vtk.point_scalars.size(), 1u);
   EXPECT_EQ(vtk.point_scalars.at("is_data"), (std::vector<double>{0, 0, 1}));
   EXPECT_EQ(vtk.mesh.triangles.size(), 1u);
-  WriteText(path, head + "BINARY\nDATASET POLYDATA\nPOINTS 3 double\n" +
-                      Doubles({0, 0, 0, 1, 0, 0, 0, 1, 0}) +
-                      "\nPOLYGONS 2 3\nOFFSETS vtktypeint64\n" +
-                      Integers({0, 3}, 8) + "\nCONNECTIVITY vtktypeint64\n" +
-                      Integers({0, 1, 2}, 8) +
-                      "\nPOINT_DATA 3\nFIELD FieldData 2\nu 1 3 double\n" +
-                      Doubles({-1.5, 0.25, 1}) +
-                      "\nMETADATA\nINFORMATION 0\n\nlabel 1 3 int\n" +
-                      Integers({7, 8, 10}, 4) + "\n");
+  WriteText(path,
+            head + "BINARY\nDATASET POLYDATA\nPOINTS 3 double\n" +
+                Doubles({0, 0, 0, 1, 0, 0, 0, 1, 0}) +
+                "\nPOLYGONS 2 3\nOFFSETS vtktypeint64\n" + Integers({0, 3}, 8) +
+                "\nCONNECTIVITY vtktypeint64\n" + Integers({0, 1, 2}, 8) +
+                "\nPOINT_DATA 3\nCOLOR_SCALARS c 4\n" +
+                Integers({255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255}, 1) +
+                "\nFIELD FieldData 2\nu 1 3 double\n" +
+                Doubles({-1.5, 0.25, 1}) +
+                "\nMETADATA\nINFORMATION 0\n\nlabel 1 3 int\n" +
+                Integers({7, 8, 10}, 4) + "\n");
   vtk = ReadLegacyVtkPolyData(path);
   EXPECT_EQ(vtk.point_scalars.at("u"), (std::vector<double>{-1.5, 0.25, 1}));
   EXPECT_EQ(vtk.point_scalars.at("label"), (std::vector<double>{7, 8, 10}));
