@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <string>
@@ -186,10 +187,11 @@ class VtkCursor {
         throw InputError(Where() + ": not a finite number");
       }
       if (kind == Kind::kInteger) CheckInteger(value);
+      // Spelled out only for the error (CheckCoordinate throws).
       if (kind == Kind::kCoordinate && std::abs(value) > kMaxCoordinateMm) {
-        throw InputError(Where() + ": coordinate " + std::to_string(value) +
-                         " is out of range (more than 1e6 mm from the "
-                         "origin)");
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.9g", value);
+        CheckCoordinate(Where(), value, text);
       }
       values.push_back(value);
     }

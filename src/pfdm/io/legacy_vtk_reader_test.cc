@@ -242,6 +242,11 @@ TEST(LegacyVtkReaderTest, BinaryErrorsNameTheByte) {
   EXPECT_EQ(
       InputErrorOf([&] { ReadLegacyVtkPolyData(path); }),
       path + ": byte " + std::to_string(data + 32) + ": not a finite number");
+  WriteText(path, head + points + Doubles({1, 2, 3, 4, -2e6, 6}));
+  EXPECT_EQ(InputErrorOf([&] { ReadLegacyVtkPolyData(path); }),
+            path + ": byte " + std::to_string(data + 32) +
+                ": coordinate '-2000000' is out of range (more than 1e6 mm "
+                "from the origin)");
   WriteText(path, head + points + Doubles({1, 2, 3, 4, 5, 6}) +
                       "\nPOINT_DATA 2\nSCALARS s long 1\nLOOKUP_TABLE t\n" +
                       Integers({1, 2}, 8));

@@ -19,13 +19,17 @@ double ToNumber(const std::string& where, const std::string& text) {
   return value;
 }
 
-double ToCoordinate(const std::string& where, const std::string& text) {
-  const double value = ToNumber(where, text);
+double CheckCoordinate(const std::string& where, double value,
+                       const std::string& text) {
   if (std::abs(value) > kMaxCoordinateMm) {
     throw InputError(where + ": coordinate '" + Clip(text) +
                      "' is out of range (more than 1e6 mm from the origin)");
   }
   return value;
+}
+
+double ToCoordinate(const std::string& where, const std::string& text) {
+  return CheckCoordinate(where, ToNumber(where, text), text);
 }
 
 long long ToInteger(const std::string& where, const std::string& text) {

@@ -15,6 +15,10 @@ namespace pfdm {
 double ToNumber(const std::string& where, const std::string& text);
 // A number within kMaxCoordinateMm of the origin (input_file.h).
 double ToCoordinate(const std::string& where, const std::string& text);
+// The same bound on a value read otherwise (binary), `text` its spelling in
+// the error.
+double CheckCoordinate(const std::string& where, double value,
+                       const std::string& text);
 // A whole number, all of text.
 long long ToInteger(const std::string& where, const std::string& text);
 
