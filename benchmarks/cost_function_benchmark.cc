@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "benchmark/benchmark.h"
-#include "pfdm/fit/data_cost.h"
-#include "pfdm/fit/point_group_residual.h"
+#include "pfdm/fit/residuals/data_cost.h"
+#include "pfdm/fit/residuals/point_group_residual.h"
 #include "pfdm/model/model.h"
 
 namespace pfdm {

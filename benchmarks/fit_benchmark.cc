@@ -29,7 +29,7 @@
 
 #include "Eigen/Core"
 #include "benchmark/benchmark.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/phantom.h"
 
 namespace pfdm {

@@ -16,9 +16,9 @@
 #include <string>
 
 #include "benchmark/benchmark.h"
-#include "pfdm/fit/correspondence.h"
-#include "pfdm/fit/fitter.h"
-#include "pfdm/fit/initialization.h"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/stages/initialization.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/point_source.h"
 #include "pfdm/io/point_writer.h"

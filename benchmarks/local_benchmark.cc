@@ -4,7 +4,7 @@
 // "frame_ms" is the whole frame, "local_ms" the local field's solve within
 // it.  Each configuration runs three times; read the medians.
 #include "benchmark/benchmark.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/lv_phantom.h"
 
 namespace pfdm {

@@ -6,7 +6,7 @@
 // (residuals and Jacobians) per tag and iteration.  Each configuration runs
 // three times; read the medians.
 #include "benchmark/benchmark.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/lv_phantom.h"
 
 namespace pfdm {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/fit_settings.h"
 #include "pfdm/io/mesh_source.h"

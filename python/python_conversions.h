@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "Eigen/Core"
-#include "pfdm/fit/correspondence.h"
+#include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/model/model.h"
 #include "pfdm/util/point_data.h"
 #include "pybind11/numpy.h"

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "pfdm/cli/commands.h"
-#include "pfdm/fit/jacobian_check.h"
+#include "pfdm/fit/residuals/jacobian_check.h"
 #include "pfdm/util/error.h"
 
 DEFINE_double(tolerance, 1e-6,

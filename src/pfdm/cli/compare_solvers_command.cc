@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "pfdm/cli/commands.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/solvers/solver.h"

@@ -2,7 +2,7 @@
 #include <cstdio>
 
 #include "pfdm/cli/commands.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"

@@ -5,13 +5,19 @@
 #include <optional>
 #include <string>
 
-#include "pfdm/fit/data_cost.h"
-#include "pfdm/fit/initialization.h"
-#include "pfdm/fit/transmural.h"
+#include "Eigen/Core"
+#include "pfdm/fit/correspondence/transmural.h"
+#include "pfdm/fit/residuals/data_cost.h"
 #include "pfdm/solvers/damping_groups.h"
 #include "pfdm/solvers/solver.h"
 
 namespace pfdm {
+
+// Optional user hint of the long axis.
+struct AxisHint {
+  Eigen::Vector3d apex;
+  Eigen::Vector3d base_center;
+};
 
 // Local deformations (local_fit.h, docs/local_deformations.md).
 struct LocalOptions {

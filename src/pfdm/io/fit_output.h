@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/vtk_writer.h"
 #include "pfdm/model/model.h"
 #include "pfdm/report/fit_analysis.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
-#include "pfdm/fit/correspondence.h"
+#include "pfdm/fit/correspondence/correspondence.h"
 
 namespace pfdm {
 namespace {

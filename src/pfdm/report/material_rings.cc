@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "pfdm/fit/correspondence.h"
+#include "pfdm/fit/correspondence/correspondence.h"
 
 namespace pfdm {
 namespace {

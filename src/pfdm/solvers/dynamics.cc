@@ -17,11 +17,10 @@
 #include "ceres/manifold.h"
 #include "ceres/solver.h"
 #include "pfdm/solvers/solver.h"
+#include "pfdm/util/stopwatch.h"
 
 namespace pfdm {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // Forward Euler runs at this fraction of its stability limit: the power
 // iteration underestimates lambda_max, and at the limit itself the stiffest
@@ -36,10 +35,6 @@ constexpr double kDefaultDampedStep = 1e3;
 constexpr int kMaxRefusals = 50;
 // Relative energy changes this small are the rounding of the sum.
 constexpr double kRounding = 1e-13;
-
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The problem's free parameter blocks and their places in the tangent
 // vector that Problem::Evaluate returns.

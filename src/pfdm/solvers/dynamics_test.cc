@@ -8,7 +8,7 @@
 #include "ceres/rotation.h"
 #include "glog/logging.h"
 #include "gtest/gtest.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/solvers/solver.h"
 

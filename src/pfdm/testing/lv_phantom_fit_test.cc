@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "gtest/gtest.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/clinical_summary.h"
 

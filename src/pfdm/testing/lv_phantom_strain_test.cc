@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "gtest/gtest.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/surface_strain.h"

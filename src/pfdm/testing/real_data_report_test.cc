@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "gtest/gtest.h"
-#include "pfdm/fit/correspondence.h"
+#include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/io/legacy_vtk_reader.h"
 #include "pfdm/io/mesh_reader.h"
 #include "pfdm/io/mitral_valve_planes.h"

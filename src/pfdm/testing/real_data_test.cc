@@ -1,6 +1,6 @@
 // Fits to the real third-party LV data in ../shared/data; skipped without it.
 #include "gtest/gtest.h"
-#include "pfdm/fit/fitter.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/point_reader.h"
 #include "pfdm/testing/test_util.h"
 

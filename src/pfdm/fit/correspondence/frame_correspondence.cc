@@ -1,0 +1,147 @@
+#include "pfdm/fit/correspondence/frame_correspondence.h"
+
+#include <algorithm>
+
+#include "pfdm/fit/correspondence/transmural.h"
+
+namespace pfdm {
+namespace {
+
+// In a solid, each listed point's surface: its contour's wall (layer_w), or
+// for a tag whose depth is assigned, its QuantileDepths rank among the
+// listed tags; 0, the mid-wall, for the rest.
+std::vector<double> SurfacesOf(const Model& model,
+                               const std::vector<Eigen::Vector3d>& subset,
+                               const std::vector<size_t>& which,
+                               const std::vector<double>& layer_w,
+                               const std::vector<bool>& assign_depth,
+                               const std::vector<MaterialPoint>& closest) {
+  std::vector<double> surfaces(which.size(), 0.0);
+  std::vector<size_t> tags;
+  std::vector<Eigen::Vector3d> tag_points;
+  std::vector<MaterialPoint> tag_material;
+  std::vector<double> tag_u;
+  for (size_t j = 0; j < which.size(); ++j) {
+    surfaces[j] = layer_w[which[j]];
+    if (!assign_depth[which[j]]) continue;
+    tags.push_back(j);
+    tag_points.push_back(subset[j]);
+    tag_material.push_back(closest[j]);
+    tag_u.push_back(closest[j].u);
+  }
+  const std::vector<double> depths =
+      QuantileDepths(tag_u, MidwallDistances(model, tag_points, tag_material));
+  for (size_t t = 0; t < tags.size(); ++t) surfaces[tags[t]] = depths[t];
+  return surfaces;
+}
+
+// Off the mid-wall, the closest point of the point's own surface replaces
+// the mid-wall's in closest, found and found_normals.
+void RefineOnSurfaces(const Model& model,
+                      const std::vector<Eigen::Vector3d>& subset,
+                      const std::vector<size_t>& which,
+                      const std::vector<double>& surfaces,
+                      const CorrespondenceOptions& correspondence, bool warm,
+                      const std::vector<MaterialPoint>& material,
+                      std::vector<MaterialPoint>* closest,
+                      std::vector<Eigen::Vector3d>* found,
+                      std::vector<Eigen::Vector3d>* found_normals) {
+  std::vector<size_t> off;
+  CorrespondenceOptions on_surface = correspondence;
+  on_surface.surfaces.clear();
+  on_surface.hints.clear();
+  std::vector<Eigen::Vector3d> off_points;
+  for (size_t j = 0; j < which.size(); ++j) {
+    if (surfaces[j] == 0.0) continue;
+    off.push_back(j);
+    off_points.push_back(subset[j]);
+    on_surface.surfaces.push_back(surfaces[j]);
+    if (warm) on_surface.hints.push_back(material[which[j]]);
+  }
+  std::vector<Eigen::Vector3d> found_off, normals_off;
+  const std::vector<MaterialPoint> refined = ClosestMaterialPoints(
+      model, off_points, on_surface, &found_off, &normals_off);
+  for (size_t k = 0; k < off.size(); ++k) {
+    (*closest)[off[k]] = refined[k];
+    (*found)[off[k]] = found_off[k];
+    (*found_normals)[off[k]] = normals_off[k];
+  }
+}
+
+}  // namespace
+
+std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
+                                  const std::vector<size_t>& which) {
+  std::vector<MaterialPoint> listed;
+  listed.reserve(which.size());
+  for (size_t i : which) listed.push_back(material[i]);
+  return listed;
+}
+
+double MaxDistance(const std::vector<Eigen::Vector3d>& a,
+                   const std::vector<Eigen::Vector3d>& b) {
+  double distance = 0.0;
+  for (size_t j = 0; j < a.size(); ++j) {
+    distance = std::max(distance, (a[j] - b[j]).norm());
+  }
+  return distance;
+}
+
+void UpdateClosest(const Model& model,
+                   const std::vector<Eigen::Vector3d>& points,
+                   const std::vector<size_t>& which, int num_threads,
+                   const std::vector<double>& layer_w,
+                   const std::vector<bool>& assign_depth, bool warm,
+                   std::vector<MaterialPoint>* material,
+                   std::vector<Eigen::Vector3d>* normals,
+                   std::vector<Eigen::Vector3d>* found) {
+  std::vector<Eigen::Vector3d> subset;
+  for (size_t i : which) subset.push_back(points[i]);
+  CorrespondenceOptions correspondence;
+  correspondence.num_threads = num_threads;
+  if (warm) {
+    for (size_t i : which) correspondence.hints.push_back((*material)[i]);
+  }
+  std::vector<Eigen::Vector3d> found_normals;
+  std::vector<MaterialPoint> closest = ClosestMaterialPoints(
+      model, subset, correspondence, found, &found_normals);
+  if (model.config.Solid()) {
+    const std::vector<double> surfaces =
+        SurfacesOf(model, subset, which, layer_w, assign_depth, closest);
+    RefineOnSurfaces(model, subset, which, surfaces, correspondence, warm,
+                     *material, &closest, found, &found_normals);
+  }
+  for (size_t j = 0; j < which.size(); ++j) {
+    (*material)[which[j]] = closest[j];
+    (*normals)[which[j]] = PullsAlongNormal(model.config, closest[j])
+                               ? found_normals[j]
+                               : Eigen::Vector3d::Zero();
+  }
+}
+
+double RerankDepths(const Model& model,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<size_t>& which,
+                    std::vector<MaterialPoint>* material) {
+  std::vector<Eigen::Vector3d> subset;
+  std::vector<MaterialPoint> subset_material;
+  std::vector<double> u;
+  for (size_t i : which) {
+    subset.push_back(points[i]);
+    subset_material.push_back((*material)[i]);
+    u.push_back((*material)[i].u);
+  }
+  const std::vector<double> depths =
+      QuantileDepths(u, MidwallDistances(model, subset, subset_material));
+  double moved = 0.0;
+  for (size_t j = 0; j < which.size(); ++j) {
+    MaterialPoint& m = (*material)[which[j]];
+    moved = std::max(moved, (model.WorldPoint(m.u, m.v, depths[j]) -
+                             model.WorldPoint(m.u, m.v, m.w))
+                                .norm());
+    m.w = depths[j];
+  }
+  return moved;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,56 @@
+// A frame's correspondences as the fit's rounds update them: the listed
+// points' closest material points, each sought on its own surface of a
+// solid, and tags re-ranked across the wall.
+#ifndef PFDM_FIT_CORRESPONDENCE_FRAME_CORRESPONDENCE_H_
+#define PFDM_FIT_CORRESPONDENCE_FRAME_CORRESPONDENCE_H_
+
+#include <cstddef>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/model/model.h"
+
+namespace pfdm {
+
+// The listed points' material points.
+std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
+                                  const std::vector<size_t>& which);
+
+// The largest distance (mm) between paired points.
+double MaxDistance(const std::vector<Eigen::Vector3d>& a,
+                   const std::vector<Eigen::Vector3d>& b);
+
+// Fills material[i] for the listed points with their closest material
+// points, normals[i] with the normals they pull along (zero where they do
+// not: PullsAlongNormal) and found[j] with their model points, in the
+// listed order.  In a solid, a point is sought on its surface: layer_w[i]
+// for a contour of one wall, or, when depths are assigned (frame 0's tags),
+// QuantileDepths' w.  `warm` starts each search from the point's current
+// material point.
+void UpdateClosest(const Model& model,
+                   const std::vector<Eigen::Vector3d>& points,
+                   const std::vector<size_t>& which, int num_threads,
+                   const std::vector<double>& layer_w,
+                   const std::vector<bool>& assign_depth, bool warm,
+                   std::vector<MaterialPoint>* material,
+                   std::vector<Eigen::Vector3d>* normals,
+                   std::vector<Eigen::Vector3d>* found);
+
+// Sets the listed points' w to their QuantileDepths on `model` and returns
+// how far (mm) the farthest one's model point moved.  Why each frame ranks
+// its tags afresh rather than keeping frame 0's w: a w read from noisy
+// distances regresses every later frame's thickness toward zero (errors in
+// the regressor), by the noise's share of the depths' variance, while frame
+// 0's own h comes out inflated by as much; ranked in every frame, h is
+// biased alike in all of them and the thickening (a ratio) is not.  A tag's
+// place in the order across the wall is material; its rank changes only by
+// noise.
+double RerankDepths(const Model& model,
+                    const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<size_t>& which,
+                    std::vector<MaterialPoint>* material);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_CORRESPONDENCE_FRAME_CORRESPONDENCE_H_

@@ -1,0 +1,108 @@
+#include "pfdm/fit/correspondence/frame_correspondence.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/correspondence/transmural.h"
+#include "pfdm/testing/test_models.h"
+
+namespace pfdm {
+namespace {
+
+// A solid spheroid with a 10 mm wall (h in mm).
+Model SolidSpheroid() {
+  Model model = TestSpheroid(9);
+  model.config.MakeSolid();
+  model.state.globals[kH] = 10.0;
+  for (FunctionValues& knot : model.state.knots) knot[kH] = 10.0;
+  return model;
+}
+
+const MaterialPoint kAt[] = {
+    {0.3, 1.0, 0.0}, {-0.4, -2.0, 0.0}, {0.9, 2.5, 0.0}, {-0.8, 0.4, 0.0}};
+
+TEST(FrameCorrespondenceTest, ListsAndMeasures) {
+  const std::vector<MaterialPoint> material(std::begin(kAt), std::end(kAt));
+  const std::vector<MaterialPoint> listed = Listed(material, {3, 1});
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_EQ(listed[0].u, -0.8);
+  EXPECT_EQ(listed[1].v, -2.0);
+  EXPECT_EQ(MaxDistance({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1)},
+                        {Eigen::Vector3d(3, 4, 0), Eigen::Vector3d(1, 1, 1)}),
+            5.0);
+}
+
+// Points on the mid-wall are found where they are, only the listed ones;
+// the listed points below the rim pull along the normal there.
+TEST(FrameCorrespondenceTest, FindsTheListedPointsOnTheMidwall) {
+  const Model model = TestSpheroid(9);
+  std::vector<Eigen::Vector3d> points;
+  for (const MaterialPoint& m : kAt)
+    points.push_back(model.WorldPoint(m.u, m.v));
+  std::vector<MaterialPoint> material(4);
+  std::vector<Eigen::Vector3d> normals(4, Eigen::Vector3d::Zero()), found;
+  UpdateClosest(model, points, {0, 2}, 1, std::vector<double>(4, 0.0),
+                std::vector<bool>(4, false), false, &material, &normals,
+                &found);
+  for (size_t i : {0, 2}) {
+    EXPECT_NEAR(material[i].u, kAt[i].u, 1e-6) << i;
+    EXPECT_NEAR(material[i].v, kAt[i].v, 1e-6) << i;
+    EXPECT_NEAR((normals[i] - SurfaceNormal(model, kAt[i].u, kAt[i].v)).norm(),
+                0.0, 1e-6)
+        << i;
+  }
+  EXPECT_NEAR((found[1] - points[2]).norm(), 0.0, 1e-6);
+  EXPECT_EQ(material[1].u, 0.0);
+  EXPECT_EQ(normals[3], Eigen::Vector3d::Zero());
+}
+
+// In a solid, a contour point is sought on its own wall: an epicardial
+// point 5 mm outside the mid-wall is on w = +1, at distance 0.
+TEST(FrameCorrespondenceTest, FindsContoursOnTheirWall) {
+  const Model model = SolidSpheroid();
+  std::vector<Eigen::Vector3d> points;
+  for (const MaterialPoint& m : kAt) {
+    points.push_back(model.WorldPoint(m.u, m.v, 1.0));
+  }
+  std::vector<MaterialPoint> material(4);
+  std::vector<Eigen::Vector3d> normals(4), found;
+  UpdateClosest(model, points, {0, 1, 2, 3}, 2, std::vector<double>(4, 1.0),
+                std::vector<bool>(4, false), false, &material, &normals,
+                &found);
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(material[i].w, 1.0) << i;
+    EXPECT_NEAR((found[i] - points[i]).norm(), 0.0, 1e-6) << i;
+  }
+}
+
+// Tags through the wall, ten bands of latitude of 24 tags each evenly
+// spread across it, take their rank's depth in their band; a tag moved
+// from the mid-wall to its rank's surface moves by up to the wall's half
+// thickness, and ranking again moves none.
+TEST(FrameCorrespondenceTest, RanksTagsAcrossTheWall) {
+  const Model model = SolidSpheroid();
+  const int bands = 10, per_band = kMinBand;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<MaterialPoint> material;
+  std::vector<double> depth;
+  std::vector<size_t> which;
+  for (int j = 0; j < per_band; ++j) {
+    for (int b = 0; b < bands; ++b) {
+      const double w = -1.0 + (2.0 * j + 1.0) / per_band;
+      const double u = -1.0 + 0.2 * b + 0.005 * j, v = 0.26 * j;
+      which.push_back(points.size());
+      points.push_back(model.WorldPoint(u, v, w));
+      material.push_back({u, v, 0.0});
+      depth.push_back(w);
+    }
+  }
+  const double moved = RerankDepths(model, points, which, &material);
+  EXPECT_NEAR(moved, 5.0, 0.5);
+  for (size_t i = 0; i < points.size(); ++i) {
+    EXPECT_NEAR(material[i].w, depth[i], 1.0 / per_band) << i;
+  }
+  EXPECT_EQ(RerankDepths(model, points, which, &material), 0.0);
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,85 @@
+// Where tags sit across the wall (the solid model's w, model/transmural.h),
+// and whether data say anything about the wall's thickness at all.
+#ifndef PFDM_FIT_CORRESPONDENCE_TRANSMURAL_H_
+#define PFDM_FIT_CORRESPONDENCE_TRANSMURAL_H_
+
+#include <string>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/model/model.h"
+
+namespace pfdm {
+
+// --wall: a mid-wall surface, a solid, or whichever the data support
+// (FitSequence says which it chose and why).
+enum class WallModel { kAuto, kMidwall, kSolid };
+// "auto", "midwall" or "solid"; throws InputError otherwise.
+WallModel WallModelFromName(const std::string& name);
+const char* WallModelName(WallModel model);
+
+// A uniform spread of tags across the wall thinner than this (mm, as
+// WallSpreadMm measures it) is read as tags on one surface plus noise: a
+// wall is thicker (the LV's 4 mm at a thin apex to 15 mm), localization
+// noise of 1 mm per coordinate reads 3.5 mm.
+constexpr double kMinWallSpreadMm = 4.0;
+
+// Signed distance (mm, + outward) of each point from the mid-wall, along
+// the surface normal at its material point's (u, v), and, when
+// midwall_points is given, the mid-wall's points there.
+std::vector<double> MidwallDistances(
+    const Model& model, const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material,
+    std::vector<Eigen::Vector3d>* midwall_points = nullptr);
+
+// The thickness of the wall the points fill, read from how much each
+// point's distance differs from that of its nearest neighbour along the
+// mid-wall (midwall_points: MidwallDistances'): sqrt(6 mean (d_i -
+// d_j)^2), which is h for points spread uniformly through a wall of
+// thickness h and about 2.4 sigma for points on one surface with noise of
+// sigma mm.  Neighbours, not the plain spread, so that where the surface
+// misses a shape (a valve, an outflow tract) its points, which all miss it
+// alike, do not read as a wall.  Neighbours are sought among at most
+// 16,384 of the points (every m-th), and the mean is over every k-th of
+// those's pair, at most 4,096 of them.
+double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
+                    const std::vector<double>& distances);
+
+// w of tags spread through the wall.  Tags sample the wall uniformly across
+// its thickness (SPAMM tag intersections do; the wall's curvature puts a
+// few percent more of them outside the mid-wall), so a tag's w is 2 q - 1,
+// q its distance's quantile among the tags of its band of latitude (tags
+// sorted by u, bands of a sixteenth of them, at least kMinBand).  Ranks, not
+// distances, so that no wall thickness is assumed: the fit then finds h.
+constexpr int kMinBand = 24;
+std::vector<double> QuantileDepths(const std::vector<double>& u,
+                                   const std::vector<double>& distances);
+
+// Localization noise (mm per coordinate, isotropic) of tracked tags, from
+// their residuals across the normal of their layer: each of the two
+// tangential directions carries this frame's noise and frame 0's (through
+// the tag's (u, v)), so sigma^2 = mean |r - (r . n) n|^2 / 4.  Model error
+// counts as noise here.  0 for no tags.
+double TangentialNoiseMm(const Model& model,
+                         const std::vector<Eigen::Vector3d>& residuals,
+                         const std::vector<MaterialPoint>& material,
+                         const std::vector<size_t>& which);
+
+// The thickness of a wall of tags ranked across it, their noise taken out:
+// ranks of distances with noise sigma widen a wall of thickness h to
+// h_obs = h + 6 sigma^2 / h (the least-squares slope of uniform plus
+// Gaussian distances on their own quantiles is three times their Gini
+// mean difference, h / 3 + 2 sigma^2 / h for small sigma), so
+// h = (h_obs + sqrt(h_obs^2 - 24 sigma^2)) / 2, and h_obs / 2 where the
+// root would be imaginary.
+double DeconvolvedThickness(double h_obs, double sigma);
+
+// The thickness (mm) the distances imply at those depths: twice the
+// least-squares slope of distance on w.
+double ThicknessFromDepths(const std::vector<double>& distances,
+                           const std::vector<double>& depths);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_CORRESPONDENCE_TRANSMURAL_H_

@@ -1,0 +1,354 @@
+#include "pfdm/fit/problem/frame_problem.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "ceres/ceres.h"
+#include "glog/logging.h"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/problem/frame_blocks.h"
+#include "pfdm/fit/residuals/axis_gauge_chain.h"
+#include "pfdm/fit/residuals/data_cost.h"
+#include "pfdm/fit/residuals/meridian_gauge_residual.h"
+#include "pfdm/fit/residuals/point_group_residual.h"
+#include "pfdm/fit/residuals/point_residual.h"
+#include "pfdm/fit/residuals/precomputed_groups.h"
+#include "pfdm/fit/residuals/regularizer.h"
+#include "pfdm/fit/residuals/spin_gauge_residual.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+// Points per grouped residual block: enough to amortize Ceres' per-block
+// work, few enough to leave blocks for every thread.  A tracked 50,000-point
+// frame took 31 ms an iteration with 512, 26.5 with 1,024 or 2,048 (one
+// thread; with two, 18 whichever).
+constexpr size_t kPointsPerGroup = 1024;
+
+// Millimetres of model-point motion per unit of each function, for the
+// regularizers.  Everything scales with the data, so scaled data get scaled
+// lengths.  tau is weighted as if at radius a0, about four times the LV's:
+// near the apex the rings are too small for the data to pin the twist, and
+// twist varies slowly along the axis, so its smoothness carries more.
+FunctionValues FunctionScales(const Model& model,
+                              const std::vector<int>& held) {
+  const double a0 = model.state.globals[kA0];
+  const double radius =
+      a0 * 0.5 * (model.FunctionAt(kA1, 0.0) + model.FunctionAt(kA2, 0.0));
+  FunctionValues scales{};
+  scales[kA0] = 1.0;
+  scales[kA1] = scales[kA2] = scales[kA3] = a0;
+  scales[kEps1] = scales[kEps2] = radius;
+  scales[kTau] = a0;
+  scales[kB0] = scales[kB2] = scales[kE1o] = scales[kE2o] = scales[kE3o] = 1.0;
+  scales[kB1] = scales[kB3] = radius;
+  // A unit of h moves a wall surface by half a millimetre, one of shift by a
+  // millimetre; dtau turns it by half as much as tau.
+  scales[kH] = 0.5;
+  scales[kWallShift] = 1.0;
+  scales[kDtau] = 0.5 * a0;
+  for (int f : held) scales[f] = 0.0;
+  return scales;
+}
+
+// The groups' multipliers per free entry of each free block, and for the
+// pose when it is free.
+void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
+                      const DampingGroups& groups, Model* model,
+                      SolverOptions* solver) {
+  blocks.ForEachFree([&](double* block, const std::vector<int>& free) {
+    std::vector<double>& scales = solver->damping_scale[block];
+    for (int f : free) scales.push_back(groups.Of(Function(f)));
+  });
+  for (double* pose :
+       {model->state.center.data(), model->state.quaternion.data()}) {
+    if (problem.IsParameterBlockConstant(pose)) continue;
+    solver->damping_scale[pose].assign(problem.ParameterBlockTangentSize(pose),
+                                       groups.pose);
+  }
+}
+
+ceres::LossFunction* MakeLoss(const FitOptions& options) {
+  if (options.loss == "none") return nullptr;
+  if (options.loss == "huber")
+    return new ceres::HuberLoss(options.loss_scale_mm);
+  if (options.loss == "cauchy") {
+    return new ceres::CauchyLoss(options.loss_scale_mm);
+  }
+  throw InputError("unknown --loss '" + options.loss +
+                   "' (expected none, huber or cauchy)");
+}
+
+// One frame's ceres::Problem as it is built up, term by term, and solved.
+// The terms go in a fixed order (data, smoothness, rim, gauges, prior):
+// Ceres sums in the order residual blocks were added, so the order is part
+// of the result to the last bit.
+class FrameProblem {
+ public:
+  FrameProblem(FrameKind kind, const FitOptions& options, Model* model)
+      : kind_(kind),
+        options_(options),
+        model_(model),
+        precomputed_(MakePrecomputed(options)),
+        problem_(ProblemOptions(precomputed_.get())),
+        blocks_(kind, model, &problem_) {}
+
+  // The data residuals: analytic points go into PointGroupResidual blocks,
+  // which take the problem's blocks as they are: many points between the
+  // same two knots, or one each when every point carries its own robust
+  // loss.  Those are evaluated ahead of Ceres (precomputed_groups.h), on the
+  // threads, each trust-region candidate with its Jacobians (the
+  // integrator, which calls Problem::Evaluate, has no candidates).
+  void AddData(const std::vector<Eigen::Vector3d>& points,
+               const std::vector<MaterialPoint>& material,
+               const std::vector<Eigen::Vector3d>& normals);
+  void AddSmoothness(size_t num_points);
+  // Where the base rim must sit (RimResidual), along the model's axis from
+  // its centre as the solve starts.
+  void AddRim(size_t num_points, double rim_height);
+  void AddGauges(size_t num_points,
+                 const std::array<double, 4>& reference_quaternion);
+  void AddPrior(size_t num_points, const ModelState& prior);
+  // Solves with the chosen solver and leaves the solution in the model.
+  SolverReport Solve();
+
+ private:
+  static std::unique_ptr<PrecomputedGroups> MakePrecomputed(
+      const FitOptions& options);
+  static ceres::Problem::Options ProblemOptions(PrecomputedGroups* precomputed);
+  void AddPointGroup(int k0, std::vector<PointSample> group);
+  void AddAxisGauge(double sqrt_weight);
+  double PointsPerKnot(size_t num_points) const {
+    return static_cast<double>(num_points) / model_->config.num_knots;
+  }
+  FunctionValues KnotScales() const {
+    return FunctionScales(*model_,
+                          HeldEntries(model_->config, FrameKind::kTracked, 0));
+  }
+
+  const FrameKind kind_;
+  const FitOptions& options_;
+  Model* model_;
+  // Evaluates the analytic point groups; null for the other Jacobians.
+  std::unique_ptr<PrecomputedGroups> precomputed_;
+  ceres::Problem problem_;
+  FrameBlocks blocks_;
+  ceres::LossFunction* loss_ = MakeLoss(options_);  // Owned by problem_.
+  // The axis gauge's partial sums, parameter blocks of the problem.
+  std::optional<AxisGaugeChain> axis_gauge_;
+};
+
+std::unique_ptr<PrecomputedGroups> FrameProblem::MakePrecomputed(
+    const FitOptions& options) {
+  if (options.jacobian != JacobianKind::kAnalytic) return nullptr;
+  return std::make_unique<PrecomputedGroups>(
+      options.solver.num_threads,
+      /*speculate=*/options.solver.kind != SolverKind::kIntegrator);
+}
+
+ceres::Problem::Options FrameProblem::ProblemOptions(
+    PrecomputedGroups* precomputed) {
+  ceres::Problem::Options problem_options;
+  problem_options.evaluation_callback = precomputed;
+  return problem_options;
+}
+
+void FrameProblem::AddData(const std::vector<Eigen::Vector3d>& points,
+                           const std::vector<MaterialPoint>& material,
+                           const std::vector<Eigen::Vector3d>& normals) {
+  const ModelConfig& config = model_->config;
+  const KnotGrid grid = config.Grid();
+  const bool analytic = precomputed_ != nullptr;
+  const FunctionMask free_mask = config.FreeMask();
+  const bool unit_exponents = model_->UnitExponents();
+  const size_t group_size = loss_ == nullptr ? kPointsPerGroup : 1;
+  std::vector<std::vector<PointSample>> groups(config.num_knots - 1);
+  const size_t group_capacity = std::min(group_size, points.size());
+  if (analytic) {
+    for (auto& group : groups) group.reserve(group_capacity);
+  }
+  auto add_group = [&](int k0) {
+    AddPointGroup(k0, std::move(groups[k0]));
+    groups[k0] = {};
+    groups[k0].reserve(group_capacity);
+  };
+  for (size_t i = 0; i < points.size(); ++i) {
+    const KnotSpan span = grid.Span(material[i].u);
+    const double u = material[i].u, v = material[i].v, w = material[i].w;
+    const Eigen::Vector3d& normal = normals[i];
+    const bool plane = normal != Eigen::Vector3d::Zero();
+    if (analytic) {
+      groups[span.k0].push_back(
+          plane ? PointSample(points[i], u, v, span.weight, normal)
+                : PointSample(points[i], u, v, span.weight));
+      groups[span.k0].back().w = w;
+      if (groups[span.k0].size() == group_size) add_group(span.k0);
+      continue;
+    }
+    ceres::CostFunction* cost =
+        plane ? MakeSurfaceCost(points[i], u, v, span.weight, free_mask,
+                                unit_exponents, normal, options_.jacobian, w)
+              : MakePointCost(points[i], u, v, span.weight, free_mask,
+                              unit_exponents, options_.jacobian, w);
+    blocks_.AddResidual(cost, loss_, true,
+                        {kGlobalsBlock, span.k0, span.k0 + 1});
+  }
+  for (int k0 = 0; k0 + 1 < config.num_knots; ++k0) {
+    if (!groups[k0].empty()) add_group(k0);
+  }
+}
+
+void FrameProblem::AddPointGroup(int k0, std::vector<PointSample> group) {
+  const std::array<const FreeEntries*, 3> entries = {
+      blocks_.entries(kGlobalsBlock), blocks_.entries(k0),
+      blocks_.entries(k0 + 1)};
+  const std::array<bool, 5> varied = {true, true, entries[0] != nullptr,
+                                      entries[1] != nullptr,
+                                      entries[2] != nullptr};
+  auto* residual =
+      new PointGroupResidual(std::move(group), model_->config.FreeMask(),
+                             model_->UnitExponents(), entries, varied);
+  const ceres::ResidualBlockId id =
+      blocks_.AddResidual(residual, loss_, true, {kGlobalsBlock, k0, k0 + 1},
+                          FrameBlocks::Takes::kProblemBlocks);
+  std::vector<double*> parameters;
+  problem_.GetParameterBlocksForResidualBlock(id, &parameters);
+  precomputed_->Add(residual, std::move(parameters));
+}
+
+void FrameProblem::AddSmoothness(size_t num_points) {
+  if (options_.smoothness_weight <= 0.0) return;
+  const double sqrt_weight =
+      std::sqrt(options_.smoothness_weight * PointsPerKnot(num_points));
+  const FunctionValues knot_scales = KnotScales();
+  for (int k = 1; k + 1 < model_->config.num_knots; ++k) {
+    blocks_.AddResidual(SmoothnessResidual::Create(sqrt_weight, knot_scales),
+                        nullptr, false, {k - 1, k, k + 1});
+  }
+}
+
+void FrameProblem::AddRim(size_t num_points, double rim_height) {
+  const ModelConfig& config = model_->config;
+  // The rim's target in world terms, along the axis the solve starts from.
+  const Eigen::Vector3d axis = model_->Rotation().col(2);
+  const double top =
+      axis.dot(Eigen::Vector3d(model_->state.center.data())) + rim_height;
+  blocks_.AddResidual(
+      RimResidual::Create(std::sqrt(PointsPerKnot(num_points)),
+                          std::sin(config.u_max), axis, top, config.FreeMask()),
+      nullptr, true, {kGlobalsBlock, config.num_knots - 1});
+}
+
+void FrameProblem::AddGauges(
+    size_t num_points, const std::array<double, 4>& reference_quaternion) {
+  const ModelConfig& config = model_->config;
+  const double sqrt_weight = kGaugeWeight * std::sqrt(num_points);
+  if (kind_ != FrameKind::kReference) {
+    problem_.AddResidualBlock(
+        SpinGaugeResidual::Create(sqrt_weight, SpinGaugeLength(*model_),
+                                  reference_quaternion),
+        nullptr, model_->state.quaternion.data());
+  }
+  if (kind_ == FrameKind::kUntracked &&
+      config.modes[kA3] == FunctionMode::kFree) {
+    for (int k = 0; k + 1 < config.num_knots; ++k) {
+      blocks_.AddResidual(MeridianGaugeResidual::Create(
+                              sqrt_weight, model_->state.globals[kA0]),
+                          nullptr, false, {k, k + 1});
+    }
+  }
+  if (config.modes[kE1o] == FunctionMode::kFree) AddAxisGauge(sqrt_weight);
+}
+
+void FrameProblem::AddAxisGauge(double sqrt_weight) {
+  const int num_knots = model_->config.num_knots;
+  if (options_.solver.kind == SolverKind::kDirect &&
+      kind_ == FrameKind::kTracked) {
+    std::vector<const double*> knots;
+    for (const FunctionValues& knot : model_->state.knots) {
+      knots.push_back(knot.data());
+    }
+    axis_gauge_.emplace(knots, sqrt_weight);
+    for (int k = 0; k < num_knots; ++k) {
+      blocks_.AddResidual(axis_gauge_->Link(k), axis_gauge_->LinkSums(k), {k});
+    }
+    problem_.AddResidualBlock(axis_gauge_->End(), nullptr,
+                              axis_gauge_->sum(num_knots - 1));
+    return;
+  }
+  std::vector<int> knots;
+  for (int k = 0; k < num_knots; ++k) knots.push_back(k);
+  blocks_.AddResidual(new AxisGaugeResidual(num_knots, sqrt_weight), nullptr,
+                      false, knots);
+}
+
+void FrameProblem::AddPrior(size_t num_points, const ModelState& prior) {
+  const double prior_weight = kind_ == FrameKind::kUntracked
+                                  ? options_.untracked_prior_weight
+                                  : options_.prior_weight;
+  if (prior_weight <= 0.0) return;
+  const ModelConfig& config = model_->config;
+  const double sqrt_weight =
+      std::sqrt(prior_weight * PointsPerKnot(num_points));
+  const FunctionValues knot_scales = KnotScales();
+  for (int k = 0; k < config.num_knots; ++k) {
+    blocks_.AddResidual(
+        PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
+        nullptr, false, {k});
+  }
+  blocks_.AddResidual(
+      PriorResidual::Create(
+          std::sqrt(prior_weight * num_points),
+          FunctionScales(*model_, HeldEntries(config, kind_, kGlobalsBlock)),
+          prior.globals),
+      nullptr, false, {kGlobalsBlock});
+}
+
+SolverReport FrameProblem::Solve() {
+  SolverOptions solver = options_.solver;
+  // The groups' threads are PrecomputedGroups'; Ceres' own would only copy
+  // the results, and waking them cost more than that at a few thousand
+  // points.
+  if (precomputed_) solver.num_threads = 1;
+  if (solver.kind == SolverKind::kIntegrator) {
+    AddDampingScales(problem_, blocks_, options_.damping_groups, model_,
+                     &solver);
+  }
+  if (solver.on_step) {
+    solver.on_step = [this,
+                      observe = solver.on_step](const SolverTracePoint& point) {
+      blocks_.Store();
+      observe(point);
+    };
+  }
+  SolverReport report = SolveProblem(&problem_, solver);
+  blocks_.Store();
+  return report;
+}
+
+}  // namespace
+
+SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
+                        const std::vector<MaterialPoint>& material,
+                        const std::vector<Eigen::Vector3d>& normals,
+                        std::optional<double> rim_height, FrameKind kind,
+                        const ModelState& prior,
+                        const std::array<double, 4>& reference_quaternion,
+                        const FitOptions& options, Model* model) {
+  CHECK_EQ(normals.size(), points.size());
+  FrameProblem problem(kind, options, model);
+  problem.AddData(points, material, normals);
+  problem.AddSmoothness(points.size());
+  if (rim_height) problem.AddRim(points.size(), *rim_height);
+  problem.AddGauges(points.size(), reference_quaternion);
+  problem.AddPrior(points.size(), prior);
+  return problem.Solve();
+}
+
+}  // namespace pfdm

@@ -1,0 +1,40 @@
+// One frame's problem for fixed material points: the data residuals, the
+// regularizer and the gauge terms over the frame's blocks, solved by the
+// chosen solver.
+#ifndef PFDM_FIT_PROBLEM_FRAME_PROBLEM_H_
+#define PFDM_FIT_PROBLEM_FRAME_PROBLEM_H_
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/problem/gauge.h"
+#include "pfdm/model/model.h"
+#include "pfdm/solvers/solver.h"
+
+namespace pfdm {
+
+// A point with a non-zero normal (unit, world frame) pulls along it
+// (point-to-plane), the others with their whole distance; sliding points
+// take theirs from the search that found their material points on *model,
+// or from SlidingNormals (correspondence.h).  rim_height, when given, is where
+// the base rim must sit (RimResidual), along the model's axis from its
+// centre as the solve starts.  `prior` is the state the prior term pulls
+// toward (the previous frame's; frame 0's for untracked frames, with
+// FitOptions::untracked_prior_weight); reference_quaternion frame 0's pose,
+// which later frames may not spin away from (SpinGaugeResidual).  Leaves the
+// solution in *model.
+SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
+                        const std::vector<MaterialPoint>& material,
+                        const std::vector<Eigen::Vector3d>& normals,
+                        std::optional<double> rim_height, FrameKind kind,
+                        const ModelState& prior,
+                        const std::array<double, 4>& reference_quaternion,
+                        const FitOptions& options, Model* model);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_PROBLEM_FRAME_PROBLEM_H_

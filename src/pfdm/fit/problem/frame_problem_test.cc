@@ -1,0 +1,52 @@
+#include "pfdm/fit/problem/frame_problem.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
+
+namespace pfdm {
+namespace {
+
+// A tracked frame whose points are the model's own material points after a
+// known change of a1 and tau and a shift of the whole: one solve recovers
+// the change, the shift in the pose and the twist in tau (not the pose).
+TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
+  Model model = TestSpheroid(5);
+  Model truth = model;
+  for (FunctionValues& knot : truth.state.knots) {
+    knot[kA1] = 0.42;
+    knot[kTau] = 0.1;
+  }
+  truth.state.center = {3.0, -2.0, 5.0};
+  std::vector<Eigen::Vector3d> points;
+  std::vector<MaterialPoint> material;
+  for (double u = -1.3; u < 0.5; u += 0.1) {
+    for (double v = -M_PI; v < M_PI; v += 0.2) {
+      material.push_back({u, v});
+      points.push_back(truth.WorldPoint(u, v));
+    }
+  }
+  FitOptions options;
+  options.prior_weight = 0.0;
+  const SolverReport report = SolveFrame(
+      points, material,
+      std::vector<Eigen::Vector3d>(points.size(), Eigen::Vector3d::Zero()),
+      std::nullopt, FrameKind::kTracked, model.state, model.state.quaternion,
+      options, &model);
+  ASSERT_TRUE(report.usable);
+  for (int k = 1; k < 5; ++k) {
+    EXPECT_NEAR(model.state.knots[k][kA1], 0.42, 1e-6) << k;
+    EXPECT_NEAR(model.state.knots[k][kTau], 0.1, 1e-6) << k;
+  }
+  EXPECT_NEAR((Eigen::Vector3d(model.state.center.data()) -
+               Eigen::Vector3d(3.0, -2.0, 5.0))
+                  .norm(),
+              0.0, 1e-6);
+  EXPECT_NEAR(model.state.quaternion[3], 0.0, 1e-9);
+  EXPECT_NEAR((model.WorldPoint(0.2, 1.0) - truth.WorldPoint(0.2, 1.0)).norm(),
+              0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,32 @@
+#include "pfdm/fit/stages/fitter.h"
+
+#include <utility>
+
+#include "pfdm/fit/stages/frame_fit.h"
+#include "pfdm/fit/stages/start.h"
+#include "pfdm/fit/stages/wall_stage.h"
+
+namespace pfdm {
+
+SequenceFit FitSequence(const PointSequence& sequence,
+                        const ModelConfig& config, const FitOptions& options) {
+  SequenceStart start = StartSequence(sequence, config, options);
+  CarriedState carried(start.model);
+  SequenceFit result;
+  for (const Frame& frame : sequence.frames) {
+    const bool reference = frame.index == sequence.frames[0].index;
+    result.frames.push_back(FitFrame(frame, reference, start.frames_per_id,
+                                     options, sequence.source, &start.wall,
+                                     &carried));
+  }
+  result.config = carried.model.config;
+  result.wall_reason = start.wall.reason;
+  result.surface =
+      result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;
+  if (result.config.Solid() && start.has_tags) {
+    TakeOutTagNoise(sequence, start.frames_per_id, &result);
+  }
+  return result;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,89 @@
+#include "pfdm/fit/stages/frame_fit.h"
+
+#include "pfdm/fit/stages/frame_summary.h"
+#include "pfdm/fit/stages/global_rounds.h"
+#include "pfdm/fit/stages/local_stage.h"
+#include "pfdm/fit/stages/trajectory_recorder.h"
+#include "pfdm/util/stopwatch.h"
+
+namespace pfdm {
+namespace {
+
+// The frame's global rounds, and on frame 0 with the wall undecided, the
+// wall: a solid runs the rounds again.
+void FitGlobal(const FramePoints& points, const ModelState& prior,
+               const FitOptions& options, const std::string& source,
+               WallDecision* wall, CarriedState* carried, FrameFit* fit) {
+  Model& model = carried->model;
+  GlobalRounds rounds(points, prior, carried->reference.quaternion, options,
+                      source, &model, fit);
+  rounds.Start();
+  TrajectoryRecorder recorder(options.trajectory_per_decade, &model,
+                              &fit->trajectory);
+  rounds.Run(&recorder);
+  if (points.kind == FrameKind::kReference && !wall->decided &&
+      DecideWallFromTags(points, fit->material, rounds.report().converged,
+                         options.wall, wall, &model)) {
+    rounds.Search();
+    rounds.Run(&recorder);
+  }
+  recorder.Finish();
+  fit->termination = rounds.report().termination;
+}
+
+// The frame's new tags keep the material points found here for the frames
+// after it.
+void RememberTags(const Frame& frame, const FramePoints& points,
+                  const FrameFit& fit, TrackedMaterial* tracked_material) {
+  for (size_t i : points.untracked) {
+    if (points.is_tag[i]) {
+      (*tracked_material)[frame.points[i].id] = fit.material[i];
+    }
+  }
+}
+
+// The frame's bending into its final gauge, and the recorded path with it.
+void CanonicalizeBending(Model* model, FrameFit* fit) {
+  const BendingShift turns = model->CanonicalizeBending();
+  if (turns == BendingShift{0.0, 0.0}) return;
+  for (TrajectoryPoint& point : fit->trajectory) {
+    Model recorded{model->config, point.state};
+    recorded.ShiftBending(turns);
+    point.state = recorded.state;
+  }
+}
+
+}  // namespace
+
+FrameFit FitFrame(const Frame& frame, bool reference,
+                  const FramesPerId& frames_per_id, const FitOptions& options,
+                  const std::string& source, WallDecision* wall,
+                  CarriedState* carried) {
+  const auto start = Clock::now();
+  Model& model = carried->model;
+  // The global rounds fit the global model alone; the local field comes
+  // after them.
+  model.state.local = LocalField();
+  FrameFit fit;
+  fit.frame = frame.index;
+  const FramePoints points =
+      MakeFramePoints(frame, reference, frames_per_id,
+                      carried->tracked_material, &fit.material);
+  const ModelState& prior = points.kind == FrameKind::kUntracked
+                                ? carried->reference
+                                : carried->previous;
+  FitGlobal(points, prior, options, source, wall, carried, &fit);
+  RememberTags(frame, points, fit, &carried->tracked_material);
+  CanonicalizeBending(&model, &fit);
+  if (options.local.enabled) {
+    FitLocalStage(points, options, source, &model, &fit);
+  }
+  Summarize(model, points.positions, &fit);
+  CheckFinite(source, fit);
+  fit.solve_seconds = SecondsSince(start);
+  carried->previous = model.state;
+  if (reference) carried->reference = model.state;
+  return fit;
+}
+
+}  // namespace pfdm

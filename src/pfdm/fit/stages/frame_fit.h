@@ -1,0 +1,43 @@
+// One frame's fit as its stages: the global correspondence rounds, the wall
+// (frame 0), the local field and the summary.
+#ifndef PFDM_FIT_STAGES_FRAME_FIT_H_
+#define PFDM_FIT_STAGES_FRAME_FIT_H_
+
+#include <string>
+
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/frame_points.h"
+#include "pfdm/fit/stages/sequence_fit.h"
+#include "pfdm/fit/stages/wall_stage.h"
+#include "pfdm/model/model.h"
+#include "pfdm/util/point_data.h"
+
+namespace pfdm {
+
+// What a frame's fit takes from the frames before it and leaves to the
+// next.
+struct CarriedState {
+  explicit CarriedState(const Model& start)
+      : model(start), previous(start.state), reference(start.state) {}
+
+  Model model;  // Where the next frame's fit starts.
+  // The state the prior pulls toward: the previous frame's; frame 0's
+  // (reference) for untracked frames, which may also not spin away from its
+  // pose.
+  ModelState previous;
+  ModelState reference;
+  TrackedMaterial tracked_material;
+};
+
+// Fits `frame` (`reference`: frame 0) from carried->model and updates
+// *carried for the next frame; decides the wall on frame 0 when *wall is
+// undecided.  Throws InputError naming the frame when a solve fails or the
+// fit diverges.
+FrameFit FitFrame(const Frame& frame, bool reference,
+                  const FramesPerId& frames_per_id, const FitOptions& options,
+                  const std::string& source, WallDecision* wall,
+                  CarriedState* carried);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_STAGES_FRAME_FIT_H_

@@ -1,0 +1,45 @@
+#include "pfdm/fit/stages/frame_fit.h"
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/stages/start.h"
+#include "pfdm/testing/test_models.h"
+
+namespace pfdm {
+namespace {
+
+// Frame 0 decides the wall, keeps its tags' material points for later
+// frames and becomes the reference; frame 1 starts from it and leaves its
+// own state to the next frame.
+TEST(FrameFitTest, CarriesFrameZeroToTheFramesAfterIt) {
+  const PointSequence sequence = MakeTestPhantom(1000, 2).points;
+  const FitOptions options;
+  SequenceStart start =
+      StartSequence(sequence, ModelConfig::Paper(17), options);
+  CarriedState carried(start.model);
+  const FrameFit first =
+      FitFrame(sequence.frames[0], true, start.frames_per_id, options,
+               sequence.source, &start.wall, &carried);
+  EXPECT_TRUE(start.wall.decided);
+  EXPECT_NE(start.wall.reason.find("one surface"), std::string::npos);
+  EXPECT_EQ(carried.tracked_material.size(), 1000u);
+  EXPECT_EQ(carried.reference.knots, first.state.knots);
+  EXPECT_EQ(carried.previous.knots, first.state.knots);
+  const std::int64_t id = sequence.frames[0].points[17].id;
+  EXPECT_EQ(carried.tracked_material.at(id).u, first.material[17].u);
+  EXPECT_NEAR(first.rms_mm, 0.5, 0.1);
+
+  const FrameFit second =
+      FitFrame(sequence.frames[1], false, start.frames_per_id, options,
+               sequence.source, &start.wall, &carried);
+  EXPECT_EQ(second.frame, 1);
+  EXPECT_EQ(carried.reference.knots, first.state.knots);
+  EXPECT_EQ(carried.previous.knots, second.state.knots);
+  EXPECT_EQ(second.correspondence_rounds, 1);  // Tracked: nothing to search.
+  EXPECT_EQ(second.termination, "CONVERGENCE");
+  // Frame 0's tangential noise and frame 1's add up: sqrt(3 + 2) 0.5 mm.
+  EXPECT_NEAR(second.rms_mm, 1.12, 0.15);
+  EXPECT_GT(second.solve_seconds, 0.0);
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,188 @@
+#include "pfdm/fit/stages/global_rounds.h"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+
+#include "pfdm/fit/correspondence/frame_correspondence.h"
+#include "pfdm/fit/problem/frame_problem.h"
+#include "pfdm/fit/problem/gauge.h"
+#include "pfdm/util/error.h"
+#include "pfdm/util/stopwatch.h"
+
+namespace pfdm {
+namespace {
+
+// Frame 0 of at least twice this many points starts with a round on this
+// many of them (SolveCoarse).
+constexpr size_t kCoarsePoints = 4096;
+
+// A correspondence round's search is skipped as confirmation when the one
+// before moved no point by this many tolerances and the solve since moved
+// the surface little (Settled).
+constexpr double kConfirmBelow = 10.0;
+
+// Solves of a tracked frame of a solid, each after its tags were ranked:
+// the second changes thickening by under 0.1 point on the LV phantom, a
+// third by nothing visible, while each costs a whole solve.
+constexpr int kRerankRounds = 2;
+
+}  // namespace
+
+GlobalRounds::GlobalRounds(const FramePoints& frame, const ModelState& prior,
+                           const std::array<double, 4>& reference_quaternion,
+                           const FitOptions& options, const std::string& source,
+                           Model* model, FrameFit* fit)
+    : frame_(frame),
+      prior_(prior),
+      reference_quaternion_(reference_quaternion),
+      options_(options),
+      source_(source),
+      model_(model),
+      fit_(fit),
+      normals_(frame.positions.size(), Eigen::Vector3d::Zero()) {}
+
+void GlobalRounds::Start() {
+  if (frame_.kind == FrameKind::kReference &&
+      frame_.untracked.size() >= 2 * kCoarsePoints) {
+    SolveCoarse();
+  }
+  moved_ = UpdateClosest();
+  // A solid's tracked tags keep (u, v) but take their depth from this
+  // frame's ranks (RerankDepths).
+  rerank_depths_ = model_->config.Solid() && !frame_.tracked.empty();
+  if (rerank_depths_) {
+    RerankDepths(*model_, frame_.positions, frame_.tracked, &fit_->material);
+  }
+}
+
+// Coarse to fine: a first round on every k-th point brings the initialized
+// model to the data at a fraction of a round's cost, and the rounds on all
+// points start from there (one round fewer).
+void GlobalRounds::SolveCoarse() {
+  std::vector<size_t> coarse;
+  const size_t stride = frame_.untracked.size() / kCoarsePoints;
+  for (size_t j = 0; j < frame_.untracked.size(); j += stride) {
+    coarse.push_back(frame_.untracked[j]);
+  }
+  const auto closest_start = Clock::now();
+  pfdm::UpdateClosest(*model_, frame_.positions, coarse,
+                      options_.solver.num_threads, frame_.layer_w,
+                      frame_.assign_depth, false, &fit_->material, &normals_,
+                      &found_);
+  fit_->correspondence_seconds += SecondsSince(closest_start);
+  std::vector<Eigen::Vector3d> coarse_points, coarse_normals;
+  std::vector<MaterialPoint> coarse_material;
+  for (size_t i : coarse) {
+    coarse_points.push_back(frame_.positions[i]);
+    coarse_material.push_back(fit_->material[i]);
+    coarse_normals.push_back(normals_[i]);
+  }
+  FitOptions coarse_options = options_;
+  coarse_options.solver.on_step = nullptr;  // Not part of the path.
+  const SolverReport coarse_report =
+      SolveFrame(coarse_points, coarse_material, coarse_normals, std::nullopt,
+                 FrameKind::kReference, prior_, reference_quaternion_,
+                 coarse_options, model_);
+  AddSolverCounts(coarse_report, fit_);
+  SpanAxialExtent(frame_.positions, options_, model_);
+}
+
+void GlobalRounds::Search() { moved_ = UpdateClosest(); }
+
+void GlobalRounds::Run(TrajectoryRecorder* recorder) {
+  fit_->unsettled_mm = 0.0;
+  for (int round = 0; round < options_.max_correspondence_rounds; ++round) {
+    report_ = SolveRound(recorder);
+    if (!report_.usable) {
+      throw InputError(source_ + ": frame " + std::to_string(frame_.index) +
+                       ": solver failed: " + report_.message);
+    }
+    if (Settled(round)) break;
+  }
+}
+
+SolverReport GlobalRounds::SolveRound(TrajectoryRecorder* recorder) {
+  std::optional<double> rim_height;
+  if (frame_.kind != FrameKind::kReference && !frame_.untracked.empty()) {
+    const double top = TopHeight(frame_.positions, options_, *model_);
+    if (std::isfinite(top)) rim_height = top;
+  }
+  const SolverTracePoint last =
+      fit_->trace.empty() ? SolverTracePoint{-1} : fit_->trace.back();
+  FitOptions round_options = options_;
+  if (options_.trajectory_per_decade > 0) {
+    round_options.solver.on_step = [recorder,
+                                    last](const SolverTracePoint& point) {
+      recorder->Step(last.iteration + 1 + point.iteration,
+                     last.pseudo_time + point.pseudo_time);
+    };
+  }
+  if (!normals_current_) {
+    normals_ = SlidingNormals(*model_, fit_->material, frame_.sliding);
+  }
+  SolverReport report = SolveFrame(
+      frame_.positions, fit_->material, normals_, rim_height, frame_.kind,
+      prior_, reference_quaternion_, round_options, model_);
+  normals_current_ = false;
+  AddSolverCounts(report, fit_);
+  ++fit_->correspondence_rounds;
+  for (SolverTracePoint point : report.trace) {
+    point.iteration += last.iteration + 1;
+    point.pseudo_time += last.pseudo_time;
+    point.wall_seconds += last.wall_seconds;
+    fit_->trace.push_back(point);
+  }
+  return report;
+}
+
+bool GlobalRounds::Settled(int round) {
+  const double tolerance = options_.correspondence_tolerance_mm;
+  if (rerank_depths_) {
+    // Ranks settle in a round or two; later rounds only trade noise
+    // between tags (kRerankRounds).
+    return round + 1 >= kRerankRounds ||
+           RerankDepths(*model_, frame_.positions, frame_.tracked,
+                        &fit_->material) < tolerance;
+  }
+  if (frame_.untracked.empty()) return true;
+  if (frame_.kind == FrameKind::kReference) {
+    SpanAxialExtent(frame_.positions, options_, model_);
+  }
+  // Near convergence, how far the solve moved the surface under the
+  // points bounds how far their closest points can move (about that far,
+  // the points being close to a gently curved surface): under half the
+  // tolerance, the search that would confirm it is skipped.
+  std::vector<Eigen::Vector3d> now;
+  if (moved_ < kConfirmBelow * tolerance) {
+    now = WorldPoints(*model_, Listed(fit_->material, frame_.untracked));
+    if (MaxDistance(now, found_) < 0.5 * tolerance) return true;
+  }
+  moved_ = UpdateClosest(std::move(now));
+  if (moved_ < tolerance) return true;
+  if (round + 1 == options_.max_correspondence_rounds) {
+    fit_->unsettled_mm = moved_;
+  }
+  return false;
+}
+
+double GlobalRounds::UpdateClosest(std::vector<Eigen::Vector3d> now) {
+  const auto closest_start = Clock::now();
+  if (found_closest_ && now.empty()) {
+    now = WorldPoints(*model_, Listed(fit_->material, frame_.untracked));
+  }
+  pfdm::UpdateClosest(*model_, frame_.positions, frame_.untracked,
+                      options_.solver.num_threads, frame_.layer_w,
+                      frame_.assign_depth, found_closest_, &fit_->material,
+                      &normals_, &found_);
+  const double moved = found_closest_ || frame_.untracked.empty()
+                           ? MaxDistance(now, found_)
+                           : std::numeric_limits<double>::infinity();
+  found_closest_ = true;
+  normals_current_ = true;
+  fit_->correspondence_seconds += SecondsSince(closest_start);
+  return moved;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,76 @@
+// The global model's correspondence rounds on one frame: the untracked
+// points' closest material points are searched, the frame is solved for
+// them (frame_problem.h), and again, until they settle or the rounds run out.
+#ifndef PFDM_FIT_STAGES_GLOBAL_ROUNDS_H_
+#define PFDM_FIT_STAGES_GLOBAL_ROUNDS_H_
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/frame_points.h"
+#include "pfdm/fit/stages/sequence_fit.h"
+#include "pfdm/fit/stages/trajectory_recorder.h"
+#include "pfdm/model/model.h"
+#include "pfdm/solvers/solver.h"
+
+namespace pfdm {
+
+class GlobalRounds {
+ public:
+  // `prior` is the state the prior term pulls toward (the previous frame's,
+  // or frame 0's for an untracked frame), reference_quaternion frame 0's
+  // pose; both outlive the rounds.  The rounds move *model and fill *fit's
+  // material points, counts and trace.
+  GlobalRounds(const FramePoints& frame, const ModelState& prior,
+               const std::array<double, 4>& reference_quaternion,
+               const FitOptions& options, const std::string& source,
+               Model* model, FrameFit* fit);
+
+  // The first search: on frame 0 of many points after a coarse solve on a
+  // subset of them; in a solid, the tracked tags' depths ranked.
+  void Start();
+  // Solves and searches until the closest points settle; a solid's tracked
+  // tags are re-ranked between solves instead.  Throws InputError naming
+  // the frame when a solve is unusable.
+  void Run(TrajectoryRecorder* recorder);
+  // A fresh search, after the model changed under the rounds (the wall).
+  void Search();
+
+  // The last solve's report.
+  const SolverReport& report() const { return report_; }
+
+ private:
+  void SolveCoarse();
+  SolverReport SolveRound(TrajectoryRecorder* recorder);
+  // Whether the rounds end after this solve.
+  bool Settled(int round);
+  // Searches the untracked points' closest material points and returns how
+  // far (mm) the farthest one's model point moved from `now`, its model
+  // point before the search (computed when not given).
+  double UpdateClosest(std::vector<Eigen::Vector3d> now = {});
+
+  const FramePoints& frame_;
+  const ModelState& prior_;
+  const std::array<double, 4>& reference_quaternion_;
+  const FitOptions& options_;
+  const std::string& source_;
+  Model* model_;
+  FrameFit* fit_;
+  // What the last search found: the untracked points' model points (in
+  // their order) on the model it searched, and the normals along which the
+  // points pull, current until a solve moves the model.
+  std::vector<Eigen::Vector3d> found_;
+  std::vector<Eigen::Vector3d> normals_;
+  bool normals_current_ = true;
+  bool found_closest_ = false;  // Then searches start from the last.
+  double moved_ = 0.0;          // By the last search.
+  bool rerank_depths_ = false;
+  SolverReport report_;
+};
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_STAGES_GLOBAL_ROUNDS_H_

@@ -1,0 +1,71 @@
+#include "pfdm/fit/stages/global_rounds.h"
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/stages/frame_summary.h"
+#include "pfdm/fit/stages/start.h"
+#include "pfdm/testing/test_models.h"
+
+namespace pfdm {
+namespace {
+
+PointSequence Contours() {
+  PointSequence sequence = MakeTestPhantom(1000, 1).points;
+  for (DataPoint& p : sequence.frames[0].points) p.id += 1000000;
+  return sequence;
+}
+
+// Frame 0 of the phantom as contours (every id seen once), from its start.
+struct ContourFrame {
+  ContourFrame()
+      : sequence(Contours()),
+        start(StartSequence(sequence, ModelConfig::Paper(17), FitOptions())) {
+    points = MakeFramePoints(sequence.frames[0], true, start.frames_per_id, {},
+                             &fit.material);
+  }
+  const PointSequence sequence;
+  const SequenceStart start;
+  FramePoints points;
+  FrameFit fit;
+};
+
+// The rounds bring the start to the data, to the phantom's 0.5 mm noise
+// normal to the surface, and stop once the closest points move by less than
+// the tolerance.
+TEST(GlobalRoundsTest, SearchAndSolveUntilTheClosestPointsSettle) {
+  ContourFrame frame;
+  Model model = frame.start.model;
+  const ModelState prior = model.state;
+  const FitOptions options;
+  GlobalRounds rounds(frame.points, prior, prior.quaternion, options, "tags",
+                      &model, &frame.fit);
+  rounds.Start();
+  TrajectoryRecorder recorder(0, &model, &frame.fit.trajectory);
+  rounds.Run(&recorder);
+  EXPECT_TRUE(rounds.report().converged);
+  EXPECT_GE(frame.fit.correspondence_rounds, 2);
+  EXPECT_LT(frame.fit.correspondence_rounds, options.max_correspondence_rounds);
+  EXPECT_EQ(frame.fit.unsettled_mm, 0.0);
+  EXPECT_EQ(static_cast<int>(frame.fit.trace.size()), frame.fit.iterations);
+  Summarize(model, frame.points.positions, &frame.fit);
+  EXPECT_NEAR(frame.fit.rms_mm, 0.5, 0.1);
+}
+
+// Out of rounds while the closest points still move, the frame says by how
+// much.
+TEST(GlobalRoundsTest, SayHowFarUnsettledPointsMoved) {
+  ContourFrame frame;
+  Model model = frame.start.model;
+  const ModelState prior = model.state;
+  FitOptions options;
+  options.max_correspondence_rounds = 1;
+  GlobalRounds rounds(frame.points, prior, prior.quaternion, options, "tags",
+                      &model, &frame.fit);
+  rounds.Start();
+  TrajectoryRecorder recorder(0, &model, &frame.fit.trajectory);
+  rounds.Run(&recorder);
+  EXPECT_EQ(frame.fit.correspondence_rounds, 1);
+  EXPECT_GT(frame.fit.unsettled_mm, options.correspondence_tolerance_mm);
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,69 @@
+#include "pfdm/fit/stages/local_stage.h"
+
+#include <limits>
+#include <vector>
+
+#include "pfdm/fit/correspondence/frame_correspondence.h"
+#include "pfdm/fit/problem/local_fit.h"
+#include "pfdm/util/error.h"
+#include "pfdm/util/stopwatch.h"
+
+namespace pfdm {
+namespace {
+
+// The local field's contour rounds end when one lowers the field's cost by
+// less than this share: on biv-me's contours the cost falls 5 % in the
+// second round, then wanders within a percent for as many rounds as
+// allowed, points sliding back and forth along the surface by a millimetre
+// or two, never settling to the correspondence tolerance.
+constexpr double kMinLocalRoundGain = 0.01;
+
+// Stalled or not, the contours' material points are then the closest on
+// the final model, as their distances are reported.  Returns how far (mm)
+// the farthest one's model point moved.
+double UpdateContours(const FramePoints& frame,
+                      const std::vector<size_t>& contours,
+                      const FitOptions& options, const Model& model,
+                      FrameFit* fit) {
+  const std::vector<Eigen::Vector3d> before =
+      WorldPoints(model, Listed(fit->material, contours));
+  std::vector<Eigen::Vector3d> found;
+  std::vector<Eigen::Vector3d> normals(frame.positions.size());
+  UpdateClosest(model, frame.positions, contours, options.solver.num_threads,
+                frame.layer_w, std::vector<bool>(frame.positions.size(), false),
+                /*warm=*/true, &fit->material, &normals, &found);
+  return MaxDistance(before, found);
+}
+
+}  // namespace
+
+void FitLocalStage(const FramePoints& frame, const FitOptions& options,
+                   const std::string& source, Model* model, FrameFit* fit) {
+  std::vector<size_t> contours;
+  std::vector<bool> sliding(frame.positions.size(), false);
+  for (size_t i : frame.untracked) {
+    if (frame.is_tag[i]) continue;
+    contours.push_back(i);
+    sliding[i] = true;
+  }
+  const auto start = Clock::now();
+  double last_cost = std::numeric_limits<double>::infinity();
+  for (int round = 0; round < options.max_correspondence_rounds; ++round) {
+    const SolverReport local =
+        FitLocalField(frame.positions, fit->material, sliding, options, model);
+    fit->local_iterations += local.iterations;
+    if (!local.usable) {
+      throw InputError(source + ": frame " + std::to_string(frame.index) +
+                       ": local deformations: solver failed: " + local.message);
+    }
+    const double cost = local.trace.empty() ? 0.0 : local.trace.back().cost;
+    const bool stalled = cost > (1.0 - kMinLocalRoundGain) * last_cost;
+    last_cost = cost;
+    if (contours.empty()) break;
+    const double moved = UpdateContours(frame, contours, options, *model, fit);
+    if (stalled || moved < options.correspondence_tolerance_mm) break;
+  }
+  fit->local_seconds = SecondsSince(start);
+}
+
+}  // namespace pfdm

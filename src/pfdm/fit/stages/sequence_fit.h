@@ -1,0 +1,82 @@
+// What a sequence fit gives: every frame's model, material points,
+// residuals and solver account (fitter.h makes it).
+#ifndef PFDM_FIT_STAGES_SEQUENCE_FIT_H_
+#define PFDM_FIT_STAGES_SEQUENCE_FIT_H_
+
+#include <string>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/model/model.h"
+#include "pfdm/solvers/solver.h"
+#include "pfdm/util/point_data.h"
+
+namespace pfdm {
+
+// The model at one point of a frame's solver path.
+struct TrajectoryPoint {
+  int iteration = 0;  // As numbered in FrameFit::trace.
+  double pseudo_time = 0.0;
+  ModelState state;
+};
+
+struct FrameFit {
+  int frame = 0;
+  ModelState state;
+  std::vector<MaterialPoint> material;     // One per data point.
+  std::vector<Eigen::Vector3d> residuals;  // Model minus data, mm.
+  double rms_mm = 0.0;
+  double mean_distance_mm = 0.0;
+  double max_distance_mm = 0.0;
+  int iterations = 0;
+  int correspondence_rounds = 0;
+  // When the rounds ran out (FitOptions::max_correspondence_rounds) with
+  // closest points still moving by the tolerance or more: how far the last
+  // search moved one (mm), the fit resting on correspondences that had not
+  // settled.  0 when they settled.
+  double unsettled_mm = 0.0;
+  double solve_seconds = 0.0;
+  int residual_evaluations = 0;  // Summed over the rounds.
+  int jacobian_evaluations = 0;
+  double evaluation_seconds = 0.0;     // Summed over the solver's iterations.
+  double linear_solver_seconds = 0.0;  // Likewise.
+  double minimizer_seconds = 0.0;      // Likewise; see SolverReport.
+  // Closest material points of the untracked points, over the rounds.
+  double correspondence_seconds = 0.0;
+  // The local field's solve (FitOptions::local), within solve_seconds.
+  double local_seconds = 0.0;
+  int local_iterations = 0;
+  std::string termination;
+  // Every solver iteration of every correspondence round, numbered on.
+  std::vector<SolverTracePoint> trace;
+  std::vector<TrajectoryPoint> trajectory;  // See trajectory_per_decade.
+};
+
+struct SequenceFit {
+  ModelConfig config;  // config.Solid(): the wall model the fit chose.
+  // Why: "--wall midwall", "endocardial and epicardial contours", "tags
+  // spread 9.8 mm across the wall", ...
+  std::string wall_reason;
+  // Of a single surface (not a solid), which wall its data lie on: the
+  // endocardium or the epicardium when frame 0 has contours of that wall
+  // only, else kAnywhere (tags: the mid-wall).
+  WallLayer surface = WallLayer::kAnywhere;
+  // A solid of ranked tags: their noise (TangentialNoiseMm over the tracked
+  // frames), taken out of every frame's h (DeconvolvedThickness); 0
+  // otherwise.
+  double tag_noise_mm = 0.0;
+  std::vector<FrameFit> frames;
+  Model ModelAt(int frame) const { return {config, frames[frame].state}; }
+};
+
+// Adds one solve's iterations, evaluations and times to the frame's.
+void AddSolverCounts(const SolverReport& report, FrameFit* fit);
+
+// "" for a frame whose correspondences settled, else what to append to its
+// termination: "; closest points unsettled (0.94 mm in the last search)".
+std::string UnsettledNote(const FrameFit& frame);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_STAGES_SEQUENCE_FIT_H_

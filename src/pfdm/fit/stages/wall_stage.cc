@@ -1,0 +1,143 @@
+#include "pfdm/fit/stages/wall_stage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "pfdm/fit/correspondence/transmural.h"
+#include "pfdm/fit/stages/frame_summary.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+// Which walls a frame's contours name.
+struct WallsSeen {
+  bool endo = false;
+  bool epi = false;
+};
+
+WallsSeen WallsIn(const Frame& frame) {
+  WallsSeen seen;
+  for (const DataPoint& p : frame.points) {
+    seen.endo = seen.endo || p.layer == WallLayer::kEndocardium;
+    seen.epi = seen.epi || p.layer == WallLayer::kEpicardium;
+  }
+  return seen;
+}
+
+std::string FormatMm(double mm) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f", mm);
+  return text;
+}
+
+// Makes *model a solid whose thickness is the one frame 0's tags span.
+void MakeSolidOfTags(const std::vector<double>& distances,
+                     const std::vector<double>& tag_u, Model* model) {
+  model->config.MakeSolid();
+  const double h = std::max(
+      0.0, ThicknessFromDepths(distances, QuantileDepths(tag_u, distances)));
+  model->state.globals[kH] = h;
+  for (FunctionValues& knot : model->state.knots) knot[kH] = h;
+}
+
+}  // namespace
+
+WallDecision DecideWallFromContours(const Frame& first, bool has_tags,
+                                    const FitOptions& options,
+                                    const std::string& source,
+                                    ModelConfig* config) {
+  WallDecision decision;
+  const WallsSeen walls = WallsIn(first);
+  if (options.wall == WallModel::kMidwall) {
+    decision.reason = "--wall midwall";
+  } else if (walls.endo && walls.epi) {
+    config->MakeSolid();
+    decision.reason = "endocardial and epicardial contours";
+  } else if (!has_tags) {
+    if (options.wall == WallModel::kSolid) {
+      throw InputError(source +
+                       ": --wall solid needs tags tracked through the wall "
+                       "or contours of both walls (lv-cavity,lv-epi)");
+    }
+    decision.reason = "no tracked tags and no contours of both walls";
+  }
+  decision.decided = !decision.reason.empty();
+  if (!config->Solid() && walls.endo != walls.epi) {
+    decision.surface =
+        walls.endo ? WallLayer::kEndocardium : WallLayer::kEpicardium;
+  }
+  return decision;
+}
+
+bool DecideWallFromTags(const FramePoints& frame,
+                        const std::vector<MaterialPoint>& material,
+                        bool converged, WallModel wall, WallDecision* decision,
+                        Model* model) {
+  std::vector<Eigen::Vector3d> tag_points;
+  std::vector<MaterialPoint> tag_material;
+  std::vector<double> tag_u;
+  for (size_t i = 0; i < frame.positions.size(); ++i) {
+    if (!frame.assign_depth[i]) continue;
+    tag_points.push_back(frame.positions[i]);
+    tag_material.push_back(material[i]);
+    tag_u.push_back(material[i].u);
+  }
+  std::vector<Eigen::Vector3d> midwall_points;
+  const std::vector<double> distances =
+      MidwallDistances(*model, tag_points, tag_material, &midwall_points);
+  const double spread = WallSpreadMm(midwall_points, distances);
+  decision->decided = true;
+  decision->reason = "tags spread " + FormatMm(spread) + " mm across the wall";
+  // An unfinished solve leaves tags far from the surface too: only a
+  // converged one tells a wall from a fit that stopped early.
+  const bool wall_seen = spread >= kMinWallSpreadMm && converged;
+  if (wall == WallModel::kSolid || wall_seen) {
+    MakeSolidOfTags(distances, tag_u, model);
+    if (wall == WallModel::kSolid) decision->reason += " (--wall solid)";
+    return true;
+  }
+  decision->reason +=
+      converged
+          ? ": one surface (under " + FormatMm(kMinWallSpreadMm) + " mm)"
+          : ", but frame 0's mid-wall solve did not converge: one surface";
+  return false;
+}
+
+void TakeOutTagNoise(const PointSequence& sequence,
+                     const FramesPerId& frames_per_id, SequenceFit* result) {
+  double sum_squared = 0.0;
+  int frames = 0;
+  for (size_t t = 1; t < result->frames.size(); ++t) {
+    const FrameFit& frame = result->frames[t];
+    // Tracked tags only: a contour point's closest point leaves it no
+    // residual along the wall.
+    std::vector<size_t> tags;
+    for (size_t i = 0; i < frame.material.size(); ++i) {
+      if (frames_per_id.at(sequence.frames[t].points[i].id) > 1) {
+        tags.push_back(i);
+      }
+    }
+    if (tags.empty()) continue;
+    const double sigma =
+        TangentialNoiseMm(result->ModelAt(static_cast<int>(t)), frame.residuals,
+                          frame.material, tags);
+    sum_squared += sigma * sigma;
+    ++frames;
+  }
+  if (frames == 0) return;
+  result->tag_noise_mm = std::sqrt(sum_squared / frames);
+  for (size_t t = 0; t < result->frames.size(); ++t) {
+    FrameFit& frame = result->frames[t];
+    Model model{result->config, frame.state};
+    model.state.globals[kH] =
+        DeconvolvedThickness(model.state.globals[kH], result->tag_noise_mm);
+    for (FunctionValues& knot : model.state.knots) {
+      knot[kH] = DeconvolvedThickness(knot[kH], result->tag_noise_mm);
+    }
+    Summarize(model, Positions(sequence.frames[t]), &frame);
+  }
+}
+
+}  // namespace pfdm

@@ -1,0 +1,55 @@
+// The wall (FitOptions::wall, docs/gauge.md "The wall"): whether the fit is
+// a single surface or a solid, decided from the contours before frame 0 or
+// from the tags' spread after its mid-wall fit; and, for a solid of tags,
+// their noise taken out of the thickness at the end.
+#ifndef PFDM_FIT_STAGES_WALL_STAGE_H_
+#define PFDM_FIT_STAGES_WALL_STAGE_H_
+
+#include <string>
+#include <vector>
+
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/frame_points.h"
+#include "pfdm/fit/stages/sequence_fit.h"
+#include "pfdm/model/model.h"
+#include "pfdm/util/point_data.h"
+
+namespace pfdm {
+
+struct WallDecision {
+  bool decided = false;
+  std::string reason;                        // SequenceFit::wall_reason.
+  WallLayer surface = WallLayer::kAnywhere;  // SequenceFit::surface.
+};
+
+// Before any fit: contours of both walls make *config a solid; --wall
+// midwall, or data with neither tags nor both walls, a single surface (a
+// contour of one wall names it).  Undecided otherwise: tags through the
+// wall are told from tags on one surface after frame 0's mid-wall fit
+// (DecideWallFromTags).  Throws InputError when --wall solid meets data
+// with neither.
+WallDecision DecideWallFromContours(const Frame& first, bool has_tags,
+                                    const FitOptions& options,
+                                    const std::string& source,
+                                    ModelConfig* config);
+
+// After frame 0's mid-wall rounds (converged: whether their last solve
+// did), with the wall undecided: frame 0's tags spread across the wall by
+// at least kMinWallSpreadMm make the model a solid, of the thickness their
+// spread gives, and so does --wall solid.  Returns whether the model became
+// a solid (the rounds must then run again).
+bool DecideWallFromTags(const FramePoints& frame,
+                        const std::vector<MaterialPoint>& material,
+                        bool converged, WallModel wall, WallDecision* decision,
+                        Model* model);
+
+// A solid's tags were ranked across the wall in every frame, which widens
+// each frame's h by their noise, a thin wall's more (DeconvolvedThickness):
+// measures the noise on the tracked frames and takes it out of every
+// frame's h, then summarizes the frames again.
+void TakeOutTagNoise(const PointSequence& sequence,
+                     const FramesPerId& frames_per_id, SequenceFit* result);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_STAGES_WALL_STAGE_H_

@@ -1,0 +1,146 @@
+#include "pfdm/fit/stages/wall_stage.h"
+
+#include <random>
+#include <string>
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/correspondence/transmural.h"
+#include "pfdm/testing/test_models.h"
+#include "pfdm/testing/test_util.h"
+
+namespace pfdm {
+namespace {
+
+Frame FrameOf(const std::vector<WallLayer>& layers) {
+  Frame frame;
+  for (size_t i = 0; i < layers.size(); ++i) {
+    DataPoint p;
+    p.id = static_cast<std::int64_t>(i);
+    p.layer = layers[i];
+    frame.points.push_back(p);
+  }
+  return frame;
+}
+
+struct ContourCase {
+  WallModel wall;
+  std::vector<WallLayer> layers;
+  bool has_tags;
+};
+
+WallDecision FromContours(const ContourCase& c, ModelConfig* config) {
+  FitOptions options;
+  options.wall = c.wall;
+  return DecideWallFromContours(FrameOf(c.layers), c.has_tags, options,
+                                "guidepoints", config);
+}
+
+TEST(WallStageTest, ContoursDecideTheWallBeforeAnyFit) {
+  const WallLayer endo = WallLayer::kEndocardium;
+  const WallLayer epi = WallLayer::kEpicardium;
+  const WallLayer any = WallLayer::kAnywhere;
+  ModelConfig config = ModelConfig::Paper(9);
+  WallDecision both =
+      FromContours({WallModel::kAuto, {endo, epi}, false}, &config);
+  EXPECT_TRUE(both.decided);
+  EXPECT_TRUE(config.Solid());
+  EXPECT_EQ(both.reason, "endocardial and epicardial contours");
+  EXPECT_EQ(both.surface, WallLayer::kAnywhere);
+
+  config = ModelConfig::Paper(9);
+  WallDecision endo_only =
+      FromContours({WallModel::kAuto, {endo, endo}, false}, &config);
+  EXPECT_FALSE(config.Solid());
+  EXPECT_EQ(endo_only.reason, "no tracked tags and no contours of both walls");
+  EXPECT_EQ(endo_only.surface, WallLayer::kEndocardium);
+
+  WallDecision midwall =
+      FromContours({WallModel::kMidwall, {endo, epi}, true}, &config);
+  EXPECT_FALSE(config.Solid());
+  EXPECT_EQ(midwall.reason, "--wall midwall");
+
+  WallDecision tags =
+      FromContours({WallModel::kAuto, {any, any}, true}, &config);
+  EXPECT_FALSE(tags.decided);
+  EXPECT_EQ(tags.surface, WallLayer::kAnywhere);
+
+  EXPECT_EQ(InputErrorOf([&] {
+              FromContours({WallModel::kSolid, {epi, any}, false}, &config);
+            }),
+            "guidepoints: --wall solid needs tags tracked through the wall "
+            "or contours of both walls (lv-cavity,lv-epi)");
+}
+
+// Frame 0's tags on the mid-wall's normals, `spread(random)` mm off it.
+template <typename Spread>
+FramePoints TagsAcrossTheWall(const Model& model, Spread spread,
+                              std::vector<MaterialPoint>* material) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(-1.2, 1.3), v(-M_PI, M_PI);
+  FramePoints frame;
+  material->clear();
+  for (int i = 0; i < 3000; ++i) {
+    const MaterialPoint m{u(random), v(random), 0.0};
+    frame.positions.push_back(model.WorldPoint(m.u, m.v) +
+                              spread(random) * SurfaceNormal(model, m.u, m.v));
+    material->push_back(m);
+  }
+  frame.assign_depth.assign(frame.positions.size(), true);
+  return frame;
+}
+
+// Tags spread uniformly through a 10 mm wall make a solid 10 mm thick.
+TEST(WallStageTest, TagsThroughTheWallMakeASolidOfTheirThickness) {
+  Model model = TestSpheroid(9);
+  std::vector<MaterialPoint> material;
+  const FramePoints frame = TagsAcrossTheWall(
+      model, std::uniform_real_distribution<double>(-5.0, 5.0), &material);
+  WallDecision decision;
+  ASSERT_TRUE(DecideWallFromTags(frame, material, /*converged=*/true,
+                                 WallModel::kAuto, &decision, &model));
+  EXPECT_TRUE(decision.decided);
+  EXPECT_TRUE(model.config.Solid());
+  EXPECT_NEAR(model.state.globals[kH], 10.0, 0.5);
+  EXPECT_NEAR(model.state.knots[4][kH], 10.0, 0.5);
+  const double spread = std::stod(decision.reason.substr(12));
+  EXPECT_NEAR(spread, 10.0, 1.0) << decision.reason;
+  EXPECT_EQ(decision.reason.rfind(" mm across the wall"),
+            decision.reason.size() - 19)
+      << decision.reason;
+}
+
+// Tags on one surface with 0.5 mm noise spread about 1.2 mm: one surface;
+// --wall solid makes a solid all the same.  An unconverged solve decides
+// nothing from a spread.
+TEST(WallStageTest, TagsOnOneSurfaceKeepItOne) {
+  const std::normal_distribution<double> noise(0.0, 0.5);
+  const std::uniform_real_distribution<double> wall(-5.0, 5.0);
+  std::vector<MaterialPoint> material;
+  Model model = TestSpheroid(9);
+  FramePoints frame = TagsAcrossTheWall(model, noise, &material);
+  WallDecision decision;
+  EXPECT_FALSE(DecideWallFromTags(frame, material, true, WallModel::kAuto,
+                                  &decision, &model));
+  EXPECT_FALSE(model.config.Solid());
+  EXPECT_NE(decision.reason.find(": one surface (under 4.0 mm)"),
+            std::string::npos)
+      << decision.reason;
+
+  frame = TagsAcrossTheWall(model, wall, &material);
+  EXPECT_FALSE(DecideWallFromTags(frame, material, false, WallModel::kAuto,
+                                  &decision, &model));
+  EXPECT_NE(decision.reason.find(
+                ", but frame 0's mid-wall solve did not converge: one surface"),
+            std::string::npos)
+      << decision.reason;
+
+  frame = TagsAcrossTheWall(model, noise, &material);
+  EXPECT_TRUE(DecideWallFromTags(frame, material, true, WallModel::kSolid,
+                                 &decision, &model));
+  EXPECT_TRUE(model.config.Solid());
+  EXPECT_NE(decision.reason.find("(--wall solid)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pfdm
