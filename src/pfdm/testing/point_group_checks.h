@@ -17,8 +17,8 @@
 
 namespace pfdm {
 
-constexpr int kGroupBlockGroupBlockSizes[5] = {3, 4, kNumFunctions,
-                                               kNumFunctions, kNumFunctions};
+constexpr int kGroupBlockSizes[5] = {3, 4, kNumFunctions, kNumFunctions,
+                                     kNumFunctions};
 
 // Which blocks a group varies, and the free functions of the globals
 // (empty: the whole block) and of each knot.

@@ -18,8 +18,14 @@ Model SolidSpheroid() {
   return model;
 }
 
+// Inside the paper model's u range [-pi/2, pi/6].
 const MaterialPoint kAt[] = {
-    {0.3, 1.0, 0.0}, {-0.4, -2.0, 0.0}, {0.9, 2.5, 0.0}, {-0.8, 0.4, 0.0}};
+    {0.3, 1.0, 0.0}, {-0.4, -2.0, 0.0}, {0.1, 2.5, 0.0}, {-0.8, 0.4, 0.0}};
+
+// The search stops once a step would move the model point by under 1e-4
+// mm (CorrespondenceOptions::step_tolerance_mm): about 4e-6 of an angle at
+// the spheroid's 25 mm radius.
+constexpr double kFoundMm = 1e-4, kFoundAngle = 1e-5;
 
 TEST(FrameCorrespondenceTest, ListsAndMeasures) {
   const std::vector<MaterialPoint> material(std::begin(kAt), std::end(kAt));
@@ -45,13 +51,13 @@ TEST(FrameCorrespondenceTest, FindsTheListedPointsOnTheMidwall) {
                 std::vector<bool>(4, false), false, &material, &normals,
                 &found);
   for (size_t i : {0, 2}) {
-    EXPECT_NEAR(material[i].u, kAt[i].u, 1e-6) << i;
-    EXPECT_NEAR(material[i].v, kAt[i].v, 1e-6) << i;
+    EXPECT_NEAR(material[i].u, kAt[i].u, kFoundAngle) << i;
+    EXPECT_NEAR(material[i].v, kAt[i].v, kFoundAngle) << i;
     EXPECT_NEAR((normals[i] - SurfaceNormal(model, kAt[i].u, kAt[i].v)).norm(),
-                0.0, 1e-6)
+                0.0, kFoundAngle)
         << i;
   }
-  EXPECT_NEAR((found[1] - points[2]).norm(), 0.0, 1e-6);
+  EXPECT_NEAR((found[1] - points[2]).norm(), 0.0, kFoundMm);
   EXPECT_EQ(material[1].u, 0.0);
   EXPECT_EQ(normals[3], Eigen::Vector3d::Zero());
 }
@@ -71,7 +77,7 @@ TEST(FrameCorrespondenceTest, FindsContoursOnTheirWall) {
                 &found);
   for (size_t i = 0; i < 4; ++i) {
     EXPECT_EQ(material[i].w, 1.0) << i;
-    EXPECT_NEAR((found[i] - points[i]).norm(), 0.0, 1e-6) << i;
+    EXPECT_NEAR((found[i] - points[i]).norm(), 0.0, kFoundMm) << i;
   }
 }
 

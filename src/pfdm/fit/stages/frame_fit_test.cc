@@ -1,5 +1,7 @@
 #include "pfdm/fit/stages/frame_fit.h"
 
+#include <cmath>
+
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/start.h"
 #include "pfdm/testing/test_models.h"
@@ -36,8 +38,10 @@ TEST(FrameFitTest, CarriesFrameZeroToTheFramesAfterIt) {
   EXPECT_EQ(carried.previous.knots, second.state.knots);
   EXPECT_EQ(second.correspondence_rounds, 1);  // Tracked: nothing to search.
   EXPECT_EQ(second.termination, "CONVERGENCE");
-  // Frame 0's tangential noise and frame 1's add up: sqrt(3 + 2) 0.5 mm.
-  EXPECT_NEAR(second.rms_mm, 1.12, 0.15);
+  // Frame 0's tangential noise and frame 1's add up, to sqrt(3 + 2) 0.5 mm
+  // for a perfect model; the local field takes up some of it (FitterTest).
+  EXPECT_GT(second.rms_mm, std::sqrt(3.0) * 0.5);
+  EXPECT_LT(second.rms_mm, std::sqrt(5.0) * 0.5);
   EXPECT_GT(second.solve_seconds, 0.0);
 }
 

@@ -14,7 +14,8 @@ namespace pfdm {
 // the last one, which is where the frame ends.
 class TrajectoryRecorder {
  public:
-  // per_decade 0 keeps nothing.  *model is read at every step.
+  // *model is read at every step.  With per_decade 0 nothing is recorded:
+  // the caller steps it not at all (GlobalRounds) and Finish adds nothing.
   TrajectoryRecorder(int per_decade, const Model* model,
                      std::vector<TrajectoryPoint>* trajectory);
 

@@ -77,7 +77,7 @@ template <typename Spread>
 FramePoints TagsAcrossTheWall(const Model& model, Spread spread,
                               std::vector<MaterialPoint>* material) {
   std::mt19937 random(3);
-  std::uniform_real_distribution<double> u(-1.2, 1.3), v(-M_PI, M_PI);
+  std::uniform_real_distribution<double> u(-1.2, 0.5), v(-M_PI, M_PI);
   FramePoints frame;
   material->clear();
   for (int i = 0; i < 3000; ++i) {
