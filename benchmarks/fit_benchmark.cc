@@ -29,6 +29,7 @@
 
 #include "Eigen/Core"
 #include "benchmark/benchmark.h"
+#include "benchmark_util.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/phantom.h"
 
@@ -110,14 +111,11 @@ void BM_FitFrame(benchmark::State& state) {
       state.range(3) == 0 ? JacobianKind::kAnalytic : JacobianKind::kAutodiff;
   options.solver.sparse_library =
       static_cast<ceres::SparseLinearAlgebraLibraryType>(state.range(4));
-  SequenceFit fit;
   // One thread: pinned, and the floor measured on its CPU just before.
   std::optional<PinnedToThisCpu> pinned;
   if (options.solver.num_threads == 1) pinned.emplace();
   const double rate = MeasureMatrixMultiplyRate();
-  for (auto _ : state) {
-    fit = FitSequence(phantom.points, ModelConfig::Paper(17), options);
-  }
+  const SequenceFit fit = TimedFits(state, phantom.points, options);
   pinned.reset();
   const FrameFit& frame = fit.frames[1];  // Tracked: one solve.
   const double iterations = std::max(frame.iterations, 1);
@@ -125,7 +123,7 @@ void BM_FitFrame(benchmark::State& state) {
   state.counters["iterations"] = frame.iterations;
   state.counters["jacobian_evaluations"] = frame.jacobian_evaluations;
   state.counters["residual_evaluations"] = frame.residual_evaluations;
-  state.counters["frame_ms"] = 1e3 * frame.solve_seconds;
+  CountFrame(frame, state);
   state.counters["setup_ms"] =
       1e3 * (frame.solve_seconds - frame.minimizer_seconds);
   state.counters["ms_per_iter"] = 1e3 * per_iteration;
@@ -136,7 +134,6 @@ void BM_FitFrame(benchmark::State& state) {
   state.counters["x_floor"] =
       per_iteration * rate / FloorFlopsPerIteration(num_points);
   state.counters["gflops"] = rate / 1e9;
-  state.counters["rms_mm"] = frame.rms_mm;
 }
 
 void FitArguments(benchmark::internal::Benchmark* b) {
@@ -156,12 +153,7 @@ void FitArguments(benchmark::internal::Benchmark* b) {
     }
   }
 }
-BENCHMARK(BM_FitFrame)
-    ->Apply(FitArguments)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_FitFrame)->Apply(FitArguments)->Apply(RunThreeTimes);
 
 }  // namespace
 }  // namespace pfdm

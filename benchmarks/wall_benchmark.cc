@@ -6,6 +6,7 @@
 // (residuals and Jacobians) per tag and iteration.  Each configuration runs
 // three times; read the medians.
 #include "benchmark/benchmark.h"
+#include "benchmark_util.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/lv_phantom.h"
 
@@ -15,33 +16,20 @@ namespace {
 // Args: tags, solid (0 one surface, 1 solid).
 void BM_WallFitFrame(benchmark::State& state) {
   LvPhantomOptions phantom_options;
-  phantom_options.num_tags = static_cast<int>(state.range(0));
-  phantom_options.num_frames = 2;
   phantom_options.tags = LvTagLayer::kWall;
-  const LvPhantom phantom = MakeLvPhantom(phantom_options);
   FitOptions options;
   options.local.enabled = false;
   options.wall = state.range(1) != 0 ? WallModel::kSolid : WallModel::kMidwall;
-  SequenceFit fit;
-  for (auto _ : state) {
-    fit = FitSequence(phantom.points, ModelConfig::Paper(17), options);
-  }
+  const SequenceFit fit = TimedLvPhantomFits(state, phantom_options, options);
   const FrameFit& frame = fit.frames[1];
+  CountFrame(frame, state);
   state.counters["frame0_ms"] = 1e3 * fit.frames[0].solve_seconds;
-  state.counters["frame_ms"] = 1e3 * frame.solve_seconds;
   state.counters["per_point_ns"] =
       frame.iterations > 0
           ? 1e9 * frame.evaluation_seconds / (frame.iterations * state.range(0))
           : 0.0;
-  state.counters["rms_mm"] = frame.rms_mm;
 }
-BENCHMARK(BM_WallFitFrame)
-    ->ArgNames({"points", "solid"})
-    ->ArgsProduct({{2000, 50000}, {0, 1}})
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_WallFitFrame)->ArgNames({"points", "solid"})->Apply(OffAndOn);
 
 }  // namespace
 }  // namespace pfdm

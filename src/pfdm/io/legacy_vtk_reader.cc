@@ -291,147 +291,204 @@ std::vector<std::vector<long long>> ReadCells(long long first, long long second,
   return cells;
 }
 
-}  // namespace
-
-VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
-  VtkCursor in(path, ReadInputBytes(path));
+// The header's lines (the version, a title, ASCII or BINARY) and the
+// dataset's type, which must be POLYDATA.
+void ReadHeader(const std::string& path, VtkCursor* in) {
   std::string line;
-  if (!in.Line(&line) || line.rfind("# vtk DataFile", 0) != 0) {
+  if (!in->Line(&line) || line.rfind("# vtk DataFile", 0) != 0) {
     throw InputError(path + ":1: not a legacy VTK file");
   }
-  in.Line(&line);  // The title, which may hold anything.
+  in->Line(&line);  // The title, which may hold anything.
   std::string format;
-  in.Line(&format);
+  in->Line(&format);
   if (format == "ASCII") {
-    CheckNoNul(path, in.bytes());
+    CheckNoNul(path, in->bytes());
   } else if (format != "BINARY") {
     throw InputError(path + ":3: '" + Clip(format) +
                      "' where ASCII or BINARY belongs");
   }
-  in.SetBinary(format == "BINARY");
-  if (in.Need("DATASET") != "DATASET" || in.Need("POLYDATA") != "POLYDATA") {
-    throw InputError(in.Where() + ": only DATASET POLYDATA is read");
+  in->SetBinary(format == "BINARY");
+  if (in->Need("DATASET") != "DATASET" || in->Need("POLYDATA") != "POLYDATA") {
+    throw InputError(in->Where() + ": only DATASET POLYDATA is read");
   }
+}
+
+// The sections after the header, each opened by its keyword: keeps the
+// points, the polygons and the point scalars, and reads past the rest.
+class PolyDataSections {
+ public:
+  explicit PolyDataSections(VtkCursor* in) : in_(*in) {}
+
+  // Reads the sections up to the end of the file.
+  VtkMesh ReadToEnd() {
+    std::string keyword;
+    while (in_.Next(&keyword)) Read(keyword);
+    return std::move(result_);
+  }
+
+ private:
   using Kind = VtkCursor::Kind;
-  VtkMesh result;
-  // The current attribute section's: POINT_DATA's (point_data) or
-  // CELL_DATA's count, before either none.
-  long long attribute_count = 0;
-  bool point_data = false;
-  // A point section's one-component arrays are its scalars, by name.
-  const auto keep = [&](const std::string& name, long long components,
-                        std::vector<double> values) {
-    if (point_data && components == 1) {
-      result.point_scalars[name] = std::move(values);
-    }
-  };
-  std::string token;
-  while (in.Next(&token)) {
-    if (token == "POINTS") {
-      const long long n = in.Count("the point count");
-      const std::string type = in.Type("the point type");
-      const std::vector<double> xyz =
-          in.Numbers(type, 3 * n, "the points", Kind::kCoordinate);
-      for (size_t i = 0; i < xyz.size(); i += 3) {
-        result.mesh.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
-      }
-    } else if (token == "POLYGONS" || token == "VERTICES" || token == "LINES" ||
-               token == "TRIANGLE_STRIPS") {
-      const long long first = in.Count("the cell count");
-      const long long second = in.Count("the cell list size");
-      const std::vector<std::vector<long long>> cells =
-          ReadCells(first, second, &in);
-      if (token == "POLYGONS") {
-        for (const auto& cell : cells) {
-          AddFan(in.Where(), cell, result.mesh.points.size(), &result.mesh);
-        }
-      }
-    } else if (token == "POINT_DATA") {
-      const long long n = in.Count("the point-data count");
-      // Scalars of another count would be paired with the wrong points.
-      if (n != static_cast<long long>(result.mesh.points.size())) {
-        throw InputError(in.Where() + ": POINT_DATA " + std::to_string(n) +
-                         " does not match POINTS " +
-                         std::to_string(result.mesh.points.size()));
-      }
-      attribute_count = n;
-      point_data = true;
-    } else if (token == "CELL_DATA") {
+
+  // Reads the section `keyword` opens.
+  void Read(const std::string& keyword) {
+    if (keyword == "POINTS") {
+      ReadPoints();
+    } else if (keyword == "POLYGONS" || keyword == "VERTICES" ||
+               keyword == "LINES" || keyword == "TRIANGLE_STRIPS") {
+      ReadCellSection(keyword);
+    } else if (keyword == "POINT_DATA") {
+      ReadPointData();
+    } else if (keyword == "CELL_DATA") {
       // Read past, for the POINT_DATA that VTK writes after it.
-      attribute_count = in.Count("the cell-data count");
-      point_data = false;
-    } else if (token == "SCALARS") {
-      const std::string name = in.Need("a scalar name");
-      const std::string type = in.Type("a scalar type");
-      std::string next = in.Need("LOOKUP_TABLE");
-      long long components = 1;
-      if (next != "LOOKUP_TABLE") {
-        components = ToInteger(in.Where(), next);
-        if (components < 1 || components > 4) {
-          throw InputError(in.Where() + ": " + std::to_string(components) +
-                           " components, not 1 to 4");
-        }
-        next = in.Need("LOOKUP_TABLE");
-      }
-      in.Need("a lookup table name");
-      keep(name, components,
-           in.Numbers(type, components * attribute_count, "a scalar",
-                      Kind::kNumber));
-    } else if (token == "VECTORS" || token == "NORMALS" || token == "TENSORS") {
-      in.Need("an array name");
-      const std::string type = in.Type("an array type");
-      in.Numbers(type, (token == "TENSORS" ? 9 : 3) * attribute_count,
-                 "an array value", Kind::kNumber);
-    } else if (token == "TEXTURE_COORDINATES") {
-      in.Need("an array name");
-      const long long dimension = in.Integer("the texture dimension");
-      if (dimension < 1 || dimension > 3) {
-        throw InputError(in.Where() + ": texture dimension " +
-                         std::to_string(dimension) + ", not 1 to 3");
-      }
-      in.Numbers(in.Type("an array type"), dimension * attribute_count,
-                 "a texture coordinate", Kind::kNumber);
-    } else if (token == "FIELD") {
-      // Arrays of any name and shape, as ParaView writes point data: a
-      // one-component array of a value per point is a point scalar.
-      in.Need("a field name");
-      const long long arrays = in.Count("the field's array count");
-      for (long long i = 0; i < arrays; ++i) {
-        const std::string name = in.Need("an array name");
-        const long long components = in.Count("the array's components");
-        const long long tuples = in.Count("the array's tuples");
-        const std::string type = in.Type("the array's type");
-        if (components * tuples > static_cast<long long>(in.bytes().size())) {
-          throw InputError(in.Where() + ": " + std::to_string(components) +
-                           " x " + std::to_string(tuples) +
-                           " values do not fit the file");
-        }
-        std::vector<double> values = in.Numbers(
-            type, components * tuples, "an array value", Kind::kNumber);
-        if (tuples == attribute_count)
-          keep(name, components, std::move(values));
-        if (in.NextIs("METADATA")) in.SkipMetadata();
-      }
-    } else if (token == "LOOKUP_TABLE") {  // A table's definition: RGBA rows.
-      in.Need("a lookup table name");
-      const long long size = in.Count("the table size");
-      in.Numbers("unsigned_char", 4 * size, "a colour", Kind::kNumber);
-    } else if (token == "METADATA") {
-      in.SkipMetadata();
-    } else if (token == "COLOR_SCALARS") {
-      // Colours: floats in text, unsigned chars in binary.
-      in.Need("an array name");
-      const long long components = in.Integer("the colour components");
-      if (components < 1 || components > 4) {
-        throw InputError(in.Where() + ": " + std::to_string(components) +
-                         " colour components, not 1 to 4");
-      }
-      in.Numbers("unsigned_char", components * attribute_count, "a colour",
-                 Kind::kNumber);
+      attribute_count_ = in_.Count("the cell-data count");
+      point_data_ = false;
+    } else if (keyword == "SCALARS") {
+      ReadScalars();
+    } else if (keyword == "VECTORS" || keyword == "NORMALS" ||
+               keyword == "TENSORS") {
+      in_.Need("an array name");
+      const std::string type = in_.Type("an array type");
+      in_.Numbers(type, (keyword == "TENSORS" ? 9 : 3) * attribute_count_,
+                  "an array value", Kind::kNumber);
+    } else if (keyword == "TEXTURE_COORDINATES") {
+      ReadTextureCoordinates();
+    } else if (keyword == "FIELD") {
+      ReadField();
+    } else if (keyword == "LOOKUP_TABLE") {
+      // A table's definition: RGBA rows.
+      in_.Need("a lookup table name");
+      const long long size = in_.Count("the table size");
+      in_.Numbers("unsigned_char", 4 * size, "a colour", Kind::kNumber);
+    } else if (keyword == "METADATA") {
+      in_.SkipMetadata();
+    } else if (keyword == "COLOR_SCALARS") {
+      ReadColorScalars();
     } else {
-      throw InputError(in.Where() + ": unexpected '" + Clip(token) + "'");
+      throw InputError(in_.Where() + ": unexpected '" + Clip(keyword) + "'");
     }
   }
+
+  void ReadPoints() {
+    const long long n = in_.Count("the point count");
+    const std::string type = in_.Type("the point type");
+    const std::vector<double> xyz =
+        in_.Numbers(type, 3 * n, "the points", Kind::kCoordinate);
+    for (size_t i = 0; i < xyz.size(); i += 3) {
+      result_.mesh.points.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+    }
+  }
+
+  // Every cell section is read (its counts checked); only POLYGONS become
+  // triangles.
+  void ReadCellSection(const std::string& keyword) {
+    const long long first = in_.Count("the cell count");
+    const long long second = in_.Count("the cell list size");
+    const std::vector<std::vector<long long>> cells =
+        ReadCells(first, second, &in_);
+    if (keyword != "POLYGONS") return;
+    for (const auto& cell : cells) {
+      AddFan(in_.Where(), cell, result_.mesh.points.size(), &result_.mesh);
+    }
+  }
+
+  void ReadPointData() {
+    const long long n = in_.Count("the point-data count");
+    // Scalars of another count would be paired with the wrong points.
+    if (n != static_cast<long long>(result_.mesh.points.size())) {
+      throw InputError(in_.Where() + ": POINT_DATA " + std::to_string(n) +
+                       " does not match POINTS " +
+                       std::to_string(result_.mesh.points.size()));
+    }
+    attribute_count_ = n;
+    point_data_ = true;
+  }
+
+  void ReadScalars() {
+    const std::string name = in_.Need("a scalar name");
+    const std::string type = in_.Type("a scalar type");
+    std::string next = in_.Need("LOOKUP_TABLE");
+    long long components = 1;
+    if (next != "LOOKUP_TABLE") {
+      components = ToInteger(in_.Where(), next);
+      if (components < 1 || components > 4) {
+        throw InputError(in_.Where() + ": " + std::to_string(components) +
+                         " components, not 1 to 4");
+      }
+      next = in_.Need("LOOKUP_TABLE");
+    }
+    in_.Need("a lookup table name");
+    Keep(name, components,
+         in_.Numbers(type, components * attribute_count_, "a scalar",
+                     Kind::kNumber));
+  }
+
+  void ReadTextureCoordinates() {
+    in_.Need("an array name");
+    const long long dimension = in_.Integer("the texture dimension");
+    if (dimension < 1 || dimension > 3) {
+      throw InputError(in_.Where() + ": texture dimension " +
+                       std::to_string(dimension) + ", not 1 to 3");
+    }
+    in_.Numbers(in_.Type("an array type"), dimension * attribute_count_,
+                "a texture coordinate", Kind::kNumber);
+  }
+
+  // Arrays of any name and shape, as ParaView writes point data: a
+  // one-component array of a value per point is a point scalar.
+  void ReadField() {
+    in_.Need("a field name");
+    const long long arrays = in_.Count("the field's array count");
+    for (long long i = 0; i < arrays; ++i) {
+      const std::string name = in_.Need("an array name");
+      const long long components = in_.Count("the array's components");
+      const long long tuples = in_.Count("the array's tuples");
+      const std::string type = in_.Type("the array's type");
+      if (components * tuples > static_cast<long long>(in_.bytes().size())) {
+        throw InputError(in_.Where() + ": " + std::to_string(components) +
+                         " x " + std::to_string(tuples) +
+                         " values do not fit the file");
+      }
+      std::vector<double> values = in_.Numbers(type, components * tuples,
+                                               "an array value", Kind::kNumber);
+      if (tuples == attribute_count_) Keep(name, components, std::move(values));
+      if (in_.NextIs("METADATA")) in_.SkipMetadata();
+    }
+  }
+
+  // Colours: floats in text, unsigned chars in binary.
+  void ReadColorScalars() {
+    in_.Need("an array name");
+    const long long components = in_.Integer("the colour components");
+    if (components < 1 || components > 4) {
+      throw InputError(in_.Where() + ": " + std::to_string(components) +
+                       " colour components, not 1 to 4");
+    }
+    in_.Numbers("unsigned_char", components * attribute_count_, "a colour",
+                Kind::kNumber);
+  }
+
+  // A point section's one-component arrays are its scalars, by name.
+  void Keep(const std::string& name, long long components,
+            std::vector<double> values) {
+    if (point_data_ && components == 1) {
+      result_.point_scalars[name] = std::move(values);
+    }
+  }
+
+  VtkCursor& in_;
+  VtkMesh result_;
+  // The current attribute section's: POINT_DATA's (point_data_) or
+  // CELL_DATA's count, before either none.
+  long long attribute_count_ = 0;
+  bool point_data_ = false;
+};
+
+}  // namespace
+
+VtkMesh ReadLegacyVtkPolyData(const std::string& path) {
+  VtkCursor in(path, ReadInputBytes(path));
+  ReadHeader(path, &in);
+  VtkMesh result = PolyDataSections(&in).ReadToEnd();
   if (result.mesh.points.empty()) throw InputError(path + ": no points");
   return result;
 }
