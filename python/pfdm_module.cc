@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pfdm/fit/stages/fitter.h"
+#include "pfdm/io/fit_json.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/fit_settings.h"
 #include "pfdm/io/mesh_source.h"

@@ -1,5 +1,6 @@
-// The files `pfdm fit` writes: fit.json, parameters.csv, parameters.svg,
-// report.html, frame_NNN.vtk and .vtp, fit.pvd.
+// The files `pfdm fit` writes: fit.json (its contents: io/fit_json.h),
+// parameters.csv, parameters.svg, report.html, frame_NNN.vtk and .vtp,
+// fit.pvd.
 #ifndef PFDM_IO_FIT_OUTPUT_H_
 #define PFDM_IO_FIT_OUTPUT_H_
 
@@ -29,13 +30,6 @@ constexpr int kSurfaceMeridians = 48;
 // eps and b1, b3 unitless; z_mm is the knot ring's axial position in the
 // model frame.
 std::string ParametersCsv(const std::vector<Model>& frames);
-
-// Settings, model, gauge convention, per-frame errors, clinical summary and
-// cavity volume; ejection fraction and regional wall motion.
-std::string FitJson(const PointSequence& points, const SequenceFit& fit,
-                    const FitOptions& options, const FitAnalysis& analysis);
-std::string FitJson(const PointSequence& points, const SequenceFit& fit,
-                    const FitOptions& options);
 
 // The fitted surface (a u, v grid of triangles) and the data points as
 // vertices, with point data u, v, twist_deg (tau at u), is_data and the

@@ -7,7 +7,7 @@
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
 #include "pfdm/model/model_surface.h"
-#include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/small_phantom_fit.h"
 #include "pfdm/testing/test_util.h"
 #include "pfdm/util/error.h"
 
@@ -16,106 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Fitted {
-  Phantom phantom;
-  SequenceFit fit;
-};
-
-const Fitted& PhantomFit() {
-  static const Fitted* fitted = [] {
-    PhantomOptions options;
-    options.num_frames = 3;
-    options.num_points = 600;
-    auto* f = new Fitted{MakePhantom(options), {}};
-    f->fit =
-        FitSequence(f->phantom.points, ModelConfig::Paper(17), FitOptions());
-    return f;
-  }();
-  return *fitted;
-}
-
-TEST(FitOutputTest, JsonHasVolumesEjectionFractionAndRegions) {
-  const Fitted& f = PhantomFit();
-  const nlohmann::json json =
-      nlohmann::json::parse(FitJson(f.phantom.points, f.fit, FitOptions()));
-  ASSERT_EQ(json["frames"].size(), 3u);
-  std::vector<double> volumes;
-  for (const auto& frame : json["frames"]) {
-    volumes.push_back(frame["midwall_volume_ml"].get<double>());
-    EXPECT_FALSE(frame.contains("cavity_volume_ml"));
-    // Tags: frame 0's rounds settle, later frames search nothing.
-    EXPECT_EQ(frame["correspondence_unsettled_mm"].get<double>(), 0.0);
-  }
-  // Tags on one surface: named what it is, no ejection fraction.
-  EXPECT_EQ(json["model"]["wall"], "midwall");
-  EXPECT_EQ(json["model"]["volume_surface"], "midwall");
-  EXPECT_FALSE(json.contains("ejection_fraction"));
-  // The fitted surface's volume within 2 % of the true model's.
-  for (int t = 0; t < 3; ++t) {
-    const double truth = CavityVolumeMl(f.phantom.truth[t]);
-    EXPECT_NEAR(volumes[t], truth, 0.02 * truth) << t;
-  }
-  const auto& ef = json["midwall_volume_fraction"];
-  EXPECT_NE(ef["definition"].get<std::string>().find("not the ejection"),
-            std::string::npos);
-  EXPECT_EQ(ef["ed_frame"], 0);
-  EXPECT_EQ(ef["es_frame"], 2);
-  EXPECT_DOUBLE_EQ(ef["edv_ml"].get<double>(), volumes[0]);
-  EXPECT_NEAR(ef["ratio"].get<double>(), 1.0 - volumes[2] / volumes[0], 1e-12);
-  EXPECT_NE(ef["cavity_closure"].get<std::string>().find("flat lid"),
-            std::string::npos);
-  ASSERT_EQ(json["regions"].size(), 16u);
-  EXPECT_EQ(json["regions"][0]["name"], "basal 1");
-  EXPECT_EQ(json["regions"][15]["rotation_deg"].size(), 3u);
-  EXPECT_EQ(json["regions"][15]["rotation_deg"][0].get<double>(), 0.0);
-  EXPECT_LT(json["regions"][15]["rotation_deg"][2].get<double>(), -1.0);
-  EXPECT_EQ(json["settings"]["points"], f.phantom.points.source);
-  EXPECT_FALSE(json["settings"].contains("contour_types"));
-}
-
-// Strain per frame in the clinical block, per region and level, peaks in
-// the strain block: the model's phantom contracts, so the peaks are
-// negative, at a later frame, and frame 0 strains nothing.
-TEST(FitOutputTest, JsonHasStrainPerFrameRegionAndPeaks) {
-  const Fitted& f = PhantomFit();
-  const nlohmann::json json =
-      nlohmann::json::parse(FitJson(f.phantom.points, f.fit, FitOptions()));
-  double least_gcs = 0.0, least_gls = 0.0;
-  for (const auto& frame : json["frames"]) {
-    least_gcs =
-        std::min(least_gcs, frame["clinical"]["gcs_percent"].get<double>());
-    least_gls =
-        std::min(least_gls, frame["clinical"]["gls_percent"].get<double>());
-  }
-  EXPECT_NEAR(json["frames"][0]["clinical"]["gcs_percent"].get<double>(), 0.0,
-              1e-9);
-  const auto& strain = json["strain"];
-  EXPECT_EQ(strain["peak_gcs_percent"].get<double>(), least_gcs);
-  EXPECT_EQ(strain["peak_gls_percent"].get<double>(), least_gls);
-  EXPECT_LT(least_gcs, -3.0);
-  EXPECT_GT(strain["peak_gcs_frame"].get<int>(), 0);
-  EXPECT_EQ(strain["levels"]["mid"]["ecc_percent"].size(), 3u);
-  const auto& region = json["regions"][7];
-  ASSERT_EQ(region["ecc_percent"].size(), 3u);
-  EXPECT_NEAR(region["ecc_percent"][0].get<double>(), 0.0, 1e-9);
-  EXPECT_LE(region["peak_ecc_percent"].get<double>(),
-            region["ecc_percent"][2].get<double>());
-  EXPECT_GT(region["area_mm2"].get<double>(), 100.0);
-}
-
-// Guide points name the contour types they kept, so a fit can be redone.
-TEST(FitOutputTest, JsonNamesTheContourTypesKept) {
-  const Fitted& f = PhantomFit();
-  PointSequence points = f.phantom.points;
-  points.contour_types = {"SAX_LV_ENDOCARDIAL", "AORTA_VALVE"};
-  const nlohmann::json json =
-      nlohmann::json::parse(FitJson(points, f.fit, FitOptions()));
-  EXPECT_EQ(json["settings"]["contour_types"],
-            nlohmann::json({"SAX_LV_ENDOCARDIAL", "AORTA_VALVE"}));
-}
-
 TEST(FitOutputTest, SurfaceCarriesTwistInDegreesAtEachVertex) {
-  const Fitted& f = PhantomFit();
+  const FittedPhantom& f = SmallPhantomFit();
   const Model model = f.fit.ModelAt(2);
   const VtkPolyData data =
       FramePolyData(model, f.phantom.points.frames[2], f.fit.frames[2]);
@@ -137,7 +39,7 @@ TEST(FitOutputTest, SurfaceCarriesTwistInDegreesAtEachVertex) {
 }
 
 TEST(FitOutputTest, WritesEveryFileWholeWithACollectionOfTheFrames) {
-  const Fitted& f = PhantomFit();
+  const FittedPhantom& f = SmallPhantomFit();
   const std::string dir = ScratchDirectory("fit_output") + "/out";
   WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
   for (const char* name : {"fit.json", "parameters.csv", "parameters.svg",
@@ -167,7 +69,7 @@ TEST(FitOutputTest, WritesEveryFileWholeWithACollectionOfTheFrames) {
 // The default .vtp files are appended raw binary: read back, they hold the
 // fitted model's surface points and the frame's data points bit for bit.
 TEST(FitOutputTest, BinaryFramesHoldTheModelsPointsExactly) {
-  const Fitted& f = PhantomFit();
+  const FittedPhantom& f = SmallPhantomFit();
   const std::string dir = ScratchDirectory("fit_output") + "/out";
   WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
   const Model model = f.fit.ModelAt(2);
@@ -211,7 +113,7 @@ TEST(FitOutputTest, BinaryFramesHoldTheModelsPointsExactly) {
 // --vtk_format ascii: text that a person or a text tool can read, the same
 // arrays.
 TEST(FitOutputTest, AsciiFramesOnRequest) {
-  const Fitted& f = PhantomFit();
+  const FittedPhantom& f = SmallPhantomFit();
   const std::string dir = ScratchDirectory("fit_output") + "/out";
   WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions(), {},
                   VtkFormat::kAscii);
@@ -224,7 +126,7 @@ TEST(FitOutputTest, AsciiFramesOnRequest) {
 
 TEST(FitOutputTest, NothingIsWrittenWhenAnOutputCannotBeMade) {
   // The output folder is a file: one InputError, the file untouched.
-  const Fitted& f = PhantomFit();
+  const FittedPhantom& f = SmallPhantomFit();
   const std::string dir = ScratchDirectory("fit_output");
   WriteText(dir + "/taken", "a file");
   EXPECT_THROW(
@@ -235,7 +137,7 @@ TEST(FitOutputTest, NothingIsWrittenWhenAnOutputCannotBeMade) {
 
 // The first two frames of the phantom fit: a shorter set to write over it.
 std::pair<PointSequence, SequenceFit> FirstTwoFrames() {
-  const Fitted& f = PhantomFit();
+  const FittedPhantom& f = SmallPhantomFit();
   std::pair<PointSequence, SequenceFit> two{f.phantom.points, f.fit};
   two.first.frames.resize(2);
   two.second.frames.resize(2);
@@ -254,7 +156,7 @@ std::vector<std::string> Names(const std::string& dir) {
 // A refit with fewer frames left the older frame_002 files beside the new
 // set, and a killed run's temporaries stayed for good (issue 14).
 TEST(FitOutputTest, ARefitReplacesTheWholeSetAndItsTemporaries) {
-  const Fitted& f = PhantomFit();
+  const FittedPhantom& f = SmallPhantomFit();
   const std::string dir = ScratchDirectory("fit_output") + "/out";
   WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
   WriteText(dir + "/report.html.tmp.99999", "<html>half");
@@ -276,7 +178,7 @@ TEST(FitOutputTest, ARefitReplacesTheWholeSetAndItsTemporaries) {
 // looked complete (issue 14).  A folder in the way now stops the write
 // before anything is touched.
 TEST(FitOutputTest, AFolderInTheWayStopsTheWriteBeforeItStarts) {
-  const Fitted& f = PhantomFit();
+  const FittedPhantom& f = SmallPhantomFit();
   const std::string dir = ScratchDirectory("fit_output") + "/out";
   WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
   fs::create_directory(dir + "/frame_007.vtp");

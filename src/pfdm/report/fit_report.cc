@@ -54,6 +54,16 @@ bool Tracked(const PointSequence& points) {
   return false;
 }
 
+// For data without tracked points, where the motion of material points is
+// not seen.
+constexpr const char* kUntrackedNote =
+    "<p class=\"note\"><b>No tracked points:</b> no point id occurs "
+    "in more than one frame (contours, not tags), so rotation about the "
+    "axis cannot be seen and twist is held at 0; a1..a3 and bending "
+    "then describe the shape of each frame rather than the motion of "
+    "material points. Volumes and contraction of the shape still "
+    "hold.</p>\n";
+
 constexpr const char* kStyle =
     "body{font-family:sans-serif;margin:24px;color:#222;max-width:1250px}"
     "h1{font-size:22px}h2{font-size:18px;margin-top:28px}"
@@ -66,29 +76,19 @@ constexpr const char* kStyle =
     "p.note{font-size:13px;color:#555;max-width:1100px}"
     "svg{max-width:100%;height:auto}";
 
-}  // namespace
-
-std::string InlineSvg(const std::string& svg_document) {
-  const size_t start = svg_document.find("<svg");
-  return start == std::string::npos ? "" : svg_document.substr(start);
+// What the volumes are of, as the page names them.
+std::string VolumeName(const FitAnalysis& analysis) {
+  return analysis.volume_surface == "cavity" ? "cavity volume"
+         : analysis.volume_surface == "epicardial"
+             ? "volume inside the epicardium"
+             : "mid-wall enclosed volume";
 }
 
-std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
-                          const FitAnalysis& analysis,
-                          const std::string& parameters_svg,
-                          const std::string& cycle_svg,
-                          const std::string& strain_svg,
-                          const std::string& bullseye_svg) {
+// The page's head and the paragraph that says what was fitted to what.
+std::string PageHead(const PointSequence& points, const SequenceFit& fit,
+                     const FitAnalysis& analysis) {
   const EjectionFraction& ef = analysis.ejection_fraction;
-  const StrainPeak gcs = PeakGcs(analysis.strain);
-  const StrainPeak gls = PeakGls(analysis.strain);
-  const ClinicalSummary& es = analysis.clinical[ef.es_frame];
-  const ClinicalSummary& ed = analysis.clinical[ef.ed_frame];
-  const bool cavity = analysis.volume_surface == "cavity";
-  const std::string volume_name = cavity ? "cavity volume"
-                                  : analysis.volume_surface == "epicardial"
-                                      ? "volume inside the epicardium"
-                                      : "mid-wall enclosed volume";
+  const std::string volume_name = VolumeName(analysis);
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
     << "<title>pfdm fit: " << EscapeMarkup(points.source) << "</title>"
@@ -103,30 +103,53 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     << (fit.config.Solid() ? "a solid from endocardium to epicardium"
                            : "one surface")
     << " (" << EscapeMarkup(fit.wall_reason) << ").</p>\n";
+  return h.str();
+}
 
-  h << "<div class=\"key\">";
-  if (cavity) {
+// The ejection fraction where the volumes are the cavity's, else the
+// volumes under what they are of.
+std::string VolumeCard(const FitAnalysis& analysis) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  std::ostringstream h;
+  if (analysis.volume_surface == "cavity") {
     h << "<div>ejection fraction<b>" << Fixed(100 * ef.ratio, 1) << " %</b>"
       << "EDV " << Fixed(ef.edv_ml, 1) << " ml, ESV " << Fixed(ef.esv_ml, 1)
       << " ml</div>";
   } else {
-    h << "<div>" << volume_name << "<b>" << Fixed(ef.edv_ml, 1) << " ml</b>"
+    h << "<div>" << VolumeName(analysis) << "<b>" << Fixed(ef.edv_ml, 1)
+      << " ml</b>"
       << "at ED, " << Fixed(ef.esv_ml, 1)
       << " ml at ES: not the cavity, no ejection fraction</div>";
   }
-  if (fit.config.Solid()) {
-    h << "<div>LV mass at ED<b>" << Fixed(ed.lv_mass_g, 0) << " g</b>"
-      << "myocardium " << Fixed(ed.myocardial_volume_ml, 0)
-      << " ml at 1.05 g/ml</div>"
-      << "<div>wall thickening at ES<b>" << Fixed(es.wall_thickening_percent, 1)
-      << " %</b>" << Fixed(ed.wall_thickness_mm, 1) << " to "
-      << Fixed(es.wall_thickness_mm, 1) << " mm</div>"
-      << "<div>endo / epi net twist at ES<b>" << Fixed(es.endo_net_twist_deg, 1)
-      << " / " << Fixed(es.epi_net_twist_deg, 1)
-      << "&deg;</b>radial contraction "
-      << Fixed(es.endo_radial_contraction_percent, 1) << " / "
-      << Fixed(es.epi_radial_contraction_percent, 1) << " %</div>";
-  }
+  return h.str();
+}
+
+// A solid's mass, wall thickening and endocardial and epicardial motion.
+std::string SolidCards(const ClinicalSummary& ed, const ClinicalSummary& es) {
+  std::ostringstream h;
+  h << "<div>LV mass at ED<b>" << Fixed(ed.lv_mass_g, 0) << " g</b>"
+    << "myocardium " << Fixed(ed.myocardial_volume_ml, 0)
+    << " ml at 1.05 g/ml</div>"
+    << "<div>wall thickening at ES<b>" << Fixed(es.wall_thickening_percent, 1)
+    << " %</b>" << Fixed(ed.wall_thickness_mm, 1) << " to "
+    << Fixed(es.wall_thickness_mm, 1) << " mm</div>"
+    << "<div>endo / epi net twist at ES<b>" << Fixed(es.endo_net_twist_deg, 1)
+    << " / " << Fixed(es.epi_net_twist_deg, 1) << "&deg;</b>radial contraction "
+    << Fixed(es.endo_radial_contraction_percent, 1) << " / "
+    << Fixed(es.epi_radial_contraction_percent, 1) << " %</div>";
+  return h.str();
+}
+
+// The key numbers, a card each, at ES unless said otherwise.
+std::string KeyNumbers(const SequenceFit& fit, const FitAnalysis& analysis) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  const StrainPeak gcs = PeakGcs(analysis.strain);
+  const StrainPeak gls = PeakGls(analysis.strain);
+  const ClinicalSummary& es = analysis.clinical[ef.es_frame];
+  const ClinicalSummary& ed = analysis.clinical[ef.ed_frame];
+  std::ostringstream h;
+  h << "<div class=\"key\">" << VolumeCard(analysis);
+  if (fit.config.Solid()) h << SolidCards(ed, es);
   h << "<div>net twist at ES<b>" << Fixed(es.net_twist_deg, 1) << "&deg;</b>"
     << "apex " << Fixed(es.apex_rotation_deg, 1) << "&deg;, base "
     << Fixed(es.base_rotation_deg, 1) << "&deg;</div>"
@@ -143,6 +166,14 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     << gcs.frame << ", circumferential</div>"
     << "<div>peak GLS<b>" << Fixed(gls.percent, 1) << " %</b>frame "
     << gls.frame << ", longitudinal</div></div>\n";
+  return h.str();
+}
+
+// How the numbers are measured, and what the volumes are of.
+std::string MeasurementNote(const SequenceFit& fit,
+                            const FitAnalysis& analysis) {
+  const bool cavity = analysis.volume_surface == "cavity";
+  std::ostringstream h;
   h << "<p class=\"note\">Every number here is measured on the fitted "
        "model's material points against ED. Rotation is about the ED long "
        "axis (apex to base), right-handed, of the material rings at 20 % "
@@ -173,15 +204,15 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
             : "at each frame's mitral valve plane (through the MITRAL_VALVE "
               "guide points)")
     << ".</p>\n";
+  return h.str();
+}
 
-  if (!Tracked(points)) {
-    h << "<p class=\"note\"><b>No tracked points:</b> no point id occurs "
-         "in more than one frame (contours, not tags), so rotation about the "
-         "axis cannot be seen and twist is held at 0; a1..a3 and bending "
-         "then describe the shape of each frame rather than the motion of "
-         "material points. Volumes and contraction of the shape still "
-         "hold.</p>\n";
-  }
+// The parameter functions and the curves over the cycle, strain's where
+// given.
+std::string PlotSections(const std::string& parameters_svg,
+                         const std::string& cycle_svg,
+                         const std::string& strain_svg) {
+  std::ostringstream h;
   h << "<h2>Parameter functions</h2>\n"
     << InlineSvg(parameters_svg) << "\n"
     << "<p class=\"note\">a1, a2: radii along the model's x and y axes; "
@@ -203,7 +234,14 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
          "than engineering strain (&minus;20 % of length is &minus;18 % "
          "Green-Lagrange).</p>\n";
   }
+  return h.str();
+}
 
+// Each frame's fit errors, volume and clinical numbers.
+std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  const std::string volume_name = VolumeName(analysis);
+  std::ostringstream h;
   h << "<h2>Per frame</h2>\n<table><tr><th>frame</th><th>points</th>"
     << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>" << volume_name
     << " ml</th>"
@@ -236,9 +274,40 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
       << EscapeMarkup(f.termination + UnsettledNote(f)) << "</td></tr>\n";
   }
   h << "</table>\n";
+  return h.str();
+}
 
+// One segment's motion and strain at ES, tinted, and its peak Ecc.
+std::string RegionRow(const WallRegion& region, const RegionMotion& motion,
+                      double peak_ecc, bool solid) {
+  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+  std::ostringstream h;
+  h << "<tr><td>" << region.segment << "</td><td class=\"l\">" << region.Name()
+    << "</td><td>" << Fixed(region.v_begin * kDegrees, 0) << " to "
+    << Fixed(region.v_end * kDegrees, 0) << "</td><td"
+    << Tint(motion.rotation_deg, 15.0) << ">" << Fixed(motion.rotation_deg, 1)
+    << "</td><td" << Tint(motion.radial_contraction_percent, 40.0) << ">"
+    << Fixed(motion.radial_contraction_percent, 1) << "</td><td"
+    << Tint(-motion.ecc_percent, 30.0) << ">" << Fixed(motion.ecc_percent, 1)
+    << "</td><td" << Tint(-motion.ell_percent, 30.0) << ">"
+    << Fixed(motion.ell_percent, 1) << "</td><td>"
+    << Fixed(motion.ecl_percent, 1) << "</td><td" << Tint(-peak_ecc, 30.0)
+    << ">" << Fixed(peak_ecc, 1) << "</td>";
+  if (solid) {
+    h << "<td" << Tint(motion.thickening_percent, 60.0) << ">"
+      << Fixed(motion.thickening_percent, 1) << "</td>";
+  }
+  h << "</tr>\n";
+  return h.str();
+}
+
+// The bull's-eye maps where given and the segments' table at ES.
+std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
+                            const std::string& bullseye_svg) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
   const std::vector<RegionMotion>& motion = analysis.region_motion[ef.es_frame];
   const std::vector<double> peak_ecc = PeakRegionEcc(analysis.region_motion);
+  std::ostringstream h;
   h << "<h2>Regional wall motion at ES (frame " << ef.es_frame << ")</h2>\n";
   if (!bullseye_svg.empty()) {
     h << InlineSvg(bullseye_svg) << "\n"
@@ -260,26 +329,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
     << "<th>Ecl %</th><th>peak Ecc %</th>"
     << (fit.config.Solid() ? "<th>thickening %</th>" : "") << "</tr>\n";
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
-    const WallRegion& region = analysis.regions[r];
-    constexpr double kDegrees = 180.0 / 3.14159265358979323846;
-    h << "<tr><td>" << region.segment << "</td><td class=\"l\">"
-      << region.Name() << "</td><td>" << Fixed(region.v_begin * kDegrees, 0)
-      << " to " << Fixed(region.v_end * kDegrees, 0) << "</td><td"
-      << Tint(motion[r].rotation_deg, 15.0) << ">"
-      << Fixed(motion[r].rotation_deg, 1) << "</td><td"
-      << Tint(motion[r].radial_contraction_percent, 40.0) << ">"
-      << Fixed(motion[r].radial_contraction_percent, 1) << "</td><td"
-      << Tint(-motion[r].ecc_percent, 30.0) << ">"
-      << Fixed(motion[r].ecc_percent, 1) << "</td><td"
-      << Tint(-motion[r].ell_percent, 30.0) << ">"
-      << Fixed(motion[r].ell_percent, 1) << "</td><td>"
-      << Fixed(motion[r].ecl_percent, 1) << "</td><td"
-      << Tint(-peak_ecc[r], 30.0) << ">" << Fixed(peak_ecc[r], 1) << "</td>";
-    if (fit.config.Solid()) {
-      h << "<td" << Tint(motion[r].thickening_percent, 60.0) << ">"
-        << Fixed(motion[r].thickening_percent, 1) << "</td>";
-    }
-    h << "</tr>\n";
+    h << RegionRow(analysis.regions[r], motion[r], peak_ecc[r],
+                   fit.config.Solid());
   }
   h << "</table>\n<p class=\"note\">Segments: thirds of the ED axis (basal, "
        "mid, apical) cut into "
@@ -292,8 +343,30 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
        "the ED long axis; radial contraction: mean of 1 &minus; "
        "r/r<sub>ED</sub>, r a material point's distance from its ring's "
        "centroid; Ecc, Ell, Ecl: the segment's mean Green-Lagrange strains "
-       "at ES, peak Ecc the most negative over the frames.</p>\n"
-       "</body></html>\n";
+       "at ES, peak Ecc the most negative over the frames.</p>\n";
+  return h.str();
+}
+
+}  // namespace
+
+std::string InlineSvg(const std::string& svg_document) {
+  const size_t start = svg_document.find("<svg");
+  return start == std::string::npos ? "" : svg_document.substr(start);
+}
+
+std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
+                          const FitAnalysis& analysis,
+                          const std::string& parameters_svg,
+                          const std::string& cycle_svg,
+                          const std::string& strain_svg,
+                          const std::string& bullseye_svg) {
+  std::ostringstream h;
+  h << PageHead(points, fit, analysis) << KeyNumbers(fit, analysis)
+    << MeasurementNote(fit, analysis);
+  if (!Tracked(points)) h << kUntrackedNote;
+  h << PlotSections(parameters_svg, cycle_svg, strain_svg)
+    << FrameTable(fit, analysis) << RegionalSection(fit, analysis, bullseye_svg)
+    << "</body></html>\n";
   return h.str();
 }
 

@@ -1,0 +1,374 @@
+#include "pfdm/io/fit_json.h"
+
+#include <string>
+#include <vector>
+
+#include "ceres/types.h"
+#include "nlohmann/json.hpp"
+#include "pfdm/io/fit_output.h"
+#include "pfdm/report/clinical_summary.h"
+#include "pfdm/report/global_strain.h"
+
+namespace pfdm {
+namespace {
+
+// Keys stay in the order they are inserted: fit.json reads top-down, from
+// the settings to the frames.
+using json = nlohmann::ordered_json;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegreesPerRadian = 180.0 / kPi;
+
+constexpr const char* kGaugeConvention =
+    "a0 (scale) is set on frame 0 so that the model, a3 = 0.8 there, spans "
+    "the data from its fitted apex to the highest point along the axis, and "
+    "is held afterwards; frame 0 fits the pose with tau = 0 and no bending; "
+    "in every frame the axis is the least-squares line of the ring centres "
+    "(offsets e1o, e2o with zero mean and zero linear trend over the knots; "
+    "e3o = 0), so translation and tilt are the pose's; later frames fit the "
+    "pose but not its spin about frame 0's long axis, so tau(u, t) is "
+    "rotation about the LV axis relative to frame 0; bending has zero mean "
+    "over every ring, so a ring's axial position is a3's and the pose's; b1 "
+    "and b3 are shifted by multiples of 2 (negating b0 or b2 for odd ones, "
+    "the same bend) until their knot means lie in [0, 2).";
+
+constexpr const char* kEjectionDefinition =
+    "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; the "
+    "volumes are the frames' cavity_volume_ml, closed as cavity_closure "
+    "says.";
+
+constexpr const char* kVolumeFractionDefinition =
+    "(V_ED - V_ES) / V_ED of the volume the fitted surface encloses, which "
+    "is not the cavity (volume_surface says what it is: a surface through "
+    "the middle of the wall encloses the cavity and about half the "
+    "myocardium), so this is not the ejection fraction: fit tags through "
+    "the wall or contours of both walls (--wall solid) for that; ED is frame "
+    "0, ES the frame of least volume.";
+
+constexpr const char* kWallDefinition =
+    "A solid (model.wall): x(u, v, w) with w from -1 (endocardium) to +1 "
+    "(epicardium), the layer w = 0 displaced along the ellipsoid normal n by "
+    "w h / 2 + w^2 shift, the twist tau + w dtau / 2; tags get their w from "
+    "their rank across the wall in every frame (docs/gauge.md, The wall).  "
+    "cavity_volume_ml is inside the endocardium, myocardial_volume_ml "
+    "between the walls (each closed as cavity_closure says), lv_mass_g at "
+    "1.05 g/ml; endo_* and epi_* rotations and radial contraction are "
+    "measured like the mid-wall's on each wall's rings in the same frame-0 "
+    "short-axis planes; wall_thickness_mm is the endocardial-to-epicardial "
+    "vector of a material point along the mid-wall's normal, the mean over "
+    "the ten contraction rings, and wall_thickening_percent the mean of "
+    "100 (T / T0 - 1) over them (per segment: regions' "
+    "thickening_percent).";
+
+constexpr const char* kRegionsConvention =
+    "AHA-style segments: thirds of frame 0's axis from the base rim to the "
+    "apex (segments 1-6 basal, 7-12 mid, 13-16 apical), each cut into equal "
+    "sectors of longitude v counted counter-clockwise about +z (seen from "
+    "the base) from v = -180 degrees, the model's -x axis, not the RV "
+    "insertion; per frame, rotation_deg is the mean turn of the segment's "
+    "material points about frame 0's long axis (about their ring's "
+    "centroid) and radial_contraction_percent the mean of 1 - r / r(frame "
+    "0), r a material point's distance from its ring's centroid.";
+
+constexpr const char* kStrainDefinition =
+    "Lagrangian (Green-Lagrange) surface strain of the fitted model's "
+    "material points against frame 0, percent: at each material point the "
+    "surface deformation gradient F maps frame 0's tangent plane to frame "
+    "t's, E = (F^T F - I) / 2 in frame 0's orthonormal basis e_c (along the "
+    "circle of latitude, v increasing) and e_l (in the plane, perpendicular "
+    "to e_c, apex to base): Ecc, Ell, Ecl.  Regions: area-weighted means "
+    "over each segment (frame 0's area).  gcs_percent and gls_percent (per "
+    "frame in clinical): area-weighted means of Ecc and Ell over the whole "
+    "surface from the apex pole to the base rim; the peaks are the most "
+    "negative over the frames; levels: the same means over each third.";
+
+constexpr const char* kClinicalDefinition =
+    "Measured on the fitted model's material points against frame 0's, "
+    "whatever share of the motion the pose and the functions carry: "
+    "apex_rotation_deg and base_rotation_deg, the mean turn about frame 0's "
+    "long axis (right-handed, apex to base) of the material rings at 0.2 and "
+    "0.85 of frame 0's length from the apex pole to the base rim; "
+    "net_twist_deg = base - apex; torsion_deg_per_cm, net twist over frame "
+    "0's distance between the two rings; shear_angle_deg, the "
+    "circumferential-longitudinal shear angle atan(twist (r_apex + r_base) / "
+    "(2 D)) on frame 0's geometry; radial_contraction_percent, the mean over "
+    "ten rings (0.05 to 0.95 of the length) of 1 - r / r0, r the mean "
+    "distance of a ring's material points from their centroid; "
+    "longitudinal_shortening_percent, 1 - L / L0, L from the apex pole to the "
+    "centroid of the base rim's material points.  The *_per_knot ratios are "
+    "a1, a2, a3 against frame 0 (the paper's Fig. 5).";
+
+std::string CavityClosure(const FitAnalysis& analysis) {
+  if (analysis.base_planes.empty()) {
+    return "flat lid: a fan of triangles from the base rim to its centroid";
+  }
+  return "each frame's mitral valve plane (least squares through its " +
+         std::to_string(analysis.base_planes.front().num_points) +
+         " MITRAL_VALVE guide points on frame 0), the model continued past "
+         "its base rim with its functions held at their base values";
+}
+
+std::string ModeName(FunctionMode mode) {
+  switch (mode) {
+    case FunctionMode::kFree:
+      return "free";
+    case FunctionMode::kConstant:
+      return "constant";
+    case FunctionMode::kFixed:
+      return "fixed";
+  }
+  return "";
+}
+
+// The solver's settings beyond the direct solve's: the stepping solvers'
+// time step and rest, the integrator's damping.
+void AddStepperSettings(const FitOptions& options, json* settings) {
+  if (options.solver.kind != SolverKind::kDirect) {
+    const SolverOptions& s = options.solver;
+    (*settings)["time_step"] = s.time_step;  // 0: the solver's default.
+    (*settings)["rest_tolerance"] = s.rest_tolerance;
+    (*settings)["max_steps"] = s.max_steps;
+  }
+  if (options.solver.kind == SolverKind::kIntegrator) {
+    const DampingGroups& g = options.damping_groups;
+    (*settings)["damping"] =
+        options.solver.damping == DampingKind::kJacobi ? "jacobi" : "unit";
+    (*settings)["damping_scale"] = {{"pose", g.pose},
+                                    {"shape", g.shape},
+                                    {"twist", g.twist},
+                                    {"bending", g.bending},
+                                    {"offsets", g.offsets}};
+  }
+}
+
+json Settings(const PointSequence& points, const FitOptions& options) {
+  json settings = {
+      {"points", points.source},
+      {"smoothness_weight", options.smoothness_weight},
+      {"wall", WallModelName(options.wall)},
+      {"prior_weight", options.prior_weight},
+      {"untracked_prior_weight", options.untracked_prior_weight},
+      {"loss", options.loss},
+      {"loss_scale_mm", options.loss_scale_mm},
+      {"max_correspondence_rounds", options.max_correspondence_rounds},
+      {"correspondence_tolerance_mm", options.correspondence_tolerance_mm},
+      {"solver", SolverName(options.solver.kind)},
+      {"linear_solver",
+       ceres::LinearSolverTypeToString(options.solver.linear_solver)},
+      {"jacobian", JacobianName(options.jacobian)},
+      {"max_iterations", options.solver.max_iterations},
+      {"threads", options.solver.num_threads},
+      {"local", options.local.enabled},
+      {"local_grid", std::to_string(options.local.rows) + "x" +
+                         std::to_string(options.local.cols)},
+      {"local_stiffness", options.local.stiffness}};
+  if (!points.contour_types.empty()) {
+    settings["contour_types"] = points.contour_types;
+  }
+  AddStepperSettings(options, &settings);
+  if (options.hint) {
+    const auto& h = *options.hint;
+    settings["apex_hint"] = {h.apex.x(), h.apex.y(), h.apex.z()};
+    settings["base_hint"] = {h.base_center.x(), h.base_center.y(),
+                             h.base_center.z()};
+  }
+  return settings;
+}
+
+json ModelSection(const SequenceFit& fit, const FitAnalysis& analysis) {
+  json functions = json::object();
+  for (int f = 0; f < kNumFunctions; ++f) {
+    functions[FunctionName(f)] = {{"mode", ModeName(fit.config.modes[f])},
+                                  {"unit", ReportedUnit(f)}};
+  }
+  return {{"name", fit.config.name},
+          {"knots", fit.config.num_knots},
+          {"u_min", fit.config.u_min},
+          {"u_max", fit.config.u_max},
+          {"wall", fit.config.Solid() ? "solid" : "midwall"},
+          {"wall_reason", fit.wall_reason},
+          {"tag_noise_mm", fit.tag_noise_mm},
+          {"volume_surface", analysis.volume_surface},
+          {"functions", functions}};
+}
+
+// A frame's clinical numbers; a solid's endocardial and epicardial ones and
+// its wall thickness follow the mid-wall's.
+json FrameClinical(const ClinicalSummary& summary, const GlobalStrain& strain,
+                   bool solid) {
+  json clinical = {
+      {"net_twist_deg", summary.net_twist_deg},
+      {"apex_rotation_deg", summary.apex_rotation_deg},
+      {"base_rotation_deg", summary.base_rotation_deg},
+      {"torsion_deg_per_cm", summary.torsion_deg_per_cm},
+      {"shear_angle_deg", summary.shear_angle_deg},
+      {"radial_contraction_percent", summary.radial_contraction_percent},
+      {"longitudinal_shortening_percent",
+       summary.longitudinal_shortening_percent},
+      {"gcs_percent", strain.gcs_percent},
+      {"gls_percent", strain.gls_percent},
+      {"gcl_percent", strain.gcl_percent},
+      {"radial_ratio_x_per_knot", summary.radial_ratio_x},
+      {"radial_ratio_y_per_knot", summary.radial_ratio_y},
+      {"longitudinal_ratio_per_knot", summary.longitudinal_ratio}};
+  if (solid) {
+    clinical["endo_apex_rotation_deg"] = summary.endo_apex_rotation_deg;
+    clinical["endo_base_rotation_deg"] = summary.endo_base_rotation_deg;
+    clinical["endo_net_twist_deg"] = summary.endo_net_twist_deg;
+    clinical["epi_apex_rotation_deg"] = summary.epi_apex_rotation_deg;
+    clinical["epi_base_rotation_deg"] = summary.epi_base_rotation_deg;
+    clinical["epi_net_twist_deg"] = summary.epi_net_twist_deg;
+    clinical["endo_radial_contraction_percent"] =
+        summary.endo_radial_contraction_percent;
+    clinical["epi_radial_contraction_percent"] =
+        summary.epi_radial_contraction_percent;
+    clinical["wall_thickness_mm"] = summary.wall_thickness_mm;
+    clinical["wall_thickening_percent"] = summary.wall_thickening_percent;
+  }
+  return clinical;
+}
+
+// One frame's fit errors, solve, volume (under volume_key, named after the
+// surface measured), pose and clinical numbers.
+json FrameEntry(const FrameFit& frame, const ClinicalSummary& summary,
+                const GlobalStrain& strain, const std::string& volume_key,
+                bool solid) {
+  json entry = {{"frame", frame.frame},
+                {"n_points", frame.residuals.size()},
+                {"rms_mm", frame.rms_mm},
+                {"mean_distance_mm", frame.mean_distance_mm},
+                {"max_distance_mm", frame.max_distance_mm},
+                {"iterations", frame.iterations},
+                {"correspondence_rounds", frame.correspondence_rounds},
+                {"correspondence_unsettled_mm", frame.unsettled_mm},
+                {"solve_seconds", frame.solve_seconds},
+                {"termination", frame.termination},
+                {volume_key, summary.volume_ml}};
+  if (solid) {
+    entry["myocardial_volume_ml"] = summary.myocardial_volume_ml;
+    entry["lv_mass_g"] = summary.lv_mass_g;
+  }
+  entry["pose"] = {{"center_mm", frame.state.center},
+                   {"quaternion_wxyz", frame.state.quaternion}};
+  entry["clinical"] = FrameClinical(summary, strain, solid);
+  return entry;
+}
+
+json Frames(const SequenceFit& fit, const FitAnalysis& analysis) {
+  const bool solid = fit.config.Solid();
+  const std::string volume_key = analysis.volume_surface + "_volume_ml";
+  json frames = json::array();
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    frames.push_back(FrameEntry(fit.frames[t], analysis.clinical[t],
+                                analysis.strain[t], volume_key, solid));
+  }
+  return frames;
+}
+
+// The ejection fraction of the cavity, or the same ratio of whatever
+// surface the volumes are of, defined as what it is.
+json EjectionSection(const FitAnalysis& analysis) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  const bool cavity = analysis.volume_surface == "cavity";
+  return {
+      {"ratio", ef.ratio},
+      {"ed_frame", ef.ed_frame},
+      {"es_frame", ef.es_frame},
+      {"edv_ml", ef.edv_ml},
+      {"esv_ml", ef.esv_ml},
+      {"definition", cavity ? kEjectionDefinition : kVolumeFractionDefinition},
+      {"cavity_closure", CavityClosure(analysis)}};
+}
+
+// Segment r's motion and strain over the frames; thickening for a solid.
+json RegionEntry(const FitAnalysis& analysis, size_t r, double peak_ecc,
+                 bool solid) {
+  const WallRegion& region = analysis.regions[r];
+  std::vector<double> rotation, radial, ecc, ell, ecl, thickening;
+  for (const auto& motion : analysis.region_motion) {
+    thickening.push_back(motion[r].thickening_percent);
+    rotation.push_back(motion[r].rotation_deg);
+    radial.push_back(motion[r].radial_contraction_percent);
+    ecc.push_back(motion[r].ecc_percent);
+    ell.push_back(motion[r].ell_percent);
+    ecl.push_back(motion[r].ecl_percent);
+  }
+  json entry = {
+      {"segment", region.segment},
+      {"name", region.Name()},
+      {"v_range_deg",
+       {region.v_begin * kDegreesPerRadian, region.v_end * kDegreesPerRadian}},
+      {"rotation_deg", rotation},
+      {"radial_contraction_percent", radial},
+      {"ecc_percent", ecc},
+      {"ell_percent", ell},
+      {"ecl_percent", ecl},
+      {"peak_ecc_percent", peak_ecc},
+      {"area_mm2", analysis.region_motion.empty()
+                       ? 0.0
+                       : analysis.region_motion[0][r].area_mm2}};
+  if (solid) entry["thickening_percent"] = thickening;
+  return entry;
+}
+
+json Regions(const FitAnalysis& analysis, bool solid) {
+  const std::vector<double> peak_ecc = PeakRegionEcc(analysis.region_motion);
+  json regions = json::array();
+  for (size_t r = 0; r < analysis.regions.size(); ++r) {
+    regions.push_back(RegionEntry(analysis, r, peak_ecc[r], solid));
+  }
+  return regions;
+}
+
+// Ecc and Ell over the frames, per third of the axis.
+json StrainLevels(const FitAnalysis& analysis) {
+  json levels = json::object();
+  static const char* const kLevelNames[] = {"basal", "mid", "apical"};
+  for (int level = 0; level < 3; ++level) {
+    std::vector<double> ecc, ell;
+    for (const GlobalStrain& g : analysis.strain) {
+      ecc.push_back(g.level_ecc_percent[level]);
+      ell.push_back(g.level_ell_percent[level]);
+    }
+    levels[kLevelNames[level]] = {{"ecc_percent", ecc}, {"ell_percent", ell}};
+  }
+  return levels;
+}
+
+json StrainSection(const FitAnalysis& analysis) {
+  const StrainPeak gcs = PeakGcs(analysis.strain);
+  const StrainPeak gls = PeakGls(analysis.strain);
+  return {
+      {"definition", kStrainDefinition}, {"peak_gcs_percent", gcs.percent},
+      {"peak_gcs_frame", gcs.frame},     {"peak_gls_percent", gls.percent},
+      {"peak_gls_frame", gls.frame},     {"levels", StrainLevels(analysis)}};
+}
+
+}  // namespace
+
+std::string FitJson(const PointSequence& points, const SequenceFit& fit,
+                    const FitOptions& options) {
+  return FitJson(points, fit, options, AnalyzeFit(fit));
+}
+
+std::string FitJson(const PointSequence& points, const SequenceFit& fit,
+                    const FitOptions& options, const FitAnalysis& analysis) {
+  const bool solid = fit.config.Solid();
+  const bool cavity = analysis.volume_surface == "cavity";
+  json document = {{"pfdm_version", "0.1.0"},
+                   {"settings", Settings(points, options)},
+                   {"model", ModelSection(fit, analysis)},
+                   {"gauge_convention", kGaugeConvention},
+                   {"clinical_definition", kClinicalDefinition}};
+  if (solid) document["wall_definition"] = kWallDefinition;
+  document[cavity ? "ejection_fraction"
+                  : analysis.volume_surface + "_volume_fraction"] =
+      EjectionSection(analysis);
+  document.update(json{{"regions_convention", kRegionsConvention},
+                       {"regions", Regions(analysis, solid)},
+                       {"strain", StrainSection(analysis)},
+                       {"frames", Frames(fit, analysis)}});
+  return document.dump(2) + "\n";
+}
+
+}  // namespace pfdm

@@ -1,0 +1,96 @@
+#include "pfdm/io/fit_json.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "gtest/gtest.h"
+#include "nlohmann/json.hpp"
+#include "pfdm/model/model_surface.h"
+#include "pfdm/testing/small_phantom_fit.h"
+
+namespace pfdm {
+namespace {
+
+TEST(FitJsonTest, HasVolumesEjectionFractionAndRegions) {
+  const FittedPhantom& f = SmallPhantomFit();
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(f.phantom.points, f.fit, FitOptions()));
+  ASSERT_EQ(json["frames"].size(), 3u);
+  std::vector<double> volumes;
+  for (const auto& frame : json["frames"]) {
+    volumes.push_back(frame["midwall_volume_ml"].get<double>());
+    EXPECT_FALSE(frame.contains("cavity_volume_ml"));
+    // Tags: frame 0's rounds settle, later frames search nothing.
+    EXPECT_EQ(frame["correspondence_unsettled_mm"].get<double>(), 0.0);
+  }
+  // Tags on one surface: named what it is, no ejection fraction.
+  EXPECT_EQ(json["model"]["wall"], "midwall");
+  EXPECT_EQ(json["model"]["volume_surface"], "midwall");
+  EXPECT_FALSE(json.contains("ejection_fraction"));
+  // The fitted surface's volume within 2 % of the true model's.
+  for (int t = 0; t < 3; ++t) {
+    const double truth = CavityVolumeMl(f.phantom.truth[t]);
+    EXPECT_NEAR(volumes[t], truth, 0.02 * truth) << t;
+  }
+  const auto& ef = json["midwall_volume_fraction"];
+  EXPECT_NE(ef["definition"].get<std::string>().find("not the ejection"),
+            std::string::npos);
+  EXPECT_EQ(ef["ed_frame"], 0);
+  EXPECT_EQ(ef["es_frame"], 2);
+  EXPECT_DOUBLE_EQ(ef["edv_ml"].get<double>(), volumes[0]);
+  EXPECT_NEAR(ef["ratio"].get<double>(), 1.0 - volumes[2] / volumes[0], 1e-12);
+  EXPECT_NE(ef["cavity_closure"].get<std::string>().find("flat lid"),
+            std::string::npos);
+  ASSERT_EQ(json["regions"].size(), 16u);
+  EXPECT_EQ(json["regions"][0]["name"], "basal 1");
+  EXPECT_EQ(json["regions"][15]["rotation_deg"].size(), 3u);
+  EXPECT_EQ(json["regions"][15]["rotation_deg"][0].get<double>(), 0.0);
+  EXPECT_LT(json["regions"][15]["rotation_deg"][2].get<double>(), -1.0);
+  EXPECT_EQ(json["settings"]["points"], f.phantom.points.source);
+  EXPECT_FALSE(json["settings"].contains("contour_types"));
+}
+
+// Strain per frame in the clinical block, per region and level, peaks in
+// the strain block: the model's phantom contracts, so the peaks are
+// negative, at a later frame, and frame 0 strains nothing.
+TEST(FitJsonTest, HasStrainPerFrameRegionAndPeaks) {
+  const FittedPhantom& f = SmallPhantomFit();
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(f.phantom.points, f.fit, FitOptions()));
+  double least_gcs = 0.0, least_gls = 0.0;
+  for (const auto& frame : json["frames"]) {
+    least_gcs =
+        std::min(least_gcs, frame["clinical"]["gcs_percent"].get<double>());
+    least_gls =
+        std::min(least_gls, frame["clinical"]["gls_percent"].get<double>());
+  }
+  EXPECT_NEAR(json["frames"][0]["clinical"]["gcs_percent"].get<double>(), 0.0,
+              1e-9);
+  const auto& strain = json["strain"];
+  EXPECT_EQ(strain["peak_gcs_percent"].get<double>(), least_gcs);
+  EXPECT_EQ(strain["peak_gls_percent"].get<double>(), least_gls);
+  EXPECT_LT(least_gcs, -3.0);
+  EXPECT_GT(strain["peak_gcs_frame"].get<int>(), 0);
+  EXPECT_EQ(strain["levels"]["mid"]["ecc_percent"].size(), 3u);
+  const auto& region = json["regions"][7];
+  ASSERT_EQ(region["ecc_percent"].size(), 3u);
+  EXPECT_NEAR(region["ecc_percent"][0].get<double>(), 0.0, 1e-9);
+  EXPECT_LE(region["peak_ecc_percent"].get<double>(),
+            region["ecc_percent"][2].get<double>());
+  EXPECT_GT(region["area_mm2"].get<double>(), 100.0);
+}
+
+// Guide points name the contour types they kept, so a fit can be redone.
+TEST(FitJsonTest, NamesTheContourTypesKept) {
+  const FittedPhantom& f = SmallPhantomFit();
+  PointSequence points = f.phantom.points;
+  points.contour_types = {"SAX_LV_ENDOCARDIAL", "AORTA_VALVE"};
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(points, f.fit, FitOptions()));
+  EXPECT_EQ(json["settings"]["contour_types"],
+            nlohmann::json({"SAX_LV_ENDOCARDIAL", "AORTA_VALVE"}));
+}
+
+}  // namespace
+}  // namespace pfdm
