@@ -30,7 +30,8 @@
 #include "Eigen/Core"
 #include "benchmark/benchmark.h"
 #include "benchmark_util.h"
-#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/phantom/phantom.h"
 
 namespace pfdm {

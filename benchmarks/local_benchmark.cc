@@ -5,7 +5,8 @@
 // it.  Each configuration runs three times; read the medians.
 #include "benchmark/benchmark.h"
 #include "benchmark_util.h"
-#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/phantom/lv_phantom.h"
 
 namespace pfdm {

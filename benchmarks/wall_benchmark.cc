@@ -7,7 +7,8 @@
 // three times; read the medians.
 #include "benchmark/benchmark.h"
 #include "benchmark_util.h"
-#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/phantom/lv_phantom.h"
 
 namespace pfdm {

@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/model/base_plane.h"
 #include "pfdm/model/model.h"
 #include "pfdm/report/fit_analysis.h"

@@ -12,6 +12,7 @@
 #include "pfdm/batch/batch_manifest.h"
 #include "pfdm/batch/batch_summary.h"
 #include "pfdm/cli/commands.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/point_source.h"
 #include "pfdm/report/fit_analysis.h"

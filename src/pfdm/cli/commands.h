@@ -3,7 +3,8 @@
 #define PFDM_CLI_COMMANDS_H_
 
 #include "gflags/gflags.h"
-#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/io/fit_settings.h"
 #include "pfdm/model/base_plane.h"
 #include "pfdm/model/model.h"

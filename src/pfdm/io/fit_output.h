@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/io/vtk_writer.h"
 #include "pfdm/model/model.h"
 #include "pfdm/report/fit_analysis.h"

@@ -6,7 +6,7 @@
 #include <set>
 #include <sstream>
 
-#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/util/markup_escape.h"
 
 namespace pfdm {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/point_data.h"
 

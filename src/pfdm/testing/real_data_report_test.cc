@@ -7,6 +7,7 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/legacy_vtk_reader.h"
 #include "pfdm/io/mesh_reader.h"
 #include "pfdm/io/mitral_valve_planes.h"
