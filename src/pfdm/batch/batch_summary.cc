@@ -19,6 +19,30 @@ std::string CsvField(const std::string& text) {
   return quoted + "\"";
 }
 
+// fit.json's overall quality and its frames' distinct reason codes.
+void ReadQuality(const nlohmann::json& fit, CaseSummary* summary) {
+  if (!fit.contains("quality")) return;
+  summary->quality = fit["quality"].at("overall").get<std::string>();
+  for (const auto& frame : fit.at("frames")) {
+    for (const auto& reason :
+         frame.value("quality_reasons", nlohmann::json::array())) {
+      const std::string code = reason.at("code").get<std::string>();
+      std::vector<std::string>& codes = summary->quality_reasons;
+      if (std::find(codes.begin(), codes.end(), code) == codes.end()) {
+        codes.push_back(code);
+      }
+    }
+  }
+}
+
+std::string Joined(const std::vector<std::string>& items) {
+  std::string joined;
+  for (const std::string& item : items) {
+    joined += (joined.empty() ? "" : ";") + item;
+  }
+  return joined;
+}
+
 }  // namespace
 
 CaseSummary SummaryFromFitJson(const std::string& name,
@@ -59,6 +83,7 @@ CaseSummary SummaryFromFitJson(const std::string& name,
       summary.wall_thickening_percent =
           es.at("wall_thickening_percent").get<double>();
     }
+    ReadQuality(fit, &summary);
     if (fit.contains("strain")) {
       summary.has_strain = true;
       summary.peak_gcs_percent =
@@ -75,14 +100,14 @@ CaseSummary SummaryFromFitJson(const std::string& name,
 std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
   std::ostringstream out;
   out.precision(6);
-  out << "case,status,frames,max_rms_mm,volume_surface,ed_volume_ml,"
+  out << "case,status,quality,frames,max_rms_mm,volume_surface,ed_volume_ml,"
          "es_volume_ml,es_frame,ejection_fraction,lv_mass_g,"
          "wall_thickening_at_es_percent,net_twist_at_es_deg,"
          "longitudinal_shortening_at_es_percent,"
          "radial_contraction_at_es_percent,peak_gcs_percent,"
-         "peak_gls_percent,error\n";
+         "peak_gls_percent,quality_reasons,error\n";
   for (const CaseSummary& c : cases) {
-    out << CsvField(c.name) << ',' << c.status << ',';
+    out << CsvField(c.name) << ',' << c.status << ',' << c.quality << ',';
     if (c.status == "done") {
       out << c.frames << ',' << c.max_rms_mm << ',' << c.volume_surface << ','
           << c.edv_ml << ',' << c.esv_ml << ',' << c.es_frame << ',';
@@ -99,8 +124,9 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
       } else {
         out << ",,";
       }
+      out << Joined(c.quality_reasons) << ',';
     } else {
-      out << ",,,,,,,,,,,,,,";
+      out << ",,,,,,,,,,,,,,,";
     }
     out << CsvField(c.error) << '\n';
   }

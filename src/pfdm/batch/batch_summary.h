@@ -10,6 +10,11 @@ namespace pfdm {
 struct CaseSummary {
   std::string name;
   std::string status;  // "done", "failed" or "pending".
+  // fit.json's quality.overall ("ok", "warning", "failed": implausible,
+  // util/verdict.h), "" for a fit.json from before verdicts; and the
+  // distinct reason codes of its frames, in order of first appearance.
+  std::string quality;
+  std::vector<std::string> quality_reasons;
   int frames = 0;
   double max_rms_mm = 0.0;
   // What the volumes enclose (fit.json model.volume_surface): "cavity",

@@ -54,17 +54,38 @@ TEST(BatchSummaryTest, CsvRowsQuoteWhatNeedsIt) {
   pending.name = "p3";
   pending.status = "pending";
   EXPECT_EQ(SummaryCsv({old, done, failed, pending}),
-            "case,status,frames,max_rms_mm,volume_surface,ed_volume_ml,"
-            "es_volume_ml,es_frame,ejection_fraction,lv_mass_g,"
+            "case,status,quality,frames,max_rms_mm,volume_surface,"
+            "ed_volume_ml,es_volume_ml,es_frame,ejection_fraction,lv_mass_g,"
             "wall_thickening_at_es_percent,net_twist_at_es_deg,"
             "longitudinal_shortening_at_es_percent,"
             "radial_contraction_at_es_percent,peak_gcs_percent,"
-            "peak_gls_percent,error\n"
-            "p0,done,3,1.25,cavity,150,60,1,0.6,,,12.5,15,25,,,\n"
-            "p1,done,3,1.25,cavity,150,60,1,0.6,,,12.5,15,25,-18.5,-14.25,\n"
-            "p2,failed,,,,,,,,,,,,,,,\"p2.csv:3: column 'x' is not a "
+            "peak_gls_percent,quality_reasons,error\n"
+            "p0,done,,3,1.25,cavity,150,60,1,0.6,,,12.5,15,25,,,,\n"
+            "p1,done,,3,1.25,cavity,150,60,1,0.6,,,12.5,15,25,-18.5,-14.25,,"
+            "\n"
+            "p2,failed,,,,,,,,,,,,,,,,,\"p2.csv:3: column 'x' is not a "
             "\"\"number\"\", sorry\"\n"
-            "p3,pending,,,,,,,,,,,,,,,\n");
+            "p3,pending,,,,,,,,,,,,,,,,,\n");
+}
+
+// fit.json's verdict: the overall quality and the frames' distinct
+// reasons, each once, in the order they first appear.
+TEST(BatchSummaryTest, ReadsTheQualityAndItsReasons) {
+  std::string json = kFitJson;
+  json.insert(1, R"("quality": {"overall": "warning"},)");
+  const std::string frame = "{\"rms_mm\": 0.5,";
+  const std::string reasons =
+      R"("quality_reasons": [{"severity": "warning", "code": "unsettled",
+      "text": "closest points still moving"}, {"severity": "warning",
+      "code": "solver", "text": "NO_CONVERGENCE"}],)";
+  json.replace(json.find(frame), frame.size(), frame + reasons);
+  const CaseSummary s = SummaryFromFitJson("q", json, "q/fit.json");
+  EXPECT_EQ(s.quality, "warning");
+  EXPECT_EQ(s.quality_reasons,
+            (std::vector<std::string>{"unsettled", "solver"}));
+  const std::string csv = SummaryCsv({s});
+  EXPECT_NE(csv.find("\nq,done,warning,3,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",unsettled;solver,\n"), std::string::npos) << csv;
 }
 
 // A solid's fit.json: the cavity's ejection fraction, the LV mass at ED
@@ -89,10 +110,10 @@ TEST(BatchSummaryTest, NamesWhatTheVolumesEnclose) {
   const CaseSummary m = SummaryFromFitJson("m", midwall, "m/fit.json");
   EXPECT_EQ(m.volume_surface, "midwall");
   const std::string csv = SummaryCsv({s, m});
-  EXPECT_NE(csv.find("\ns,done,3,1.25,cavity,150,60,1,0.6,120.5,41.5,12.5,"),
+  EXPECT_NE(csv.find("\ns,done,,3,1.25,cavity,150,60,1,0.6,120.5,41.5,12.5,"),
             std::string::npos)
       << csv;
-  EXPECT_NE(csv.find("\nm,done,3,1.25,midwall,150,60,1,,,,12.5,"),
+  EXPECT_NE(csv.find("\nm,done,,3,1.25,midwall,150,60,1,,,,12.5,"),
             std::string::npos)
       << csv;
 }

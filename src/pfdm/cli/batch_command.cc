@@ -106,9 +106,10 @@ std::string RunCase(const BatchCase& c, const std::string& out,
   char line[200];
   std::snprintf(
       line, sizeof(line),
-      "done, %d frames, max RMS %.2f mm, EF %.1f %%, net twist at "
+      "done, %s, %d frames, max RMS %.2f mm, EF %.1f %%, net twist at "
       "ES %.1f deg, %.1f s",
-      s.frames, s.max_rms_mm, 100.0 * s.ejection_fraction, s.net_twist_deg,
+      s.quality.c_str(), s.frames, s.max_rms_mm, 100.0 * s.ejection_fraction,
+      s.net_twist_deg,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count());
   return line;
@@ -157,18 +158,29 @@ int RunBatch() {
   // The whole manifest, so the last shard to finish (or a final run with
   // everything done) leaves a complete table.
   std::vector<CaseSummary> summary;
-  int done = 0;
+  int done = 0, warned = 0, implausible = 0;
   for (const BatchCase& c : all) {
     summary.push_back(StatusOf(c, FLAGS_out));
     done += summary.back().status == "done";
+    warned += summary.back().quality == "warning";
+    implausible += summary.back().quality == "failed";
   }
   WriteFileAtomically(FLAGS_out + "/summary.csv", SummaryCsv(summary));
-  std::printf("wrote %s/summary.csv: %d of %zu cases done\n", FLAGS_out.c_str(),
-              done, all.size());
+  std::printf(
+      "wrote %s/summary.csv: %d of %zu cases done (%d with warnings, %d "
+      "implausible)\n",
+      FLAGS_out.c_str(), done, all.size(), warned, implausible);
   if (failed > 0) {
     throw InputError(std::to_string(failed.load()) + " of " +
                      std::to_string(mine.size()) + " cases failed, see " +
                      FLAGS_out + "/summary.csv");
+  }
+  if (implausible > 0) {
+    std::fprintf(stderr,
+                 "pfdm: %d of %zu cases implausible (summary.csv's quality "
+                 "and quality_reasons say why)\n",
+                 implausible, all.size());
+    return kExitImplausible;
   }
   return 0;
 }

@@ -49,8 +49,8 @@ TEST(CliBatchTest, FitsInParallelRecordsFailuresAndResumes) {
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_EQ(run.error,
             "pfdm: error: 1 of 3 cases failed, see " + out + "/summary.csv\n");
-  EXPECT_EQ(Lines(run.output, "] alpha: done, 3 frames"), 1) << run.output;
-  EXPECT_EQ(Lines(run.output, "] beta: done, 3 frames"), 1);
+  EXPECT_EQ(Lines(run.output, "] alpha: done, ok, 3 frames"), 1) << run.output;
+  EXPECT_EQ(Lines(run.output, "] beta: done, ok, 3 frames"), 1);
   EXPECT_EQ(Lines(run.output, "] gamma: FAILED: " + dir +
                                   "/missing.csv: cannot open the file"),
             1)
@@ -62,9 +62,9 @@ TEST(CliBatchTest, FitsInParallelRecordsFailuresAndResumes) {
   }
   EXPECT_FALSE(fs::exists(out + "/gamma/fit.json"));
   std::string summary = ReadText(out + "/summary.csv");
-  EXPECT_EQ(summary.rfind("case,status,frames,max_rms_mm,", 0), 0u);
-  EXPECT_EQ(Row(summary, "alpha").rfind("alpha,done,3,", 0), 0u);
-  EXPECT_EQ(Row(summary, "gamma").rfind("gamma,failed,,", 0), 0u);
+  EXPECT_EQ(summary.rfind("case,status,quality,frames,max_rms_mm,", 0), 0u);
+  EXPECT_EQ(Row(summary, "alpha").rfind("alpha,done,ok,3,", 0), 0u);
+  EXPECT_EQ(Row(summary, "gamma").rfind("gamma,failed,,,", 0), 0u);
   EXPECT_NE(Row(summary, "gamma").find("cannot open the file"),
             std::string::npos);
   // The phantom's tags lie on a mid-wall surface, whose enclosed volume
@@ -73,15 +73,15 @@ TEST(CliBatchTest, FitsInParallelRecordsFailuresAndResumes) {
   std::istringstream alpha(Row(summary, "alpha"));
   std::vector<std::string> fields;
   for (std::string f; std::getline(alpha, f, ',');) fields.push_back(f);
-  ASSERT_GE(fields.size(), 14u);
-  EXPECT_EQ(fields[4], "midwall");
-  EXPECT_EQ(fields[7], "2");  // es_frame
+  ASSERT_GE(fields.size(), 15u);
+  EXPECT_EQ(fields[5], "midwall");
+  EXPECT_EQ(fields[8], "2");  // es_frame
   const double fraction =
-      1.0 - std::stod(fields[6]) / std::stod(fields[5]);  // ES / ED volume.
+      1.0 - std::stod(fields[7]) / std::stod(fields[6]);  // ES / ED volume.
   EXPECT_GT(fraction, 0.2);
   EXPECT_LT(fraction, 0.5);
-  EXPECT_EQ(fields[8], "");              // ejection_fraction
-  EXPECT_LT(std::stod(fields[3]), 1.5);  // max RMS, mm
+  EXPECT_EQ(fields[9], "");              // ejection_fraction
+  EXPECT_LT(std::stod(fields[4]), 1.5);  // max RMS, mm
 
   // Resume: the done cases are skipped; the repaired one is fitted.
   const auto written = fs::last_write_time(out + "/alpha/fit.json");
@@ -109,7 +109,7 @@ TEST(CliBatchTest, ShardsSplitTheManifestAndTheSummaryCoversAll) {
   EXPECT_EQ(Lines(run.output, "[1/1] beta: done"), 1) << run.output;
   EXPECT_FALSE(fs::exists(out + "/alpha"));
   EXPECT_EQ(Row(ReadText(out + "/summary.csv"), "alpha"),
-            "alpha,pending,,,,,,,,,,,,,,,");
+            "alpha,pending" + std::string(17, ','));
   run = RunPfdm("batch --manifest " + dir + "/cases.csv --out " + out +
                 " --shard 0/2");
   EXPECT_EQ(run.exit_code, 0) << run.error;
@@ -158,11 +158,11 @@ TEST(CliBatchTest, OneBrokenCaseCostsNeitherTheOthersNorTheSummary) {
                   "] alpha: FAILED: " + out + "/alpha: cannot create folder"),
             1)
       << run.output;
-  EXPECT_EQ(Lines(run.output, "] beta: done, 2 frames"), 1) << run.output;
-  EXPECT_EQ(Lines(run.output, "] gamma: done, 2 frames"), 1) << run.output;
+  EXPECT_EQ(Lines(run.output, "] beta: done, ok, 2 frames"), 1) << run.output;
+  EXPECT_EQ(Lines(run.output, "] gamma: done, ok, 2 frames"), 1) << run.output;
   const std::string summary = ReadText(out + "/summary.csv");
   EXPECT_EQ(Row(summary, "alpha").rfind("alpha,pending,", 0), 0u) << summary;
-  EXPECT_EQ(Row(summary, "beta").rfind("beta,done,2,", 0), 0u) << summary;
+  EXPECT_EQ(Row(summary, "beta").rfind("beta,done,ok,2,", 0), 0u) << summary;
   EXPECT_EQ(ReadText(out + "/alpha"), "a plain file");
 
   // A fit.json spoilt after the fit: the summary says so, the rest stands.

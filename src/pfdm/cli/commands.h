@@ -16,6 +16,12 @@ DECLARE_int32(threads);
 
 namespace pfdm {
 
+// Exit codes: 0 done (warnings included, said on stderr), 1 an error (bad
+// input: nothing written), 2 a usage error, kExitImplausible a fit done and
+// written whose verdict failed (util/verdict.h): the numbers are not to be
+// used.
+constexpr int kExitImplausible = 3;
+
 // Each returns the exit code; bad input throws InputError.
 int RunFit();
 int RunSimulate();

@@ -7,8 +7,47 @@
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/verdict.h"
 
 namespace pfdm {
+
+namespace {
+
+// One stdout line per frame with its quality; the reasons of every frame
+// that is not ok on stderr, and what the whole fit amounts to.  Returns
+// the exit code: kExitImplausible when a frame failed.
+int ReportQuality(const SequenceFit& fit, const FitAnalysis& analysis) {
+  int warnings = 0, failures = 0;
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    const FrameFit& frame = fit.frames[t];
+    const Verdict& verdict = analysis.verdicts[t];
+    std::printf("frame %3d  points %5zu  rms %.3f mm  max %.3f mm  %s%s  %s\n",
+                frame.frame, frame.residuals.size(), frame.rms_mm,
+                frame.max_distance_mm, frame.termination.c_str(),
+                UnsettledNote(frame).c_str(), QualityName(verdict.quality()));
+    if (verdict.quality() == Quality::kOk) continue;
+    std::fprintf(stderr, "pfdm: frame %d: %s\n", frame.frame,
+                 verdict.Summary().c_str());
+    warnings += verdict.quality() == Quality::kWarning;
+    failures += verdict.quality() == Quality::kFailed;
+  }
+  if (failures > 0) {
+    std::fprintf(stderr,
+                 "pfdm: the fit is implausible: %d of %zu frames failed (exit "
+                 "%d; outputs written, fit.json says why)\n",
+                 failures, fit.frames.size(), kExitImplausible);
+    return kExitImplausible;
+  }
+  if (warnings > 0) {
+    std::fprintf(stderr,
+                 "pfdm: %d of %zu frames with warnings (fit.json's quality "
+                 "says why)\n",
+                 warnings, fit.frames.size());
+  }
+  return 0;
+}
+
+}  // namespace
 
 int RunFit() {
   if (FLAGS_out.empty()) throw InputError("fit needs --out DIR");
@@ -24,20 +63,16 @@ int RunFit() {
   const SequenceFit fit = FitSequence(points, config, options);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
-  WriteFitOutputs(FLAGS_out, points, fit,
-                  AnalyzeFit(fit, BasePlanesFromFlags(FLAGS_points)), options,
-                  vtk_format, &plots);
-  for (const FrameFit& frame : fit.frames) {
-    std::printf("frame %3d  points %5zu  rms %.3f mm  max %.3f mm  %s%s\n",
-                frame.frame, frame.residuals.size(), frame.rms_mm,
-                frame.max_distance_mm, frame.termination.c_str(),
-                UnsettledNote(frame).c_str());
-  }
+  const FitAnalysis analysis =
+      AnalyzeFit(fit, BasePlanesFromFlags(FLAGS_points));
+  WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format,
+                  &plots);
+  const int exit_code = ReportQuality(fit, analysis);
   std::printf(
       "wrote %s/fit.json, parameters.csv, parameters.svg, report.html, "
       "frame_*.vtk, frame_*.vtp, fit.pvd\n",
       FLAGS_out.c_str());
-  return 0;
+  return exit_code;
 }
 
 }  // namespace pfdm

@@ -8,6 +8,7 @@
 #include "pfdm/io/fit_output.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
+#include "pfdm/util/verdict.h"
 
 namespace pfdm {
 namespace {
@@ -59,6 +60,18 @@ constexpr const char* kWallDefinition =
     "the ten contraction rings, and wall_thickening_percent the mean of "
     "100 (T / T0 - 1) over them (per segment: regions' "
     "thickening_percent).";
+
+constexpr const char* kQualityDefinition =
+    "each frame's quality is the worst of its reasons' severities: ok (no "
+    "reason), warning (a number may be off: read the reasons) or failed "
+    "(the fit is implausible; pfdm exits 3). Reasons measure one thing "
+    "against a stated bound: the solver's termination, closest points still "
+    "moving, the RMS against the other frames and the data's size, the "
+    "regularizer's share of the final cost, shape functions at their "
+    "bounds, empty knot spans, a fit that never left its start, flat data, "
+    "and the clinical numbers against what a heart in mm can have (volume, "
+    "mass, the myocardium's volume, motion between frames, ejection "
+    "fraction): docs/verdict.md";
 
 constexpr const char* kRegionsConvention =
     "AHA-style segments: thirds of frame 0's axis from the base rim to the "
@@ -228,11 +241,34 @@ json FrameClinical(const ClinicalSummary& summary, const GlobalStrain& strain,
   return clinical;
 }
 
-// One frame's fit errors, solve, volume (under volume_key, named after the
-// surface measured), pose and clinical numbers.
-json FrameEntry(const FrameFit& frame, const ClinicalSummary& summary,
-                const GlobalStrain& strain, const std::string& volume_key,
-                bool solid) {
+json ReasonsJson(const Verdict& verdict) {
+  json reasons = json::array();
+  for (const VerdictReason& reason : verdict.reasons()) {
+    reasons.push_back({{"severity", QualityName(reason.severity)},
+                       {"code", reason.code},
+                       {"text", reason.text}});
+  }
+  return reasons;
+}
+
+// How many frames got each quality, and the worst.
+json QualitySection(const FitAnalysis& analysis) {
+  int count[3] = {0, 0, 0};
+  for (const Verdict& verdict : analysis.verdicts) {
+    ++count[static_cast<int>(verdict.quality())];
+  }
+  return {{"overall", QualityName(WorstQuality(analysis.verdicts))},
+          {"frames_ok", count[0]},
+          {"frames_warning", count[1]},
+          {"frames_failed", count[2]},
+          {"definition", kQualityDefinition}};
+}
+
+// One frame's fit errors, solve, verdict, volume (under volume_key, named
+// after the surface measured), pose and clinical numbers.
+json FrameEntry(const FrameFit& frame, const Verdict& verdict,
+                const ClinicalSummary& summary, const GlobalStrain& strain,
+                const std::string& volume_key, bool solid) {
   json entry = {{"frame", frame.frame},
                 {"n_points", frame.residuals.size()},
                 {"rms_mm", frame.rms_mm},
@@ -243,6 +279,13 @@ json FrameEntry(const FrameFit& frame, const ClinicalSummary& summary,
                 {"correspondence_unsettled_mm", frame.unsettled_mm},
                 {"solve_seconds", frame.solve_seconds},
                 {"termination", frame.termination},
+                {"final_cost",
+                 {{"data", frame.costs.data},
+                  {"smoothness", frame.costs.smoothness},
+                  {"prior", frame.costs.prior},
+                  {"gauge", frame.costs.gauge}}},
+                {"quality", QualityName(verdict.quality())},
+                {"quality_reasons", ReasonsJson(verdict)},
                 {volume_key, summary.volume_ml}};
   if (solid) {
     entry["myocardial_volume_ml"] = summary.myocardial_volume_ml;
@@ -259,7 +302,10 @@ json Frames(const SequenceFit& fit, const FitAnalysis& analysis) {
   const std::string volume_key = analysis.volume_surface + "_volume_ml";
   json frames = json::array();
   for (size_t t = 0; t < fit.frames.size(); ++t) {
-    frames.push_back(FrameEntry(fit.frames[t], analysis.clinical[t],
+    const Verdict& verdict = t < analysis.verdicts.size()
+                                 ? analysis.verdicts[t]
+                                 : fit.frames[t].verdict;
+    frames.push_back(FrameEntry(fit.frames[t], verdict, analysis.clinical[t],
                                 analysis.strain[t], volume_key, solid));
   }
   return frames;
@@ -358,6 +404,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   json document = {{"pfdm_version", "0.1.0"},
                    {"settings", Settings(points, options)},
                    {"model", ModelSection(fit, analysis)},
+                   {"quality", QualitySection(analysis)},
                    {"gauge_convention", kGaugeConvention},
                    {"clinical_definition", kClinicalDefinition}};
   if (solid) document["wall_definition"] = kWallDefinition;

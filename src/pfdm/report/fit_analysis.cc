@@ -1,6 +1,7 @@
 #include "pfdm/report/fit_analysis.h"
 
 #include "pfdm/model/model_surface.h"
+#include "pfdm/report/plausibility.h"
 
 namespace pfdm {
 
@@ -35,6 +36,12 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
     }
   }
   analysis.ejection_fraction = EjectionFractionOf(analysis.clinical);
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    analysis.verdicts.push_back(fit.frames[t].verdict);
+    analysis.verdicts.back().Add(JudgeClinical(analysis.clinical,
+                                               analysis.ejection_fraction,
+                                               analysis.volume_surface, t));
+  }
   analysis.layout = layout;
   analysis.regions = Regions(layout);
   const ReferenceSamples reference =

@@ -11,6 +11,7 @@
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
 #include "pfdm/report/wall_motion.h"
+#include "pfdm/util/verdict.h"
 
 namespace pfdm {
 
@@ -27,6 +28,9 @@ struct FitAnalysis {
   // or a surface fitted to endocardial contours), "epicardial" or "midwall"
   // (VolumeSurfaceName).
   std::string volume_surface;
+  // Per frame: the fit's verdict (FrameFit::verdict) and the clinical
+  // numbers' (JudgeClinical).
+  std::vector<Verdict> verdicts;
 };
 
 // "cavity", "epicardial" or "midwall": see FitAnalysis::volume_surface.

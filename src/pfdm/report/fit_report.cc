@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "pfdm/fit/stages/sequence_fit.h"
+#include "pfdm/report/verdict_box.h"
 #include "pfdm/util/markup_escape.h"
+#include "pfdm/util/verdict.h"
 
 namespace pfdm {
 namespace {
@@ -248,7 +250,7 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
     << "<th>net twist &deg;</th><th>apex &deg;</th><th>base &deg;</th>"
     << "<th>torsion &deg;/cm</th><th>radial %</th><th>longitudinal %</th>"
     << "<th>GCS %</th><th>GLS %</th>"
-    << "<th class=\"l\">solver</th></tr>\n";
+    << "<th class=\"l\">solver</th><th class=\"l\">quality</th></tr>\n";
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& f = fit.frames[t];
     const ClinicalSummary& c = analysis.clinical[t];
@@ -271,7 +273,12 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
       << (t < analysis.strain.size() ? Fixed(analysis.strain[t].gls_percent, 1)
                                      : "")
       << "</td><td class=\"l\">"
-      << EscapeMarkup(f.termination + UnsettledNote(f)) << "</td></tr>\n";
+      << EscapeMarkup(f.termination + UnsettledNote(f))
+      << "</td><td class=\"l\">"
+      << (t < analysis.verdicts.size()
+              ? QualityName(analysis.verdicts[t].quality())
+              : "")
+      << "</td></tr>\n";
   }
   h << "</table>\n";
   return h.str();
@@ -361,8 +368,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const std::string& strain_svg,
                           const std::string& bullseye_svg) {
   std::ostringstream h;
-  h << PageHead(points, fit, analysis) << KeyNumbers(fit, analysis)
-    << MeasurementNote(fit, analysis);
+  h << PageHead(points, fit, analysis) << VerdictBoxHtml(fit, analysis)
+    << KeyNumbers(fit, analysis) << MeasurementNote(fit, analysis);
   if (!Tracked(points)) h << kUntrackedNote;
   h << PlotSections(parameters_svg, cycle_svg, strain_svg)
     << FrameTable(fit, analysis) << RegionalSection(fit, analysis, bullseye_svg)

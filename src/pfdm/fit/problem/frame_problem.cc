@@ -117,6 +117,9 @@ class FrameProblem {
   void AddPrior(size_t num_points, const ModelState& prior);
   // Solves with the chosen solver and leaves the solution in the model.
   SolverReport Solve();
+  // Each term's cost at the parameters' current values, the data's as the
+  // rest of the solve's final cost.
+  TermCosts Costs(const SolverReport& report) const;
 
  private:
   static std::unique_ptr<PrecomputedGroups> MakePrecomputed(
@@ -124,6 +127,9 @@ class FrameProblem {
   static ceres::Problem::Options ProblemOptions(PrecomputedGroups* precomputed);
   void AddPointGroup(int k0, std::vector<PointSample> group);
   void AddAxisGauge(double sqrt_weight);
+  // 1/2 the sum of the blocks' squared residuals (no loss: the terms other
+  // than the data have none).
+  double CostOf(const std::vector<ceres::ResidualBlockId>& ids) const;
   double PointsPerKnot(size_t num_points) const {
     return static_cast<double>(num_points) / model_->config.num_knots;
   }
@@ -142,6 +148,9 @@ class FrameProblem {
   ceres::LossFunction* loss_ = MakeLoss(options_);  // Owned by problem_.
   // The axis gauge's partial sums, parameter blocks of the problem.
   std::optional<AxisGaugeChain> axis_gauge_;
+  // The residual blocks of each term but the data (null: a constant left
+  // out, see FrameBlocks::AddResidual).
+  std::vector<ceres::ResidualBlockId> smoothness_ids_, prior_ids_, gauge_ids_;
 };
 
 std::unique_ptr<PrecomputedGroups> FrameProblem::MakePrecomputed(
@@ -228,8 +237,9 @@ void FrameProblem::AddSmoothness(size_t num_points) {
       std::sqrt(options_.smoothness_weight * PointsPerKnot(num_points));
   const FunctionValues knot_scales = KnotScales();
   for (int k = 1; k + 1 < model_->config.num_knots; ++k) {
-    blocks_.AddResidual(SmoothnessResidual::Create(sqrt_weight, knot_scales),
-                        nullptr, false, {k - 1, k, k + 1});
+    smoothness_ids_.push_back(blocks_.AddResidual(
+        SmoothnessResidual::Create(sqrt_weight, knot_scales), nullptr, false,
+        {k - 1, k, k + 1}));
   }
 }
 
@@ -250,17 +260,18 @@ void FrameProblem::AddGauges(
   const ModelConfig& config = model_->config;
   const double sqrt_weight = kGaugeWeight * std::sqrt(num_points);
   if (kind_ != FrameKind::kReference) {
-    problem_.AddResidualBlock(
+    gauge_ids_.push_back(problem_.AddResidualBlock(
         SpinGaugeResidual::Create(sqrt_weight, SpinGaugeLength(*model_),
                                   reference_quaternion),
-        nullptr, model_->state.quaternion.data());
+        nullptr, model_->state.quaternion.data()));
   }
   if (kind_ == FrameKind::kUntracked &&
       config.modes[kA3] == FunctionMode::kFree) {
     for (int k = 0; k + 1 < config.num_knots; ++k) {
-      blocks_.AddResidual(MeridianGaugeResidual::Create(
-                              sqrt_weight, model_->state.globals[kA0]),
-                          nullptr, false, {k, k + 1});
+      gauge_ids_.push_back(
+          blocks_.AddResidual(MeridianGaugeResidual::Create(
+                                  sqrt_weight, model_->state.globals[kA0]),
+                              nullptr, false, {k, k + 1}));
     }
   }
   if (config.modes[kE1o] == FunctionMode::kFree) AddAxisGauge(sqrt_weight);
@@ -276,16 +287,17 @@ void FrameProblem::AddAxisGauge(double sqrt_weight) {
     }
     axis_gauge_.emplace(knots, sqrt_weight);
     for (int k = 0; k < num_knots; ++k) {
-      blocks_.AddResidual(axis_gauge_->Link(k), axis_gauge_->LinkSums(k), {k});
+      gauge_ids_.push_back(blocks_.AddResidual(axis_gauge_->Link(k),
+                                               axis_gauge_->LinkSums(k), {k}));
     }
-    problem_.AddResidualBlock(axis_gauge_->End(), nullptr,
-                              axis_gauge_->sum(num_knots - 1));
+    gauge_ids_.push_back(problem_.AddResidualBlock(
+        axis_gauge_->End(), nullptr, axis_gauge_->sum(num_knots - 1)));
     return;
   }
   std::vector<int> knots;
   for (int k = 0; k < num_knots; ++k) knots.push_back(k);
-  blocks_.AddResidual(new AxisGaugeResidual(num_knots, sqrt_weight), nullptr,
-                      false, knots);
+  gauge_ids_.push_back(blocks_.AddResidual(
+      new AxisGaugeResidual(num_knots, sqrt_weight), nullptr, false, knots));
 }
 
 void FrameProblem::AddPrior(size_t num_points, const ModelState& prior) {
@@ -298,16 +310,16 @@ void FrameProblem::AddPrior(size_t num_points, const ModelState& prior) {
       std::sqrt(prior_weight * PointsPerKnot(num_points));
   const FunctionValues knot_scales = KnotScales();
   for (int k = 0; k < config.num_knots; ++k) {
-    blocks_.AddResidual(
+    prior_ids_.push_back(blocks_.AddResidual(
         PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
-        nullptr, false, {k});
+        nullptr, false, {k}));
   }
-  blocks_.AddResidual(
+  prior_ids_.push_back(blocks_.AddResidual(
       PriorResidual::Create(
           std::sqrt(prior_weight * num_points),
           FunctionScales(*model_, HeldEntries(config, kind_, kGlobalsBlock)),
           prior.globals),
-      nullptr, false, {kGlobalsBlock});
+      nullptr, false, {kGlobalsBlock}));
 }
 
 SolverReport FrameProblem::Solve() {
@@ -332,6 +344,34 @@ SolverReport FrameProblem::Solve() {
   return report;
 }
 
+TermCosts FrameProblem::Costs(const SolverReport& report) const {
+  TermCosts costs;
+  costs.smoothness = CostOf(smoothness_ids_);
+  costs.prior = CostOf(prior_ids_);
+  costs.gauge = CostOf(gauge_ids_);
+  const double total = report.trace.empty() ? 0.0 : report.trace.back().cost;
+  costs.data =
+      std::max(0.0, total - costs.smoothness - costs.prior - costs.gauge);
+  return costs;
+}
+
+double FrameProblem::CostOf(
+    const std::vector<ceres::ResidualBlockId>& ids) const {
+  double cost = 0.0;
+  std::vector<double*> parameters;
+  for (ceres::ResidualBlockId id : ids) {
+    if (id == nullptr) continue;
+    const ceres::CostFunction* function =
+        problem_.GetCostFunctionForResidualBlock(id);
+    problem_.GetParameterBlocksForResidualBlock(id, &parameters);
+    Eigen::VectorXd residuals(function->num_residuals());
+    if (function->Evaluate(parameters.data(), residuals.data(), nullptr)) {
+      cost += 0.5 * residuals.squaredNorm();
+    }
+  }
+  return cost;
+}
+
 }  // namespace
 
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
@@ -340,7 +380,8 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         std::optional<double> rim_height, FrameKind kind,
                         const ModelState& prior,
                         const std::array<double, 4>& reference_quaternion,
-                        const FitOptions& options, Model* model) {
+                        const FitOptions& options, Model* model,
+                        TermCosts* costs) {
   CHECK_EQ(normals.size(), points.size());
   FrameProblem problem(kind, options, model);
   problem.AddData(points, material, normals);
@@ -348,7 +389,9 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   if (rim_height) problem.AddRim(points.size(), *rim_height);
   problem.AddGauges(points.size(), reference_quaternion);
   problem.AddPrior(points.size(), prior);
-  return problem.Solve();
+  SolverReport report = problem.Solve();
+  if (costs != nullptr) *costs = problem.Costs(report);
+  return report;
 }
 
 }  // namespace pfdm

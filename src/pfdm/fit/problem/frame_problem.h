@@ -17,6 +17,17 @@
 
 namespace pfdm {
 
+// Each term's share of a frame problem's cost at the solution (1/2 the sum
+// of its squared residuals): what the data say against what the
+// regularizer and the gauge impose.
+struct TermCosts {
+  double data = 0.0;  // With the base rim's.
+  double smoothness = 0.0;
+  double prior = 0.0;
+  double gauge = 0.0;
+  double Total() const { return data + smoothness + prior + gauge; }
+};
+
 // A point with a non-zero normal (unit, world frame) pulls along it
 // (point-to-plane), the others with their whole distance; sliding points
 // take theirs from the search that found their material points on *model,
@@ -26,14 +37,15 @@ namespace pfdm {
 // toward (the previous frame's; frame 0's for untracked frames, with
 // FitOptions::untracked_prior_weight); reference_quaternion frame 0's pose,
 // which later frames may not spin away from (SpinGaugeResidual).  Leaves the
-// solution in *model.
+// solution in *model and, when given, each term's cost there in *costs.
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<MaterialPoint>& material,
                         const std::vector<Eigen::Vector3d>& normals,
                         std::optional<double> rim_height, FrameKind kind,
                         const ModelState& prior,
                         const std::array<double, 4>& reference_quaternion,
-                        const FitOptions& options, Model* model);
+                        const FitOptions& options, Model* model,
+                        TermCosts* costs = nullptr);
 
 }  // namespace pfdm
 

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "pfdm/fit/stages/frame_fit.h"
+#include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/fit/stages/start.h"
 #include "pfdm/fit/stages/wall_stage.h"
 
@@ -26,6 +27,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
   if (result.config.Solid() && start.has_tags) {
     TakeOutTagNoise(sequence, start.frames_per_id, &result);
   }
+  JudgeFrames(sequence, options, &result);
   return result;
 }
 

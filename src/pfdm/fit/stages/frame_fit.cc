@@ -69,6 +69,7 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   const FramePoints points =
       MakeFramePoints(frame, reference, frames_per_id,
                       carried->tracked_material, &fit.material);
+  fit.kind = points.kind;
   const ModelState& prior = points.kind == FrameKind::kUntracked
                                 ? carried->reference
                                 : carried->previous;

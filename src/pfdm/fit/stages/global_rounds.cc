@@ -124,7 +124,7 @@ SolverReport GlobalRounds::SolveRound(TrajectoryRecorder* recorder) {
   }
   SolverReport report = SolveFrame(
       frame_.positions, fit_->material, normals_, rim_height, frame_.kind,
-      prior_, reference_quaternion_, round_options, model_);
+      prior_, reference_quaternion_, round_options, model_, &fit_->costs);
   normals_current_ = false;
   AddSolverCounts(report, fit_);
   ++fit_->correspondence_rounds;

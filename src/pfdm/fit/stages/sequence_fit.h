@@ -8,9 +8,11 @@
 
 #include "Eigen/Core"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/model/model.h"
 #include "pfdm/solvers/solver.h"
 #include "pfdm/util/point_data.h"
+#include "pfdm/util/verdict.h"
 
 namespace pfdm {
 
@@ -23,6 +25,9 @@ struct TrajectoryPoint {
 
 struct FrameFit {
   int frame = 0;
+  // Frame 0, a frame whose tags keep earlier material points, or one of
+  // contours only (gauge.h).
+  FrameKind kind = FrameKind::kReference;
   ModelState state;
   std::vector<MaterialPoint> material;     // One per data point.
   std::vector<Eigen::Vector3d> residuals;  // Model minus data, mm.
@@ -48,6 +53,11 @@ struct FrameFit {
   double local_seconds = 0.0;
   int local_iterations = 0;
   std::string termination;
+  // Each term's cost at the last global solve's solution.
+  TermCosts costs;
+  // What the fit itself sees of the frame (frame_verdict.h); the analysis
+  // adds what it sees of the clinical numbers (report/plausibility.h).
+  Verdict verdict;
   // Every solver iteration of every correspondence round, numbered on.
   std::vector<SolverTracePoint> trace;
   std::vector<TrajectoryPoint> trajectory;  // See trajectory_per_decade.

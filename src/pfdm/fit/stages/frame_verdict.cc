@@ -1,0 +1,250 @@
+#include "pfdm/fit/stages/frame_verdict.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "Eigen/Dense"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/problem/frame_problem.h"
+
+namespace pfdm {
+namespace {
+
+std::string Format(const char* format, double a, double b = 0.0,
+                   double c = 0.0) {
+  char text[256];
+  std::snprintf(text, sizeof(text), format, a, b, c);
+  return text;
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const size_t middle = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + middle, values.end());
+  return values[middle];
+}
+
+// The principal standard deviations of the points about their centroid,
+// ascending, mm.
+Eigen::Vector3d PrincipalSpreads(const Frame& frame) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const DataPoint& p : frame.points) mean += p.position;
+  mean /= static_cast<double>(frame.points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const DataPoint& p : frame.points) {
+    covariance += (p.position - mean) * (p.position - mean).transpose();
+  }
+  covariance /= static_cast<double>(frame.points.size());
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance)
+      .eigenvalues()
+      .cwiseMax(0.0)
+      .cwiseSqrt();
+}
+
+void JudgeSolver(const FrameFit& frame, Verdict* verdict) {
+  if (frame.termination == "CONVERGENCE" || frame.termination == "REST") {
+    return;
+  }
+  verdict->Warn("solver", "the solver stopped without converging (" +
+                              frame.termination + ")");
+}
+
+// A search that moved points by less than the residuals' own scale
+// changes nothing the fit reports; by more, the fit rests on
+// correspondences that have not settled.
+void JudgeUnsettled(const FrameFit& frame, double median_rms,
+                    Verdict* verdict) {
+  if (frame.unsettled_mm <= median_rms) return;
+  const std::string text = Format(
+      "closest points still moving (%.2f mm in the last search, the frames' "
+      "median RMS %.2f mm)",
+      frame.unsettled_mm, median_rms);
+  if (frame.unsettled_mm > kUnsettledFailMm) {
+    verdict->Fail("unsettled", text);
+  } else {
+    verdict->Warn("unsettled", text);
+  }
+}
+
+// The RMS against the other frames' and against the data's size: the
+// radius (RMS distance from the centroid) of the frame's points.
+void JudgeRms(const FrameFit& frame, double median_rms, double radius,
+              Verdict* verdict) {
+  if (frame.rms_mm > kRmsFramesRatio * median_rms &&
+      frame.rms_mm > median_rms + kRmsFramesMinMm) {
+    verdict->Warn("rms_frames",
+                  Format("RMS %.2f mm, %.1f times the frames' median %.2f mm",
+                         frame.rms_mm, frame.rms_mm / median_rms, median_rms));
+  }
+  const double share = frame.rms_mm / radius;
+  if (share <= kRmsSizeWarn) return;
+  const std::string text = Format(
+      "RMS %.2f mm is %.0f %% of the data's radius (%.1f mm): the model does "
+      "not describe these points",
+      frame.rms_mm, 100.0 * share, radius);
+  if (share > kRmsSizeFail) {
+    verdict->Fail("rms_size", text);
+  } else {
+    verdict->Warn("rms_size", text);
+  }
+}
+
+// How far the data would take the model without the prior: one solver
+// step from the frame's global solution with the prior's weight 0, the
+// RMS of the points' model positions' move.  At the solution the data's
+// pull balances the prior's, so the step is what the prior holds back.
+// Only where tags say where material goes (frame 0 and tracked frames):
+// contours fix the surface, not where its material points are, and what
+// they leave free is by design the prior's (frame 0's state).
+double PriorPullMm(const Frame& points, const FrameFit& frame,
+                   const ModelConfig& config,
+                   const std::array<double, 4>& reference_quaternion,
+                   const FitOptions& options) {
+  const Model solution{config, frame.state};
+  Model probe = solution;
+  probe.state.local = LocalField();
+  FitOptions step = options;
+  step.prior_weight = 0.0;
+  step.solver.max_iterations = 1;
+  step.solver.on_step = nullptr;
+  std::vector<Eigen::Vector3d> positions;
+  for (const DataPoint& p : points.points) positions.push_back(p.position);
+  const std::vector<Eigen::Vector3d> normals(positions.size(),
+                                             Eigen::Vector3d::Zero());
+  SolveFrame(positions, frame.material, normals, std::nullopt, frame.kind,
+             frame.state, reference_quaternion, step, &probe);
+  Model global = solution;
+  global.state.local = LocalField();
+  const std::vector<Eigen::Vector3d> before =
+      WorldPoints(global, frame.material);
+  const std::vector<Eigen::Vector3d> after = WorldPoints(probe, frame.material);
+  double sum = 0.0;
+  for (size_t i = 0; i < before.size(); ++i) {
+    sum += (after[i] - before[i]).squaredNorm();
+  }
+  return std::sqrt(sum / before.size());
+}
+
+void JudgePrior(double pull_mm, const FrameFit& frame, Verdict* verdict) {
+  const double share = pull_mm / frame.rms_mm;
+  if (!(share > kPriorPullWarn)) return;
+  const std::string text = Format(
+      "without the prior (--prior) one step would move the points by "
+      "%.2f mm (RMS), %.0f %% of the frame's RMS: the prior, not the "
+      "data, holds the model",
+      pull_mm, 100.0 * share);
+  if (share > kPriorPullFail) {
+    verdict->Fail("prior", text);
+  } else {
+    verdict->Warn("prior", text);
+  }
+}
+
+// a1..a3 and the exponents at the bounds FrameBlocks gives them.
+void JudgeBounds(const ModelConfig& config, const FrameFit& frame,
+                 Verdict* verdict) {
+  struct Bound {
+    int function;
+    const char* name;
+    double lower, upper;
+  };
+  const Bound bounds[] = {{kA1, "a1", 1e-3, 1.0},
+                          {kA2, "a2", 1e-3, 1.0},
+                          {kA3, "a3", 1e-3, 1.0},
+                          {kEps1, "eps1", 0.1, 4.0},
+                          {kEps2, "eps2", 0.1, 4.0}};
+  for (const Bound& bound : bounds) {
+    if (config.modes[bound.function] != FunctionMode::kFree) continue;
+    int pressed = 0;
+    for (const FunctionValues& knot : frame.state.knots) {
+      const double value = knot[bound.function];
+      if (value <= bound.lower * (1.0 + 1e-6) ||
+          value >= bound.upper * (1.0 - 1e-6)) {
+        ++pressed;
+      }
+    }
+    if (pressed == 0) continue;
+    verdict->Warn("at_bound",
+                  std::string(bound.name) +
+                      Format(" at its bound (%g or %g) at %.0f knots",
+                             bound.lower, bound.upper, pressed));
+  }
+}
+
+// Knots between the lowest and the highest data point's with no point in
+// the span on either side: their values are the regularizer's, not the
+// data's.  (A span alone may fall between two short-axis slices.)
+void JudgeRings(const ModelConfig& config, const FrameFit& frame,
+                Verdict* verdict) {
+  const KnotGrid grid = config.Grid();
+  std::vector<int> count(config.num_knots - 1, 0);
+  for (const MaterialPoint& m : frame.material) ++count[grid.Span(m.u).k0];
+  int first = 0, last = static_cast<int>(count.size()) - 1;
+  while (first <= last && count[first] == 0) ++first;
+  while (last >= first && count[last] == 0) --last;
+  int empty = 0;
+  for (int k = first + 1; k <= last; ++k) {
+    empty += count[k - 1] < kMinRingPoints && count[k] < kMinRingPoints;
+  }
+  if (empty == 0) return;
+  verdict->Warn("sparse_rings",
+                Format("%.0f knots inside the data have fewer than %.0f "
+                       "points in the spans on either side",
+                       empty, kMinRingPoints));
+}
+
+// Frame 0 starts from the initialized model, far from the data: a solve
+// that leaves its cost where it was took no step.
+void JudgeMoved(const FrameFit& frame, Verdict* verdict) {
+  if (frame.trace.empty()) return;
+  const double first = frame.trace.front().cost;
+  const double last = frame.trace.back().cost;
+  if (frame.iterations > 0 && last < 0.999 * first) return;
+  verdict->Fail("not_moved",
+                Format("frame 0's fit never left its start (cost %.4g to "
+                       "%.4g in %.0f iterations)",
+                       first, last, frame.iterations));
+}
+
+void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
+  if (spreads[0] >= kFlatDataRatio * spreads[2]) return;
+  verdict->Fail("flat_data",
+                Format("the points lie nearly in a plane (%.3g mm thick "
+                       "against %.3g mm across): no ventricle",
+                       spreads[0], spreads[2]));
+}
+
+}  // namespace
+
+void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
+                 SequenceFit* fit) {
+  bool tags = false;
+  for (const FrameFit& frame : fit->frames) {
+    tags = tags || frame.kind == FrameKind::kTracked;
+  }
+  std::vector<double> rms;
+  for (const FrameFit& frame : fit->frames) rms.push_back(frame.rms_mm);
+  const double median_rms = Median(rms);
+  for (size_t t = 0; t < fit->frames.size(); ++t) {
+    FrameFit& frame = fit->frames[t];
+    const Eigen::Vector3d spreads = PrincipalSpreads(sequence.frames[t]);
+    JudgeSolver(frame, &frame.verdict);
+    JudgeUnsettled(frame, median_rms, &frame.verdict);
+    JudgeRms(frame, median_rms, spreads.norm(), &frame.verdict);
+    if (tags && frame.kind != FrameKind::kUntracked &&
+        options.prior_weight > 0) {
+      JudgePrior(PriorPullMm(sequence.frames[t], frame, fit->config,
+                             fit->frames[0].state.quaternion, options),
+                 frame, &frame.verdict);
+    }
+    JudgeBounds(fit->config, frame, &frame.verdict);
+    JudgeRings(fit->config, frame, &frame.verdict);
+    if (t == 0) JudgeMoved(frame, &frame.verdict);
+    JudgeShape(spreads, &frame.verdict);
+  }
+}
+
+}  // namespace pfdm

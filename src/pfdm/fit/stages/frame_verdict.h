@@ -1,0 +1,45 @@
+// The fit's verdict on each frame (FrameFit::verdict): what the solve
+// itself shows that the solver's termination does not.  Each reason
+// measures one thing against a stated bound (docs/verdict.md):
+//   solver       the solver stopped without converging;
+//   unsettled    closest points still moving, when the rounds ran out, by
+//                more than the frames' median RMS (the data's noise as the
+//                fit sees it);
+//   rms_frames   RMS far above the sequence's other frames;
+//   rms_size     RMS a large share of the data's own size;
+//   prior        the prior holding the model where the data of tags would
+//                move it: one solver step from the solution without the
+//                prior moves the points by a share of the frame's RMS;
+//   at_bound     a shape function pressed against its bound;
+//   sparse_rings knot spans inside the data with almost no points;
+//   not_moved    frame 0's solve never left its start;
+//   flat_data    points nearly in a plane, no ventricle.
+// The clinical numbers' plausibility is the analysis' (report/).
+#ifndef PFDM_FIT_STAGES_FRAME_VERDICT_H_
+#define PFDM_FIT_STAGES_FRAME_VERDICT_H_
+
+#include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/sequence_fit.h"
+#include "pfdm/util/point_data.h"
+
+namespace pfdm {
+
+// Warning above, failed above the second bound.
+constexpr double kUnsettledFailMm = 10.0;
+constexpr double kRmsFramesRatio = 3.0;  // Times the frames' median RMS ...
+constexpr double kRmsFramesMinMm = 1.0;  // ... and this much above it.
+constexpr double kRmsSizeWarn = 0.06, kRmsSizeFail = 0.12;
+// The step without the prior, RMS over the points, as a share of the
+// frame's RMS.
+constexpr double kPriorPullWarn = 0.25, kPriorPullFail = 1.0;
+constexpr int kMinRingPoints = 3;
+constexpr double kFlatDataRatio = 0.02;
+
+// Adds the fit's reasons to every frame's verdict.
+// `options` as the fit had them.
+void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
+                 SequenceFit* fit);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_STAGES_FRAME_VERDICT_H_

@@ -1,0 +1,141 @@
+#include "pfdm/fit/stages/frame_verdict.h"
+
+#include <random>
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/testing/test_models.h"
+
+namespace pfdm {
+namespace {
+
+const Phantom& SmallPhantom() {
+  static const Phantom* phantom = new Phantom(MakeTestPhantom(1000, 3));
+  return *phantom;
+}
+
+// A fit of the phantom, its verdicts cleared, for the reasons to be judged
+// one at a time; the prior's step is left out (options without a prior),
+// since the changes below move the state away from its solution.
+SequenceFit Judged(const std::function<void(SequenceFit*)>& change) {
+  static const SequenceFit* fit = new SequenceFit(
+      FitSequence(SmallPhantom().points, ModelConfig::Paper(17), FitOptions()));
+  SequenceFit copy = *fit;
+  for (FrameFit& frame : copy.frames) frame.verdict = Verdict();
+  change(&copy);
+  FitOptions no_prior;
+  no_prior.prior_weight = 0.0;
+  JudgeFrames(SmallPhantom().points, no_prior, &copy);
+  return copy;
+}
+
+std::string Codes(const FrameFit& frame) {
+  std::string codes;
+  for (const VerdictReason& reason : frame.verdict.reasons()) {
+    codes += (codes.empty() ? "" : ",") + reason.code + "/" +
+             QualityName(reason.severity);
+  }
+  return codes;
+}
+
+// The project's phantom with its 0.5 mm noise: no reason in any frame.
+TEST(FrameVerdictTest, ACleanFitIsOk) {
+  const SequenceFit fit =
+      FitSequence(SmallPhantom().points, ModelConfig::Paper(17), FitOptions());
+  for (const FrameFit& frame : fit.frames) {
+    EXPECT_EQ(frame.verdict.quality(), Quality::kOk) << Codes(frame);
+  }
+}
+
+// Points moving by less than the frames' median RMS (about 1 mm) in the
+// last search change nothing the fit reports.
+TEST(FrameVerdictTest, SaysWhenTheSolverOrTheRoundsDidNotFinish) {
+  const SequenceFit fit = Judged([](SequenceFit* f) {
+    f->frames[0].unsettled_mm = 0.4;
+    f->frames[1].termination = "NO_CONVERGENCE";
+    f->frames[1].unsettled_mm = 2.5;
+    f->frames[2].unsettled_mm = 22.6;
+  });
+  EXPECT_EQ(Codes(fit.frames[0]), "");
+  EXPECT_EQ(Codes(fit.frames[1]), "solver/warning,unsettled/warning");
+  EXPECT_EQ(Codes(fit.frames[2]), "unsettled/failed");
+  EXPECT_EQ(fit.frames[2].verdict.reasons()[0].text.rfind(
+                "closest points still moving (22.60 mm in the last search, "
+                "the frames' median RMS ",
+                0),
+            0u)
+      << fit.frames[2].verdict.reasons()[0].text;
+}
+
+// The phantom's radius (RMS distance from the centroid) is about 40 mm: 8
+// mm is a fifth of it, 3.5 mm 9 %, and either several times the other
+// frames' RMS (about 1 mm).
+TEST(FrameVerdictTest, WeighsTheRmsAgainstTheFramesAndTheDataSize) {
+  const SequenceFit fit =
+      Judged([](SequenceFit* f) { f->frames[0].rms_mm = 8.0; });
+  EXPECT_EQ(Codes(fit.frames[0]), "rms_frames/warning,rms_size/failed");
+  EXPECT_EQ(Codes(fit.frames[1]), "");
+  const SequenceFit warned =
+      Judged([](SequenceFit* f) { f->frames[0].rms_mm = 3.5; });
+  EXPECT_EQ(Codes(warned.frames[0]), "rms_frames/warning,rms_size/warning");
+}
+
+// --prior 1 (1,000 times the default) holds every frame near the one
+// before: one step without it moves the points by more than the frame's
+// RMS once the motion adds up.  At the default no frame's step comes near.
+TEST(FrameVerdictTest, NamesAPriorThatHoldsTheModel) {
+  FitOptions options;
+  options.prior_weight = 1.0;
+  const SequenceFit fit =
+      FitSequence(SmallPhantom().points, ModelConfig::Paper(17), options);
+  for (int t = 0; t < 3; ++t) {
+    EXPECT_TRUE(fit.frames[t].verdict.Has("prior")) << Codes(fit.frames[t]);
+  }
+  EXPECT_EQ(fit.frames[2].verdict.quality(), Quality::kFailed)
+      << Codes(fit.frames[2]);
+  EXPECT_EQ(fit.frames[2].verdict.reasons().back().text.rfind(
+                "without the prior (--prior) one step would move the points "
+                "by ",
+                0),
+            0u);
+}
+
+TEST(FrameVerdictTest, SaysWhenAShapeFunctionIsAtItsBound) {
+  const SequenceFit fit =
+      Judged([](SequenceFit* f) { f->frames[1].state.knots[3][kA3] = 1.0; });
+  EXPECT_EQ(Codes(fit.frames[1]), "at_bound/warning");
+}
+
+TEST(FrameVerdictTest, SaysWhenKnotSpansInsideTheDataAreEmpty) {
+  const SequenceFit fit = Judged([](SequenceFit* f) {
+    // Every point of frame 1 off the spans 6 to 9 (u ~ -0.5 .. 0).
+    const KnotGrid grid = f->config.Grid();
+    for (MaterialPoint& m : f->frames[1].material) {
+      const int k = grid.Span(m.u).k0;
+      if (k >= 6 && k <= 9) m.u = grid.KnotU(12);
+    }
+  });
+  EXPECT_EQ(Codes(fit.frames[1]), "sparse_rings/warning");
+}
+
+TEST(FrameVerdictTest, FailsAFrameZeroThatNeverMoved) {
+  const SequenceFit fit = Judged([](SequenceFit* f) {
+    f->frames[0].trace = {{0, 0.0, 0.0, 100.0, 1.0}, {1, 0.0, 0.0, 99.99, 1.0}};
+  });
+  EXPECT_EQ(Codes(fit.frames[0]), "not_moved/failed");
+}
+
+TEST(FrameVerdictTest, FailsFlatData) {
+  PointSequence flat = SmallPhantom().points;
+  for (Frame& frame : flat.frames) {
+    for (DataPoint& p : frame.points) p.position.z() *= 1e-3;
+  }
+  SequenceFit fit = Judged([](SequenceFit*) {});
+  for (FrameFit& frame : fit.frames) frame.verdict = Verdict();
+  JudgeFrames(flat, FitOptions(), &fit);
+  EXPECT_TRUE(fit.frames[0].verdict.Has("flat_data"));
+  EXPECT_EQ(fit.frames[0].verdict.quality(), Quality::kFailed);
+}
+
+}  // namespace
+}  // namespace pfdm
