@@ -4,13 +4,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 #include "pfdm/batch/batch_manifest.h"
 #include "pfdm/batch/batch_summary.h"
+#include "pfdm/batch/case_folder.h"
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
@@ -33,49 +32,36 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string ReadWhole(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// A case is done when its fit.json exists (written last), failed when its
-// error.txt does, pending otherwise.
-CaseSummary StatusOf(const BatchCase& c, const std::string& out) {
-  const std::string dir = out + "/" + c.name;
-  CaseSummary summary;
-  summary.name = c.name;
-  if (fs::exists(dir + "/fit.json")) {
-    try {
-      return SummaryFromFitJson(c.name, ReadWhole(dir + "/fit.json"),
-                                dir + "/fit.json");
-    } catch (const InputError& error) {
-      // One unreadable case must not cost the cohort its summary; it is
-      // fitted again by the next run.
-      summary.status = "failed";
-      summary.error = error.what();
-      return summary;
+// The case's error, kept beside its (absent) outputs for the summary of a
+// later run, which retries the case; only in a folder of pfdm's own.
+// Recording it may fail too (a full disk); that must not end the worker,
+// and with it the batch.  Returns the message, with that failure if any.
+std::string RecordFailure(const std::string& dir, std::string message) {
+  try {
+    ClaimCaseFolder(dir);
+    WriteFileAtomically(dir + "/error.txt", message + "\n");
+  } catch (const std::exception& also) {
+    if (message != also.what()) {
+      message += " (and " + std::string(also.what()) + ")";
     }
   }
-  summary.status = "pending";
-  if (fs::exists(dir + "/error.txt")) {
-    summary.status = "failed";
-    summary.error = ReadWhole(dir + "/error.txt");
-    while (!summary.error.empty() && summary.error.back() == '\n') {
-      summary.error.pop_back();
-    }
-  }
-  return summary;
+  return message;
 }
 
 // Fits one case and writes its outputs; returns the progress line.
 std::string RunCase(const BatchCase& c, const std::string& out,
                     const ModelConfig& config, const FitOptions& options) {
   const std::string dir = out + "/" + c.name;
-  if (StatusOf(c, out).status == "done") return "skipped, fit.json exists";
+  if (CaseStatus(dir, c.name).status == "done") {
+    return "skipped, fit.json exists";
+  }
+  // A folder that is not pfdm's fails alone, untouched: its reason is
+  // found again by the summary.
+  const std::string refusal = CaseFolderRefusal(dir);
+  if (!refusal.empty()) return "FAILED: " + refusal;
   const auto start = std::chrono::steady_clock::now();
   try {
+    ClaimCaseFolder(dir);
     CheckFitOutputFolder(dir, c.points);
     const PointSequence points =
         ReadPoints(c.points, FLAGS_format,
@@ -86,23 +72,11 @@ std::string RunCase(const BatchCase& c, const std::string& out,
                     AnalyzeFit(fit, BasePlanesFromFlags(c.points)), options,
                     VtkFormatFromFlags(), &plots);
     fs::remove(dir + "/error.txt");
+    RemoveAbandonedTemporaries(dir, "error.txt");
   } catch (const std::exception& error) {
-    // The case's error stays beside its (absent) outputs for the summary of
-    // a later run, which retries the case.
-    // Recording it may fail too (DIR/<case> a plain file, a full disk);
-    // that must not end the worker, and with it the batch.
-    std::string message = error.what();
-    try {
-      EnsureDirectory(dir);
-      WriteFileAtomically(dir + "/error.txt", message + "\n");
-    } catch (const std::exception& also) {
-      if (message != also.what()) {
-        message += " (and " + std::string(also.what()) + ")";
-      }
-    }
-    return "FAILED: " + message;
+    return "FAILED: " + RecordFailure(dir, error.what());
   }
-  const CaseSummary s = StatusOf(c, out);
+  const CaseSummary s = CaseStatus(dir, c.name);
   char line[200];
   std::snprintf(
       line, sizeof(line),
@@ -160,7 +134,7 @@ int RunBatch() {
   std::vector<CaseSummary> summary;
   int done = 0, warned = 0, implausible = 0;
   for (const BatchCase& c : all) {
-    summary.push_back(StatusOf(c, FLAGS_out));
+    summary.push_back(CaseStatus(FLAGS_out + "/" + c.name, c.name));
     done += summary.back().status == "done";
     warned += summary.back().quality == "warning";
     implausible += summary.back().quality == "failed";

@@ -1,13 +1,10 @@
 #include "pfdm/io/fit_output.h"
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -39,7 +36,8 @@ double KnotRingZ(const Model& model, double u) {
 const std::regex& OutputNamePattern() {
   static const std::regex pattern(
       "(fit\\.json|parameters\\.csv|parameters\\.svg|report\\.html|"
-      "fit\\.pvd|frame_[0-9]+\\.vtk|frame_[0-9]+\\.vtp)(\\.tmp\\.[0-9]+)?");
+      "fit\\.pvd|frame_[0-9]+\\.vtk|frame_[0-9]+\\.vtp)(\\.tmp\\.[A-Za-z0-9.-]+"
+      ")?");
   return pattern;
 }
 
@@ -120,19 +118,7 @@ void CheckFitOutputFolder(const std::string& dir,
     if (p == p.parent_path()) break;
   }
   EnsureDirectory(dir);
-  const std::string probe = dir + "/fit.json.tmp." + std::to_string(getpid());
-  {
-    errno = 0;
-    std::ofstream out(probe, std::ios::binary | std::ios::trunc);
-    out << "{}\n";
-    out.close();
-    if (!out) {
-      std::remove(probe.c_str());
-      throw InputError(dir + ": cannot write in this folder: " +
-                       (errno != 0 ? std::strerror(errno) : "write failed"));
-    }
-  }
-  std::remove(probe.c_str());
+  CheckFolderTakesFiles(dir, "fit.json");
   if (!created.empty()) {
     // Only empty folders go, innermost first.
     for (std::filesystem::path p = std::filesystem::absolute(dir, missing);
@@ -286,10 +272,13 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
 
   EnsureDirectory(dir);
   RefuseFoldersInTheWay(dir, names);
+  CreateFileIfAbsent(dir + "/" + kOutputMarker, kOutputMarkerText);
   RemoveOlderSet(dir);
   std::vector<std::string> written;
+  AtomicWriteOptions keep_listing_out;
+  keep_listing_out.remove_abandoned = false;  // RemoveOlderSet did.
   const auto write = [&](const std::string& name, const std::string& contents) {
-    WriteFileAtomically(dir + "/" + name, contents);
+    WriteFileAtomically(dir + "/" + name, contents, keep_listing_out);
     written.push_back(name);
   };
   try {

@@ -40,9 +40,18 @@ VtkPolyData FramePolyData(const Model& model, const Frame& frame,
 std::string FrameVtk(const Model& model, const Frame& frame,
                      const FrameFit& fit);
 
+// The file every folder pfdm writes a fit into holds, beside the set (not
+// part of it: never removed).  pfdm batch writes only into case folders
+// that hold it, or are new or empty, so never over files it did not make.
+inline constexpr char kOutputMarker[] = ".pfdm-fit";
+inline constexpr char kOutputMarkerText[] =
+    "pfdm writes its fits into this folder; pfdm batch writes only into case "
+    "folders that hold this file.\n";
+
 // Whether a file name in an output folder is one of the output set
 // (fit.json, parameters.csv, parameters.svg, report.html, fit.pvd,
-// frame_NNN.vtk, frame_NNN.vtp) or a temporary of one (NAME.tmp.PID).
+// frame_NNN.vtk, frame_NNN.vtp) or a temporary of one (NAME.tmp.SUFFIX,
+// SUFFIX letters, digits, '.' and '-').
 bool IsFitOutputName(const std::string& name);
 
 // Checks, before the minutes of a fit, that dir can take the output set:
@@ -55,11 +64,12 @@ void CheckFitOutputFolder(const std::string& dir,
 
 // Writes all of the above into dir once everything has been computed, so
 // that after any exit, a kill included, dir holds one complete set or none:
-// fit.json, whose presence marks a complete set (pfdm batch resumes on it),
-// is removed first, then every other file and temporary of an older set
-// (stale frames of a longer fit too), then the new files are written, each
-// atomically, and fit.json last.  A failed write removes what it wrote.
-// base_planes as for AnalyzeFit; vtk_format for the .vtk and .vtp files.
+// kOutputMarker is made if absent, then fit.json, whose presence marks a
+// complete set (pfdm batch resumes on it), is removed, then every other file
+// and temporary of an older set (stale frames of a longer fit too), then the
+// new files are written, each atomically, and fit.json last.  A failed write
+// removes what it wrote. base_planes as for AnalyzeFit; vtk_format for the .vtk
+// and .vtp files.
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
                      const std::vector<BasePlane>& base_planes = {},

@@ -1,5 +1,7 @@
 #include "pfdm/io/fit_output.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -52,7 +54,8 @@ TEST(FitOutputTest, WritesEveryFileWholeWithACollectionOfTheFrames) {
     EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos);
     ++files;
   }
-  EXPECT_EQ(files, 11);
+  EXPECT_EQ(files, 12);  // The nine above, frame_001's two and the marker.
+  EXPECT_EQ(ReadText(dir + "/" + kOutputMarker), kOutputMarkerText);
   const std::string pvd = ReadText(dir + "/fit.pvd");
   for (const char* frame :
        {"frame_000.vtp", "frame_001.vtp", "frame_002.vtp"}) {
@@ -161,14 +164,15 @@ TEST(FitOutputTest, ARefitReplacesTheWholeSetAndItsTemporaries) {
   WriteFitOutputs(dir, f.phantom.points, f.fit, FitOptions());
   WriteText(dir + "/report.html.tmp.99999", "<html>half");
   WriteText(dir + "/fit.json.tmp.12", "{");
+  WriteText(dir + "/frame_001.vtp.tmp.otherhost.4321.AbCd0123", "<Vtk");
   WriteText(dir + "/notes.txt", "the user's own");
   const auto [points, fit] = FirstTwoFrames();
   WriteFitOutputs(dir, points, fit, FitOptions());
   EXPECT_EQ(Names(dir),
             (std::vector<std::string>{
-                "fit.json", "fit.pvd", "frame_000.vtk", "frame_000.vtp",
-                "frame_001.vtk", "frame_001.vtp", "notes.txt", "parameters.csv",
-                "parameters.svg", "report.html"}));
+                ".pfdm-fit", "fit.json", "fit.pvd", "frame_000.vtk",
+                "frame_000.vtp", "frame_001.vtk", "frame_001.vtp", "notes.txt",
+                "parameters.csv", "parameters.svg", "report.html"}));
   EXPECT_EQ(nlohmann::json::parse(ReadText(dir + "/fit.json"))["frames"].size(),
             2u);
   EXPECT_EQ(ReadText(dir + "/fit.pvd").find("frame_002"), std::string::npos);
@@ -199,11 +203,13 @@ TEST(FitOutputTest, AFolderInTheWayStopsTheWriteBeforeItStarts) {
 TEST(FitOutputTest, OutputNamesAreTheSetAndItsTemporaries) {
   for (const char* name :
        {"fit.json", "parameters.csv", "parameters.svg", "report.html",
-        "fit.pvd", "frame_000.vtk", "frame_1234.vtp", "fit.json.tmp.77"}) {
+        "fit.pvd", "frame_000.vtk", "frame_1234.vtp", "fit.json.tmp.77",
+        "report.html.tmp.node-7.4321.AbCd0123"}) {
     EXPECT_TRUE(IsFitOutputName(name)) << name;
   }
-  for (const char* name : {"points.csv", "fit.json.bak", "frame_.vtk",
-                           "error.txt", "frame_001.vtk.tmp.", "xfit.json"}) {
+  for (const char* name :
+       {"points.csv", "fit.json.bak", "frame_.vtk", "error.txt",
+        "frame_001.vtk.tmp.", "xfit.json", ".pfdm-fit", "fit.json.tmp.a/b"}) {
     EXPECT_FALSE(IsFitOutputName(name)) << name;
   }
 }
@@ -241,6 +247,44 @@ TEST(FitOutputTest, TheFolderIsCheckedBeforeTheFitAndLeftAsItWas) {
                   "--out");
   }
   EXPECT_EQ(Names(dir + "/in"), std::vector<std::string>{"parameters.csv"});
+}
+
+// Issue 29: the folder probe and every file went through NAME.tmp.<pid>,
+// opened through whatever was there.  Links planted at each of those
+// names, and at each final name, now leave their targets as they were.
+TEST(FitOutputTest, LinksPlantedAtEveryNameLeaveTheirTargetsUntouched) {
+  const FittedPhantom& f = SmallPhantomFit();
+  const std::string dir = ScratchDirectory("fit_output");
+  const std::string out = dir + "/out";
+  fs::create_directories(out);
+  const std::string pid = std::to_string(getpid());
+  int planted = 0;
+  for (const char* name :
+       {"fit.json", "parameters.csv", "parameters.svg", "report.html",
+        "fit.pvd", "frame_000.vtk", "frame_000.vtp", "frame_001.vtk",
+        "frame_001.vtp", "frame_002.vtk", "frame_002.vtp"}) {
+    for (const std::string& at :
+         {std::string(name), std::string(name) + ".tmp." + pid}) {
+      const std::string victim = dir + "/victim_" + std::to_string(planted++);
+      WriteText(victim, "precious");
+      fs::create_symlink(victim, out + "/" + at);
+    }
+  }
+  // A dangling link at the marker: not followed to make its target.
+  fs::create_symlink(dir + "/made_through_the_marker",
+                     out + "/" + kOutputMarker);
+  CheckFitOutputFolder(out, dir + "/points.csv");
+  WriteFitOutputs(out, f.phantom.points, f.fit, FitOptions());
+  for (int i = 0; i < planted; ++i) {
+    EXPECT_EQ(ReadText(dir + "/victim_" + std::to_string(i)), "precious") << i;
+  }
+  EXPECT_FALSE(fs::exists(dir + "/made_through_the_marker"));
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(out + "/fit.json")));
+  EXPECT_EQ(nlohmann::json::parse(ReadText(out + "/fit.json"))["frames"].size(),
+            3u);
+  for (const std::string& name : Names(out)) {
+    EXPECT_EQ(name.find(".tmp."), std::string::npos) << name;
+  }
 }
 
 }  // namespace
