@@ -1,5 +1,7 @@
 #include "pfdm/fit/stages/frame_points.h"
 
+#include "Eigen/Dense"
+
 namespace pfdm {
 namespace {
 
@@ -55,6 +57,21 @@ std::vector<Eigen::Vector3d> Positions(const Frame& frame) {
   positions.reserve(frame.points.size());
   for (const DataPoint& p : frame.points) positions.push_back(p.position);
   return positions;
+}
+
+Eigen::Vector3d PrincipalSpreads(const Frame& frame) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const DataPoint& p : frame.points) mean += p.position;
+  mean /= static_cast<double>(frame.points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const DataPoint& p : frame.points) {
+    covariance += (p.position - mean) * (p.position - mean).transpose();
+  }
+  covariance /= static_cast<double>(frame.points.size());
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance)
+      .eigenvalues()
+      .cwiseMax(0.0)
+      .cwiseSqrt();
 }
 
 }  // namespace pfdm

@@ -54,6 +54,10 @@ FramePoints MakeFramePoints(const Frame& frame, bool reference,
 
 std::vector<Eigen::Vector3d> Positions(const Frame& frame);
 
+// The principal standard deviations of the frame's points about their
+// centroid, ascending, mm.
+Eigen::Vector3d PrincipalSpreads(const Frame& frame);
+
 }  // namespace pfdm
 
 #endif  // PFDM_FIT_STAGES_FRAME_POINTS_H_

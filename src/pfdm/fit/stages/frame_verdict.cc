@@ -9,6 +9,7 @@
 #include "Eigen/Dense"
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/problem/frame_problem.h"
+#include "pfdm/fit/stages/frame_points.h"
 
 namespace pfdm {
 namespace {
@@ -25,23 +26,6 @@ double Median(std::vector<double> values) {
   const size_t middle = values.size() / 2;
   std::nth_element(values.begin(), values.begin() + middle, values.end());
   return values[middle];
-}
-
-// The principal standard deviations of the points about their centroid,
-// ascending, mm.
-Eigen::Vector3d PrincipalSpreads(const Frame& frame) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const DataPoint& p : frame.points) mean += p.position;
-  mean /= static_cast<double>(frame.points.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const DataPoint& p : frame.points) {
-    covariance += (p.position - mean) * (p.position - mean).transpose();
-  }
-  covariance /= static_cast<double>(frame.points.size());
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance)
-      .eigenvalues()
-      .cwiseMax(0.0)
-      .cwiseSqrt();
 }
 
 void JudgeSolver(const FrameFit& frame, Verdict* verdict) {

@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "Eigen/Dense"
 #include "pfdm/fit/stages/initialization.h"
 #include "pfdm/util/error.h"
 
@@ -25,19 +24,7 @@ void CheckEnoughPoints(const std::string& source, const Frame& frame,
 // coplanar points once reached Ceres as NaN (a CHECK dump) or "fitted" with
 // exit 0.  Spreads are the principal standard deviations, mm.
 void CheckSpansSpace(const std::string& source, const Frame& frame) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const DataPoint& p : frame.points) mean += p.position;
-  mean /= static_cast<double>(frame.points.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const DataPoint& p : frame.points) {
-    covariance += (p.position - mean) * (p.position - mean).transpose();
-  }
-  covariance /= static_cast<double>(frame.points.size());
-  const Eigen::Vector3d spread =
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance)
-          .eigenvalues()
-          .cwiseMax(0.0)
-          .cwiseSqrt();  // Ascending.
+  const Eigen::Vector3d spread = PrincipalSpreads(frame);
   const char* what = nullptr;
   if (!(spread[2] > 1e-6)) {
     what = "all at one place";
