@@ -71,7 +71,9 @@ void DefEntryDicts(FitFrameClass& fit_frame) {
           "epi_* numbers and wall thickening) and its volumes, named for "
           "what they enclose: cavity_volume_ml, midwall_volume_ml or "
           "epicardial_volume_ml, with a solid's myocardial_volume_ml and "
-          "lv_mass_g.");
+          "lv_mass_g.  None where fit.json has null: the rotations, twists, "
+          "torsion, shear angle and gcl_percent of a frame without tracked "
+          "points (contours).");
 }
 
 // ids, points, material and residuals: a row per data point.

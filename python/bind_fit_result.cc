@@ -137,7 +137,8 @@ void DefFitJson(FitClass& fit) {
           "regions",
           [](const FitResult& r) { return FitJsonMember(r, "regions"); },
           "list of dict: the 16 AHA-style segments with rotation_deg and "
-          "radial_contraction_percent per frame.");
+          "radial_contraction_percent per frame; rotation_deg and "
+          "ecl_percent None in frames without tracked points.");
 }
 
 }  // namespace

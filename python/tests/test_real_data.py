@@ -24,6 +24,10 @@ def test_guide_points_fit_and_mitral_valve_volumes_equal_the_clis():
     assert "mitral valve plane" in fit.ejection_fraction["cavity_closure"]
     assert len(fit) == 25
     assert fit.volume_surface == "cavity"  # Endocardial contours.
+    # Contours: no turn about the axis is seen, so none is reported.
+    assert all(frame.clinical["net_twist_deg"] is None for frame in fit.frames)
+    assert fit.regions[0]["rotation_deg"] == [None] * 25
+    assert isinstance(fit[9].clinical["radial_contraction_percent"], float)
     # biv-me's own mesh: 174.5 ml.  The local field's contour rounds stop
     # when they stall, so the solver's path decides where within about
     # 174.9-175.7 ml they leave it (174.9, 175.4 and, run to their limit of

@@ -72,7 +72,9 @@ CaseSummary SummaryFromFitJson(const std::string& name,
     summary.es_frame = ef.at("es_frame").get<int>();
     summary.ejection_fraction = ef.at("ratio").get<double>();
     const nlohmann::json& es = frames.at(summary.es_frame).at("clinical");
-    summary.net_twist_deg = es.at("net_twist_deg").get<double>();
+    const nlohmann::json& twist = es.at("net_twist_deg");
+    summary.twist_measured = !twist.is_null();
+    if (summary.twist_measured) summary.net_twist_deg = twist.get<double>();
     summary.longitudinal_shortening_percent =
         es.at("longitudinal_shortening_percent").get<double>();
     summary.radial_contraction_percent =
@@ -117,8 +119,10 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
         out << c.lv_mass_g << ',' << c.wall_thickening_percent;
       else
         out << ',';
-      out << ',' << c.net_twist_deg << ',' << c.longitudinal_shortening_percent
-          << ',' << c.radial_contraction_percent << ',';
+      out << ',';
+      if (c.twist_measured) out << c.net_twist_deg;
+      out << ',' << c.longitudinal_shortening_percent << ','
+          << c.radial_contraction_percent << ',';
       if (c.has_strain) {
         out << c.peak_gcs_percent << ',' << c.peak_gls_percent << ',';
       } else {

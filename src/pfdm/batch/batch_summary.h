@@ -29,7 +29,10 @@ struct CaseSummary {
   bool solid = false;
   double lv_mass_g = 0.0;
   double wall_thickening_percent = 0.0;
-  // At ES, the frame of least volume.
+  // At ES, the frame of least volume.  twist_measured is false where
+  // fit.json's net twist is null (an ES without tracked points: contours):
+  // an empty column, as the CSV leaves every number that does not apply.
+  bool twist_measured = true;
   double net_twist_deg = 0.0;
   double longitudinal_shortening_percent = 0.0;
   double radial_contraction_percent = 0.0;  // Mean of x and y.

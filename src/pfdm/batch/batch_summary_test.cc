@@ -88,6 +88,29 @@ TEST(BatchSummaryTest, ReadsTheQualityAndItsReasons) {
   EXPECT_NE(csv.find(",unsettled;solver,\n"), std::string::npos) << csv;
 }
 
+// A null net twist at ES (no tracked points there: contours) is an empty
+// column, as every number that does not apply; the others stay.
+TEST(BatchSummaryTest, TwistNotMeasuredIsAnEmptyColumn) {
+  EXPECT_TRUE(SummaryFromFitJson("t", kFitJson, "x").twist_measured);
+  std::string contours = kFitJson;
+  const std::string twist = "\"net_twist_deg\": 12.5";
+  contours.replace(contours.find(twist), twist.size(),
+                   "\"net_twist_deg\": null");
+  const CaseSummary c = SummaryFromFitJson("c", contours, "c/fit.json");
+  EXPECT_FALSE(c.twist_measured);
+  EXPECT_EQ(c.longitudinal_shortening_percent, 15.0);
+  EXPECT_EQ(SummaryCsv({c}).substr(SummaryCsv({c}).find('\n') + 1),
+            "c,done,3,1.25,cavity,150,60,1,0.6,,,,15,25,-18.5,-14.25,\n");
+  // Null elsewhere than at ES does not matter.
+  std::string elsewhere = kFitJson;
+  const std::string frame0 = "\"net_twist_deg\": 0.0";
+  elsewhere.replace(elsewhere.find(frame0), frame0.size(),
+                    "\"net_twist_deg\": null");
+  const CaseSummary e = SummaryFromFitJson("e", elsewhere, "e/fit.json");
+  EXPECT_TRUE(e.twist_measured);
+  EXPECT_EQ(e.net_twist_deg, 12.5);
+}
+
 // A solid's fit.json: the cavity's ejection fraction, the LV mass at ED
 // and the thickening at ES; a mid-wall surface's: no ejection fraction.
 TEST(BatchSummaryTest, NamesWhatTheVolumesEnclose) {

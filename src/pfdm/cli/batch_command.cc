@@ -77,13 +77,17 @@ std::string RunCase(const BatchCase& c, const std::string& out,
     return "FAILED: " + RecordFailure(dir, error.what());
   }
   const CaseSummary s = CaseStatus(dir, c.name);
+  char twist[32] = "n/a";  // An ES without tracked points (contours).
+  if (s.twist_measured) {
+    std::snprintf(twist, sizeof(twist), "%.1f deg", s.net_twist_deg);
+  }
   char line[200];
   std::snprintf(
       line, sizeof(line),
-      "done, %s, %d frames, max RMS %.2f mm, EF %.1f %%, net twist at "
-      "ES %.1f deg, %.1f s",
+      "done, %s, %d frames, max RMS %.2f mm, EF %.1f %%, net twist at ES %s, "
+      "%.1f s",
       s.quality.c_str(), s.frames, s.max_rms_mm, 100.0 * s.ejection_fraction,
-      s.net_twist_deg,
+      twist,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count());
   return line;

@@ -111,6 +111,24 @@ constexpr const char* kClinicalDefinition =
     "centroid of the base rim's material points.  The *_per_knot ratios are "
     "a1, a2, a3 against frame 0 (the paper's Fig. 5).";
 
+constexpr const char* kNotMeasuredDefinition =
+    "null marks what the data cannot determine.  A turn about the long axis "
+    "is seen only on tracked points (ids in more than one frame: tags); in "
+    "the frames listed, which have none (contours), or when frame 0 has none, "
+    "the fit holds tau, and every number a turn makes is null: the "
+    "rotations, twists, torsion and shear angle in clinical (a solid's "
+    "endo_* and epi_* ones too), gcl_percent, and the regions' rotation_deg "
+    "and ecl_percent.";
+
+// A number, or null where it is kNotMeasured.
+json Value(double value) { return Measured(value) ? json(value) : json(); }
+
+json Values(const std::vector<double>& values) {
+  json array = json::array();
+  for (double value : values) array.push_back(Value(value));
+  return array;
+}
+
 std::string CavityClosure(const FitAnalysis& analysis) {
   if (analysis.base_planes.empty()) {
     return "flat lid: a fan of triangles from the base rim to its centroid";
@@ -210,27 +228,27 @@ json ModelSection(const SequenceFit& fit, const FitAnalysis& analysis) {
 json FrameClinical(const ClinicalSummary& summary, const GlobalStrain& strain,
                    bool solid) {
   json clinical = {
-      {"net_twist_deg", summary.net_twist_deg},
-      {"apex_rotation_deg", summary.apex_rotation_deg},
-      {"base_rotation_deg", summary.base_rotation_deg},
-      {"torsion_deg_per_cm", summary.torsion_deg_per_cm},
-      {"shear_angle_deg", summary.shear_angle_deg},
+      {"net_twist_deg", Value(summary.net_twist_deg)},
+      {"apex_rotation_deg", Value(summary.apex_rotation_deg)},
+      {"base_rotation_deg", Value(summary.base_rotation_deg)},
+      {"torsion_deg_per_cm", Value(summary.torsion_deg_per_cm)},
+      {"shear_angle_deg", Value(summary.shear_angle_deg)},
       {"radial_contraction_percent", summary.radial_contraction_percent},
       {"longitudinal_shortening_percent",
        summary.longitudinal_shortening_percent},
       {"gcs_percent", strain.gcs_percent},
       {"gls_percent", strain.gls_percent},
-      {"gcl_percent", strain.gcl_percent},
+      {"gcl_percent", Value(strain.gcl_percent)},
       {"radial_ratio_x_per_knot", summary.radial_ratio_x},
       {"radial_ratio_y_per_knot", summary.radial_ratio_y},
       {"longitudinal_ratio_per_knot", summary.longitudinal_ratio}};
   if (solid) {
-    clinical["endo_apex_rotation_deg"] = summary.endo_apex_rotation_deg;
-    clinical["endo_base_rotation_deg"] = summary.endo_base_rotation_deg;
-    clinical["endo_net_twist_deg"] = summary.endo_net_twist_deg;
-    clinical["epi_apex_rotation_deg"] = summary.epi_apex_rotation_deg;
-    clinical["epi_base_rotation_deg"] = summary.epi_base_rotation_deg;
-    clinical["epi_net_twist_deg"] = summary.epi_net_twist_deg;
+    clinical["endo_apex_rotation_deg"] = Value(summary.endo_apex_rotation_deg);
+    clinical["endo_base_rotation_deg"] = Value(summary.endo_base_rotation_deg);
+    clinical["endo_net_twist_deg"] = Value(summary.endo_net_twist_deg);
+    clinical["epi_apex_rotation_deg"] = Value(summary.epi_apex_rotation_deg);
+    clinical["epi_base_rotation_deg"] = Value(summary.epi_base_rotation_deg);
+    clinical["epi_net_twist_deg"] = Value(summary.epi_net_twist_deg);
     clinical["endo_radial_contraction_percent"] =
         summary.endo_radial_contraction_percent;
     clinical["epi_radial_contraction_percent"] =
@@ -344,11 +362,11 @@ json RegionEntry(const FitAnalysis& analysis, size_t r, double peak_ecc,
       {"name", region.Name()},
       {"v_range_deg",
        {region.v_begin * kDegreesPerRadian, region.v_end * kDegreesPerRadian}},
-      {"rotation_deg", rotation},
+      {"rotation_deg", Values(rotation)},
       {"radial_contraction_percent", radial},
       {"ecc_percent", ecc},
       {"ell_percent", ell},
-      {"ecl_percent", ecl},
+      {"ecl_percent", Values(ecl)},
       {"peak_ecc_percent", peak_ecc},
       {"area_mm2", analysis.region_motion.empty()
                        ? 0.0
@@ -381,6 +399,16 @@ json StrainLevels(const FitAnalysis& analysis) {
   return levels;
 }
 
+// The frames whose rotation is null, and why; null when there are none.
+json NotMeasured(const FitAnalysis& analysis) {
+  json frames = json::array();
+  for (size_t t = 0; t < analysis.rotation_measured.size(); ++t) {
+    if (!analysis.rotation_measured[t]) frames.push_back(t);
+  }
+  if (frames.empty()) return json();
+  return {{"frames", frames}, {"definition", kNotMeasuredDefinition}};
+}
+
 json StrainSection(const FitAnalysis& analysis) {
   const StrainPeak gcs = PeakGcs(analysis.strain);
   const StrainPeak gls = PeakGls(analysis.strain);
@@ -408,6 +436,8 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                    {"gauge_convention", kGaugeConvention},
                    {"clinical_definition", kClinicalDefinition}};
   if (solid) document["wall_definition"] = kWallDefinition;
+  const json not_measured = NotMeasured(analysis);
+  if (!not_measured.is_null()) document["not_measured"] = not_measured;
   document[cavity ? "ejection_fraction"
                   : analysis.volume_surface + "_volume_fraction"] =
       EjectionSection(analysis);

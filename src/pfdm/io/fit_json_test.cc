@@ -81,6 +81,46 @@ TEST(FitJsonTest, HasStrainPerFrameRegionAndPeaks) {
   EXPECT_GT(region["area_mm2"].get<double>(), 100.0);
 }
 
+// What a frame without tracked points cannot show is null, and fit.json
+// lists those frames; the other frames and numbers are as measured.  Tags
+// everywhere: numbers, and no list.
+TEST(FitJsonTest, WhatIsNotMeasuredIsNull) {
+  const FittedPhantom& f = SmallPhantomFit();
+  const nlohmann::json tags =
+      nlohmann::json::parse(FitJson(f.phantom.points, f.fit, FitOptions()));
+  EXPECT_FALSE(tags.contains("not_measured"));
+  SequenceFit fit = f.fit;
+  fit.frames[2].tracked = false;
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(f.phantom.points, fit, FitOptions()));
+  EXPECT_EQ(json["not_measured"]["frames"], nlohmann::json({2}));
+  EXPECT_NE(json["not_measured"]["definition"].get<std::string>().find(
+                "tracked points"),
+            std::string::npos);
+  const auto& measured = json["frames"][1]["clinical"];
+  const auto& held = json["frames"][2]["clinical"];
+  for (const char* key :
+       {"net_twist_deg", "apex_rotation_deg", "base_rotation_deg",
+        "torsion_deg_per_cm", "shear_angle_deg", "gcl_percent"}) {
+    EXPECT_TRUE(measured[key].is_number()) << key;
+    EXPECT_TRUE(held[key].is_null()) << key;
+    EXPECT_TRUE(tags["frames"][2]["clinical"][key].is_number()) << key;
+  }
+  EXPECT_EQ(held["radial_contraction_percent"],
+            tags["frames"][2]["clinical"]["radial_contraction_percent"]);
+  EXPECT_GT(held["radial_contraction_percent"].get<double>(), 5.0);
+  EXPECT_TRUE(held["gcs_percent"].is_number());
+  for (const auto& region : json["regions"]) {
+    EXPECT_TRUE(region["rotation_deg"][1].is_number());
+    EXPECT_TRUE(region["rotation_deg"][2].is_null());
+    EXPECT_TRUE(region["ecl_percent"][2].is_null());
+    EXPECT_TRUE(region["ecc_percent"][2].is_number());
+  }
+  EXPECT_LT(tags["regions"][15]["rotation_deg"][2].get<double>(), -1.0);
+  EXPECT_EQ(json["regions"][15]["rotation_deg"][1],
+            tags["regions"][15]["rotation_deg"][1]);
+}
+
 // Guide points name the contour types they kept, so a fit can be redone.
 TEST(FitJsonTest, NamesTheContourTypesKept) {
   const FittedPhantom& f = SmallPhantomFit();

@@ -251,7 +251,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
   // The frames' meshes are formatted and written while gnuplot renders the
   // plots (one gnuplot for the four: its start-up, not the plotting, was
   // most of their time).
-  plots->Render({ParameterPlots(analysis.models),
+  plots->Render({ParameterPlots(analysis.models, analysis.rotation_measured),
                  CycleCurves(analysis.clinical, analysis.volume_surface),
                  StrainCurves(analysis.strain),
                  Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});

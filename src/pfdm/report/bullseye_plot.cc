@@ -148,6 +148,10 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
       rotation.values.push_back(m.rotation_deg);
     }
   }
+  // At an ES without tracked points rotation is not measured: no map.
+  if (!std::all_of(rotation.values.begin(), rotation.values.end(), Measured)) {
+    return {ecc, radial};
+  }
   return {ecc, radial, rotation};
 }
 

@@ -43,7 +43,8 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
                  const std::vector<BullseyeMap>& maps);
 
 // The report's three maps: peak Ecc over the frames, and radial
-// contraction and rotation at end-systole.
+// contraction and rotation at end-systole; no rotation map where it is not
+// measured (FitAnalysis::rotation_measured).
 std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis);
 
 // Over the frames: Ecc and Ell, the global means (GCS, GLS) and each

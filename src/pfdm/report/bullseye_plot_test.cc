@@ -1,6 +1,7 @@
 #include "pfdm/report/bullseye_plot.h"
 
 #include "gtest/gtest.h"
+#include "pfdm/phantom/phantom.h"
 #include "pfdm/testing/test_util.h"
 
 namespace pfdm {
@@ -56,6 +57,36 @@ TEST(BullseyePlotTest, PanelsLabelEverySegment) {
   }
   EXPECT_EQ(outlines, 32);
   EXPECT_NE(svg.find("rgb(214,  96,  77)"), std::string::npos);
+}
+
+// Rotation has a map at an ES with tracked points, none without (contours).
+TEST(BullseyePlotTest, NoRotationMapWhereRotationIsNotMeasured) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit;
+  fit.config = phantom.truth[0].config;
+  for (size_t t = 0; t < phantom.truth.size(); ++t) {
+    FrameFit frame;
+    frame.frame = static_cast<int>(t);
+    frame.state = phantom.truth[t].state;
+    fit.frames.push_back(frame);
+  }
+  const std::vector<BullseyeMap> tags = ClinicalBullseyeMaps(AnalyzeFit(fit));
+  ASSERT_EQ(tags.size(), 3u);
+  EXPECT_EQ(tags[2].title, "rotation at ES, degrees");
+  EXPECT_LT(tags[2].values[15], -1.0);  // An apical segment at ES.
+  fit.frames[4].tracked = false;        // ES.
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  ASSERT_EQ(analysis.ejection_fraction.es_frame, 4);
+  const std::vector<BullseyeMap> contours = ClinicalBullseyeMaps(analysis);
+  ASSERT_EQ(contours.size(), 2u);
+  EXPECT_EQ(contours[0].title, tags[0].title);
+  EXPECT_EQ(contours[1].title, tags[1].title);
+  const std::string svg = BullseyeSvg(analysis.regions, contours);
+  EXPECT_EQ(svg.find("rotation"), std::string::npos);
+  EXPECT_EQ(svg.find("nan"), std::string::npos);
+  EXPECT_EQ(CountOf(svg, ">apex<"), 2);
 }
 
 TEST(BullseyePlotTest, StrainCurvesHaveGlobalAndLevels) {

@@ -2,11 +2,18 @@
 #ifndef PFDM_REPORT_CLINICAL_SUMMARY_H_
 #define PFDM_REPORT_CLINICAL_SUMMARY_H_
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "pfdm/model/model.h"
 
 namespace pfdm {
+
+// A number the data cannot determine, "n/a" in the outputs (null in
+// fit.json): NaN, so that nothing can read it as a measurement.
+inline constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+inline bool Measured(double value) { return !std::isnan(value); }
 
 // Where the summary's rings sit: height fractions of frame 0's length from
 // the apex pole (0) to the base rim (1), in the apical and basal thirds and
@@ -85,6 +92,11 @@ struct EjectionFraction {
   double esv_ml = 0.0;
   double ratio = 0.0;
 };
+
+// Sets what only a turn about the axis measures to kNotMeasured: every
+// rotation, twist, the torsion and the shear angle, of the mid-wall and of
+// a solid's walls.
+void LeaveOutRotation(ClinicalSummary* summary);
 
 // reference is frame 0's model, current the frame's.
 ClinicalSummary SummarizeFrame(int frame, const Model& reference,

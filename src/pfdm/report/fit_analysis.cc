@@ -12,6 +12,28 @@ std::string VolumeSurfaceName(const SequenceFit& fit) {
   return fit.surface == WallLayer::kEpicardium ? "epicardial" : "midwall";
 }
 
+std::vector<bool> RotationMeasured(const SequenceFit& fit) {
+  std::vector<bool> measured;
+  for (const FrameFit& frame : fit.frames) {
+    measured.push_back(fit.frames.front().tracked && frame.tracked);
+  }
+  return measured;
+}
+
+namespace {
+
+// kNotMeasured in every number of frame t that a turn about the axis makes.
+void LeaveOutFrameRotation(size_t t, FitAnalysis* analysis) {
+  LeaveOutRotation(&analysis->clinical[t]);
+  for (RegionMotion& motion : analysis->region_motion[t]) {
+    motion.rotation_deg = kNotMeasured;
+    motion.ecl_percent = kNotMeasured;
+  }
+  analysis->strain[t].gcl_percent = kNotMeasured;
+}
+
+}  // namespace
+
 FitAnalysis AnalyzeFit(const SequenceFit& fit,
                        const std::vector<BasePlane>& base_planes,
                        const RegionLayout& layout) {
@@ -50,6 +72,10 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
     analysis.region_motion.push_back(SummarizeRegions(reference, model));
     analysis.strain.push_back(
         SummarizeStrain(analysis.regions, analysis.region_motion.back()));
+  }
+  analysis.rotation_measured = RotationMeasured(fit);
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    if (!analysis.rotation_measured[t]) LeaveOutFrameRotation(t, &analysis);
   }
   return analysis;
 }

@@ -24,6 +24,12 @@ struct FitAnalysis {
   std::vector<WallRegion> regions;
   std::vector<std::vector<RegionMotion>> region_motion;  // [frame][region]
   std::vector<GlobalStrain> strain;                      // Per frame.
+  // Per frame, whether its turn about the long axis is measured
+  // (RotationMeasured).  Where it is not, clinical's rotations, twists,
+  // torsion and shear angle, the regions' rotation and Ecl and strain's
+  // gcl are kNotMeasured: contours show no turn about the axis, and the
+  // circumferential-longitudinal shear is a twist's gradient.
+  std::vector<bool> rotation_measured;
   // What clinical[t].volume_ml encloses: "cavity" (a solid's endocardium,
   // or a surface fitted to endocardial contours), "epicardial" or "midwall"
   // (VolumeSurfaceName).
@@ -35,6 +41,10 @@ struct FitAnalysis {
 
 // "cavity", "epicardial" or "midwall": see FitAnalysis::volume_surface.
 std::string VolumeSurfaceName(const SequenceFit& fit);
+
+// Per frame: whether it and frame 0, the reference of every rotation, have
+// tracked points (FrameFit::tracked).
+std::vector<bool> RotationMeasured(const SequenceFit& fit);
 
 // base_planes: one per frame to close the cavity there (see
 // CavityVolumeMl), or empty for the flat lid at the base rim.

@@ -42,6 +42,49 @@ TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
   EXPECT_GT(analysis.region_motion[4][0].rotation_deg, 0.5);
 }
 
+// A frame without tracked points has no rotation, twist, torsion, shear
+// angle, regional rotation or Ecl (kNotMeasured); its contraction, strain
+// and volume are as measured.  Frame 0 without them takes every frame's.
+TEST(FitAnalysisTest, FramesWithoutTrackedPointsHaveNoRotation) {
+  PhantomOptions options;
+  options.num_points = 1;
+  options.num_frames = 3;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  const FitAnalysis tracked = AnalyzeFit(fit);
+  EXPECT_EQ(tracked.rotation_measured, std::vector<bool>(3, true));
+  fit.frames[2].tracked = false;
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  EXPECT_EQ(analysis.rotation_measured, std::vector<bool>({true, true, false}));
+  for (int t : {0, 1}) {
+    EXPECT_EQ(analysis.clinical[t].net_twist_deg,
+              tracked.clinical[t].net_twist_deg);
+    EXPECT_EQ(analysis.region_motion[t][15].rotation_deg,
+              tracked.region_motion[t][15].rotation_deg);
+  }
+  EXPECT_NEAR(tracked.clinical[2].net_twist_deg, 7.0 * 0.65, 0.01);
+  const ClinicalSummary& c = analysis.clinical[2];
+  for (double value :
+       {c.apex_rotation_deg, c.base_rotation_deg, c.net_twist_deg,
+        c.torsion_deg_per_cm, c.shear_angle_deg, c.endo_net_twist_deg,
+        c.epi_net_twist_deg, analysis.strain[2].gcl_percent}) {
+    EXPECT_FALSE(Measured(value));
+  }
+  for (const RegionMotion& m : analysis.region_motion[2]) {
+    EXPECT_FALSE(Measured(m.rotation_deg));
+    EXPECT_FALSE(Measured(m.ecl_percent));
+    EXPECT_GT(m.radial_contraction_percent, 4.0);
+  }
+  EXPECT_EQ(c.radial_contraction_percent,
+            tracked.clinical[2].radial_contraction_percent);
+  EXPECT_EQ(analysis.strain[2].gcs_percent, tracked.strain[2].gcs_percent);
+  EXPECT_EQ(c.volume_ml, tracked.clinical[2].volume_ml);
+
+  fit.frames[2].tracked = true;
+  fit.frames[0].tracked = false;  // The reference of every rotation.
+  EXPECT_EQ(RotationMeasured(fit), std::vector<bool>(3, false));
+}
+
 TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
   PhantomOptions options;
   options.num_points = 1;

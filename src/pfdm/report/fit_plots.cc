@@ -1,5 +1,6 @@
 #include "pfdm/report/fit_plots.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -34,15 +35,22 @@ std::string FrameColor(int t, int n) {
 
 }  // namespace
 
-SvgPlot ParameterPlots(const std::vector<Model>& frames) {
+SvgPlot ParameterPlots(const std::vector<Model>& frames,
+                       const std::vector<bool>& rotation_measured) {
   const int n = static_cast<int>(frames.size());
   const int knots = frames.front().config.num_knots;
   const KnotGrid grid = frames.front().config.Grid();
   const Model& ed = frames.front();
   // One block per frame, separated by two blank lines (gnuplot's "index").
   PlotData block{"knots", {}};
+  bool any_twist = false;
   for (int t = 0; t < n; ++t) {
     if (t > 0) block.rows.insert(block.rows.end(), 2, {});
+    // gnuplot skips the NaN of a held twist.
+    const bool twist =
+        t >= static_cast<int>(rotation_measured.size()) || rotation_measured[t];
+    any_twist = any_twist || twist;
+    const double degrees = twist ? kDegreesPerRadian : kNotMeasured;
     for (int k = 0; k < knots; ++k) {
       const double u = grid.KnotU(k);
       const Model& m = frames[t];
@@ -50,9 +58,9 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames) {
           {static_cast<double>(k), m.FunctionAt(kA1, u) / ed.FunctionAt(kA1, u),
            m.FunctionAt(kA2, u) / ed.FunctionAt(kA2, u),
            m.FunctionAt(kA3, u) / ed.FunctionAt(kA3, u),
-           m.FunctionAt(kTau, u) * kDegreesPerRadian, m.FunctionAt(kB0, u),
+           m.FunctionAt(kTau, u) * degrees, m.FunctionAt(kB0, u),
            m.FunctionAt(kB2, u), m.FunctionAt(kH, u),
-           m.FunctionAt(kDtau, u) * kDegreesPerRadian});
+           m.FunctionAt(kDtau, u) * degrees});
     }
   }
   std::ostringstream colors;
@@ -89,6 +97,11 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames) {
   for (const Panel& p : panels) {
     if (!solid && p.column > 7) break;
     script << "set title '" << p.title << "'\n";
+    const bool twist_panel = p.column == 5 || p.column == 9;
+    if (twist_panel && !any_twist) {
+      script << "set label 1 'n/a: no tracked points' at graph 0.5,0.5 "
+                "center\n";
+    }
     if (first) {
       script << "set key at screen 0.995,0.92 top right Left reverse "
                 "samplen 2 spacing 0.9 font 'sans,10' title 'frame'\n";
@@ -99,14 +112,16 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames) {
            << " notitle with lines dt 2 lc rgb '#888888', "
            << "for [t=0:" << n - 1 << "] $knots index t using 1:" << p.column
            << " lc rgb word(colors, t + 1) pt 7 title sprintf('%d', t)\n";
+    if (twist_panel && !any_twist) script << "unset label 1\n";
     first = false;
   }
   script << "unset multiplot\n";
   return {"parameters.svg", {block}, script.str(), 1200, solid ? 1100 : 760};
 }
 
-std::string ParameterPlotsSvg(const std::vector<Model>& frames) {
-  return RenderSvgString(ParameterPlots(frames));
+std::string ParameterPlotsSvg(const std::vector<Model>& frames,
+                              const std::vector<bool>& rotation_measured) {
+  return RenderSvgString(ParameterPlots(frames, rotation_measured));
 }
 
 SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
@@ -119,9 +134,15 @@ SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
                           s.longitudinal_shortening_percent});
   }
   const EjectionFraction ef = EjectionFractionOf(summaries);
+  // Rows of unmeasured rotations hold NaN, which gnuplot skips; with none
+  // measured (contours) the panel would show nothing, and goes.
+  const bool any_rotation = std::any_of(
+      summaries.begin(), summaries.end(),
+      [](const ClinicalSummary& s) { return Measured(s.net_twist_deg); });
   std::ostringstream script;
   script.precision(4);
-  script << "set multiplot layout 1,3 margins 0.06,0.98,0.14,0.8 "
+  script << "set multiplot layout 1," << (any_rotation ? 3 : 2)
+         << " margins 0.06,0.98,0.14,0.8 "
             "spacing 0.07,0.1 title 'Over the cycle' font 'sans,15'\n"
          << "set grid lc rgb '#dddddd'\nset xlabel 'frame'\n"
          << "set style data linespoints\nset pointsize 0.6\n"
@@ -137,13 +158,15 @@ SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
          << " offset 0,-1\n"
          << "plot $cycle using 1:2 lc rgb '#1f3f8f' pt 7 title 'volume'\n"
          << "unset label 1\nunset label 2\n"
-         << "set key top right opaque font 'sans,10' samplen 2\n"
-         << "set title 'rotation about the LV axis'\nset ylabel 'degrees'\n"
-         << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
-            "$cycle using 1:3 lc rgb '#c0392b' pt 7 title 'apex', "
-            "'' using 1:4 lc rgb '#2471a3' pt 7 title 'base', "
-            "'' using 1:5 lc rgb '#222222' pt 5 lw 2 title 'net twist'\n"
-         << "set title 'contraction'\nset ylabel 'percent'\n"
+         << "set key top right opaque font 'sans,10' samplen 2\n";
+  if (any_rotation) {
+    script << "set title 'rotation about the LV axis'\nset ylabel 'degrees'\n"
+           << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
+              "$cycle using 1:3 lc rgb '#c0392b' pt 7 title 'apex', "
+              "'' using 1:4 lc rgb '#2471a3' pt 7 title 'base', "
+              "'' using 1:5 lc rgb '#222222' pt 5 lw 2 title 'net twist'\n";
+  }
+  script << "set title 'contraction'\nset ylabel 'percent'\n"
          << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
             "$cycle using 1:6 lc rgb '#c0392b' pt 7 title 'radial', "
             "'' using 1:7 lc rgb '#2471a3' pt 5 title 'longitudinal'\n"

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <set>
 #include <sstream>
 
 #include "pfdm/fit/stages/sequence_fit.h"
+#include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/verdict_box.h"
 #include "pfdm/util/markup_escape.h"
 #include "pfdm/util/verdict.h"
@@ -14,7 +14,9 @@
 namespace pfdm {
 namespace {
 
+// "n/a" for a number the data cannot determine (kNotMeasured).
 std::string Fixed(double value, int digits) {
+  if (!Measured(value)) return "n/a";
   char text[64];
   std::snprintf(text, sizeof(text), "%.*f", digits, value);
   // "-0.0" from a value that rounds to zero reads as a sign that is not
@@ -29,6 +31,7 @@ std::string Fixed(double value, int digits) {
 // A background tint for a value in [-scale, scale]: orange for positive,
 // blue for negative, white at zero, so a table reads like a map.
 std::string Tint(double value, double scale) {
+  if (!Measured(value)) return "";
   const double x = std::clamp(value / scale, -1.0, 1.0);
   const int fade = static_cast<int>(std::lround(255 - 110 * std::abs(x)));
   char style[64];
@@ -42,29 +45,46 @@ std::string Tint(double value, double scale) {
   return style;
 }
 
-// Whether some point id occurs in more than one frame.
-bool Tracked(const PointSequence& points) {
-  std::set<std::int64_t> seen;
-  for (const Frame& frame : points.frames) {
-    std::set<std::int64_t> here;
-    for (const DataPoint& p : frame.points) {
-      if (seen.count(p.id) > 0) return true;
-      here.insert(p.id);
-    }
-    seen.insert(here.begin(), here.end());
-  }
-  return false;
+// A value and its unit ("&deg;", " %"), or "n/a" alone.
+std::string WithUnit(double value, int digits, const char* unit) {
+  return Measured(value) ? Fixed(value, digits) + unit : "n/a";
 }
 
-// For data without tracked points, where the motion of material points is
-// not seen.
+// For data whose frame 0 has no tracked points, where no turn about the
+// axis is seen.
 constexpr const char* kUntrackedNote =
-    "<p class=\"note\"><b>No tracked points:</b> no point id occurs "
-    "in more than one frame (contours, not tags), so rotation about the "
-    "axis cannot be seen and twist is held at 0; a1..a3 and bending "
-    "then describe the shape of each frame rather than the motion of "
-    "material points. Volumes and contraction of the shape still "
-    "hold.</p>\n";
+    "<p class=\"note\"><b>No tracked points:</b> frame 0, the reference of "
+    "every rotation, has no points whose ids recur in later frames "
+    "(contours, not tags), so no rotation about the axis is seen: rotation, "
+    "twist, torsion and shear (and Ecl) are n/a in every frame and left out "
+    "of the plots. In frames without tracked points the fit holds twist at "
+    "0, and a1..a3 and bending describe the shape of each frame rather than "
+    "the motion of material points. Volumes and contraction of the shape "
+    "still hold.</p>\n";
+
+// Where rotation is measured in some frames but not all (FitAnalysis::
+// rotation_measured): which frames read n/a, and why; "" otherwise.
+std::string UntrackedNote(const FitAnalysis& analysis) {
+  const std::vector<bool>& measured = analysis.rotation_measured;
+  if (std::none_of(measured.begin(), measured.end(),
+                   [](bool m) { return m; })) {
+    return measured.empty() ? "" : kUntrackedNote;
+  }
+  std::ostringstream frames;
+  int count = 0;
+  for (size_t t = 0; t < measured.size(); ++t) {
+    if (!measured[t]) frames << (count++ ? ", " : "") << t;
+  }
+  if (count == 0) return "";
+  std::ostringstream h;
+  h << "<p class=\"note\"><b>Frames without tracked points:</b> "
+    << (count == 1 ? "frame " : "frames ") << frames.str()
+    << ", where no point keeps a material point from an earlier frame "
+       "(contours), so rotation about the axis cannot be seen and the fit "
+       "holds twist: their rotation, twist, torsion and shear (and Ecl) are "
+       "n/a and left out of the plots.</p>\n";
+  return h.str();
+}
 
 constexpr const char* kStyle =
     "body{font-family:sans-serif;margin:24px;color:#222;max-width:1250px}"
@@ -135,10 +155,13 @@ std::string SolidCards(const ClinicalSummary& ed, const ClinicalSummary& es) {
     << "<div>wall thickening at ES<b>" << Fixed(es.wall_thickening_percent, 1)
     << " %</b>" << Fixed(ed.wall_thickness_mm, 1) << " to "
     << Fixed(es.wall_thickness_mm, 1) << " mm</div>"
-    << "<div>endo / epi net twist at ES<b>" << Fixed(es.endo_net_twist_deg, 1)
-    << " / " << Fixed(es.epi_net_twist_deg, 1) << "&deg;</b>radial contraction "
-    << Fixed(es.endo_radial_contraction_percent, 1) << " / "
-    << Fixed(es.epi_radial_contraction_percent, 1) << " %</div>";
+    << "<div>endo / epi net twist at ES<b>"
+    << (Measured(es.endo_net_twist_deg)
+            ? Fixed(es.endo_net_twist_deg, 1) + " / " +
+                  Fixed(es.epi_net_twist_deg, 1) + "&deg;"
+            : "n/a")
+    << "</b>radial contraction " << Fixed(es.endo_radial_contraction_percent, 1)
+    << " / " << Fixed(es.epi_radial_contraction_percent, 1) << " %</div>";
   return h.str();
 }
 
@@ -152,12 +175,15 @@ std::string KeyNumbers(const SequenceFit& fit, const FitAnalysis& analysis) {
   std::ostringstream h;
   h << "<div class=\"key\">" << VolumeCard(analysis);
   if (fit.config.Solid()) h << SolidCards(ed, es);
-  h << "<div>net twist at ES<b>" << Fixed(es.net_twist_deg, 1) << "&deg;</b>"
-    << "apex " << Fixed(es.apex_rotation_deg, 1) << "&deg;, base "
-    << Fixed(es.base_rotation_deg, 1) << "&deg;</div>"
-    << "<div>torsion at ES<b>" << Fixed(es.torsion_deg_per_cm, 2)
-    << "&deg;/cm</b>shear angle " << Fixed(es.shear_angle_deg, 1)
-    << "&deg;</div>"
+  h << "<div>net twist at ES<b>" << WithUnit(es.net_twist_deg, 1, "&deg;")
+    << "</b>"
+    << (Measured(es.net_twist_deg)
+            ? "apex " + Fixed(es.apex_rotation_deg, 1) + "&deg;, base " +
+                  Fixed(es.base_rotation_deg, 1) + "&deg;"
+            : "no tracked points at ES")
+    << "</div><div>torsion at ES<b>"
+    << WithUnit(es.torsion_deg_per_cm, 2, "&deg;/cm") << "</b>shear angle "
+    << WithUnit(es.shear_angle_deg, 1, "&deg;") << "</div>"
     << "<div>radial contraction at ES<b>"
     << Fixed(es.radial_contraction_percent, 1) << " %</b>"
     << "mean over ten rings</div>"
@@ -327,8 +353,13 @@ std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
          "sectors run counter-clockwise about the long axis seen from the "
          "base: the map is the LV seen from its base. Peak Ecc: the most "
          "negative over the frames (red is shortening); radial contraction "
-         "(red is inward) and rotation (green counter-clockwise seen from "
-         "the base) at ES. Each scale is symmetric about 0.</p>\n";
+         "(red is inward) "
+      << (Measured(analysis.clinical[ef.es_frame].net_twist_deg)
+              ? "and rotation (green counter-clockwise seen from the base) "
+                "at ES"
+              : "at ES; rotation is n/a there (no tracked points), and has "
+                "no map")
+      << ". Each scale is symmetric about 0.</p>\n";
   }
   h << "<table><tr><th>segment</th><th class=\"l\">region</th>"
     << "<th>longitude v, &deg;</th><th>rotation &deg;</th>"
@@ -370,7 +401,7 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   std::ostringstream h;
   h << PageHead(points, fit, analysis) << VerdictBoxHtml(fit, analysis)
     << KeyNumbers(fit, analysis) << MeasurementNote(fit, analysis);
-  if (!Tracked(points)) h << kUntrackedNote;
+  h << UntrackedNote(analysis);
   h << PlotSections(parameters_svg, cycle_svg, strain_svg)
     << FrameTable(fit, analysis) << RegionalSection(fit, analysis, bullseye_svg)
     << "</body></html>\n";

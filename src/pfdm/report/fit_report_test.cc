@@ -15,6 +15,57 @@ TEST(FitReportTest, InlinesSvg) {
   EXPECT_EQ(InlineSvg("not a plot"), "");
 }
 
+SequenceFit TruthAsFit(const Phantom& phantom) {
+  SequenceFit fit;
+  fit.config = phantom.truth[0].config;
+  for (size_t t = 0; t < phantom.truth.size(); ++t) {
+    FrameFit frame;
+    frame.frame = static_cast<int>(t);
+    frame.state = phantom.truth[t].state;
+    frame.termination = "CONVERGENCE";
+    fit.frames.push_back(frame);
+  }
+  return fit;
+}
+
+// Without tracked points at ES the cards read n/a for twist, torsion and
+// shear, the rotation cells of the tables too, and the bull's-eye's
+// caption says rotation has no map; contraction and strain are numbers.
+TEST(FitReportTest, WhatIsNotMeasuredReadsNA) {
+  PhantomOptions options;
+  options.num_points = 50;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  for (FrameFit& frame : fit.frames) frame.tracked = false;
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  const std::string html = FitReportHtml(phantom.points, fit, analysis, "", "",
+                                         "", "<svg id='b'></svg>");
+  EXPECT_NE(html.find("net twist at ES<b>n/a</b>no tracked points at ES"),
+            std::string::npos);
+  EXPECT_NE(html.find("torsion at ES<b>n/a</b>shear angle n/a</div>"),
+            std::string::npos);
+  EXPECT_NE(html.find("No tracked points:</b>"), std::string::npos);
+  EXPECT_NE(html.find("rotation is n/a there"), std::string::npos);
+  EXPECT_EQ(html.find("nan"), std::string::npos);
+  char radial[64];
+  std::snprintf(radial, sizeof(radial), "radial contraction at ES<b>%.1f %%",
+                analysis.clinical[4].radial_contraction_percent);
+  EXPECT_NE(html.find(radial), std::string::npos) << radial;
+  // Per frame: net twist, apex, base, torsion; per segment: rotation, Ecl.
+  EXPECT_EQ(CountOf(html, "<td>n/a</td>"), 5 * 4 + 16 * 2);
+
+  // Frame 2 alone without tracked points: ES has numbers, frame 2 n/a.
+  fit = TruthAsFit(phantom);
+  fit.frames[2].tracked = false;
+  const std::string mixed =
+      FitReportHtml(phantom.points, fit, AnalyzeFit(fit), "", "");
+  EXPECT_EQ(mixed.find("No tracked points:"), std::string::npos);
+  EXPECT_NE(mixed.find("Frames without tracked points:</b> frame 2, where"),
+            std::string::npos);
+  EXPECT_EQ(mixed.find("net twist at ES<b>n/a"), std::string::npos);
+  EXPECT_EQ(CountOf(mixed, "<td>n/a</td>"), 4);
+}
+
 TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   PhantomOptions options;
   options.num_points = 50;
@@ -65,6 +116,7 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   EXPECT_EQ(CountOf(html, "<tr>"), 2 + 5 + 16);
   EXPECT_NE(html.find("apical 4"), std::string::npos);
   EXPECT_EQ(html.find("No tracked points"), std::string::npos);  // Tags.
+  EXPECT_EQ(html.find("n/a"), std::string::npos);
   for (const char* external : {"src=", "href=", "<link", "@import"}) {
     EXPECT_EQ(html.find(external), std::string::npos) << external;
   }

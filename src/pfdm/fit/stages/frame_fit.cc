@@ -1,5 +1,7 @@
 #include "pfdm/fit/stages/frame_fit.h"
 
+#include <algorithm>
+
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/fit/stages/global_rounds.h"
 #include "pfdm/fit/stages/local_stage.h"
@@ -53,6 +55,20 @@ void CanonicalizeBending(Model* model, FrameFit* fit) {
   }
 }
 
+// Whether the frame's points show its turn about the axis (FrameFit::tracked).
+bool HasTrackedPoints(const FramePoints& points) {
+  switch (points.kind) {
+    case FrameKind::kReference:
+      return std::find(points.is_tag.begin(), points.is_tag.end(), true) !=
+             points.is_tag.end();
+    case FrameKind::kTracked:
+      return true;
+    case FrameKind::kUntracked:
+      return false;
+  }
+  return false;
+}
+
 }  // namespace
 
 FrameFit FitFrame(const Frame& frame, bool reference,
@@ -70,6 +86,7 @@ FrameFit FitFrame(const Frame& frame, bool reference,
       MakeFramePoints(frame, reference, frames_per_id,
                       carried->tracked_material, &fit.material);
   fit.kind = points.kind;
+  fit.tracked = HasTrackedPoints(points);
   const ModelState& prior = points.kind == FrameKind::kUntracked
                                 ? carried->reference
                                 : carried->previous;

@@ -29,6 +29,7 @@ TEST(FrameFitTest, CarriesFrameZeroToTheFramesAfterIt) {
   const std::int64_t id = sequence.frames[0].points[17].id;
   EXPECT_EQ(carried.tracked_material.at(id).u, first.material[17].u);
   EXPECT_NEAR(first.rms_mm, 0.5, 0.1);
+  EXPECT_TRUE(first.tracked);  // Its tags recur in frame 1.
 
   const FrameFit second =
       FitFrame(sequence.frames[1], false, start.frames_per_id, options,
@@ -43,6 +44,28 @@ TEST(FrameFitTest, CarriesFrameZeroToTheFramesAfterIt) {
   EXPECT_GT(second.rms_mm, std::sqrt(3.0) * 0.5);
   EXPECT_LT(second.rms_mm, std::sqrt(5.0) * 0.5);
   EXPECT_GT(second.solve_seconds, 0.0);
+  EXPECT_TRUE(second.tracked);
+}
+
+// The same points with ids unique per frame (contours): no frame is
+// tracked, frame 0 included, though the model moves as before.
+TEST(FrameFitTest, ContoursAreNotTracked) {
+  PointSequence sequence = MakeTestPhantom(1000, 2).points;
+  for (Frame& frame : sequence.frames) {
+    for (DataPoint& p : frame.points) p.id += 1000000 * frame.index;
+  }
+  const FitOptions options;
+  SequenceStart start =
+      StartSequence(sequence, ModelConfig::Paper(17), options);
+  CarriedState carried(start.model);
+  for (int t = 0; t < 2; ++t) {
+    const FrameFit fit =
+        FitFrame(sequence.frames[t], t == 0, start.frames_per_id, options,
+                 sequence.source, &start.wall, &carried);
+    EXPECT_FALSE(fit.tracked) << t;
+    EXPECT_LT(fit.rms_mm, 1.0) << t;
+  }
+  EXPECT_TRUE(carried.tracked_material.empty());
 }
 
 }  // namespace

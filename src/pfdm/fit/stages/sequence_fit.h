@@ -58,6 +58,12 @@ struct FrameFit {
   // What the fit itself sees of the frame (frame_verdict.h); the analysis
   // adds what it sees of the clinical numbers (report/plausibility.h).
   Verdict verdict;
+  // Whether the frame has tracked points, which alone show a turn about the
+  // long axis: frame 0 with tags (ids that later frames see again), or a
+  // later frame some of whose points keep a material point from an earlier
+  // one (FrameKind::kTracked).  Without them (contours) the gauge holds tau
+  // (gauge.h), and the report leaves rotation, twist, torsion and shear out.
+  bool tracked = true;
   // Every solver iteration of every correspondence round, numbered on.
   std::vector<SolverTracePoint> trace;
   std::vector<TrajectoryPoint> trajectory;  // See trajectory_per_decade.
