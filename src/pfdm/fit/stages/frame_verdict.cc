@@ -205,10 +205,6 @@ void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
 
 void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
                  SequenceFit* fit) {
-  bool tags = false;
-  for (const FrameFit& frame : fit->frames) {
-    tags = tags || frame.kind == FrameKind::kTracked;
-  }
   std::vector<double> rms;
   for (const FrameFit& frame : fit->frames) rms.push_back(frame.rms_mm);
   const double median_rms = Median(rms);
@@ -218,8 +214,7 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     JudgeSolver(frame, &frame.verdict);
     JudgeUnsettled(frame, median_rms, &frame.verdict);
     JudgeRms(frame, median_rms, spreads.norm(), &frame.verdict);
-    if (tags && frame.kind != FrameKind::kUntracked &&
-        options.prior_weight > 0) {
+    if (frame.tracked && options.prior_weight > 0) {
       JudgePrior(PriorPullMm(sequence.frames[t], frame, fit->config,
                              fit->frames[0].state.quaternion, options),
                  frame, &frame.verdict);
