@@ -9,6 +9,7 @@
 #include "pfdm/io/fit_json.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/fit_settings.h"
+#include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/error.h"
 #include "pybind11/stl.h"
@@ -65,11 +66,13 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   result->options = FitOptionsFrom(settings);
   BasePlanesFrom(settings, "");  // Checks base_plane before the fit.
   result->points = SequenceFrom(points, settings);
+  CheckOptionsAgainstPoints(result->options, result->points);
+  result->base_planes = BasePlanesFrom(settings, result->points.source);
   FitOptions options = result->options;
   options.solver.on_step = CheckSignals;
   py::gil_scoped_release release;
   result->fit = FitSequence(result->points, config, options);
-  result->base_planes = BasePlanesFrom(settings, result->points.source);
+  CheckPlanesBelowApex(result->points.source, result->base_planes, result->fit);
   result->analysis = AnalyzeFit(result->fit, result->base_planes);
   result->json =
       FitJson(result->points, result->fit, result->options, result->analysis);

@@ -46,6 +46,14 @@ def test_bad_options_raise_the_clis_message(cli_phantom):
         ({"base_plane": "lid"}, ["--base_plane", "lid"]),
         ({"format": "xml"}, ["--format", "xml"]),
         ({"jacobian": "guess"}, ["--jacobian", "guess"]),
+        # Issue 29: settings of no use or of no sense, and those checked
+        # against the data once read.
+        ({"time_step": 1.0}, ["--time_step", "1"]),
+        ({"local_stiffness": 0.0}, ["--local_stiffness", "0"]),
+        ({"loss": "cauchy", "loss_scale": 1e150},
+         ["--loss", "cauchy", "--loss_scale", "1e150"]),
+        ({"apex": (9e5, 0, 0), "base": (-9e5, 0, 0)},
+         ["--apex", "900000,0,0", "--base=-900000,0,0"]),
     ]
     for kwargs, flags in cases:
         message = cli_error("fit", "--points", points_csv, "--out",

@@ -94,13 +94,21 @@ std::vector<BatchCase> ReadManifest(const std::string& path) {
 }
 
 Shard ParseShard(const std::string& text) {
-  Shard shard;
-  std::istringstream in(text);
-  char slash = 0;
-  if (!(in >> shard.index >> slash >> shard.count) || slash != '/' ||
-      !(in >> std::ws).eof() || shard.count < 1 || shard.index < 0 ||
-      shard.index >= shard.count) {
-    throw InputError("--shard must be i/n with 0 <= i < n, got '" + text + "'");
+  // Digits only: a stream also read ' 0/1' and '+0/1' (issue 29).
+  const auto digits = [&](size_t begin, size_t end) {
+    return end > begin && end - begin <= 9 &&
+           text.find_first_not_of("0123456789", begin) >= end;
+  };
+  const size_t slash = text.find('/');
+  Shard shard{-1, 0};
+  if (slash != std::string::npos && digits(0, slash) &&
+      digits(slash + 1, text.size())) {
+    shard.index = std::stoi(text.substr(0, slash));
+    shard.count = std::stoi(text.substr(slash + 1));
+  }
+  if (shard.count < 1 || shard.index < 0 || shard.index >= shard.count) {
+    throw InputError("--shard must be i/n with 0 <= i < n, got '" + Clip(text) +
+                     "'");
   }
   return shard;
 }

@@ -65,7 +65,11 @@ TEST(BatchManifestTest, BadManifestsSayWhereInOneLine) {
 TEST(BatchManifestTest, ShardsPartitionTheCases) {
   EXPECT_EQ(ParseShard("2/5").index, 2);
   EXPECT_EQ(ParseShard("2/5").count, 5);
-  for (const char* bad : {"5/5", "-1/3", "1", "1/0", "a/b", "1/2x"}) {
+  EXPECT_EQ(ParseShard("0/1").count, 1);
+  // Issue 29: a stream read ' 0/1' and '+0/1' as 0/1.
+  for (const char* bad :
+       {"5/5", "-1/3", "1", "1/0", "a/b", "1/2x", " 0/1", "+0/1", "0/+1",
+        "0/ 1", "0/1 ", "0//1", "/1", "0/", "9999999999/1"}) {
     EXPECT_THROW(ParseShard(bad), InputError) << bad;
   }
   std::vector<BatchCase> cases(7);

@@ -13,6 +13,7 @@
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/io/point_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
@@ -20,7 +21,7 @@
 #include "pfdm/util/error.h"
 
 DEFINE_string(manifest, "", "batch: CSV with columns case,points[,contours]");
-DEFINE_int32(jobs, 1, "batch: cases fitted at once, one per thread");
+DEFINE_int32(jobs, 1, "batch: cases fitted at once, one per thread, 1 to 256");
 DEFINE_string(shard, "0/1",
               "batch: i/n, take every n-th case from the i-th "
               "(0-based), e.g. --shard $SLURM_ARRAY_TASK_ID/$N");
@@ -66,10 +67,12 @@ std::string RunCase(const BatchCase& c, const std::string& out,
     const PointSequence points =
         ReadPoints(c.points, FLAGS_format,
                    c.contours.empty() ? FLAGS_contours : c.contours);
+    CheckOptionsAgainstPoints(options, points);
+    const std::vector<BasePlane> planes = BasePlanesFromFlags(c.points);
     SvgRendering plots;  // gnuplot loads while the case is fitted.
     const SequenceFit fit = FitSequence(points, config, options);
-    WriteFitOutputs(dir, points, fit,
-                    AnalyzeFit(fit, BasePlanesFromFlags(c.points)), options,
+    CheckPlanesBelowApex(c.points, planes, fit);
+    WriteFitOutputs(dir, points, fit, AnalyzeFit(fit, planes), options,
                     VtkFormatFromFlags(), &plots);
     fs::remove(dir + "/error.txt");
     RemoveAbandonedTemporaries(dir, "error.txt");
@@ -99,7 +102,10 @@ int RunBatch() {
   if (FLAGS_manifest.empty())
     throw InputError("batch needs --manifest FILE.csv");
   if (FLAGS_out.empty()) throw InputError("batch needs --out DIR");
-  if (FLAGS_jobs < 1) throw InputError("--jobs must be at least 1");
+  if (FLAGS_jobs < 1 || FLAGS_jobs > 256) {
+    throw InputError("--jobs must be between 1 and 256, got " +
+                     std::to_string(FLAGS_jobs));
+  }
   const Shard shard = ParseShard(FLAGS_shard);
   const std::vector<BatchCase> all = ReadManifest(FLAGS_manifest);
   const std::vector<BatchCase> mine = CasesOfShard(all, shard);

@@ -1,22 +1,25 @@
 // pfdm check-jacobians: analytic and autodiff Jacobians against central
 // differences at ordinary and singular model states.
-#include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/residuals/jacobian_check.h"
 #include "pfdm/util/error.h"
 
 DEFINE_double(tolerance, 1e-6,
-              "check-jacobians: largest relative error allowed");
+              "check-jacobians: largest relative error allowed, 0 to below 1");
 
 namespace pfdm {
 
 int RunCheckJacobians() {
-  // NaN once failed every comparison and printed nothing on stderr.
-  if (!(FLAGS_tolerance >= 0.0) || !std::isfinite(FLAGS_tolerance)) {
-    throw InputError("--tolerance must be a number >= 0, got " +
-                     std::to_string(FLAGS_tolerance));
+  // NaN once failed every comparison and printed nothing on stderr; a
+  // relative error of 1 or more is no agreement at all.
+  if (!(FLAGS_tolerance >= 0.0 && FLAGS_tolerance < 1.0)) {
+    std::ostringstream text;
+    text << "--tolerance must be at least 0 and below 1, got "
+         << FLAGS_tolerance;
+    throw InputError(text.str());
   }
   const std::vector<JacobianCheck> checks = CheckJacobians();
   std::printf("%-26s %-8s %-9s %10s %10s %10s %10s %10s\n", "state", "residual",

@@ -137,7 +137,7 @@ TEST(CliCompareSolversTest, BadFlagsGiveOneLineAndNoOutput) {
       {"--points " + dir + "/tags.csv",
        "pfdm: error: compare-solvers needs --out DIR\n"},
       {"--points " + dir + "/tags.csv --max_steps 0 --out " + dir + "/out",
-       "pfdm: error: --max_steps must be at least 1\n"},
+       "pfdm: error: --max_steps must be between 1 and 1000000, got 0\n"},
       {"--points " + dir + "/tags.csv --out " + dir + "/out",
        "pfdm: error: " + dir +
            "/tags.csv: frame 0: only 1 points, at least 10 needed\n"},

@@ -1,5 +1,6 @@
 // End-to-end runs of the pfdm binary: the README's example and bad input.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -177,12 +178,13 @@ const BadInput kBadInputs[] = {
      "--threads must be between 1 and 256, got 0"},
     {"apex at base", "frame,id,x,y,z\n0,1,2,3,4\n", "--apex 1,2,3 --base 1,2,3",
      "--apex and --base must be at least 1 mm apart"},
-    {"no steps", "frame,id,x,y,z\n0,1,2,3,4\n", "--max_steps 0",
-     "--max_steps must be at least 1"},
-    {"unknown damping", "frame,id,x,y,z\n0,1,2,3,4\n", "--damping mass",
+    {"no steps", "frame,id,x,y,z\n0,1,2,3,4\n", "--solver damped --max_steps 0",
+     "--max_steps must be between 1 and 1000000, got 0"},
+    {"unknown damping", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--solver integrator --damping mass",
      "unknown --damping 'mass' (expected jacobi or unit)"},
     {"bad damping scale", "frame,id,x,y,z\n0,1,2,3,4\n",
-     "--damping_scale twist=0",
+     "--solver integrator --damping_scale twist=0",
      "--damping_scale entry 'twist=0' is not group=value with a positive "
      "value and group one of pose, shape, twist, bending, offsets"},
     {"local neither on nor off", "frame,id,x,y,z\n0,1,2,3,4\n", "--local 1",
@@ -193,7 +195,58 @@ const BadInput kBadInputs[] = {
      "'2x16'"},
     {"negative local stiffness", "frame,id,x,y,z\n0,1,2,3,4\n",
      "--local_stiffness -1",
-     "--local_stiffness must be between 0 and 1e6, got -1"},
+     "--local_stiffness must be between 1e-4 and 1e6 (--local off: no local "
+     "deformations), got -1"},
+    // Issue 29: each of these ran to exit 0.
+    {"no local stiffness", "frame,id,x,y,z\n0,1,2,3,4\n", "--local_stiffness 0",
+     "--local_stiffness must be between 1e-4 and 1e6 (--local off: no local "
+     "deformations), got 0"},
+    {"huge rest tolerance", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--solver integrator --rest_tolerance 1e308",
+     "--rest_tolerance must be between 1e-12 and 0.01, got 1e+308"},
+    {"endless steps", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--solver integrator --max_steps 2000000000",
+     "--max_steps must be between 1 and 1000000, got 2000000000"},
+    {"flag of simulate", "frame,id,x,y,z\n0,1,2,3,4\n", "--noise 3",
+     "--noise is a flag of simulate, not of fit"},
+    {"flag of batch", "frame,id,x,y,z\n0,1,2,3,4\n", "--jobs 2",
+     "--jobs is a flag of batch, not of fit"},
+    {"flag of mesh-points", "frame,id,x,y,z\n0,1,2,3,4\n", "--label 0",
+     "--label is a flag of mesh-points, not of fit"},
+    {"time step of no use", "frame,id,x,y,z\n0,1,2,3,4\n", "--time_step 1",
+     "--time_step applies to --solver damped or integrator, not --solver "
+     "direct"},
+    {"damping of no use", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--solver damped --damping unit",
+     "--damping applies to --solver integrator, not --solver damped"},
+    {"loss scale of no use", "frame,id,x,y,z\n0,1,2,3,4\n", "--loss_scale 2",
+     "--loss_scale applies to --loss huber or cauchy, not --loss none"},
+    {"three frames in one GPFile",
+     "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n"
+     "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t0\n"
+     "1\t2\t4\tSAX_LV_ENDOCARDIAL\t2\t1.0\t1\n"
+     "1\t2\t5\tSAX_LV_ENDOCARDIAL\t3\t1.0\t1\n"
+     "1\t2\t6\tSAX_LV_ENDOCARDIAL\t2\t1.0\t2\n",
+     "--format gpfile",
+     "tags.csv: holds 3 time frames (0, 1, 2 in column 'time frame'); a "
+     "GPFile is one frame: give a folder of GPFile_*.txt, one per frame"},
+    {"nan weight",
+     "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n"
+     "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\tnan\t0\n",
+     "--format gpfile", "tags.csv:2: column 'weight' is not a finite number"},
+    {"text time frame",
+     "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n"
+     "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\tED\n",
+     "--format gpfile",
+     "tags.csv:2: column 'time frame' is not a number: 'ED'"},
+    {"one point at 9e5 mm",
+     "frame,id,x,y,z\n0,0,0,-10,-16.18\n0,1,-10,-16.18,0\n"
+     "0,2,-16.18,0,-10\n0,3,0,-10,16.18\n0,4,-10,16.18,0\n"
+     "0,5,-16.18,0,10\n0,6,0,10,-16.18\n0,7,10,-16.18,0\n"
+     "0,8,16.18,0,-10\n0,9,0,10,16.18\n0,10,900000,0,0\n",
+     "",
+     "tags.csv:12: frame 0: the point lies 900000 mm from the centre of the "
+     "frame's points, beyond any heart (500 mm)"},
 };
 
 TEST(CliTest, BadInputGivesOneLineNonZeroExitAndNoOutput) {
@@ -222,13 +275,13 @@ TEST(CliTest, SimulateAndCheckJacobiansRefuseNotANumber) {
   CommandResult run = RunPfdm("simulate --noise nan --out " + dir + "/p.csv");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_EQ(run.error,
-            "pfdm: error: simulate needs 1 <= --frames <= 1000, 1 <= --tags "
-            "<= 1e6, 0 <= --noise <= 1000 (mm) and 0 <= --outliers <= 1\n");
+            "pfdm: error: --noise must be between 0 and 1000 (mm), got nan\n");
   EXPECT_FALSE(fs::exists(dir + "/p.csv"));
   run = RunPfdm("check-jacobians --tolerance nan");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_EQ(run.error,
-            "pfdm: error: --tolerance must be a number >= 0, got nan\n");
+            "pfdm: error: --tolerance must be at least 0 and below 1, got "
+            "nan\n");
 }
 
 // Issue 14: the folder was first tried after the whole fit.
@@ -259,6 +312,119 @@ TEST(CliTest, AnInputAmongTheOutputsIsRefused) {
                            dir + " would be given; choose another --out\n");
   EXPECT_EQ(ReadText(dir + "/parameters.csv"), before);
   EXPECT_FALSE(fs::exists(dir + "/fit.json"));
+}
+
+// One frame of biv-me guide points: an endocardium of 25 mm radius from its
+// apex at z = 10 to its base at z = 60, and a mitral valve ring at
+// valve_z.
+std::string GuidePoints(double valve_z) {
+  std::ostringstream text;
+  text << "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n";
+  for (int ring = 0; ring <= 12; ++ring) {
+    const double u = -1.5707963267948966 * (1.0 - ring / 12.0);
+    for (int j = 0; j < 16; ++j) {
+      const double v = 0.39269908169872414 * j;
+      text << 25 * std::cos(u) * std::cos(v) << '\t'
+           << 25 * std::cos(u) * std::sin(v) << '\t' << 60 + 50 * std::sin(u)
+           << "\tSAX_LV_ENDOCARDIAL\t" << ring << "\t1.0\t0\n";
+    }
+  }
+  for (int j = 0; j < 4; ++j) {
+    const double v = 1.5707963267948966 * j;
+    text << 20 * std::cos(v) << '\t' << 20 * std::sin(v) << '\t' << valve_z
+         << "\tMITRAL_VALVE\t13\t1.0\t0\n";
+  }
+  return text.str();
+}
+
+double CavityVolumeOf(const std::string& fit_json) {
+  return nlohmann::json::parse(ReadText(fit_json))["frames"][0].value(
+      "cavity_volume_ml", -1.0);
+}
+
+// Issue 29: with its mitral valve plane below the apex, GPFile_*.txt gave a
+// cavity of 0.0 ml and the same file as case.txt (--format gpfile) 138.8 ml
+// under a flat lid; both exit 0.  Now the format, not the name, says guide
+// points, and such a plane is refused naming the file and frame.
+TEST(CliTest, AMitralPlaneBeyondTheApexIsRefusedWhateverTheFilesName) {
+  const std::string dir = ScratchDirectory("cli_valve");
+  const std::string named = dir + "/GPFile_000.txt", other = dir + "/case.txt";
+  WriteText(named, GuidePoints(62.0));
+  WriteText(other, GuidePoints(62.0));
+  CommandResult run = RunPfdm("fit --points " + named + " --out " + dir + "/a");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  run =
+      RunPfdm("fit --format gpfile --points " + other + " --out " + dir + "/b");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  // Half an ellipsoid of 25, 25 and 50 mm (65.45 ml) and the model's slab
+  // from its equator to the valve 2 mm above it (3.92 ml).
+  const double volume = CavityVolumeOf(dir + "/a/fit.json");
+  EXPECT_NEAR(volume, 69.37, 1.0);
+  EXPECT_EQ(CavityVolumeOf(dir + "/b/fit.json"), volume);
+
+  for (const std::string& path : {named, other}) {
+    WriteText(path, GuidePoints(-20.0));
+    run = RunPfdm("fit --format gpfile --points " + path + " --out " + dir +
+                  "/below");
+    EXPECT_EQ(run.exit_code, 1) << path;
+    const std::string head =
+        "pfdm: error: " + path + ": frame 0: the MITRAL_VALVE plane lies ";
+    const std::string tail =
+        " mm beyond the fitted apex, closing no cavity; --base_plane rim "
+        "closes at the rim\n";
+    ASSERT_EQ(run.error.rfind(head, 0), 0u) << run.error;
+    ASSERT_GT(run.error.size(), head.size() + tail.size());
+    EXPECT_EQ(run.error.substr(run.error.size() - tail.size()), tail);
+    // The apex at z = 10, the plane at z = -20.
+    EXPECT_NEAR(std::stod(run.error.substr(head.size())), 30.0, 1.5);
+    EXPECT_FALSE(fs::exists(dir + "/below"));
+  }
+}
+
+// Issue 29: these were accepted as shard 0 of 1.
+TEST(CliTest, BatchRefusesAShardThatIsNotDigits) {
+  for (const char* shard : {"' 0/1'", "+0/1"}) {
+    const CommandResult run =
+        RunPfdm(std::string("batch --manifest m.csv --out o --shard ") + shard);
+    EXPECT_EQ(run.exit_code, 1);
+    const std::string text = shard[0] == '\'' ? " 0/1" : shard;
+    EXPECT_EQ(run.error,
+              "pfdm: error: --shard must be i/n with 0 <= i < n, "
+              "got '" +
+                  text + "'\n");
+  }
+  const CommandResult run = RunPfdm("batch --manifest m.csv --points p.csv");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.error,
+            "pfdm: error: --points is a flag of fit, compare-solvers, not of "
+            "batch\n");
+}
+
+// pfdm_main.cc lists the flags each command reads; one listed nowhere
+// would be refused by every command.  Given with its default, each of
+// pfdm's flags is fit's or named as another command's.
+TEST(CliTest, EveryFlagIsSomeCommands) {
+  const std::string xml = RunPfdm("--helpxml").output;
+  const std::string open = "<flag><file>", tag = "pfdm/cli/";
+  int flags = 0;
+  for (size_t at = xml.find(open); at != std::string::npos;
+       at = xml.find(open, at + 1)) {
+    const size_t end = xml.find("</flag>", at);
+    const std::string entry = xml.substr(at, end - at);
+    if (entry.find(tag) == std::string::npos) continue;  // gflags', glog's.
+    const auto field = [&](const std::string& name) {
+      const size_t begin = entry.find("<" + name + ">") + name.size() + 2;
+      return entry.substr(begin, entry.find("</" + name + ">") - begin);
+    };
+    const CommandResult run =
+        RunPfdm("fit '--" + field("name") + "=" + field("default") + "'");
+    EXPECT_EQ(run.exit_code, 1) << field("name");
+    EXPECT_TRUE(run.error == "pfdm: error: fit needs --out DIR\n" ||
+                run.error.find(" is a flag of ") != std::string::npos)
+        << run.error;
+    ++flags;
+  }
+  EXPECT_GE(flags, 48);
 }
 
 TEST(CliTest, UnknownCommandIsAUsageError) {

@@ -17,7 +17,8 @@
 
 DEFINE_int32(trajectory_per_decade, 10,
              "compare-solvers: model states written to trajectory.csv per "
-             "decade of iterations (log-spaced, plus first and last)");
+             "decade of iterations (log-spaced, plus first and last), 1 to "
+             "1000");
 
 namespace pfdm {
 namespace {
@@ -98,12 +99,16 @@ int RunCompareSolvers() {
   if (FLAGS_out.empty()) throw InputError("compare-solvers needs --out DIR");
   CheckFitOutputFolder(FLAGS_out, "");  // Before the fits, not after them.
   const ModelConfig config = ModelConfigFromFlags();
-  FitOptions base = FitOptionsFromFlags();
-  if (FLAGS_trajectory_per_decade < 1) {
-    throw InputError("--trajectory_per_decade must be at least 1");
+  // Every solver runs: their settings all apply.
+  FitOptions base = FitOptionsForEverySolver(FitSettingsFromFlags());
+  if (FLAGS_trajectory_per_decade < 1 || FLAGS_trajectory_per_decade > 1000) {
+    throw InputError(
+        "--trajectory_per_decade must be between 1 and 1000, got " +
+        std::to_string(FLAGS_trajectory_per_decade));
   }
   base.trajectory_per_decade = FLAGS_trajectory_per_decade;
   const PointSequence points = PointsFromFlags();
+  CheckOptionsAgainstPoints(base, points);
 
   std::map<SolverKind, SequenceFit> fits;
   for (SolverKind kind : kSolvers) {

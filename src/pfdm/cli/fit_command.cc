@@ -4,6 +4,7 @@
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/error.h"
@@ -58,13 +59,15 @@ int RunFit() {
   // Before the minutes of work, not after them.
   CheckFitOutputFolder(FLAGS_out, FLAGS_points);
   const PointSequence points = PointsFromFlags();
+  CheckOptionsAgainstPoints(options, points);
+  const std::vector<BasePlane> planes = BasePlanesFromFlags(FLAGS_points);
   // gnuplot loads while the frames are fitted.
   SvgRendering plots;
   const SequenceFit fit = FitSequence(points, config, options);
+  CheckPlanesBelowApex(FLAGS_points, planes, fit);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
-  const FitAnalysis analysis =
-      AnalyzeFit(fit, BasePlanesFromFlags(FLAGS_points));
+  const FitAnalysis analysis = AnalyzeFit(fit, planes);
   WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format,
                   &plots);
   const int exit_code = ReportQuality(fit, analysis);

@@ -33,13 +33,17 @@ DEFINE_double(untracked_prior, kDefaults.untracked_prior,
               "0, same units, 0 to 1e6");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
 DEFINE_double(loss_scale, kDefaults.loss_scale,
-              "robust loss scale, mm, positive");
+              "--loss huber or cauchy: the loss's scale, mm, 1e-2 to 1e3 "
+              "times the RMS radius of frame 0's points");
 DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
-DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
+DEFINE_string(apex, "",
+              "optional apex hint x,y,z (mm), with --base; within twice the "
+              "farthest of frame 0's points from their centroid");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
 DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
 DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
-              "Ceres linear solver of the global functions' solve, e.g. "
+              "direct and damped: Ceres linear solver of the global "
+              "functions' solve, e.g. "
               "SPARSE_NORMAL_CHOLESKY, DENSE_NORMAL_CHOLESKY, DENSE_QR (the "
               "local field's is SPARSE_NORMAL_CHOLESKY)");
 DEFINE_double(time_step, kDefaults.time_step,
@@ -48,9 +52,10 @@ DEFINE_double(time_step, kDefaults.time_step,
               "1000)");
 DEFINE_double(rest_tolerance, kDefaults.rest_tolerance,
               "damped and integrator: at rest when the energy dissipated per "
-              "unit pseudo-time is below rest_tolerance^2 of the initial");
+              "unit pseudo-time is below rest_tolerance^2 of the initial, "
+              "1e-12 to 0.01");
 DEFINE_int32(max_steps, kDefaults.max_steps,
-             "damped and integrator: most steps per solve");
+             "damped and integrator: most steps per solve, 1 to 1e6");
 DEFINE_string(damping, kDefaults.damping.c_str(),
               "integrator: damping D = jacobi (diag J^T J) or unit");
 DEFINE_string(damping_scale, "",
@@ -65,7 +70,7 @@ DEFINE_string(local_grid, kDefaults.local_grid.c_str(),
               "columns (around), 3 to 40 x 4 to 72");
 DEFINE_double(local_stiffness, kDefaults.local_stiffness,
               "local deformations' membrane and thin-plate weight, relative "
-              "to one node's data, 0 to 1e6");
+              "to one node's data, 1e-4 to 1e6 (--local off: none)");
 DEFINE_string(vtk_format, kDefaults.vtk_format.c_str(),
               "fit, batch: frame_NNN.vtk and .vtp as binary (legacy BINARY, "
               "XML appended raw; exact, no formatting) or ascii (text, 9 "

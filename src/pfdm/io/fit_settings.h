@@ -13,6 +13,7 @@
 #include "pfdm/model/base_plane.h"
 #include "pfdm/model/model.h"
 #include "pfdm/solvers/solver.h"
+#include "pfdm/util/point_data.h"
 
 namespace pfdm {
 
@@ -50,13 +51,26 @@ struct FitSettings {
   std::string vtk_format = "binary";
 };
 
-// Each throws InputError naming the flag at fault.
+// Each throws InputError naming the flag at fault, its value and what it
+// must be.  FitOptionsFrom also refuses a setting the chosen solver, loss or
+// local field does not use (--time_step with --solver direct, --loss_scale
+// with --loss none); FitOptionsForEverySolver only those of the loss and
+// the local field (compare-solvers runs every solver).
 ModelConfig ModelConfigFrom(const FitSettings& settings);
 FitOptions FitOptionsFrom(const FitSettings& settings);
+FitOptions FitOptionsForEverySolver(const FitSettings& settings);
+// The settings whose sense depends on the data's scale, once the points are
+// read: a robust loss's scale within 1e-2 to 1e3 times the RMS radius of
+// frame 0's points about their centroid, and --apex and --base within twice
+// the farthest of those points from it.  Throws InputError naming the flag.
+void CheckOptionsAgainstPoints(const FitOptions& options,
+                               const PointSequence& points);
 VtkFormat VtkFormatFrom(const FitSettings& settings);
 // Per frame, the plane closing the cavity: none for base_plane "rim", the
 // mitral valve planes of the guide points at `points` for "auto" (none
-// when they have none).  An empty `points` only checks base_plane.
+// when they have none), whatever the file's name when settings.format says
+// gpfile.  An empty `points` only checks base_plane.  Once fitted, the
+// planes go through CheckPlanesBelowApex (io/mitral_valve_planes.h).
 std::vector<BasePlane> BasePlanesFrom(const FitSettings& settings,
                                       const std::string& points);
 

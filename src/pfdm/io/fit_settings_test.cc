@@ -54,7 +54,6 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   settings.model = "superellipsoid";
   settings.knots = 9;
   settings.solver = "integrator";
-  settings.linear_solver = "DENSE_QR";
   settings.damping = "unit";
   settings.damping_scale = "twist=2";
   settings.time_step = 0.5;
@@ -62,7 +61,6 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   settings.base = "4,5,6.5";
   const FitOptions options = FitOptionsFrom(settings);
   EXPECT_EQ(options.solver.kind, SolverKind::kIntegrator);
-  EXPECT_EQ(options.solver.linear_solver, ceres::DENSE_QR);
   EXPECT_EQ(options.solver.damping, DampingKind::kUnit);
   EXPECT_EQ(options.damping_groups.twist, 2.0);
   EXPECT_EQ(options.solver.time_step, 0.5);
@@ -71,6 +69,16 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   EXPECT_EQ(options.hint->base_center, Eigen::Vector3d(4, 5, 6.5));
   EXPECT_EQ(ModelConfigFrom(settings).num_knots, 9);
   EXPECT_EQ(ModelConfigFrom(settings).name, "superellipsoid");
+  settings = FitSettings();
+  settings.solver = "damped";
+  settings.linear_solver = "DENSE_QR";
+  settings.rest_tolerance = 0.01;
+  settings.max_steps = 1000000;
+  settings.local_stiffness = 1e-4;
+  EXPECT_EQ(FitOptionsFrom(settings).solver.linear_solver, ceres::DENSE_QR);
+  EXPECT_EQ(FitOptionsFrom(settings).solver.rest_tolerance, 0.01);
+  EXPECT_EQ(FitOptionsFrom(settings).solver.max_steps, 1000000);
+  EXPECT_EQ(FitOptionsFrom(settings).local.stiffness, 1e-4);
 }
 
 TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
@@ -92,23 +100,180 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
             "columns, got '9x100'");
   s = FitSettings();
   s.local_stiffness = -1.0;
-  EXPECT_EQ(ErrorOf(s), "--local_stiffness must be between 0 and 1e6, got -1");
+  EXPECT_EQ(ErrorOf(s),
+            "--local_stiffness must be between 1e-4 and 1e6 (--local off: no "
+            "local deformations), got -1");
   s = FitSettings();
   s.linear_solver = "MAGIC";
   EXPECT_EQ(ErrorOf(s), "unknown --linear_solver 'MAGIC'");
   s = FitSettings();
+  s.solver = "integrator";
   s.time_step = -1.0;
   EXPECT_EQ(ErrorOf(s),
             "--time_step must be 0 (default) or between 1e-6 and 1e12, got -1");
   s = FitSettings();
+  s.solver = "damped";
   s.max_steps = 0;
-  EXPECT_EQ(ErrorOf(s), "--max_steps must be at least 1");
+  EXPECT_EQ(ErrorOf(s), "--max_steps must be between 1 and 1000000, got 0");
   s = FitSettings();
   s.knots = 1;
   EXPECT_EQ(ErrorOf(s), "--knots must be between 2 and 100, got 1");
   s = FitSettings();
   s.base_plane = "lid";
   EXPECT_EQ(ErrorOf(s), "unknown --base_plane 'lid' (expected auto or rim)");
+}
+
+// Issue 29: each of these ran to exit 0; the values at the edges of the
+// ranges are accepted (above, SettingsReachTheOptions).
+TEST(FitSettingsTest, NumbersOutsideWhatMakesSenseNameFlagValueAndRange) {
+  FitSettings s;
+  s.local_stiffness = 0.0;  // 67,888 ml.
+  EXPECT_EQ(ErrorOf(s),
+            "--local_stiffness must be between 1e-4 and 1e6 (--local off: no "
+            "local deformations), got 0");
+  s = FitSettings();
+  s.solver = "integrator";
+  s.rest_tolerance = 1e308;  // Stopped the integrator at once.
+  EXPECT_EQ(ErrorOf(s),
+            "--rest_tolerance must be between 1e-12 and 0.01, got 1e+308");
+  s.rest_tolerance = 0.02;
+  EXPECT_EQ(ErrorOf(s),
+            "--rest_tolerance must be between 1e-12 and 0.01, got 0.02");
+  s = FitSettings();
+  s.solver = "damped";
+  s.max_steps = 2147483647;
+  EXPECT_EQ(ErrorOf(s),
+            "--max_steps must be between 1 and 1000000, got 2147483647");
+  s = FitSettings();
+  s.threads = 257;
+  EXPECT_EQ(ErrorOf(s), "--threads must be between 1 and 256, got 257");
+}
+
+// Issue 29: --time_step with the direct solver was silently ignored.  A
+// setting differing from its default is one given; the defaults pass.
+TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
+  struct Case {
+    void (*set)(FitSettings*);
+    const char* message;
+  };
+  const Case cases[] = {
+      {[](FitSettings* s) { s->time_step = 1.0; },
+       "--time_step applies to --solver damped or integrator, not --solver "
+       "direct"},
+      {[](FitSettings* s) { s->rest_tolerance = 1e-3; },
+       "--rest_tolerance applies to --solver damped or integrator, not "
+       "--solver direct"},
+      {[](FitSettings* s) { s->max_steps = 10; },
+       "--max_steps applies to --solver damped or integrator, not --solver "
+       "direct"},
+      {[](FitSettings* s) {
+         s->solver = "damped";
+         s->damping = "unit";
+       },
+       "--damping applies to --solver integrator, not --solver damped"},
+      {[](FitSettings* s) { s->damping_scale = "twist=2"; },
+       "--damping_scale applies to --solver integrator, not --solver direct"},
+      {[](FitSettings* s) {
+         s->solver = "integrator";
+         s->linear_solver = "DENSE_QR";
+       },
+       "--linear_solver applies to --solver direct or damped, not --solver "
+       "integrator"},
+      {[](FitSettings* s) { s->loss_scale = 2.0; },
+       "--loss_scale applies to --loss huber or cauchy, not --loss none"},
+      {[](FitSettings* s) {
+         s->local = "off";
+         s->local_grid = "9x16";
+       },
+       "--local_grid applies to --local on, not --local off"},
+      {[](FitSettings* s) {
+         s->local = "off";
+         s->local_stiffness = 1.0;
+       },
+       "--local_stiffness applies to --local on, not --local off"},
+  };
+  for (const Case& c : cases) {
+    FitSettings s;
+    c.set(&s);
+    EXPECT_EQ(ErrorOf(s), c.message);
+  }
+  // compare-solvers runs every solver: theirs all apply, the loss's not.
+  FitSettings s;
+  s.time_step = 1.0;
+  s.damping = "unit";
+  s.linear_solver = "DENSE_QR";
+  EXPECT_EQ(FitOptionsForEverySolver(s).solver.time_step, 1.0);
+  s.loss_scale = 2.0;
+  EXPECT_THROW(FitOptionsForEverySolver(s), InputError);
+}
+
+std::string ErrorAgainst(const FitOptions& options,
+                         const PointSequence& points) {
+  try {
+    CheckOptionsAgainstPoints(options, points);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// Frame 0: the 8 corners of a cube of side 20 about (100, 0, 0), twice
+// (a fit needs 10 points): RMS radius and farthest point 10 sqrt(3) =
+// 17.32 mm.
+PointSequence Cube() {
+  PointSequence points;
+  points.frames.resize(1);
+  for (int i = 0; i < 16; ++i) {
+    points.frames[0].points.push_back(
+        {i, Eigen::Vector3d(100 + (i & 1 ? 10 : -10), i & 2 ? 10 : -10,
+                            i & 4 ? 10 : -10)});
+  }
+  return points;
+}
+
+// Issue 29: a Cauchy scale of 1e150 or a Huber one of 1e-300 left the
+// model where it started; --apex 900000,0,0 gave an EDV of 3.6e12 ml.
+TEST(FitSettingsTest, LossScaleAndAxisHintAreBoundedByTheDatasScale) {
+  const PointSequence cube = Cube();
+  FitSettings s;
+  s.loss = "cauchy";
+  s.loss_scale = 1e150;
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube),
+            "--loss_scale must be between 0.173 and 17321 mm (1e-2 to 1e3 "
+            "times the RMS radius of frame 0's points, 17.3 mm), got 1e+150");
+  s.loss = "huber";
+  s.loss_scale = 1e-300;
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube),
+            "--loss_scale must be between 0.173 and 17321 mm (1e-2 to 1e3 "
+            "times the RMS radius of frame 0's points, 17.3 mm), got 1e-300");
+  s.loss_scale = 0.18;  // Just inside.
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube), "");
+  s.loss_scale = 17000;
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube), "");
+
+  s = FitSettings();
+  s.apex = "900000,0,0";
+  s.base = "-900000,0,0";
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube),
+            "--apex must lie within 34.6 mm of the centroid of frame 0's "
+            "points (twice the farthest point's distance), got 900000,0,0, "
+            "899900 mm from it");
+  s.apex = "130,0,0";  // 30 mm from the centroid: inside.
+  s.base = "100,0,40";
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube),
+            "--base must lie within 34.6 mm of the centroid of frame 0's "
+            "points (twice the farthest point's distance), got 100,0,40, "
+            "40 mm from it");
+  s.base = "100,0,30";
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube), "");
+  // Points too few or at one place: the fit's start says so.
+  s.apex = "900000,0,0";
+  PointSequence few = cube;
+  few.frames[0].points.resize(9);
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), few), "");
+  PointSequence one_place = cube;
+  for (DataPoint& p : one_place.frames[0].points) p.position.setZero();
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), one_place), "");
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "libfccp/csv.h"
+#include "pfdm/io/point_spread.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/input_file.h"
 
@@ -70,34 +71,45 @@ InputError Restate(const std::string& path, const io::error::base& error) {
   return InputError(where + ": " + what);
 }
 
+// "PATH:LINE: column 'NAME'", built only for a message (built for every
+// value, it was a third of reading).
+std::string Where(const std::string& path, unsigned line, const char* name) {
+  return path + ":" + std::to_string(line) + ": column '" + name + "'";
+}
+
 // libfccp splits the fields; its own float parser rounds differently from
-// strtod, so coordinates are converted by the standard library, which makes
-// written files read back bit for bit.
-double ParseCoordinate(const std::string& path, unsigned line, const char* name,
-                       const char* text) {
-  // Only for a message: built for every value, it was a third of reading.
-  const auto where = [&] {
-    return path + ":" + std::to_string(line) + ": column '" + name + "'";
-  };
+// strtod, so numbers are converted by the standard library, which makes
+// written files read back bit for bit.  Throws "PATH:LINE: column 'NAME'
+// is not a (finite) number".
+double ParseFinite(const std::string& path, unsigned line, const char* name,
+                   const char* text) {
   double value = 0.0;
   const char* end = text + std::strlen(text);
   // from_chars refuses the explicit plus sign that strtod and writers allow.
   const char* begin = text[0] == '+' && text[1] != '-' ? text + 1 : text;
   const auto [rest, error] = std::from_chars(begin, end, value);
   if (error == std::errc::result_out_of_range) {
-    throw InputError(where() + " is out of range: '" + Clip(text) + "'");
+    throw InputError(Where(path, line, name) + " is out of range: '" +
+                     Clip(text) + "'");
   }
   if (error != std::errc() || rest != end || rest == begin) {
-    throw InputError(where() + " is not a number: '" + Clip(text) + "'");
+    throw InputError(Where(path, line, name) + " is not a number: '" +
+                     Clip(text) + "'");
   }
   if (!std::isfinite(value)) {
-    throw InputError(where() + " is not a finite number");
+    throw InputError(Where(path, line, name) + " is not a finite number");
   }
+  return value;
+}
+
+double ParseCoordinate(const std::string& path, unsigned line, const char* name,
+                       const char* text) {
+  const double value = ParseFinite(path, line, name, text);
   // Squares of 1e155 overflow inside the solver (a Ceres CHECK aborted the
   // program, issue 14); no heart lies a kilometre from the scanner origin.
   if (std::abs(value) > kMaxCoordinateMm) {
-    throw InputError(where() + " is out of range: '" + Clip(text) +
-                     "' (more than 1e6 mm from the origin)");
+    throw InputError(Where(path, line, name) + " is out of range: '" +
+                     Clip(text) + "' (more than 1e6 mm from the origin)");
   }
   return value;
 }
@@ -196,7 +208,12 @@ PointSequence ReadPointsCsv(const std::string& path) {
     throw Restate(path, error);
   }
   CheckIdsOncePerFrame(path, frames, lines);
-  return Assemble(path, std::move(frames));
+  PointSequence sequence = Assemble(path, std::move(frames));
+  for (const Frame& frame : sequence.frames) {
+    CheckPointsLieTogether(path, frame.index, frame.points,
+                           lines.at(frame.index));
+  }
+  return sequence;
 }
 
 namespace {
@@ -215,49 +232,154 @@ WallLayer ContourLayer(const std::string& type) {
   return WallLayer::kAnywhere;
 }
 
+// The time frames a GPFile's `time frame` column names.  biv-me labels the
+// rows of one long-axis slice 1.0 in every frame's file (all 25 of patient
+// 1's), so a 1 on the rows of a single slice (frameID) is that label, not a
+// frame; a 1 on two slices, or any other second value, is a second frame.
+class TimeFrames {
+ public:
+  // slice: the row's frameID, nullptr when the file has none (then every
+  // value is a frame).
+  void Add(long long frame, const char* slice) {
+    Seen& seen = seen_[frame];
+    if (slice == nullptr || (seen.rows > 0 && seen.slice != slice)) {
+      seen.several = true;
+    }
+    if (seen.rows++ == 0 && slice != nullptr) seen.slice = slice;
+  }
+
+  // Throws "FILE: holds N time frames (A, B, C in column 'time frame') ..."
+  // for more than one: fitted as one frame, 3 frames' contours once made
+  // one frame of 1,500 points (issue 29).  Not split by the column: the
+  // label above would put a slice of each frame into frame 1.
+  void CheckOne(const std::string& file) const {
+    std::vector<long long> frames;
+    for (const auto& [frame, seen] : seen_) {
+      if (frame != 1 || seen.several || seen_.size() == 1) {
+        frames.push_back(frame);
+      }
+    }
+    if (frames.size() <= 1) return;
+    std::string list;
+    for (size_t i = 0; i < frames.size(); ++i) {
+      if (i == 4 && frames.size() > 5) {
+        list += ", ...";
+        i = frames.size() - 1;
+      }
+      list += (i > 0 ? ", " : "") + std::to_string(frames[i]);
+    }
+    throw InputError(file + ": holds " + std::to_string(frames.size()) +
+                     " time frames (" + list +
+                     " in column 'time frame'); a GPFile is one frame: give "
+                     "a folder of GPFile_*.txt, one per frame");
+  }
+
+ private:
+  struct Seen {
+    std::string slice;
+    long long rows = 0;
+    bool several = false;
+  };
+  std::map<long long, Seen> seen_;
+};
+
+// A row's `time frame`: a whole number from 0 (biv-me writes 1.0 too).
+long long ParseTimeFrame(const std::string& file, unsigned line,
+                         const char* text) {
+  const double value = ParseFinite(file, line, "time frame", text);
+  if (!(value >= 0.0 && value <= 1e6 && value == std::floor(value))) {
+    throw InputError(Where(file, line, "time frame") +
+                     " is not a frame number (a whole number from 0): '" +
+                     Clip(text) + "'");
+  }
+  return static_cast<long long>(value);
+}
+
+void CheckWeight(const std::string& file, unsigned line, const char* text) {
+  if (ParseFinite(file, line, "weight", text) < 0.0) {
+    throw InputError(Where(file, line, "weight") + " is negative: '" +
+                     Clip(text) + "'");
+  }
+}
+
+struct GpFilePoints {
+  std::vector<DataPoint> points;  // The kept rows'.
+  std::vector<unsigned> lines;
+};
+
+// One file's rows of the kept contour types, numbered from *next_id on;
+// every row's numbers are checked, kept or not.
+GpFilePoints ReadGpFile(const std::string& file,
+                        const std::set<std::string>& keep,
+                        std::int64_t* next_id) {
+  const std::string text = ReadInputFile(file);
+  GpFilePoints kept;
+  TimeFrames time_frames;
+  try {
+    io::CSVReader<7, io::trim_chars<' '>, io::no_quote_escape<'\t'>,
+                  io::throw_on_overflow, io::empty_line_comment>
+        in(file, text.data(), text.data() + text.size());
+    // frameID, weight and time frame are checked when there.
+    in.read_header(io::ignore_extra_column | io::ignore_missing_column, "x",
+                   "y", "z", "contour type", "frameID", "weight", "time frame");
+    for (const char* name : {"x", "y", "z", "contour type"}) {
+      if (!in.has_column(name)) {
+        throw InputError(file + ": missing column '" + name + "'");
+      }
+    }
+    char *x = nullptr, *y = nullptr, *z = nullptr, *type = nullptr;
+    char *slice = nullptr, *weight = nullptr, *time = nullptr;
+    while (in.read_row(x, y, z, type, slice, weight, time)) {
+      const unsigned line = in.get_file_line();
+      const Eigen::Vector3d position(ParseCoordinate(file, line, "x", x),
+                                     ParseCoordinate(file, line, "y", y),
+                                     ParseCoordinate(file, line, "z", z));
+      if (weight != nullptr) CheckWeight(file, line, weight);
+      if (time != nullptr) {
+        time_frames.Add(ParseTimeFrame(file, line, time), slice);
+      }
+      if (!keep.empty() && keep.count(type) == 0) continue;
+      kept.points.push_back({(*next_id)++, position, ContourLayer(type)});
+      kept.lines.push_back(line);
+    }
+  } catch (const io::error::base& error) {
+    throw Restate(file, error);
+  }
+  time_frames.CheckOne(file);
+  return kept;
+}
+
+// A folder's GPFile_*.txt in name order, or the one file.
+std::vector<std::string> GpFilesAt(const std::string& path) {
+  if (!std::filesystem::is_directory(path)) return {path};
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(path)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("GPFile_", 0) == 0 && entry.path().extension() == ".txt") {
+      files.push_back(entry.path().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) {
+    throw InputError(path + ": no GPFile_*.txt in this folder");
+  }
+  return files;
+}
+
 }  // namespace
 
 PointSequence ReadGpFiles(const std::string& path,
-                          const std::vector<std::string>& contour_types) {
-  std::vector<std::string> files;
-  if (std::filesystem::is_directory(path)) {
-    for (const auto& entry : std::filesystem::directory_iterator(path)) {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind("GPFile_", 0) == 0 && entry.path().extension() == ".txt") {
-        files.push_back(entry.path().string());
-      }
-    }
-    std::sort(files.begin(), files.end());
-    if (files.empty()) {
-      throw InputError(path + ": no GPFile_*.txt in this folder");
-    }
-  } else {
-    files.push_back(path);
-  }
+                          const std::vector<std::string>& contour_types,
+                          EmptyFrames empty_frames) {
+  const std::vector<std::string> files = GpFilesAt(path);
   const std::set<std::string> keep(contour_types.begin(), contour_types.end());
   std::map<long long, std::vector<DataPoint>> frames;
   std::int64_t next_id = 0;
-  for (size_t file_index = 0; file_index < files.size(); ++file_index) {
-    const std::string& file = files[file_index];
-    std::vector<DataPoint>& points = frames[file_index];
-    const std::string text = ReadInputFile(file);
-    try {
-      io::CSVReader<4, io::trim_chars<' '>, io::no_quote_escape<'\t'>,
-                    io::throw_on_overflow, io::empty_line_comment>
-          in(file, text.data(), text.data() + text.size());
-      in.read_header(io::ignore_extra_column, "x", "y", "z", "contour type");
-      char *x = nullptr, *y = nullptr, *z = nullptr, *type = nullptr;
-      while (in.read_row(x, y, z, type)) {
-        const unsigned line = in.get_file_line();
-        const Eigen::Vector3d position(ParseCoordinate(file, line, "x", x),
-                                       ParseCoordinate(file, line, "y", y),
-                                       ParseCoordinate(file, line, "z", z));
-        if (!keep.empty() && keep.count(type) == 0) continue;
-        points.push_back({next_id++, position, ContourLayer(type)});
-      }
-    } catch (const io::error::base& error) {
-      throw Restate(file, error);
-    }
+  for (size_t index = 0; index < files.size(); ++index) {
+    GpFilePoints kept = ReadGpFile(files[index], keep, &next_id);
+    CheckPointsLieTogether(files[index], static_cast<int>(index), kept.points,
+                           kept.lines);
+    frames[index] = std::move(kept.points);
   }
   // A filter that matches nothing anywhere is a wrong type name, not a
   // frame without contours: say so once, for the whole input.
@@ -268,11 +390,13 @@ PointSequence ReadGpFiles(const std::string& path,
       what += (i > 0 ? "," : "") + contour_types[i];
     }
   }
-  if (next_id == 0) throw InputError(path + ": " + what);
-  for (const auto& [index, points] : frames) {
-    if (points.empty()) {
-      throw InputError(files[index] + ": frame " + std::to_string(index) +
-                       ": " + what);
+  if (empty_frames == EmptyFrames::kRefuse) {
+    if (next_id == 0) throw InputError(path + ": " + what);
+    for (const auto& [index, points] : frames) {
+      if (points.empty()) {
+        throw InputError(files[index] + ": frame " + std::to_string(index) +
+                         ": " + what);
+      }
     }
   }
   PointSequence sequence = Assemble(path, std::move(frames));

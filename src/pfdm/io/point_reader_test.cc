@@ -244,6 +244,135 @@ TEST(PointReaderTest, GpFileErrorsNameTheFileAndLineOrFrame) {
   EXPECT_EQ(GpErrorOf(empty, {}), empty + ": no GPFile_*.txt in this folder");
 }
 
+const char kGpHeader[] = "x\ty\tz\tcontour type\tframeID\tweight\ttime frame\n";
+
+// Rows on slices 2 to 5 of `time frame` frame, and biv-me's label 1.0 on
+// slice 8 (LAX rows).
+std::string GpFrameRows(const std::string& frame) {
+  std::string rows;
+  for (int slice = 2; slice <= 5; ++slice) {
+    rows += std::to_string(slice) + "\t1\t" + frame + "\tSAX_LV_ENDOCARDIAL\t" +
+            std::to_string(slice) + "\t1.0\t" + frame + "\n";
+  }
+  return rows + "7\t8\t9\tLAX_LV_ENDOCARDIAL\t8\t1.0\t1.0\n";
+}
+
+// Issue 29: three frames' guide points in one file were fitted as one frame
+// of 1,500 points.  Not split by the column: biv-me labels one LAX slice's
+// rows 1.0 in every frame's file, which would land in frame 1.
+TEST(PointReaderTest, GpFileOfSeveralTimeFramesIsRefused) {
+  const std::string path = ScratchDirectory("gp3") + "/GPFile_000.txt";
+  WriteText(path, kGpHeader + GpFrameRows("5"));
+  EXPECT_EQ(GpErrorOf(path, {}), "no error");  // 5 and the label 1.0.
+  WriteText(path, kGpHeader + GpFrameRows("1"));
+  EXPECT_EQ(GpErrorOf(path, {}), "no error");
+  WriteText(path,
+            kGpHeader + GpFrameRows("0") + GpFrameRows("1") + GpFrameRows("2"));
+  EXPECT_EQ(GpErrorOf(path, {}),
+            path +
+                ": holds 3 time frames (0, 1, 2 in column 'time frame'); a "
+                "GPFile is one frame: give a folder of GPFile_*.txt, one per "
+                "frame");
+  // The label on a second slice is a frame.
+  WriteText(path, kGpHeader + GpFrameRows("5") +
+                      "1\t2\t3\tLAX_LV_ENDOCARDIAL\t9\t1.0\t1.0\n");
+  EXPECT_EQ(GpErrorOf(path, {}),
+            path +
+                ": holds 2 time frames (1, 5 in column 'time frame'); a GPFile "
+                "is one frame: give a folder of GPFile_*.txt, one per frame");
+  std::string many = kGpHeader;
+  for (int t = 0; t < 25; ++t) many += GpFrameRows(std::to_string(t));
+  WriteText(path, many);
+  EXPECT_EQ(GpErrorOf(path, {}),
+            path +
+                ": holds 25 time frames (0, 1, 2, 3, ..., 24 in column 'time "
+                "frame'); a GPFile is one frame: give a folder of "
+                "GPFile_*.txt, one per frame");
+  // Without frameID the label cannot be told from a frame.
+  WriteText(path,
+            "x\ty\tz\tcontour type\ttime frame\n"
+            "1\t2\t3\tSAX_LV_ENDOCARDIAL\t4\n"
+            "1\t2\t4\tLAX_LV_ENDOCARDIAL\t1.0\n");
+  EXPECT_EQ(GpErrorOf(path, {}),
+            path +
+                ": holds 2 time frames (1, 4 in column 'time frame'); a GPFile "
+                "is one frame: give a folder of GPFile_*.txt, one per frame");
+}
+
+// Issue 29: NaN weights and text in the time frame were accepted.  Rows of
+// contour types not kept are checked too.
+TEST(PointReaderTest, GpFileWeightsAndTimeFramesAreNumbers) {
+  const std::string path = ScratchDirectory("gpcols") + "/GPFile_000.txt";
+  struct Case {
+    const char* row;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"1\t2\t3\tSAX_RV_FREEWALL\t2\tnan\t0\n",
+       ":3: column 'weight' is not a finite number"},
+      {"1\t2\t3\tSAX_RV_FREEWALL\t2\t-1\t0\n",
+       ":3: column 'weight' is negative: '-1'"},
+      {"1\t2\t3\tSAX_RV_FREEWALL\t2\theavy\t0\n",
+       ":3: column 'weight' is not a number: 'heavy'"},
+      {"1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\tED\n",
+       ":3: column 'time frame' is not a number: 'ED'"},
+      {"1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t2.5\n",
+       ":3: column 'time frame' is not a frame number (a whole number from "
+       "0): '2.5'"},
+      {"1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t-1\n",
+       ":3: column 'time frame' is not a frame number (a whole number from "
+       "0): '-1'"},
+  };
+  for (const Case& c : cases) {
+    WriteText(path, std::string(kGpHeader) +
+                        "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t0\n" + c.row);
+    EXPECT_EQ(GpErrorOf(path, ExpandContourAlias("lv-endo")), path + c.message);
+  }
+  // Only x, y, z and contour type are required.
+  WriteText(path, "x\ty\tz\tcontour type\n1\t2\t3\tSAX_LV_ENDOCARDIAL\n");
+  EXPECT_EQ(ReadGpFiles(path, {}).frames[0].points.size(), 1u);
+}
+
+// Issue 29: one point at 9e5 mm was refused as "the points lie on a line".
+TEST(PointReaderTest, APointFarFromTheOthersIsNamedByItsLine) {
+  std::string csv = "frame,id,x,y,z\n";
+  for (int i = 0; i < 12; ++i) {
+    csv += "0," + std::to_string(i) + "," + std::to_string(i % 3) + "," +
+           std::to_string(i % 4) + ",7\n";
+  }
+  // Frame 1: frame 0's points and one more, 900000 mm off their median
+  // (1, 1, 7).
+  std::string frame1;
+  for (int i = 0; i < 12; ++i) {
+    frame1 += "1," + std::to_string(i) + "," + std::to_string(i % 3) + "," +
+              std::to_string(i % 4) + ",7\n";
+  }
+  EXPECT_EQ(ErrorOf(csv + frame1 + "1,12,900001,1,7\n"),
+            "points.csv:26: frame 1: the point lies 900000 mm from the centre "
+            "of the frame's points, beyond any heart (500 mm)");
+  EXPECT_EQ(ErrorOf(csv + frame1 + "1,12,401,1,7\n"), "no error");
+  const std::string dir = ScratchDirectory("gpfar");
+  WriteText(
+      dir + "/GPFile_000.txt",
+      std::string(kGpHeader) + "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t0\n");
+  WriteText(dir + "/GPFile_001.txt",
+            std::string(kGpHeader) +
+                "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t1\n"
+                "1\t2\t-900\tSAX_LV_ENDOCARDIAL\t2\t1.0\t1\n"
+                "1\t2\t5\tSAX_LV_ENDOCARDIAL\t2\t1.0\t1\n"
+                "1\t2\t-9000\tSAX_RV_FREEWALL\t2\t1.0\t1\n");
+  EXPECT_EQ(GpErrorOf(dir, ExpandContourAlias("lv-endo")),
+            dir +
+                "/GPFile_001.txt:3: frame 1: the point lies 903 mm from the "
+                "centre of the frame's points, beyond any heart (500 mm)");
+  // A point not kept is not fitted: no matter where it lies.
+  WriteText(dir + "/GPFile_001.txt",
+            std::string(kGpHeader) +
+                "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t1\n"
+                "1\t2\t-9000\tSAX_RV_FREEWALL\t2\t1.0\t1\n");
+  EXPECT_EQ(GpErrorOf(dir, ExpandContourAlias("lv-endo")), "no error");
+}
+
 TEST(PointReaderTest, ContourAliasesExpand) {
   EXPECT_EQ(ExpandContourAlias("lv-epi,APEX_POINT"),
             (std::vector<std::string>{"SAX_LV_EPICARDIAL", "LAX_LV_EPICARDIAL",

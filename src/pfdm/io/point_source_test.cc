@@ -27,5 +27,22 @@ TEST(PointSourceTest, ChoosesTheReaderByTheFilesKind) {
   EXPECT_THROW(ReadPoints(dir + "/tags.csv", "xml", ""), InputError);
 }
 
+TEST(PointSourceTest, TheFormatIsTheFlagsOrByName) {
+  const std::string dir = ScratchDirectory("format");
+  EXPECT_EQ(PointFormatOf(dir, "auto"), PointFormat::kGpFile);
+  EXPECT_EQ(PointFormatOf(dir + "/GPFile_003.txt", "auto"),
+            PointFormat::kGpFile);
+  EXPECT_EQ(PointFormatOf(dir + "/case.txt", "auto"), PointFormat::kCsv);
+  EXPECT_EQ(PointFormatOf(dir + "/case.txt", "gpfile"), PointFormat::kGpFile);
+  EXPECT_EQ(PointFormatOf(dir + "/GPFile_003.txt", "csv"), PointFormat::kCsv);
+  try {
+    PointFormatOf(dir, "xml");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(),
+                 "unknown --format 'xml' (expected csv, gpfile or auto)");
+  }
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <random>
+#include <sstream>
 
 #include "Eigen/Geometry"
 #include "pfdm/util/error.h"
@@ -92,14 +93,18 @@ Phantom MakePhantom(const PhantomOptions& options) {
 
 void CheckPhantomOptions(const PhantomOptions& options) {
   // Written so that NaN fails every test (it once wrote NaN rows).
-  if (!(options.num_frames >= 1 && options.num_frames <= 1000 &&
-        options.num_points >= 1 && options.num_points <= 1000000 &&
-        options.noise_mm >= 0 && options.noise_mm <= 1000 &&
-        options.outlier_fraction >= 0 && options.outlier_fraction <= 1)) {
-    throw InputError(
-        "simulate needs 1 <= --frames <= 1000, 1 <= --tags <= 1e6, "
-        "0 <= --noise <= 1000 (mm) and 0 <= --outliers <= 1");
-  }
+  const auto check = [](const char* flag, double value, double low, double high,
+                        const char* unit) {
+    if (value >= low && value <= high) return;
+    std::ostringstream text;
+    text << "--" << flag << " must be between " << low << " and " << high
+         << unit << ", got " << value;
+    throw InputError(text.str());
+  };
+  check("frames", options.num_frames, 1, 1000, "");
+  check("tags", options.num_points, 1, 1e6, "");
+  check("noise", options.noise_mm, 0, 1000, " (mm)");
+  check("outliers", options.outlier_fraction, 0, 1, " (a fraction)");
 }
 
 }  // namespace pfdm

@@ -31,8 +31,9 @@ struct Phantom {
 // a pose neither axis-aligned nor centred.
 Phantom MakePhantom(const PhantomOptions& options);
 
-// Throws InputError naming pfdm simulate's flags (--frames, --tags,
-// --noise, --outliers) when the options make no phantom.
+// Throws InputError "--FLAG must be between LOW and HIGH, got V" naming
+// pfdm simulate's flag (--frames, --tags, --noise, --outliers) of the
+// first option that makes no phantom.
 void CheckPhantomOptions(const PhantomOptions& options);
 
 }  // namespace pfdm
