@@ -15,6 +15,64 @@ namespace {
 // them from.
 constexpr size_t kMaxSpreadPairs = 4096;
 constexpr size_t kMaxSpreadNeighbours = 16384;
+// The standard deviation of a Gaussian over its median absolute deviation.
+constexpr double kMadToSigma = 1.4826;
+
+// The tags WallSpreadMm and NeighbourDepartures seek neighbours among: every
+// step-th, at most kMaxSpreadNeighbours, 0.9 mm apart on an LV's mid-wall
+// (0.5 mm for all of 50,000 tags), where the fit's error changes too little
+// to tell them apart; building the tree of all 50,000 took 13 ms.
+struct NeighbourCloud {
+  NeighbourCloud(const std::vector<Eigen::Vector3d>& midwall_points,
+                 const std::vector<double>& all_distances)
+      : step((midwall_points.size() + kMaxSpreadNeighbours - 1) /
+             kMaxSpreadNeighbours) {
+    for (size_t i = 0; i < midwall_points.size(); i += step) {
+      cloud.points.push_back(midwall_points[i]);
+      distances.push_back(all_distances[i]);
+    }
+  }
+  size_t step;
+  PointCloud cloud;
+  std::vector<double> distances;
+};
+
+// The median of *values (reordered); 0 for none.
+double Median(std::vector<double>* values) {
+  const size_t n = values->size();
+  if (n == 0) return 0.0;
+  auto middle = values->begin() + n / 2;
+  std::nth_element(values->begin(), middle, values->end());
+  if (n % 2 == 1) return *middle;
+  return 0.5 * (*middle + *std::max_element(values->begin(), middle));
+}
+
+// Tags sorted by u in bands of a sixteenth of them, at least kMinBand; the
+// last band takes the remainder rather than leaving a runt.
+std::vector<std::vector<size_t>> LatitudeBands(const std::vector<double>& u) {
+  const size_t n = u.size();
+  std::vector<size_t> by_u(n);
+  std::iota(by_u.begin(), by_u.end(), 0);
+  std::stable_sort(by_u.begin(), by_u.end(),
+                   [&](size_t a, size_t b) { return u[a] < u[b]; });
+  const size_t band = std::max<size_t>(kMinBand, n / 16);
+  std::vector<std::vector<size_t>> bands;
+  for (size_t begin = 0, end = 0; begin < n; begin = end) {
+    end = std::min(n, begin + band);
+    if (n - end < band / 2) end = n;
+    bands.emplace_back(by_u.begin() + begin, by_u.begin() + end);
+  }
+  return bands;
+}
+
+// The p-quantile of sorted values, interpolated between neighbours.
+double Quantile(const std::vector<double>& sorted, double p) {
+  if (sorted.empty()) return 0.0;
+  const double at = p * (sorted.size() - 1);
+  const size_t below = static_cast<size_t>(at);
+  if (below + 1 >= sorted.size()) return sorted.back();
+  return sorted[below] + (at - below) * (sorted[below + 1] - sorted[below]);
+}
 
 }  // namespace
 
@@ -58,21 +116,11 @@ std::vector<double> MidwallDistances(
 
 double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
                     const std::vector<double>& distances) {
-  // Neighbours among every step-th tag: at most kMaxSpreadNeighbours, 0.9
-  // mm apart on an LV's mid-wall (0.5 mm for all of 50,000 tags), where
-  // the fit's error changes too little to tell them apart; building the
-  // tree of all 50,000 took 13 ms.
-  const size_t step =
-      (midwall_points.size() + kMaxSpreadNeighbours - 1) / kMaxSpreadNeighbours;
-  PointCloud cloud;
-  std::vector<double> cloud_distances;
-  for (size_t i = 0; i < midwall_points.size(); i += step) {
-    cloud.points.push_back(midwall_points[i]);
-    cloud_distances.push_back(distances[i]);
-  }
-  const size_t num_points = cloud.points.size();
+  const NeighbourCloud sample(midwall_points, distances);
+  const size_t num_points = sample.cloud.points.size();
   if (num_points < 2) return 0.0;
-  PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  PointCloudTree tree(3, sample.cloud,
+                      nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
   // The mean over at most kMaxSpreadPairs tags' pairs (every stride-th)
   // estimates the mean over all to about 1 % (one in sqrt(2 x 4096)),
@@ -83,28 +131,71 @@ double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
   for (size_t i = 0; i < num_points; i += stride, ++pairs) {
     unsigned int nearest[2];
     double distance_squared[2];
-    tree.knnSearch(cloud.points[i].data(), 2, nearest, distance_squared);
+    tree.knnSearch(sample.cloud.points[i].data(), 2, nearest, distance_squared);
     const size_t j = nearest[0] == i ? nearest[1] : nearest[0];
-    const double difference = cloud_distances[i] - cloud_distances[j];
+    const double difference = sample.distances[i] - sample.distances[j];
     sum_squared += difference * difference;
   }
   return std::sqrt(6.0 * sum_squared / pairs);
 }
 
+std::vector<double> NeighbourDepartures(
+    const std::vector<Eigen::Vector3d>& midwall_points,
+    const std::vector<double>& distances) {
+  const NeighbourCloud sample(midwall_points, distances);
+  const size_t num_points = sample.cloud.points.size();
+  std::vector<double> departures(distances.size(), 0.0);
+  if (num_points < 2) return departures;
+  PointCloudTree tree(3, sample.cloud,
+                      nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  const size_t wanted = std::min<size_t>(kOutlierNeighbours + 1, num_points);
+  std::vector<unsigned int> nearest(wanted);
+  std::vector<double> distance_squared(wanted);
+  std::vector<double> neighbours;
+  for (size_t i = 0; i < distances.size(); ++i) {
+    const size_t found =
+        tree.knnSearch(midwall_points[i].data(), wanted, nearest.data(),
+                       distance_squared.data());
+    // The tag itself, when it is among the sampled ones, is no neighbour.
+    const bool sampled = i % sample.step == 0;
+    neighbours.clear();
+    for (size_t k = 0; k < found; ++k) {
+      if (sampled && nearest[k] == i / sample.step) continue;
+      if (neighbours.size() < kOutlierNeighbours) {
+        neighbours.push_back(sample.distances[nearest[k]]);
+      }
+    }
+    departures[i] = distances[i] - Median(&neighbours);
+  }
+  return departures;
+}
+
+RobustWallSpread RobustWallSpreadMm(
+    const std::vector<Eigen::Vector3d>& midwall_points,
+    const std::vector<double>& distances) {
+  RobustWallSpread result;
+  const std::vector<double> departures =
+      NeighbourDepartures(midwall_points, distances);
+  std::vector<double> sizes;
+  sizes.reserve(departures.size());
+  for (double d : departures) sizes.push_back(std::abs(d));
+  result.fence_mm =
+      std::max(kMinOutlierMm, kOutlierScales * kMadToSigma * Median(&sizes));
+  result.inlier.resize(distances.size());
+  for (size_t i = 0; i < distances.size(); ++i) {
+    result.inlier[i] = std::abs(departures[i]) <= result.fence_mm;
+    if (!result.inlier[i]) ++result.outliers;
+  }
+  result.spread_mm = WallSpreadMm(KeptEntries(midwall_points, result.inlier),
+                                  KeptEntries(distances, result.inlier));
+  return result;
+}
+
 std::vector<double> QuantileDepths(const std::vector<double>& u,
                                    const std::vector<double>& distances) {
-  const size_t n = u.size();
-  std::vector<size_t> by_u(n);
-  std::iota(by_u.begin(), by_u.end(), 0);
-  std::stable_sort(by_u.begin(), by_u.end(),
-                   [&](size_t a, size_t b) { return u[a] < u[b]; });
-  const size_t band = std::max<size_t>(kMinBand, n / 16);
-  std::vector<double> depths(n, 0.0);
-  for (size_t begin = 0, end = 0; begin < n; begin = end) {
-    // The last band takes the remainder rather than leaving a runt.
-    end = std::min(n, begin + band);
-    if (n - end < band / 2) end = n;
-    std::vector<size_t> members(by_u.begin() + begin, by_u.begin() + end);
+  std::vector<double> depths(u.size(), 0.0);
+  for (std::vector<size_t>& members : LatitudeBands(u)) {
     std::stable_sort(members.begin(), members.end(), [&](size_t a, size_t b) {
       return distances[a] < distances[b];
     });
@@ -114,6 +205,24 @@ std::vector<double> QuantileDepths(const std::vector<double>& u,
     }
   }
   return depths;
+}
+
+std::vector<bool> InsideTheWall(const std::vector<double>& u,
+                                const std::vector<double>& distances) {
+  std::vector<bool> inside(u.size(), true);
+  for (const std::vector<size_t>& members : LatitudeBands(u)) {
+    std::vector<double> sorted;
+    sorted.reserve(members.size());
+    for (size_t i : members) sorted.push_back(distances[i]);
+    std::sort(sorted.begin(), sorted.end());
+    const double middle = Quantile(sorted, 0.5);
+    const double fence =
+        kWallFenceIqr * (Quantile(sorted, 0.75) - Quantile(sorted, 0.25));
+    for (size_t i : members) {
+      inside[i] = std::abs(distances[i] - middle) <= fence;
+    }
+  }
+  return inside;
 }
 
 double TangentialNoiseMm(const Model& model,

@@ -87,6 +87,148 @@ TEST(TransmuralDepthTest, WallSpreadComparesNeighbours) {
   }
 }
 
+// Tags on a spheroid's mid-wall at random (u, v), their distances from it
+// `across(u, i)`.
+template <typename Across>
+std::vector<double> DistancesAt(const Model& model, int num_points,
+                                Across across,
+                                std::vector<Eigen::Vector3d>* midwall) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(-1.4, 0.4), v(-3.1, 3.1);
+  std::vector<MaterialPoint> material;
+  std::vector<double> distances;
+  for (int i = 0; i < num_points; ++i) {
+    material.push_back({u(random), v(random), 0.0});
+    distances.push_back(across(material.back().u, i, random));
+  }
+  *midwall = WorldPoints(model, material);
+  return distances;
+}
+
+// Each 20th tag 5-10 mm off the wall, either way.
+double Offset(int i, std::mt19937& random) {
+  if (i % 20 != 0) return 0.0;
+  const double size = std::uniform_real_distribution<double>(5.0, 10.0)(random);
+  return i % 40 == 0 ? size : -size;
+}
+
+// Against its neighbours, a shape the surface misses alike departs by
+// little (its change over a neighbour's distance, 0.13 mm at most here, to
+// the 6-8 mm it misses by); a tag 7 mm off them by 7 mm.
+TEST(TransmuralOutlierTest, NeighbourDeparturesSeeSpikesNotMissedShapes) {
+  std::vector<Eigen::Vector3d> midwall;
+  const std::vector<double> distances = DistancesAt(
+      TestSpheroid(9), 3000,
+      [](double u, int i, std::mt19937&) {
+        return 6.0 + 2.0 * std::sin(u) + (i % 50 == 0 ? 7.0 : 0.0);
+      },
+      &midwall);
+  const std::vector<double> departures =
+      NeighbourDepartures(midwall, distances);
+  for (size_t i = 0; i < departures.size(); ++i) {
+    EXPECT_NEAR(departures[i], i % 50 == 0 ? 7.0 : 0.0, 0.25) << i;
+  }
+}
+
+// Tags on one surface (noise 0.5 mm) with 5 % of them 5-10 mm off: on all
+// of them the spread reads a wall; the outliers, and only they, are left
+// out, and the rest spread as the noise does, 3.46 sigma (the mean square
+// difference of two tags is 2 sigma^2).
+TEST(TransmuralOutlierTest, OutliersDoNotReadAsAWall) {
+  std::vector<Eigen::Vector3d> midwall;
+  const std::vector<double> distances = DistancesAt(
+      TestSpheroid(9), 3000,
+      [](double, int i, std::mt19937& random) {
+        return std::normal_distribution<double>(0.0, 0.5)(random) +
+               Offset(i, random);
+      },
+      &midwall);
+  EXPECT_GT(WallSpreadMm(midwall, distances), 6.0);
+  const RobustWallSpread robust = RobustWallSpreadMm(midwall, distances);
+  EXPECT_NEAR(robust.spread_mm, 3.46 * 0.5, 0.15);
+  EXPECT_EQ(robust.outliers, 150u);
+  for (size_t i = 0; i < distances.size(); ++i) {
+    EXPECT_EQ(robust.inlier[i], i % 20 != 0) << i << " " << distances[i];
+  }
+  // Four robust deviations of the departures: of the noise (0.5 mm) and of
+  // the median of 8 neighbours (1.25 sigma / sqrt(8)), 4 x 0.55 mm.
+  EXPECT_NEAR(robust.fence_mm, 2.2, 0.2);
+}
+
+// Tags uniform through a 10 mm wall: none is an outlier (a uniform's tails
+// are short: departures reach 1.35 robust deviations, the fence is at 4),
+// so the spread is WallSpreadMm's to the bit.  Noise-free tags on one
+// surface are no outliers either (the fence's floor).
+TEST(TransmuralOutlierTest, AWallsTagsAreNoOutliers) {
+  const Model model = TestSpheroid(9);
+  std::vector<Eigen::Vector3d> midwall;
+  const std::vector<double> wall = DistancesAt(
+      model, 3000,
+      [](double, int, std::mt19937& random) {
+        return std::uniform_real_distribution<double>(-5.0, 5.0)(random);
+      },
+      &midwall);
+  const RobustWallSpread robust = RobustWallSpreadMm(midwall, wall);
+  EXPECT_EQ(robust.outliers, 0u);
+  EXPECT_EQ(robust.spread_mm, WallSpreadMm(midwall, wall));
+  EXPECT_NEAR(robust.spread_mm, 10.0, 0.6);
+  EXPECT_GT(robust.fence_mm, 12.0);
+
+  const std::vector<double> exact = DistancesAt(
+      model, 3000, [](double, int i, std::mt19937&) { return 1e-12 * (i % 7); },
+      &midwall);
+  const RobustWallSpread flat = RobustWallSpreadMm(midwall, exact);
+  EXPECT_EQ(flat.outliers, 0u);
+  EXPECT_EQ(flat.fence_mm, kMinOutlierMm);
+}
+
+// Within a band, two interquartile ranges of its median: -7 and 30 lie
+// beyond (quartiles 1.75 and 7.25, median 4.5: the fence is 11 mm off it).
+TEST(TransmuralOutlierTest, InsideTheWallFencesEachBand) {
+  const std::vector<double> distances = {5, -7, 0, 1, 2, 3, 30, 4, 6, 7, 8, 9};
+  const std::vector<double> u(distances.size(), 0.0);
+  const std::vector<bool> inside = InsideTheWall(u, distances);
+  for (size_t i = 0; i < distances.size(); ++i) {
+    EXPECT_EQ(inside[i], distances[i] != -7 && distances[i] != 30) << i;
+  }
+  EXPECT_EQ(KeptEntries(distances, inside),
+            (std::vector<double>{5, 0, 1, 2, 3, 4, 6, 7, 8, 9}));
+}
+
+// Tags uniform through a 10 mm wall, 5 % of them 5-10 mm off it (along the
+// normal, the worst case, uniform in u): those more than half a wall past
+// either surface are left out of the thickness, none of the wall's.  The
+// ranks of all read 11.33 mm, of those inside 10.83 (without outliers, 10.0;
+// the outliers left lie at most half a wall past a surface).
+TEST(TransmuralOutlierTest, InsideTheWallLeavesOutTagsFarBeyondIt) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> across(-5.0, 5.0), along(-1.5, 0.5);
+  std::vector<double> u, distances;
+  for (int i = 0; i < 4000; ++i) {
+    u.push_back(along(random));
+    distances.push_back(across(random) + Offset(i, random));
+  }
+  const std::vector<bool> inside = InsideTheWall(u, distances);
+  int wall_left_out = 0, outliers_left_out = 0, far_beyond = 0;
+  for (size_t i = 0; i < inside.size(); ++i) {
+    if (i % 20 == 0 && std::abs(distances[i]) > 10.5) ++far_beyond;
+    if (inside[i]) continue;
+    ++(i % 20 == 0 ? outliers_left_out : wall_left_out);
+    // The fence: two interquartile ranges (5 mm) of the median (0).
+    EXPECT_GT(std::abs(distances[i]), 9.5) << i;
+  }
+  EXPECT_EQ(wall_left_out, 0);
+  EXPECT_GE(outliers_left_out, far_beyond);
+  EXPECT_EQ(outliers_left_out, 42);
+  const double all =
+      ThicknessFromDepths(distances, QuantileDepths(u, distances));
+  const std::vector<double> kept = KeptEntries(distances, inside);
+  const double inliers =
+      ThicknessFromDepths(kept, QuantileDepths(KeptEntries(u, inside), kept));
+  EXPECT_NEAR(all, 11.33, 0.01);
+  EXPECT_NEAR(inliers, 10.83, 0.01);
+}
+
 TEST(TransmuralDepthTest, WallModelNames) {
   EXPECT_EQ(WallModelFromName("solid"), WallModel::kSolid);
   EXPECT_STREQ(WallModelName(WallModelFromName("midwall")), "midwall");

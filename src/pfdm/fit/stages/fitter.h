@@ -15,7 +15,8 @@ namespace pfdm {
 // Gauge: see gauge.h and README "Gauge conventions".  The wall
 // (options.wall, docs/gauge.md "The wall"): a solid when the first frame
 // has contours of both walls, or tags spread across the wall by at least
-// kMinWallSpreadMm after a converged mid-wall fit of that frame; a single
+// kMinWallSpreadMm after a converged mid-wall fit of that frame, outliers
+// left out (RobustWallSpreadMm); a single
 // surface otherwise.  Throws InputError naming the frame when a frame has too
 // few points or the solver fails, and when --wall solid meets data with
 // neither.

@@ -32,14 +32,44 @@ std::string FormatMm(double mm) {
   return text;
 }
 
-// Makes *model a solid whose thickness is the one frame 0's tags span.
-void MakeSolidOfTags(const std::vector<double>& distances,
-                     const std::vector<double>& tag_u, Model* model) {
-  model->config.MakeSolid();
+// "1,234": counts of tags read more easily so.
+std::string FormatCount(size_t count) {
+  std::string digits = std::to_string(count);
+  for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3) {
+    digits.insert(static_cast<size_t>(at), ",");
+  }
+  return digits;
+}
+
+// "tags spread 1.7 mm across the wall, 97 of 2,000 (4.9 %) left out as
+// outliers (more than 2.3 mm off their neighbours)".
+std::string SpreadReason(const RobustWallSpread& spread) {
+  const size_t tags = spread.inlier.size();
+  char percent[32];
+  std::snprintf(percent, sizeof(percent), "%.1f",
+                tags == 0 ? 0.0 : 100.0 * spread.outliers / tags);
+  return "tags spread " + FormatMm(spread.spread_mm) + " mm across the wall, " +
+         FormatCount(spread.outliers) + " of " + FormatCount(tags) + " (" +
+         percent + " %) left out as outliers (more than " +
+         FormatMm(spread.fence_mm) + " mm off their neighbours)";
+}
+
+// Makes *model a solid whose thickness is the one frame 0's tags span
+// (distances and tag_u: those that are no outliers), tags beyond the wall
+// left out of it; says how thick and how many.
+std::string MakeSolidOfTags(const std::vector<double>& distances,
+                            const std::vector<double>& tag_u, Model* model) {
+  const std::vector<bool> inside = InsideTheWall(tag_u, distances);
+  const std::vector<double> kept = KeptEntries(distances, inside);
   const double h = std::max(
-      0.0, ThicknessFromDepths(distances, QuantileDepths(tag_u, distances)));
+      0.0, ThicknessFromDepths(
+               kept, QuantileDepths(KeptEntries(tag_u, inside), kept)));
+  model->config.MakeSolid();
   model->state.globals[kH] = h;
   for (FunctionValues& knot : model->state.knots) knot[kH] = h;
+  return ", " + FormatMm(h) + " mm thick to start (" +
+         FormatCount(distances.size() - kept.size()) +
+         " beyond the wall left out)";
 }
 
 }  // namespace
@@ -87,15 +117,21 @@ bool DecideWallFromTags(const FramePoints& frame,
   std::vector<Eigen::Vector3d> midwall_points;
   const std::vector<double> distances =
       MidwallDistances(*model, tag_points, tag_material, &midwall_points);
-  const double spread = WallSpreadMm(midwall_points, distances);
+  // Outliers would read as a wall, and widen the solid's start.
+  const RobustWallSpread spread = RobustWallSpreadMm(midwall_points, distances);
   decision->decided = true;
-  decision->reason = "tags spread " + FormatMm(spread) + " mm across the wall";
+  decision->reason = SpreadReason(spread);
   // An unfinished solve leaves tags far from the surface too: only a
   // converged one tells a wall from a fit that stopped early.
-  const bool wall_seen = spread >= kMinWallSpreadMm && converged;
+  const bool wall_seen = spread.spread_mm >= kMinWallSpreadMm && converged;
   if (wall == WallModel::kSolid || wall_seen) {
-    MakeSolidOfTags(distances, tag_u, model);
-    if (wall == WallModel::kSolid) decision->reason += " (--wall solid)";
+    decision->reason +=
+        wall == WallModel::kSolid
+            ? ": a solid (--wall solid)"
+            : ": a solid (at least " + FormatMm(kMinWallSpreadMm) + " mm)";
+    decision->reason +=
+        MakeSolidOfTags(KeptEntries(distances, spread.inlier),
+                        KeptEntries(tag_u, spread.inlier), model);
     return true;
   }
   decision->reason +=

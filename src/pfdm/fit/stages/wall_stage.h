@@ -35,9 +35,11 @@ WallDecision DecideWallFromContours(const Frame& first, bool has_tags,
 
 // After frame 0's mid-wall rounds (converged: whether their last solve
 // did), with the wall undecided: frame 0's tags spread across the wall by
-// at least kMinWallSpreadMm make the model a solid, of the thickness their
-// spread gives, and so does --wall solid.  Returns whether the model became
-// a solid (the rounds must then run again).
+// at least kMinWallSpreadMm, outliers left out (RobustWallSpreadMm), make
+// the model a solid, of the thickness the tags inside the wall give
+// (InsideTheWall), and so does --wall solid; the reason says what was
+// measured.  Returns whether the model became a solid (the rounds must then
+// run again).
 bool DecideWallFromTags(const FramePoints& frame,
                         const std::vector<MaterialPoint>& material,
                         bool converged, WallModel wall, WallDecision* decision,

@@ -1,5 +1,6 @@
 #include "pfdm/fit/stages/wall_stage.h"
 
+#include <cstdio>
 #include <random>
 #include <string>
 
@@ -11,6 +12,12 @@
 
 namespace pfdm {
 namespace {
+
+std::string FormatSpread(double mm) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "tags spread %.1f", mm);
+  return text;
+}
 
 Frame FrameOf(const std::vector<WallLayer>& layers) {
   Frame frame;
@@ -105,8 +112,17 @@ TEST(WallStageTest, TagsThroughTheWallMakeASolidOfTheirThickness) {
   EXPECT_NEAR(model.state.knots[4][kH], 10.0, 0.5);
   const double spread = std::stod(decision.reason.substr(12));
   EXPECT_NEAR(spread, 10.0, 1.0) << decision.reason;
-  EXPECT_EQ(decision.reason.rfind(" mm across the wall"),
-            decision.reason.size() - 19)
+  const std::string text = FormatSpread(spread) +
+                           " mm across the wall, 0 of 3,000 (0.0 %) left out "
+                           "as outliers (more than ";
+  EXPECT_EQ(decision.reason.substr(0, text.size()), text) << decision.reason;
+  EXPECT_NE(decision.reason.find(" mm off their neighbours): a solid (at "
+                                 "least 4.0 mm), "),
+            std::string::npos)
+      << decision.reason;
+  EXPECT_NE(decision.reason.find(" mm thick to start (0 beyond the wall left "
+                                 "out)"),
+            std::string::npos)
       << decision.reason;
 }
 
@@ -140,6 +156,67 @@ TEST(WallStageTest, TagsOnOneSurfaceKeepItOne) {
                                  &decision, &model));
   EXPECT_TRUE(model.config.Solid());
   EXPECT_NE(decision.reason.find("(--wall solid)"), std::string::npos);
+}
+
+// Each 20th tag 5-10 mm off along the normal, either way, the others
+// `spread(random)` mm off.
+template <typename Spread>
+auto WithOutliers(Spread spread) {
+  return [spread, i = 0](std::mt19937& random) mutable {
+    const double across = spread(random);
+    if (i++ % 20 != 0) return across;
+    const double size =
+        std::uniform_real_distribution<double>(5.0, 10.0)(random);
+    return across + (i % 40 == 1 ? size : -size);
+  };
+}
+
+// Tags on one surface with 0.5 mm noise, 5 % of them 5-10 mm off: all of
+// them spread 6 mm, a wall; the 150 outliers left out, the rest spread 1.7
+// mm, one surface.
+TEST(WallStageTest, OutliersOffOneSurfaceKeepItOne) {
+  Model model = TestSpheroid(9);
+  std::vector<MaterialPoint> material;
+  const FramePoints frame = TagsAcrossTheWall(
+      model, WithOutliers(std::normal_distribution<double>(0.0, 0.5)),
+      &material);
+  EXPECT_GT(WallSpreadMm(WorldPoints(model, material),
+                         MidwallDistances(model, frame.positions, material)),
+            6.0);
+  WallDecision decision;
+  EXPECT_FALSE(DecideWallFromTags(frame, material, true, WallModel::kAuto,
+                                  &decision, &model));
+  EXPECT_FALSE(model.config.Solid());
+  EXPECT_NEAR(std::stod(decision.reason.substr(12)), 1.7, 0.15)
+      << decision.reason;
+  EXPECT_NE(decision.reason.find(" mm across the wall, 150 of 3,000 (5.0 %) "
+                                 "left out as outliers (more than "),
+            std::string::npos)
+      << decision.reason;
+  EXPECT_NE(decision.reason.find(" mm off their neighbours): one surface "
+                                 "(under 4.0 mm)"),
+            std::string::npos)
+      << decision.reason;
+}
+
+// Tags through a 10 mm wall, 5 % of them 5-10 mm off along the normal: a
+// solid, which starts from the tags inside the wall, those more than half
+// a wall beyond it left out: 10.8 mm thick (10.0 without outliers, 11.3 with
+// all of them; transmural_test.cc says why).
+TEST(WallStageTest, OutliersOffAWallLeaveItsThickness) {
+  Model model = TestSpheroid(9);
+  std::vector<MaterialPoint> material;
+  const FramePoints frame = TagsAcrossTheWall(
+      model, WithOutliers(std::uniform_real_distribution<double>(-5.0, 5.0)),
+      &material);
+  WallDecision decision;
+  ASSERT_TRUE(DecideWallFromTags(frame, material, true, WallModel::kAuto,
+                                 &decision, &model));
+  EXPECT_NEAR(model.state.globals[kH], 10.75, 0.05) << decision.reason;
+  EXPECT_NE(decision.reason.find(", 10.8 mm thick to start (30 beyond the "
+                                 "wall left out)"),
+            std::string::npos)
+      << decision.reason;
 }
 
 }  // namespace
