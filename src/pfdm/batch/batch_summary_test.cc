@@ -100,7 +100,7 @@ TEST(BatchSummaryTest, TwistNotMeasuredIsAnEmptyColumn) {
   EXPECT_FALSE(c.twist_measured);
   EXPECT_EQ(c.longitudinal_shortening_percent, 15.0);
   EXPECT_EQ(SummaryCsv({c}).substr(SummaryCsv({c}).find('\n') + 1),
-            "c,done,3,1.25,cavity,150,60,1,0.6,,,,15,25,-18.5,-14.25,\n");
+            "c,done,,3,1.25,cavity,150,60,1,0.6,,,,15,25,-18.5,-14.25,,\n");
   // Null elsewhere than at ES does not matter.
   std::string elsewhere = kFitJson;
   const std::string frame0 = "\"net_twist_deg\": 0.0";

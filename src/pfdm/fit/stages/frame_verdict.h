@@ -28,7 +28,9 @@ namespace pfdm {
 constexpr double kUnsettledFailMm = 10.0;
 constexpr double kRmsFramesRatio = 3.0;  // Times the frames' median RMS ...
 constexpr double kRmsFramesMinMm = 1.0;  // ... and this much above it.
-constexpr double kRmsSizeWarn = 0.06, kRmsSizeFail = 0.12;
+// A mid-wall surface forced onto tags through a 10 mm wall (--wall
+// midwall) reads 7-12 %: a warning, its numbers the mid-wall's.
+constexpr double kRmsSizeWarn = 0.06, kRmsSizeFail = 0.2;
 // The step without the prior, RMS over the points, as a share of the
 // frame's RMS.
 constexpr double kPriorPullWarn = 0.25, kPriorPullFail = 1.0;

@@ -67,12 +67,12 @@ TEST(FrameVerdictTest, SaysWhenTheSolverOrTheRoundsDidNotFinish) {
       << fit.frames[2].verdict.reasons()[0].text;
 }
 
-// The phantom's radius (RMS distance from the centroid) is about 40 mm: 8
-// mm is a fifth of it, 3.5 mm 9 %, and either several times the other
+// The phantom's radius (RMS distance from the centroid) is about 40 mm: 12
+// mm is 30 % of it, 3.5 mm 9 %, and either several times the other
 // frames' RMS (about 1 mm).
 TEST(FrameVerdictTest, WeighsTheRmsAgainstTheFramesAndTheDataSize) {
   const SequenceFit fit =
-      Judged([](SequenceFit* f) { f->frames[0].rms_mm = 8.0; });
+      Judged([](SequenceFit* f) { f->frames[0].rms_mm = 12.0; });
   EXPECT_EQ(Codes(fit.frames[0]), "rms_frames/warning,rms_size/failed");
   EXPECT_EQ(Codes(fit.frames[1]), "");
   const SequenceFit warned =
