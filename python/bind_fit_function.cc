@@ -9,6 +9,7 @@
 #include "pfdm/io/fit_json.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/fit_settings.h"
+#include "pfdm/io/landmark_axis.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/error.h"
 #include "pybind11/stl.h"
@@ -67,6 +68,7 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   result->points = SequenceFrom(points, settings);
   FitOptions options = result->options;
   options.solver.on_step = CheckSignals;
+  AddLandmarkAxis(result->points.source, &options);
   py::gil_scoped_release release;
   result->fit = FitSequence(result->points, config, options);
   result->base_planes = BasePlanesFrom(settings, result->points.source);

@@ -14,6 +14,7 @@
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/point_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
@@ -80,8 +81,10 @@ std::string RunCase(const BatchCase& c, const std::string& out,
     const PointSequence points =
         ReadPoints(c.points, FLAGS_format,
                    c.contours.empty() ? FLAGS_contours : c.contours);
+    FitOptions case_options = options;
+    AddLandmarkAxis(c.points, &case_options);
     SvgRendering plots;  // gnuplot loads while the case is fitted.
-    const SequenceFit fit = FitSequence(points, config, options);
+    const SequenceFit fit = FitSequence(points, config, case_options);
     WriteFitOutputs(dir, points, fit,
                     AnalyzeFit(fit, BasePlanesFromFlags(c.points)), options,
                     VtkFormatFromFlags(), &plots);

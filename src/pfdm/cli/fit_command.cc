@@ -4,6 +4,7 @@
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/landmark_axis.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/error.h"
@@ -19,9 +20,13 @@ int RunFit() {
   // Before the minutes of work, not after them.
   CheckFitOutputFolder(FLAGS_out, FLAGS_points);
   const PointSequence points = PointsFromFlags();
+  // The settings (fit.json) stay the user's; fit.json's model says where
+  // the axis came from.
+  FitOptions fit_options = options;
+  AddLandmarkAxis(FLAGS_points, &fit_options);
   // gnuplot loads while the frames are fitted.
   SvgRendering plots;
-  const SequenceFit fit = FitSequence(points, config, options);
+  const SequenceFit fit = FitSequence(points, config, fit_options);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
   WriteFitOutputs(FLAGS_out, points, fit,

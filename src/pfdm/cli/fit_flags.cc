@@ -35,7 +35,10 @@ DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
 DEFINE_double(loss_scale, kDefaults.loss_scale,
               "robust loss scale, mm, positive");
 DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
-DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
+DEFINE_string(apex, "",
+              "optional apex hint x,y,z (mm), with --base; without: biv-me's "
+              "APEX_POINT and valve points, the normal of parallel slices, "
+              "or the point cloud's best candidate axis");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
 DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
 DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
