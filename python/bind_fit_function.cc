@@ -9,6 +9,7 @@
 #include "pfdm/io/fit_json.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/fit_settings.h"
+#include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/error.h"
@@ -70,6 +71,7 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   result->base_planes = BasePlanesFrom(settings, result->points.source);
   FitOptions options = result->options;
   options.solver.on_step = CheckSignals;
+  AddLandmarkAxis(result->points.source, &options);
   py::gil_scoped_release release;
   result->fit = FitSequence(result->points, config, options);
   CheckPlanesBelowApex(result->points.source, result->base_planes, result->fit);

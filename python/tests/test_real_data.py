@@ -20,6 +20,11 @@ def test_guide_points_fit_and_mitral_valve_volumes_equal_the_clis():
         for frame in document["frames"]:
             frame.pop("solve_seconds")
     assert ours == cli
+    # Both take the long axis from the guide points' landmarks; the
+    # settings stay the user's (no --apex/--base).
+    assert cli["model"]["axis_source"] == (
+        "APEX_POINT and MITRAL_VALVE, AORTA_VALVE")
+    assert "apex_hint" not in cli["settings"]
     assert fit.points.contour_types == cli["settings"]["contour_types"]
     assert "mitral valve plane" in fit.ejection_fraction["cavity_closure"]
     assert len(fit) == 25
@@ -32,7 +37,7 @@ def test_guide_points_fit_and_mitral_valve_volumes_equal_the_clis():
     # when they stall, so the solver's path decides where within about
     # 174.9-175.7 ml they leave it (174.9, 175.4 and, run to their limit of
     # 10 rounds, 175.1-175.7 after changes to the direct solve that left
-    # the minimum alone).
+    # the minimum alone; 174.9 from the landmarks' axis).
     assert fit[0].clinical["cavity_volume_ml"] == pytest.approx(175.3, abs=0.5)
     # A flat lid at the rim instead: other volumes, same shapes.
     rim = pfdm.fit(GUIDE_POINTS, base_plane="rim")

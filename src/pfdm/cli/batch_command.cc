@@ -13,6 +13,7 @@
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/io/point_source.h"
 #include "pfdm/report/fit_analysis.h"
@@ -69,8 +70,10 @@ std::string RunCase(const BatchCase& c, const std::string& out,
                    c.contours.empty() ? FLAGS_contours : c.contours);
     CheckOptionsAgainstPoints(options, points);
     const std::vector<BasePlane> planes = BasePlanesFromFlags(c.points);
+    FitOptions case_options = options;
+    AddLandmarkAxis(c.points, &case_options);
     SvgRendering plots;  // gnuplot loads while the case is fitted.
-    const SequenceFit fit = FitSequence(points, config, options);
+    const SequenceFit fit = FitSequence(points, config, case_options);
     CheckPlanesBelowApex(c.points, planes, fit);
     WriteFitOutputs(dir, points, fit, AnalyzeFit(fit, planes), options,
                     VtkFormatFromFlags(), &plots);

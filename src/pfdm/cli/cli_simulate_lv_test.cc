@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
@@ -58,6 +60,52 @@ TEST(LvPhantomCliTest, WritesPointsAndTruth) {
   EXPECT_EQ(still["frames"][4]["rigid"]["axial_shift_mm"].get<double>(), 0.0);
 }
 
+// Partial data: a mid-ventricular segment's tags, short-axis slices'
+// contours (one id per point and frame).
+TEST(LvPhantomCliTest, WritesPartialData) {
+  const std::string dir = ScratchDirectory("partial");
+  CommandResult run =
+      RunPfdm("simulate --phantom lv --region midventricular --tags 40 --out " +
+              dir + "/mid.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_NE(run.output.find("(lv systole midventricular tags, 5 frames x 40 "
+                            "tags)"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(CsvRows(dir + "/mid.csv"), 5 * 40);
+  const nlohmann::json mid =
+      nlohmann::json::parse(ReadText(dir + "/mid_truth.json"));
+  EXPECT_EQ(mid["region"], "midventricular");
+  EXPECT_EQ(mid["sampling"], "tags");
+  EXPECT_EQ(mid["region_heights"][0].get<double>(), 0.30);
+  EXPECT_EQ(mid["region_heights"][1].get<double>(), 0.72);
+  EXPECT_FALSE(mid.contains("slice_heights"));
+
+  run = RunPfdm(
+      "simulate --phantom lv --sampling sax-slices --slices 4 --tags 80 "
+      "--kinematics static --frames 2 --out " +
+      dir + "/sax.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_EQ(CsvRows(dir + "/sax.csv"), 2 * 80);
+  const nlohmann::json sax =
+      nlohmann::json::parse(ReadText(dir + "/sax_truth.json"));
+  EXPECT_EQ(sax["sampling"], "sax-slices");
+  ASSERT_EQ(sax["slice_heights"].size(), 4u);
+  EXPECT_NEAR(sax["slice_heights"][3].get<double>(), 0.9, 1e-12);
+  // Frame 1's ids follow frame 0's: contours, not tracked tags.
+  std::istringstream text(ReadText(dir + "/sax.csv"));
+  std::string line;
+  std::getline(text, line);
+  std::vector<std::string> ids;
+  while (std::getline(text, line)) {
+    const size_t comma = line.find(',');
+    ids.push_back(
+        line.substr(comma + 1, line.find(',', comma + 1) - comma - 1));
+  }
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
 TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
   const std::string out = " --out " + ScratchDirectory("bad") + "/x.csv";
   struct Case {
@@ -75,6 +123,13 @@ TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
            Case{"--kinematics cycle", "need --phantom lv"},
            Case{"--lesion", "need --phantom lv"},
            Case{"--nobreathing", "need --phantom lv"},
+           Case{"--phantom lv --region apical", "unknown --region 'apical'"},
+           Case{"--phantom lv --sampling lax", "unknown --sampling 'lax'"},
+           Case{"--phantom lv --slices -1", "0 <= --slices <= 1000"},
+           Case{"--phantom lv --sampling sax-slices --slices 30 --tags 20",
+                "20 points for 30 contours"},
+           Case{"--region midventricular", "need --phantom lv"},
+           Case{"--sampling sax-slices", "need --phantom lv"},
        }) {
     const CommandResult run = RunPfdm(std::string("simulate ") + c.flags + out);
     EXPECT_NE(run.exit_code, 0) << c.flags;

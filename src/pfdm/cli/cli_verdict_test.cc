@@ -114,5 +114,29 @@ TEST(CliVerdictTest, DataInMetresFailOnTheirVolumes) {
       << run.error;
 }
 
+// Tags on a mid-ventricular segment only (no apex): the fit finds the long
+// axis and says in every frame that what it reports of the apex is
+// extrapolated; a warning, exit 0.
+TEST(CliVerdictTest, ASegmentWithoutApexSaysTheApexIsExtrapolated) {
+  const std::string dir = ScratchDirectory("cli_verdict_segment");
+  CommandResult run = RunPfdm(
+      "simulate --phantom lv --region midventricular --frames 3 --out " + dir +
+      "/segment.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  run = RunPfdm("fit --points " + dir + "/segment.csv --out " + dir + "/fit");
+  EXPECT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json fit = FitJsonOf(dir);
+  EXPECT_FALSE(fit["model"]["apex_in_data"].get<bool>());
+  EXPECT_EQ(fit["quality"]["overall"], "warning");
+  for (const auto& frame : fit["frames"]) {
+    bool extrapolated = false;
+    for (const auto& reason : frame["quality_reasons"]) {
+      extrapolated = extrapolated || reason["code"] == "extrapolated";
+    }
+    EXPECT_TRUE(extrapolated) << frame["quality_reasons"];
+  }
+  EXPECT_NE(run.error.find("are extrapolated"), std::string::npos) << run.error;
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -4,6 +4,7 @@
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
@@ -61,9 +62,13 @@ int RunFit() {
   const PointSequence points = PointsFromFlags();
   CheckOptionsAgainstPoints(options, points);
   const std::vector<BasePlane> planes = BasePlanesFromFlags(FLAGS_points);
+  // The settings (fit.json) stay the user's; fit.json's model says where
+  // the axis came from.
+  FitOptions fit_options = options;
+  AddLandmarkAxis(FLAGS_points, &fit_options);
   // gnuplot loads while the frames are fitted.
   SvgRendering plots;
-  const SequenceFit fit = FitSequence(points, config, options);
+  const SequenceFit fit = FitSequence(points, config, fit_options);
   CheckPlanesBelowApex(FLAGS_points, planes, fit);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());

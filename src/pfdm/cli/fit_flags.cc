@@ -38,7 +38,9 @@ DEFINE_double(loss_scale, kDefaults.loss_scale,
 DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
 DEFINE_string(apex, "",
               "optional apex hint x,y,z (mm), with --base; within twice the "
-              "farthest of frame 0's points from their centroid");
+              "farthest of frame 0's points from their centroid; without: "
+              "biv-me's APEX_POINT and valve points, the normal of parallel "
+              "slices, or the point cloud's best candidate axis");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
 DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
 DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),

@@ -31,6 +31,16 @@ DEFINE_bool(breathing, true,
             "cycle (--nobreathing: none)");
 DEFINE_bool(lesion, false,
             "simulate --phantom lv: mid segment 2 contracts 70 % less");
+DEFINE_string(region, "full",
+              "simulate --phantom lv: full, or midventricular (ED heights "
+              "30-72 % of the length: no apex, 40 mm long)");
+DEFINE_string(sampling, "tags",
+              "simulate --phantom lv: tags (tracked), or sax-slices "
+              "(untracked contours on --slices fixed short-axis planes; "
+              "--tags points a frame)");
+DEFINE_int32(slices, 0,
+             "simulate --phantom lv --sampling sax-slices: planes (0: 3 "
+             "midventricular, 9 full)");
 
 namespace pfdm {
 namespace {
@@ -90,6 +100,18 @@ int RunLvPhantom() {
   if (FLAGS_outliers != 0.0) {
     throw InputError("--outliers is for --phantom model only");
   }
+  if (!ParseLvRegion(FLAGS_region, &options.region)) {
+    throw InputError("unknown --region '" + FLAGS_region +
+                     "' (full, midventricular)");
+  }
+  if (!ParseLvSampling(FLAGS_sampling, &options.sampling)) {
+    throw InputError("unknown --sampling '" + FLAGS_sampling +
+                     "' (tags, sax-slices)");
+  }
+  if (!(FLAGS_slices >= 0 && FLAGS_slices <= 1000)) {
+    throw InputError("simulate needs 0 <= --slices <= 1000");
+  }
+  options.num_slices = FLAGS_slices;
   options.num_frames = IsDefault("frames") ? 0 : FLAGS_frames;
   options.num_tags = FLAGS_tags;
   options.noise_mm = FLAGS_noise;
@@ -103,9 +125,14 @@ int RunLvPhantom() {
   if (truth.has_parent_path()) EnsureDirectory(truth.parent_path().string());
   WriteFileAtomically(FLAGS_out, points_csv);
   WriteFileAtomically(truth.string(), truth_json);
-  std::printf("wrote %s (lv %s, %d frames x %d tags) and %s\n",
-              FLAGS_out.c_str(), FLAGS_kinematics.c_str(),
-              phantom.options.num_frames, options.num_tags, truth.c_str());
+  const std::string partial = IsDefault("region") && IsDefault("sampling")
+                                  ? ""
+                                  : " " + FLAGS_region + " " + FLAGS_sampling;
+  std::printf("wrote %s (lv %s%s, %d frames x %d %s) and %s\n",
+              FLAGS_out.c_str(), FLAGS_kinematics.c_str(), partial.c_str(),
+              phantom.options.num_frames, options.num_tags,
+              options.sampling == LvSampling::kTags ? "tags" : "points",
+              truth.c_str());
   return 0;
 }
 
@@ -119,10 +146,11 @@ int RunSimulate() {
     throw InputError("unknown --phantom '" + FLAGS_phantom + "' (model, lv)");
   }
   if (!IsDefault("kinematics") || !IsDefault("wall_tags") ||
-      !IsDefault("lesion") || !IsDefault("breathing")) {
+      !IsDefault("lesion") || !IsDefault("breathing") || !IsDefault("region") ||
+      !IsDefault("sampling") || !IsDefault("slices")) {
     throw InputError(
-        "--kinematics, --wall_tags, --lesion and --breathing need --phantom "
-        "lv");
+        "--kinematics, --wall_tags, --lesion, --breathing, --region, "
+        "--sampling and --slices need --phantom lv");
   }
   return RunModelPhantom();
 }

@@ -13,10 +13,12 @@
 
 namespace pfdm {
 
-// Optional user hint of the long axis.
+// Optional hint of the long axis: the user's, or landmarks in the data.
 struct AxisHint {
   Eigen::Vector3d apex;
   Eigen::Vector3d base_center;
+  // Where it came from, as SequenceFit::axis_source records it.
+  std::string source = "--apex/--base";
 };
 
 // Local deformations (local_fit.h, docs/local_deformations.md).

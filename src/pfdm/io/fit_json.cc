@@ -219,6 +219,11 @@ json ModelSection(const SequenceFit& fit, const FitAnalysis& analysis) {
           {"wall", fit.config.Solid() ? "solid" : "midwall"},
           {"wall_reason", fit.wall_reason},
           {"tag_noise_mm", fit.tag_noise_mm},
+          {"axis_source", fit.axis_source},
+          {"apex_in_data", fit.apex_in_data},
+          {"apex_data_distance_fraction", fit.apex_data_distance},
+          {"lowest_data_height_fraction", fit.lowest_data_height},
+          {"lowest_data_u", fit.lowest_data_u},
           {"volume_surface", analysis.volume_surface},
           {"functions", functions}};
 }

@@ -28,6 +28,16 @@ TEST(FitJsonTest, HasVolumesEjectionFractionAndRegions) {
   EXPECT_EQ(json["model"]["wall"], "midwall");
   EXPECT_EQ(json["model"]["volume_surface"], "midwall");
   EXPECT_FALSE(json.contains("ejection_fraction"));
+  // How the axis was found, and whether the data reach the apex.
+  EXPECT_EQ(json["model"]["axis_source"], f.fit.axis_source);
+  EXPECT_EQ(json["model"]["axis_source"].get<std::string>().rfind(
+                "point cloud, best of ", 0),
+            0u);
+  EXPECT_EQ(json["model"]["apex_in_data"], true);
+  EXPECT_EQ(json["model"]["apex_data_distance_fraction"].get<double>(),
+            f.fit.apex_data_distance);
+  EXPECT_LT(json["model"]["lowest_data_height_fraction"].get<double>(), 0.05);
+  EXPECT_EQ(json["model"]["lowest_data_u"].get<double>(), f.fit.lowest_data_u);
   // The fitted surface's volume within 2 % of the true model's.
   for (int t = 0; t < 3; ++t) {
     const double truth = CavityVolumeMl(f.phantom.truth[t]);

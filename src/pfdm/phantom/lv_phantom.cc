@@ -1,8 +1,13 @@
 #include "pfdm/phantom/lv_phantom.h"
 
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <random>
+#include <string>
+#include <utility>
 
+#include "pfdm/phantom/lv_slices.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -10,11 +15,23 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The mid-ventricular segment: 40 mm of the 95 mm mid-wall, from 28 mm
+// above its apex pole (22.6 mm radius) to past the equator (26.9 mm).
+constexpr LvHeights kMidventricular{0.30, 0.72};
+// A full short-axis stack's first and last planes: 4.75 mm above the apex
+// pole (the apical slice, 21 mm across at the mid-wall) to 9.5 mm below
+// the base plane.
+constexpr LvHeights kFullStack{0.05, 0.90};
+
 // ED body positions of the tags, SPAMM-like (see the header).
 std::vector<Eigen::Vector3d> PlaceTags(const LvShape& shape,
                                        const LvPhantomOptions& options) {
   std::mt19937 random(options.seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const LvHeights band = LvRegionHeights(options.region);
+  const bool full = options.region == LvRegion::kFull;
+  const double low_z = band.low * shape.base_z();
+  const double high_z = band.high * shape.base_z();
   std::vector<Eigen::Vector3d> tags;
   tags.reserve(options.num_tags);
   for (int i = 0; i < options.num_tags; ++i) {
@@ -22,11 +39,14 @@ std::vector<Eigen::Vector3d> PlaceTags(const LvShape& shape,
         options.tags == LvTagLayer::kWall ? -1.0 + 2.0 * uniform(random) : 0.0;
     double nu = 0.0;
     if (i % 2 == 0) {  // Short-axis plane: height uniform on this surface.
-      const double apex = shape.ApexZ(w);
-      nu =
-          shape.NuAtHeight(apex + (shape.base_z() - apex) * uniform(random), w);
-    } else {  // Long-axis plane: uniform along the meridian.
-      nu = shape.NuAtArcFraction(uniform(random), w);
+      const double low = full ? shape.ApexZ(w) : low_z;
+      nu = shape.NuAtHeight(low + (high_z - low) * uniform(random), w);
+    } else {  // Long-axis plane: uniform along the meridian (in the band).
+      double z = 0.0;
+      do {
+        nu = shape.NuAtArcFraction(uniform(random), w);
+        z = shape.Position(nu, 0.0, w).z();
+      } while (!full && (z < low_z || z > high_z));
     }
     const double phi = -kPi + 2.0 * kPi * uniform(random);
     tags.push_back(shape.Position(nu, phi, w));
@@ -34,7 +54,140 @@ std::vector<Eigen::Vector3d> PlaceTags(const LvShape& shape,
   return tags;
 }
 
+// Frame `motion`'s contour points where the image planes cut the wall,
+// `per_contour` a plane and surface at uniformly random ED longitudes; ids
+// from first_id on.
+std::vector<DataPoint> SliceContours(const LvShape& shape,
+                                     const LvPhantomOptions& options,
+                                     const LvFrameMotion& motion,
+                                     const std::vector<LvImagePlane>& planes,
+                                     int per_contour, std::int64_t first_id,
+                                     std::mt19937* placement,
+                                     std::mt19937* noise_random) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<std::pair<double, WallLayer>> surfaces{
+      {0.0, WallLayer::kAnywhere}};
+  if (options.tags == LvTagLayer::kWall) {
+    surfaces = {{-1.0, WallLayer::kEndocardium}, {1.0, WallLayer::kEpicardium}};
+  }
+  std::vector<DataPoint> points;
+  for (const LvImagePlane& plane : planes) {
+    for (const auto& [w, layer] : surfaces) {
+      for (int j = 0; j < per_contour; ++j) {
+        const double phi = -kPi + 2.0 * kPi * uniform(*placement);
+        const std::optional<Eigen::Vector3d> cut =
+            SliceCut(shape, options.deformation, motion, plane, phi, w);
+        Eigen::Vector3d error(noise(*noise_random), noise(*noise_random),
+                              noise(*noise_random));
+        // Contours are drawn in the image: no error across the plane.
+        error -= plane.normal * plane.normal.dot(error);
+        if (!cut) continue;
+        const std::int64_t id =
+            first_id + static_cast<std::int64_t>(points.size());
+        points.push_back({id, *cut + options.noise_mm * error, layer});
+      }
+    }
+  }
+  return points;
+}
+
+// The shape, checked: a shell the phantom's truth can measure.
+LvShape CheckedShape(const LvShapeSize& size) {
+  if (!(size.radius_mm > 0 && size.wall_mm > 0 &&
+        size.wall_mm < size.radius_mm && size.base_nu_deg > 90 &&
+        size.base_nu_deg < 180 &&
+        size.length_mm / (1 - std::cos(size.base_nu_deg * kPi / 180)) >
+            size.radius_mm)) {
+    throw InputError(
+        "lv phantom shape: needs 0 < wall < radius < a and "
+        "90 < base_nu_deg < 180");
+  }
+  const LvShape shape(size);
+  if (shape.ApexZ(-1.0) >= LvRingHeights().front() * shape.base_z()) {
+    throw InputError(
+        "lv phantom shape: the endocardial apex lies above "
+        "the first truth ring");
+  }
+  return shape;
+}
+
+// The short-axis image planes, fixed where frame 0 puts them.
+std::vector<LvImagePlane> ImagePlanes(const LvShape& shape,
+                                      const LvPhantomOptions& options,
+                                      int num_frames) {
+  const Eigen::Isometry3d world_from_body =
+      LvWorldPose() *
+      RigidBodyMotion(shape, ScenarioMotion(options.kinematics, 0, num_frames,
+                                            options.breathing)
+                                 .rigid);
+  std::vector<LvImagePlane> planes;
+  for (double h : LvSliceHeights(options)) {
+    planes.push_back(ShortAxisPlane(world_from_body, h * shape.base_z()));
+  }
+  return planes;
+}
+
+// Points a contour (one plane, one surface): num_tags shared evenly.
+int ContourPoints(const LvPhantomOptions& options, size_t num_planes) {
+  const int contours = static_cast<int>(num_planes) *
+                       (options.tags == LvTagLayer::kWall ? 2 : 1);
+  if (options.num_tags < contours) {
+    throw InputError("lv phantom sax-slices: " +
+                     std::to_string(options.num_tags) + " points for " +
+                     std::to_string(contours) + " contours; at least one each");
+  }
+  return options.num_tags / contours;
+}
+
 }  // namespace
+
+LvHeights LvRegionHeights(LvRegion region) {
+  return region == LvRegion::kMidventricular ? kMidventricular : LvHeights();
+}
+
+std::vector<double> LvSliceHeights(const LvPhantomOptions& options) {
+  const bool mid = options.region == LvRegion::kMidventricular;
+  const LvHeights stack = mid ? kMidventricular : kFullStack;
+  const int n = options.num_slices > 0 ? options.num_slices : mid ? 3 : 9;
+  std::vector<double> heights;
+  for (int k = 0; k < n; ++k) {
+    heights.push_back(n == 1 ? 0.5 * (stack.low + stack.high)
+                             : stack.low +
+                                   (stack.high - stack.low) * k / (n - 1.0));
+  }
+  return heights;
+}
+
+bool ParseLvRegion(const std::string& name, LvRegion* region) {
+  if (name == "full") {
+    *region = LvRegion::kFull;
+  } else if (name == "midventricular") {
+    *region = LvRegion::kMidventricular;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::string LvRegionName(LvRegion region) {
+  return region == LvRegion::kMidventricular ? "midventricular" : "full";
+}
+
+bool ParseLvSampling(const std::string& name, LvSampling* sampling) {
+  if (name == "tags") {
+    *sampling = LvSampling::kTags;
+  } else if (name == "sax-slices") {
+    *sampling = LvSampling::kSaxSlices;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::string LvSamplingName(LvSampling sampling) {
+  return sampling == LvSampling::kSaxSlices ? "sax-slices" : "tags";
+}
 
 bool ParseLvTagLayer(const std::string& name, LvTagLayer* layer) {
   if (name == "midwall") {
@@ -62,8 +215,9 @@ Eigen::Vector3d LvWorldPoint(const LvShape& shape,
 
 LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
   if (options.num_frames < 0 || options.num_tags < 1 ||
-      !(options.noise_mm >= 0)) {
-    throw InputError("lv phantom needs frames >= 1, tags >= 1 and noise >= 0");
+      !(options.noise_mm >= 0) || options.num_slices < 0) {
+    throw InputError(
+        "lv phantom needs frames >= 1, tags >= 1, noise >= 0 and slices >= 0");
   }
   LvPhantom phantom;
   phantom.options = options;
@@ -71,29 +225,20 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
     phantom.options.num_frames = DefaultFrameCount(options.kinematics);
   }
   const int num_frames = phantom.options.num_frames;
-  const LvShapeSize& size = options.shape;
-  if (!(size.radius_mm > 0 && size.wall_mm > 0 &&
-        size.wall_mm < size.radius_mm && size.base_nu_deg > 90 &&
-        size.base_nu_deg < 180 &&
-        size.length_mm / (1 - std::cos(size.base_nu_deg * kPi / 180)) >
-            size.radius_mm)) {
-    throw InputError(
-        "lv phantom shape: needs 0 < wall < radius < a and "
-        "90 < base_nu_deg < 180");
-  }
-  const LvShape shape(size);
-  if (shape.ApexZ(-1.0) >= LvRingHeights().front() * shape.base_z()) {
-    throw InputError(
-        "lv phantom shape: the endocardial apex lies above "
-        "the first truth ring");
-  }
+  const LvShape shape = CheckedShape(options.shape);
   const LvTruthMeter meter(shape);
-  phantom.tag_material = PlaceTags(shape, options);
+  const bool slices = options.sampling == LvSampling::kSaxSlices;
+  if (!slices) phantom.tag_material = PlaceTags(shape, options);
   phantom.points.source = "lv-phantom";
+  const std::vector<LvImagePlane> planes =
+      slices ? ImagePlanes(shape, options, num_frames)
+             : std::vector<LvImagePlane>();
+  const int per_contour = slices ? ContourPoints(options, planes.size()) : 0;
 
   // Noise from its own stream, so that it leaves the placement unchanged.
   std::seed_seq noise_seed{options.seed, 0x6e6f6973u};
   std::mt19937 random(noise_seed);
+  std::mt19937 placement(options.seed);  // The slices' longitudes.
   std::normal_distribution<double> noise(0.0, 1.0);
   std::vector<LvMaterialPoint> tags, samples;
   for (const Eigen::Vector3d& x : phantom.tag_material) {
@@ -115,10 +260,15 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
 
     Frame frame;
     frame.index = t;
-    for (int i = 0; i < options.num_tags; ++i) {
+    for (int i = 0; i < static_cast<int>(tags.size()); ++i) {
       Eigen::Vector3d x = move(tags[i]);
       for (int k = 0; k < 3; ++k) x[k] += options.noise_mm * noise(random);
       frame.points.push_back({i, x});
+    }
+    if (slices) {
+      frame.points = SliceContours(
+          shape, options, motion, planes, per_contour,
+          static_cast<std::int64_t>(t) * options.num_tags, &placement, &random);
     }
     phantom.points.frames.push_back(std::move(frame));
 

@@ -39,6 +39,16 @@
 // uniform in [-1, 1]; Gaussian noise per coordinate. Placement and noise
 // draw from separate streams of `seed`, so noise_mm = 0 gives the same
 // tags without noise.
+//
+// Partial data (--region, --sampling): `midventricular` keeps the tags to
+// ED heights 30-72 % of the length (a squat segment 40 mm long and 45-54
+// mm across at the mid-wall, 64 mm with the wall; no apex), as the three
+// short-axis tag slices of many clinical studies; `sax-slices` gives
+// untracked contour points (ids unique per frame) where a few parallel
+// image planes, fixed in the world, cut the moving wall (lv_slices.h):
+// the mid-wall, or with wall tags the endocardium and epicardium (their
+// WallLayer set, which points.csv does not carry); noise in the image
+// plane only.  The truth is the whole LV's, as for full data.
 #ifndef PFDM_PHANTOM_LV_PHANTOM_H_
 #define PFDM_PHANTOM_LV_PHANTOM_H_
 
@@ -58,6 +68,16 @@ enum class LvTagLayer { kMidwall, kWall };
 bool ParseLvTagLayer(const std::string& name, LvTagLayer* layer);
 std::string LvTagLayerName(LvTagLayer layer);
 
+enum class LvRegion { kFull, kMidventricular };
+// "full" or "midventricular"; false if unknown.
+bool ParseLvRegion(const std::string& name, LvRegion* region);
+std::string LvRegionName(LvRegion region);
+
+enum class LvSampling { kTags, kSaxSlices };
+// "tags" or "sax-slices"; false if unknown.
+bool ParseLvSampling(const std::string& name, LvSampling* sampling);
+std::string LvSamplingName(LvSampling sampling);
+
 struct LvPhantomOptions {
   LvKinematics kinematics = LvKinematics::kSystole;
   LvTagLayer tags = LvTagLayer::kMidwall;
@@ -68,16 +88,35 @@ struct LvPhantomOptions {
   bool breathing = true;  // Systole and cycle only.
   LvShapeSize shape;
   LvDeformation deformation;  // deformation.lesion: off by default.
+  LvRegion region = LvRegion::kFull;
+  LvSampling sampling = LvSampling::kTags;
+  // sax-slices: planes per frame; 0: 3 for a mid-ventricular region, 9
+  // for the full LV.
+  int num_slices = 0;
 };
+
+// The region's ED heights, fractions of the mid-wall's length from its apex
+// pole: tags lie between them.  Full: 0 and 1.
+struct LvHeights {
+  double low = 0.0, high = 1.0;
+};
+LvHeights LvRegionHeights(LvRegion region);
+// The short-axis slices' ED heights, fractions likewise, evenly spaced from
+// the region's lowest to its highest (full: 0.05 to 0.9, the apex pole and
+// the base plane left out, as in a short-axis stack).
+std::vector<double> LvSliceHeights(const LvPhantomOptions& options);
 
 struct LvPhantom {
   LvPhantomOptions options;  // num_frames resolved.
-  PointSequence points;      // source "lv-phantom"; id = tag index.
+  // source "lv-phantom"; id = tag index (sax-slices: frame x num_tags +
+  // the point's index in its frame).
+  PointSequence points;
   std::vector<Eigen::Vector3d> tag_material;  // ED body position per tag.
   std::vector<LvFrameTruth> truth;            // Per frame.
 };
 
-// Throws InputError for num_frames < 0, num_tags < 1 or noise_mm < 0.
+// Throws InputError for num_frames < 0, num_tags < 1, noise_mm < 0,
+// num_slices < 0, or fewer tags than slice contours (sax-slices).
 LvPhantom MakeLvPhantom(const LvPhantomOptions& options);
 
 // World position at frame `motion` of the material point at ED body

@@ -354,6 +354,62 @@ TEST(LvPhantomTest, LesionWeakensMidSegmentTwoOnly) {
   }
 }
 
+// A mid-ventricular segment: every tag between 30 and 72 % of the height,
+// both halves (short- and long-axis planes) reaching both ends; a squat
+// cloud, wider than long; the truth the whole LV's, as for full data.
+TEST(LvPhantomTest, MidventricularTagsLieBetweenTheirHeights) {
+  LvPhantomOptions options;
+  options.region = LvRegion::kMidventricular;
+  options.tags = LvTagLayer::kWall;
+  options.num_tags = 1000;
+  options.noise_mm = 0.0;
+  const LvPhantom phantom = MakeLvPhantom(options);
+  const LvShape shape;
+  const LvPhantom full = Make(LvKinematics::kSystole);
+  ASSERT_EQ(phantom.tag_material.size(), 1000u);
+  double low[2] = {1, 1}, high[2] = {0, 0}, widest = 0;
+  for (size_t i = 0; i < phantom.tag_material.size(); ++i) {
+    const Eigen::Vector3d& x = phantom.tag_material[i];
+    const double h = x.z() / shape.base_z();
+    low[i % 2] = std::min(low[i % 2], h);
+    high[i % 2] = std::max(high[i % 2], h);
+    widest = std::max(widest, x.head<2>().norm());
+  }
+  for (int half : {0, 1}) {
+    EXPECT_GE(low[half], 0.30 - 1e-12);
+    EXPECT_LT(low[half], 0.31);
+    EXPECT_LE(high[half], 0.72 + 1e-12);
+    EXPECT_GT(high[half], 0.71);
+  }
+  // 40 mm long, 64 mm across the epicardium.
+  EXPECT_NEAR((high[0] - low[0]) * shape.base_z(), 39.9, 0.5);
+  EXPECT_NEAR(2 * widest, 64.0, 1.0);
+  EXPECT_EQ(phantom.truth.back().net_twist_deg,
+            full.truth.back().net_twist_deg);
+  EXPECT_EQ(phantom.points.frames[3].points[17].id, 17);
+}
+
+TEST(LvPhantomTest, NamesItsRegionsAndSamplings) {
+  LvRegion region;
+  LvSampling sampling;
+  EXPECT_TRUE(ParseLvRegion("midventricular", &region));
+  EXPECT_EQ(LvRegionName(region), "midventricular");
+  EXPECT_TRUE(ParseLvRegion("full", &region));
+  EXPECT_EQ(region, LvRegion::kFull);
+  EXPECT_FALSE(ParseLvRegion("apical", &region));
+  EXPECT_TRUE(ParseLvSampling("sax-slices", &sampling));
+  EXPECT_EQ(LvSamplingName(sampling), "sax-slices");
+  EXPECT_TRUE(ParseLvSampling("tags", &sampling));
+  EXPECT_EQ(sampling, LvSampling::kTags);
+  EXPECT_FALSE(ParseLvSampling("lax", &sampling));
+  LvPhantomOptions options;
+  EXPECT_EQ(LvSliceHeights(options).size(), 9u);
+  options.region = LvRegion::kMidventricular;
+  EXPECT_EQ(LvSliceHeights(options), (std::vector<double>{0.30, 0.51, 0.72}));
+  options.num_slices = 1;
+  EXPECT_EQ(LvSliceHeights(options), std::vector<double>{0.51});
+}
+
 TEST(LvPhantomTest, RejectsBadOptions) {
   LvPhantomOptions options;
   options.num_tags = 0;
@@ -366,6 +422,12 @@ TEST(LvPhantomTest, RejectsBadOptions) {
   EXPECT_THROW(MakeLvPhantom(options), InputError);
   options.shape.wall_mm = 10.0;
   options.shape.base_nu_deg = 80.0;  // Widest at the base.
+  EXPECT_THROW(MakeLvPhantom(options), InputError);
+  options.shape.base_nu_deg = 120.0;
+  options.num_slices = -1;
+  EXPECT_THROW(MakeLvPhantom(options), InputError);
+  options.sampling = LvSampling::kSaxSlices;
+  options.num_slices = 11;  // 10 points for 11 contours.
   EXPECT_THROW(MakeLvPhantom(options), InputError);
 }
 

@@ -70,6 +70,13 @@ std::string LvTruthJson(const LvPhantom& phantom) {
   json["breathing"] = options.breathing;
   json["num_frames"] = options.num_frames;
   json["num_tags"] = options.num_tags;
+  json["region"] = LvRegionName(options.region);
+  json["region_heights"] = {LvRegionHeights(options.region).low,
+                            LvRegionHeights(options.region).high};
+  json["sampling"] = LvSamplingName(options.sampling);
+  if (options.sampling == LvSampling::kSaxSlices) {
+    json["slice_heights"] = LvSliceHeights(options);
+  }
   json["noise_mm"] = options.noise_mm;
   json["seed"] = options.seed;
   json["geometry"] = {{"length_mm", options.shape.length_mm},

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "pfdm/fit/stages/apex_coverage.h"
 #include "pfdm/fit/stages/frame_fit.h"
 #include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/fit/stages/start.h"
@@ -22,11 +23,13 @@ SequenceFit FitSequence(const PointSequence& sequence,
   }
   result.config = carried.model.config;
   result.wall_reason = start.wall.reason;
+  result.axis_source = start.axis_source;
   result.surface =
       result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;
   if (result.config.Solid() && start.has_tags) {
     TakeOutTagNoise(sequence, start.frames_per_id, &result);
   }
+  MeasureApexCoverage(Positions(sequence.frames[0]), &result);
   JudgeFrames(sequence, options, &result);
   return result;
 }

@@ -193,6 +193,17 @@ void JudgeMoved(const FrameFit& frame, Verdict* verdict) {
                        first, last, frame.iterations));
 }
 
+// Without data near the apex the apical rings, the cap's volume and mass
+// are the model's continuation of the data above them.
+void JudgeApex(const SequenceFit& fit, Verdict* verdict) {
+  if (fit.apex_in_data) return;
+  verdict->Warn("extrapolated",
+                Format("no data near the apex (the nearest %.0f %% of the "
+                       "model's length from it, u above %.2f): the apical "
+                       "rings, the apex cap's volume and mass are extrapolated",
+                       100.0 * fit.apex_data_distance, fit.lowest_data_u));
+}
+
 void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
   if (spreads[0] >= kFlatDataRatio * spreads[2]) return;
   verdict->Fail("flat_data",
@@ -222,6 +233,7 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     JudgeBounds(fit->config, frame, &frame.verdict);
     JudgeRings(fit->config, frame, &frame.verdict);
     if (t == 0) JudgeMoved(frame, &frame.verdict);
+    JudgeApex(*fit, &frame.verdict);
     JudgeShape(spreads, &frame.verdict);
   }
 }

@@ -13,6 +13,7 @@
 //   at_bound     a shape function pressed against its bound;
 //   sparse_rings knot spans inside the data with almost no points;
 //   not_moved    frame 0's solve never left its start;
+//   extrapolated no data near the apex (SequenceFit::apex_in_data);
 //   flat_data    points nearly in a plane, no ventricle.
 // The clinical numbers' plausibility is the analysis' (report/).
 #ifndef PFDM_FIT_STAGES_FRAME_VERDICT_H_

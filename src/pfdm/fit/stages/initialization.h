@@ -22,6 +22,16 @@ Model InitializeModel(const ModelConfig& config,
                       const std::vector<Eigen::Vector3d>& points,
                       const std::optional<AxisHint>& hint);
 
+// The same along a given line (`direction` of unit length, either sign),
+// pointed from its narrower end to its wider one: InitializeModel without a
+// hint is InitializeModelAlong the principal axis.
+Model InitializeModelAlong(const ModelConfig& config,
+                           const std::vector<Eigen::Vector3d>& points,
+                           const Eigen::Vector3d& direction);
+
+// The points' principal directions, columns by ascending variance.
+Eigen::Matrix3d PrincipalAxes(const std::vector<Eigen::Vector3d>& points);
+
 }  // namespace pfdm
 
 #endif  // PFDM_FIT_STAGES_INITIALIZATION_H_

@@ -82,6 +82,22 @@ struct SequenceFit {
   // frames), taken out of every frame's h (DeconvolvedThickness); 0
   // otherwise.
   double tag_noise_mm = 0.0;
+  // How frame 0's long axis was found (StartAxis::source): "--apex/--base",
+  // "APEX_POINT and MITRAL_VALVE", "normal of 3 parallel planes", "point
+  // cloud, best of 3 candidate axes".
+  std::string axis_source;
+  // Whether frame 0 has data near the apex, where the cup closes: within
+  // kApexReach of the fitted length of its apex pole (apex_coverage.h).
+  // Without, what the fit says of the apex (apical rings, the cap's volume
+  // and mass) is extrapolated.
+  bool apex_in_data = true;
+  // Frame 0's data point nearest the apex pole: its distance, and the
+  // lowest point's height above the pole along the axis, as fractions of
+  // the model's length (apex pole to base rim); the least u of frame 0's
+  // material points.
+  double apex_data_distance = 0.0;
+  double lowest_data_height = 0.0;
+  double lowest_data_u = 0.0;
   std::vector<FrameFit> frames;
   Model ModelAt(int frame) const { return {config, frames[frame].state}; }
 };

@@ -1,8 +1,11 @@
 #include "pfdm/fit/stages/start.h"
 
 #include <string>
+#include <utility>
 
+#include "Eigen/Dense"
 #include "pfdm/fit/stages/initialization.h"
+#include "pfdm/fit/stages/start_axis.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -59,8 +62,9 @@ SequenceStart StartSequence(const PointSequence& sequence,
     CheckSpansSpace(sequence.source, frame);
   }
   const Frame& first = sequence.frames[0];
-  SequenceStart start{InitializeModel(config, Positions(first), options.hint),
-                      CountFramesPerId(sequence), false, WallDecision()};
+  StartAxis axis = ChooseStartAxis(first, config, options, sequence.source);
+  SequenceStart start{std::move(axis.model), CountFramesPerId(sequence), false,
+                      WallDecision(), std::move(axis.source)};
   start.has_tags = HasTags(first, start.frames_per_id);
   start.wall = DecideWallFromContours(first, start.has_tags, options,
                                       sequence.source, &start.model.config);

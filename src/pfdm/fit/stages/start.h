@@ -4,6 +4,8 @@
 #ifndef PFDM_FIT_STAGES_START_H_
 #define PFDM_FIT_STAGES_START_H_
 
+#include <string>
+
 #include "pfdm/fit/fit_options.h"
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/wall_stage.h"
@@ -17,6 +19,7 @@ struct SequenceStart {
   FramesPerId frames_per_id;
   bool has_tags = false;  // Whether frame 0 has tracked tags.
   WallDecision wall;
+  std::string axis_source;  // StartAxis::source.
 };
 
 // Throws InputError naming the source and frame when there are no frames,
