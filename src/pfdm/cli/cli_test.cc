@@ -67,9 +67,12 @@ TEST(CliTest, FitWithTheIntegratorRecordsItsSettings) {
       "--damping_scale twist=2,offsets=0.5 --time_step 1e-4 "
       "--max_steps 50 --rest_tolerance 1e-5 --points " +
       dir + "/phantom.csv --out " + dir + "/fit");
-  // 50 steps leave frame 1 far from rest: the outputs are written and the
-  // verdict says the fit is not to be used (docs/verdict.md).
-  ASSERT_EQ(run.exit_code, 3) << run.error;
+  // 50 steps leave frame 1 far from rest (RMS 4.7 mm, 15 % of the data's
+  // radius): the verdict warns of it in every frame (docs/verdict.md).
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_NE(run.error.find("pfdm: 2 of 2 frames with warnings"),
+            std::string::npos)
+      << run.error;
   EXPECT_NE(run.error.find("the solver stopped without converging"),
             std::string::npos)
       << run.error;
