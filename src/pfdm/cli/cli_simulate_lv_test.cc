@@ -49,6 +49,17 @@ TEST(LvPhantomCliTest, WritesPointsAndTruth) {
       nlohmann::json::parse(ReadText(dir + "/spin_truth.json"));
   EXPECT_EQ(spin["frames"][2]["rigid"]["spin_deg"].get<double>(), 10.0);
 
+  // --outliers: the truth lists them per frame (10 % of 200 tags).
+  run = RunPfdm("simulate --phantom lv --outliers 0.1 --tags 200 --out " + dir +
+                "/outliers.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json outliers =
+      nlohmann::json::parse(ReadText(dir + "/outliers_truth.json"));
+  EXPECT_EQ(outliers["outlier_fraction"].get<double>(), 0.1);
+  for (const nlohmann::json& frame : outliers["frames"]) {
+    EXPECT_NEAR(frame["outlier_ids"].size(), 20.0, 13.0);
+  }
+
   run = RunPfdm("simulate --phantom lv --nobreathing --tags 20 --out " + dir +
                 "/still.csv");
   ASSERT_EQ(run.exit_code, 0) << run.error;
@@ -69,7 +80,7 @@ TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
            Case{"--phantom lv --kinematics diastole",
                 "unknown --kinematics 'diastole'"},
            Case{"--phantom lv --wall_tags endo", "unknown --wall_tags 'endo'"},
-           Case{"--phantom lv --outliers 0.1", "--outliers is for"},
+           Case{"--phantom lv --outliers 1.5", "0 <= --outliers <= 1"},
            Case{"--phantom lv --frames 0", "1 <= --frames <= 1000"},
            Case{"--kinematics cycle", "need --phantom lv"},
            Case{"--lesion", "need --phantom lv"},

@@ -16,7 +16,9 @@ DEFINE_int32(frames, 5,
              "simulate: frames (--phantom lv: 5, or 9 for --kinematics cycle)");
 DEFINE_int32(tags, 2000, "simulate: tracked tags");
 DEFINE_double(noise, 0.5, "simulate: Gaussian noise per coordinate, mm");
-DEFINE_double(outliers, 0.0, "simulate: fraction of outlier points");
+DEFINE_double(outliers, 0.0,
+              "simulate: fraction of outlier points (--phantom model: moved "
+              "10 mm, lv: 5 to 10 mm, in a random direction)");
 DEFINE_int32(seed, 1, "simulate: random seed");
 DEFINE_string(phantom, "model",
               "simulate: model (the model's own equations) or lv (the "
@@ -77,12 +79,10 @@ int RunLvPhantom() {
     throw InputError("unknown --wall_tags '" + FLAGS_wall_tags +
                      "' (midwall, wall)");
   }
-  if (FLAGS_outliers != 0.0) {
-    throw InputError("--outliers is for --phantom model only");
-  }
   options.num_frames = IsDefault("frames") ? 0 : FLAGS_frames;
   options.num_tags = FLAGS_tags;
   options.noise_mm = FLAGS_noise;
+  options.outlier_fraction = FLAGS_outliers;
   options.seed = FLAGS_seed;
   options.deformation.lesion = FLAGS_lesion;
   options.breathing = FLAGS_breathing;
@@ -91,9 +91,11 @@ int RunLvPhantom() {
     throw InputError("simulate needs 1 <= --frames <= 1000");
   }
   if (!(options.num_tags >= 1 && options.num_tags <= 1000000 &&
-        options.noise_mm >= 0 && options.noise_mm <= 1000)) {
+        options.noise_mm >= 0 && options.noise_mm <= 1000 &&
+        options.outlier_fraction >= 0 && options.outlier_fraction <= 1)) {
     throw InputError(
-        "simulate needs 1 <= --tags <= 1e6 and 0 <= --noise <= 1000 (mm)");
+        "simulate needs 1 <= --tags <= 1e6, 0 <= --noise <= 1000 (mm) and "
+        "0 <= --outliers <= 1");
   }
   const LvPhantom phantom = MakeLvPhantom(options);
   const std::filesystem::path truth = TruthPath("json");
