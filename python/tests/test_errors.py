@@ -46,6 +46,9 @@ def test_bad_options_raise_the_clis_message(cli_phantom):
         ({"base_plane": "lid"}, ["--base_plane", "lid"]),
         ({"format": "xml"}, ["--format", "xml"]),
         ({"jacobian": "guess"}, ["--jacobian", "guess"]),
+        ({"loss": "tukey"}, ["--loss", "tukey"]),
+        ({"loss_scale": -1.5}, ["--loss_scale", "-1.5"]),
+        ({"loss_scale": "big"}, ["--loss_scale", "big"]),
     ]
     for kwargs, flags in cases:
         message = cli_error("fit", "--points", points_csv, "--out",

@@ -139,5 +139,45 @@ TEST(LvPhantomCliTest, TagsThroughTheWallFitASolid) {
   EXPECT_FALSE(midwall["frames"][0].contains("lv_mass_g"));
 }
 
+// --loss with --loss_scale auto (the default): fit.json records "auto"
+// and each frame's measured scale, the frames' files each point's weight;
+// a number is recorded as given; without a loss neither.
+TEST(LvPhantomCliTest, ARobustLossRecordsItsScaleAndWeights) {
+  const std::string dir = ScratchDirectory("lv_loss");
+  CommandResult run = RunPfdm(
+      "simulate --phantom lv --outliers 0.05 --frames 3 --tags 500 --out " +
+      dir + "/lv.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const std::string fit =
+      "fit --local off --wall midwall --points " + dir + "/lv.csv --out " + dir;
+  run = RunPfdm(fit + "/auto --loss cauchy");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  nlohmann::json settings =
+      nlohmann::json::parse(ReadText(dir + "/auto/fit.json"))["settings"];
+  EXPECT_EQ(settings["loss"], "cauchy");
+  EXPECT_EQ(settings["loss_scale"], "auto");
+  ASSERT_EQ(settings["loss_scale_mm"].size(), 3u);
+  // Frame 0's distances along the normal: sigma about the 0.5 mm noise,
+  // times cauchy's 2.385.
+  EXPECT_NEAR(settings["loss_scale_mm"][0].get<double>(), 2.385 * 0.55, 0.3);
+  for (const char* file : {"/auto/frame_002.vtk", "/auto/frame_002.vtp"}) {
+    EXPECT_NE(ReadText(dir + file).find("loss_weight"), std::string::npos)
+        << file;
+  }
+  run = RunPfdm(fit + "/fixed --loss huber --loss_scale 2");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  settings =
+      nlohmann::json::parse(ReadText(dir + "/fixed/fit.json"))["settings"];
+  EXPECT_EQ(settings["loss_scale"].get<double>(), 2.0);
+  EXPECT_EQ(settings["loss_scale_mm"].get<double>(), 2.0);
+  run = RunPfdm(fit + "/none");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  settings =
+      nlohmann::json::parse(ReadText(dir + "/none/fit.json"))["settings"];
+  EXPECT_FALSE(settings.contains("loss_scale"));
+  EXPECT_EQ(ReadText(dir + "/none/frame_002.vtk").find("loss_weight"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -32,8 +32,11 @@ DEFINE_double(untracked_prior, kDefaults.untracked_prior,
               "frames without tracked points (contours): pull toward frame "
               "0, same units, 0 to 1e6");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
-DEFINE_double(loss_scale, kDefaults.loss_scale,
-              "robust loss scale, mm, positive");
+DEFINE_string(loss_scale, kDefaults.loss_scale.c_str(),
+              "robust loss scale: auto (per frame, from the frame's fit "
+              "without the loss: 1.4826 times its median distance, times "
+              "1.345 for huber, 2.385 for cauchy) or a positive number of "
+              "mm");
 DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
 DEFINE_string(apex, "", "optional apex hint x,y,z (mm), with --base");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");

@@ -1,9 +1,11 @@
 #include "pfdm/io/fit_settings.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "ceres/types.h"
+#include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/model/local_field.h"
 #include "pfdm/solvers/damping_groups.h"
@@ -43,6 +45,20 @@ double Weight(const char* flag, double value) {
   return value;
 }
 
+// A --loss_scale number: positive and finite (scale 0 once left the model
+// unmoved with exit 0).
+double LossScale(const std::string& text) {
+  char* end = nullptr;
+  const double scale = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !(scale > 0.0) ||
+      !std::isfinite(scale)) {
+    throw InputError(
+        "--loss_scale must be auto or a positive number of mm, got '" +
+        Clip(text) + "'");
+  }
+  return scale;
+}
+
 }  // namespace
 
 ModelConfig ModelConfigFrom(const FitSettings& settings) {
@@ -55,13 +71,10 @@ FitOptions FitOptionsFrom(const FitSettings& s) {
   options.prior_weight = Weight("prior", s.prior);
   options.untracked_prior_weight = Weight("untracked_prior", s.untracked_prior);
   options.wall = WallModelFromName(s.wall);
+  CheckLossName(s.loss);
   options.loss = s.loss;
-  // Scale 0 once left the model unmoved with exit 0.
-  if (!(s.loss_scale > 0.0) || !std::isfinite(s.loss_scale)) {
-    throw InputError("--loss_scale must be a positive number of mm, got " +
-                     Show(s.loss_scale));
-  }
-  options.loss_scale_mm = s.loss_scale;
+  options.loss_scale_auto = s.loss_scale == "auto";
+  if (!options.loss_scale_auto) options.loss_scale_mm = LossScale(s.loss_scale);
   if (s.threads < 1 || s.threads > 256) {
     throw InputError("--threads must be between 1 and 256, got " +
                      std::to_string(s.threads));

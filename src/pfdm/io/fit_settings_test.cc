@@ -33,6 +33,8 @@ TEST(FitSettingsTest, DefaultsAreTheLibrarys) {
   EXPECT_EQ(options.local.cols, library.local.cols);
   EXPECT_EQ(options.local.stiffness, library.local.stiffness);
   EXPECT_EQ(options.loss, library.loss);
+  EXPECT_EQ(options.loss_scale_auto, library.loss_scale_auto);
+  EXPECT_TRUE(options.loss_scale_auto);
   EXPECT_EQ(options.loss_scale_mm, library.loss_scale_mm);
   EXPECT_EQ(options.solver.kind, library.solver.kind);
   EXPECT_EQ(options.solver.linear_solver, library.solver.linear_solver);
@@ -73,6 +75,19 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   EXPECT_EQ(ModelConfigFrom(settings).name, "superellipsoid");
 }
 
+// --loss_scale: auto (measured) by default, or a number of mm.
+TEST(FitSettingsTest, LossScaleIsAutoOrANumber) {
+  FitSettings settings;
+  settings.loss = "cauchy";
+  FitOptions options = FitOptionsFrom(settings);
+  EXPECT_EQ(options.loss, "cauchy");
+  EXPECT_TRUE(options.loss_scale_auto);
+  settings.loss_scale = "2.5";
+  options = FitOptionsFrom(settings);
+  EXPECT_FALSE(options.loss_scale_auto);
+  EXPECT_EQ(options.loss_scale_mm, 2.5);
+}
+
 TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   FitSettings s;
   s.apex = "1,2,3";
@@ -106,6 +121,18 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   s = FitSettings();
   s.knots = 1;
   EXPECT_EQ(ErrorOf(s), "--knots must be between 2 and 100, got 1");
+  for (const char* scale : {"0", "-1", "nan", "inf", "2mm", "", "Auto"}) {
+    s = FitSettings();
+    s.loss_scale = scale;
+    EXPECT_EQ(ErrorOf(s),
+              std::string("--loss_scale must be auto or a positive number of "
+                          "mm, got '") +
+                  scale + "'");
+  }
+  s = FitSettings();
+  s.loss = "tukey";
+  EXPECT_EQ(ErrorOf(s),
+            "unknown --loss 'tukey' (expected none, huber or cauchy)");
   s = FitSettings();
   s.base_plane = "lid";
   EXPECT_EQ(ErrorOf(s), "unknown --base_plane 'lid' (expected auto or rim)");

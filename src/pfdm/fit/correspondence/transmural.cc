@@ -93,6 +93,12 @@ double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
 
 std::vector<double> QuantileDepths(const std::vector<double>& u,
                                    const std::vector<double>& distances) {
+  return QuantileDepths(u, distances, std::vector<bool>(u.size(), true));
+}
+
+std::vector<double> QuantileDepths(const std::vector<double>& u,
+                                   const std::vector<double>& distances,
+                                   const std::vector<bool>& ranked) {
   const size_t n = u.size();
   std::vector<size_t> by_u(n);
   std::iota(by_u.begin(), by_u.end(), 0);
@@ -104,7 +110,15 @@ std::vector<double> QuantileDepths(const std::vector<double>& u,
     // The last band takes the remainder rather than leaving a runt.
     end = std::min(n, begin + band);
     if (n - end < band / 2) end = n;
-    std::vector<size_t> members(by_u.begin() + begin, by_u.begin() + end);
+    std::vector<size_t> members;
+    for (size_t k = begin; k < end; ++k) {
+      const size_t i = by_u[k];
+      if (ranked[i]) {
+        members.push_back(i);
+      } else {
+        depths[i] = distances[i] < 0.0 ? -1.0 : 1.0;
+      }
+    }
     std::stable_sort(members.begin(), members.end(), [&](size_t a, size_t b) {
       return distances[a] < distances[b];
     });
@@ -116,18 +130,44 @@ std::vector<double> QuantileDepths(const std::vector<double>& u,
   return depths;
 }
 
+std::vector<bool> WithinWall(const Model& model,
+                             const std::vector<MaterialPoint>& material,
+                             const std::vector<double>& distances,
+                             double band_mm) {
+  std::vector<MaterialPoint> endo = material, epi = material;
+  for (MaterialPoint& m : endo) m.w = -1.0;
+  for (MaterialPoint& m : epi) m.w = 1.0;
+  const std::vector<double> inner =
+      MidwallDistances(model, WorldPoints(model, endo), material);
+  const std::vector<double> outer =
+      MidwallDistances(model, WorldPoints(model, epi), material);
+  std::vector<bool> within(distances.size());
+  for (size_t i = 0; i < distances.size(); ++i) {
+    within[i] = distances[i] >= inner[i] - band_mm &&
+                distances[i] <= outer[i] + band_mm;
+  }
+  return within;
+}
+
 double TangentialNoiseMm(const Model& model,
                          const std::vector<Eigen::Vector3d>& residuals,
                          const std::vector<MaterialPoint>& material,
-                         const std::vector<size_t>& which) {
+                         const std::vector<size_t>& which, bool robust) {
   if (which.empty()) return 0.0;
   double sum = 0.0;
+  std::vector<double> squares;
   for (size_t i : which) {
     const MaterialPoint& m = material[i];
     const Eigen::Vector3d n = SurfaceNormal(model, m.u, m.v, m.w);
-    sum += (residuals[i] - residuals[i].dot(n) * n).squaredNorm();
+    const double square =
+        (residuals[i] - residuals[i].dot(n) * n).squaredNorm();
+    sum += square;
+    if (robust) squares.push_back(square);
   }
-  return std::sqrt(sum / (4.0 * which.size()));
+  if (!robust) return std::sqrt(sum / (4.0 * which.size()));
+  const auto middle = squares.begin() + squares.size() / 2;
+  std::nth_element(squares.begin(), middle, squares.end());
+  return std::sqrt(*middle / (4.0 * std::log(2.0)));
 }
 
 double DeconvolvedThickness(double h_obs, double sigma) {

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "pfdm/fit/stages/frame_fit.h"
+#include "pfdm/fit/stages/loss_scale.h"
 #include "pfdm/fit/stages/start.h"
 #include "pfdm/fit/stages/wall_stage.h"
 
@@ -24,8 +25,10 @@ SequenceFit FitSequence(const PointSequence& sequence,
   result.surface =
       result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;
   if (result.config.Solid() && start.has_tags) {
-    TakeOutTagNoise(sequence, start.frames_per_id, &result);
+    TakeOutTagNoise(sequence, start.frames_per_id, &result,
+                    /*robust=*/options.loss != "none");
   }
+  WeighPoints(options.loss, &result);
   return result;
 }
 
