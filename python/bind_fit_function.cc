@@ -35,6 +35,13 @@ std::string PointText(const py::object& point, const char* name) {
   return text;
 }
 
+// --loss_scale as the CLI reads it, from 'auto' (or any text) or a number.
+std::string LossScaleText(const py::object& scale) {
+  if (py::isinstance<py::str>(scale)) return scale.cast<std::string>();
+  // repr round-trips a float exactly, so the scale is the one given.
+  return py::repr(py::float_(scale)).cast<std::string>();
+}
+
 // Lets Ctrl-C stop a fit: checked at every solver step, with the GIL held
 // for the check only.  The exception stops the solve (SolverOptions::on_step)
 // and reaches Python as KeyboardInterrupt.
@@ -88,7 +95,7 @@ std::shared_ptr<FitResult> FitWithFlags(
     const std::string& contours, const std::string& base_plane,
     const std::string& model, int knots, const std::string& wall,
     double smoothness, double prior, double untracked_prior,
-    const std::string& loss, double loss_scale, int threads,
+    const std::string& loss, const py::object& loss_scale, int threads,
     const py::object& apex, const py::object& base, const std::string& solver,
     const std::string& linear_solver, double time_step, double rest_tolerance,
     int max_steps, const std::string& damping, const std::string& damping_scale,
@@ -105,7 +112,7 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.prior = prior;
   s.untracked_prior = untracked_prior;
   s.loss = loss;
-  s.loss_scale = loss_scale;
+  s.loss_scale = LossScaleText(loss_scale);
   s.threads = threads;
   s.apex = PointText(apex, "apex");
   s.base = PointText(base, "base");
@@ -158,6 +165,7 @@ void BindFitFunction(py::module_& m) {
         "same material point).  apex and base: (x, y, z) in mm or 'x,y,z', "
         "together.  base_plane 'auto' closes the cavity at the mitral valve "
         "planes of guide points read from a path, 'rim' at the base rim.  "
+        "loss_scale: 'auto' or a number of mm.  "
         "Releases the GIL; Ctrl-C raises KeyboardInterrupt within a solver "
         "step.  Raises InputError for bad options or data, with the CLI's "
         "message.");

@@ -54,6 +54,11 @@ def test_bad_options_raise_the_clis_message(cli_phantom):
          ["--loss", "cauchy", "--loss_scale", "1e150"]),
         ({"apex": (9e5, 0, 0), "base": (-9e5, 0, 0)},
          ["--apex", "900000,0,0", "--base=-900000,0,0"]),
+        ({"loss": "tukey"}, ["--loss", "tukey"]),
+        ({"loss": "huber", "loss_scale": -1.5},
+         ["--loss", "huber", "--loss_scale", "-1.5"]),
+        ({"loss": "huber", "loss_scale": "big"},
+         ["--loss", "huber", "--loss_scale", "big"]),
     ]
     for kwargs, flags in cases:
         message = cli_error("fit", "--points", points_csv, "--out",

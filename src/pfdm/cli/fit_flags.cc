@@ -32,9 +32,11 @@ DEFINE_double(untracked_prior, kDefaults.untracked_prior,
               "frames without tracked points (contours): pull toward frame "
               "0, same units, 0 to 1e6");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
-DEFINE_double(loss_scale, kDefaults.loss_scale,
-              "--loss huber or cauchy: the loss's scale, mm, 1e-2 to 1e3 "
-              "times the RMS radius of frame 0's points");
+DEFINE_string(loss_scale, kDefaults.loss_scale.c_str(),
+              "--loss huber or cauchy: the loss's scale, auto (per frame, "
+              "from the frame's fit without the loss: 1.4826 times its "
+              "median distance, times 1.345 for huber, 2.385 for cauchy) or "
+              "mm, 1e-2 to 1e3 times the RMS radius of frame 0's points");
 DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
 DEFINE_string(apex, "",
               "optional apex hint x,y,z (mm), with --base; within twice the "

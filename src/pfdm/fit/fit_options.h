@@ -51,8 +51,12 @@ struct FitOptions {
   // frame to frame (on biv-me's contours the functions then come back to
   // frame 0's at the end of the cycle; 0.001 leaves them 4-25 % off).
   double untracked_prior_weight = 0.01;
-  // "none", "huber" or "cauchy"; scale in mm.
+  // "none", "huber" or "cauchy" (fit/residuals/robust_loss.h).  Its scale
+  // is measured by the fit (fit/stages/loss_scale.h, recorded in
+  // SequenceFit::loss_scale_mm) unless loss_scale_auto is false; then it is
+  // loss_scale_mm.
   std::string loss = "none";
+  bool loss_scale_auto = true;
   double loss_scale_mm = 1.0;
   int max_correspondence_rounds = 10;
   // Rounds stop when no material point's model position moves more.

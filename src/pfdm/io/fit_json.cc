@@ -172,7 +172,30 @@ void AddStepperSettings(const FitOptions& options, json* settings) {
   }
 }
 
-json Settings(const PointSequence& points, const FitOptions& options) {
+// The loss: with one, "loss_scale" is "auto" or the number given and
+// "loss_scale_mm" the scale used, measured per frame for auto (a list, a
+// frame's FrameFit::loss_scale_mm each); without, "loss_scale_mm" is the
+// option as given.
+void AddLossSettings(const SequenceFit& fit, const FitOptions& options,
+                     json* settings) {
+  if (options.loss == "none") {
+    settings->erase("loss_scale");
+    return;
+  }
+  if (!options.loss_scale_auto) {
+    (*settings)["loss_scale"] = options.loss_scale_mm;
+    return;
+  }
+  (*settings)["loss_scale"] = "auto";
+  json scales = json::array();
+  for (const FrameFit& frame : fit.frames) {
+    scales.push_back(frame.loss_scale_mm);
+  }
+  (*settings)["loss_scale_mm"] = scales;
+}
+
+json Settings(const PointSequence& points, const SequenceFit& fit,
+              const FitOptions& options) {
   json settings = {
       {"points", points.source},
       {"smoothness_weight", options.smoothness_weight},
@@ -180,6 +203,7 @@ json Settings(const PointSequence& points, const FitOptions& options) {
       {"prior_weight", options.prior_weight},
       {"untracked_prior_weight", options.untracked_prior_weight},
       {"loss", options.loss},
+      {"loss_scale", nullptr},
       {"loss_scale_mm", options.loss_scale_mm},
       {"max_correspondence_rounds", options.max_correspondence_rounds},
       {"correspondence_tolerance_mm", options.correspondence_tolerance_mm},
@@ -196,6 +220,7 @@ json Settings(const PointSequence& points, const FitOptions& options) {
   if (!points.contour_types.empty()) {
     settings["contour_types"] = points.contour_types;
   }
+  AddLossSettings(fit, options, &settings);
   AddStepperSettings(options, &settings);
   if (options.hint) {
     const auto& h = *options.hint;
@@ -435,7 +460,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   const bool solid = fit.config.Solid();
   const bool cavity = analysis.volume_surface == "cavity";
   json document = {{"pfdm_version", "0.1.0"},
-                   {"settings", Settings(points, options)},
+                   {"settings", Settings(points, fit, options)},
                    {"model", ModelSection(fit, analysis)},
                    {"quality", QualitySection(analysis)},
                    {"gauge_convention", kGaugeConvention},

@@ -131,6 +131,31 @@ TEST(FitJsonTest, WhatIsNotMeasuredIsNull) {
             tags["regions"][15]["rotation_deg"][1]);
 }
 
+// The loss in the settings: none as before (the scale as given, no
+// loss_scale); auto with each frame's measured scale; a number as given.
+TEST(FitJsonTest, RecordsTheLossScaleUsed) {
+  const FittedPhantom& f = SmallPhantomFit();
+  SequenceFit fit = f.fit;
+  for (int t = 0; t < 3; ++t) fit.frames[t].loss_scale_mm = 0.5 + t;
+  FitOptions options;
+  nlohmann::json settings = nlohmann::json::parse(
+      FitJson(f.phantom.points, fit, options))["settings"];
+  EXPECT_EQ(settings["loss"], "none");
+  EXPECT_FALSE(settings.contains("loss_scale"));
+  EXPECT_EQ(settings["loss_scale_mm"].get<double>(), 1.0);
+  options.loss = "cauchy";
+  settings = nlohmann::json::parse(
+      FitJson(f.phantom.points, fit, options))["settings"];
+  EXPECT_EQ(settings["loss_scale"], "auto");
+  EXPECT_EQ(settings["loss_scale_mm"], nlohmann::json({0.5, 1.5, 2.5}));
+  options.loss_scale_auto = false;
+  options.loss_scale_mm = 2.0;
+  settings = nlohmann::json::parse(
+      FitJson(f.phantom.points, fit, options))["settings"];
+  EXPECT_EQ(settings["loss_scale"].get<double>(), 2.0);
+  EXPECT_EQ(settings["loss_scale_mm"].get<double>(), 2.0);
+}
+
 // Guide points name the contour types they kept, so a fit can be redone.
 TEST(FitJsonTest, NamesTheContourTypesKept) {
   const FittedPhantom& f = SmallPhantomFit();

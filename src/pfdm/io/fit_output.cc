@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <regex>
 #include <sstream>
+#include <utility>
 
 #include "pfdm/io/fit_json.h"
 #include "pfdm/io/vtp_writer.h"
@@ -224,6 +225,13 @@ VtkPolyData FramePolyData(const Model& model, const Frame& frame,
                         {"w", w_values},
                         {"twist_deg", twist},
                         {"is_data", is_data}};
+  if (!fit.loss_weights.empty()) {
+    // The surface's vertices weigh 1, as data points the loss trusts.
+    std::vector<double> weights(data.points.size() - frame.points.size(), 1.0);
+    weights.insert(weights.end(), fit.loss_weights.begin(),
+                   fit.loss_weights.end());
+    data.point_scalars.emplace_back("loss_weight", std::move(weights));
+  }
   data.point_vectors = {{"residual", residuals}};
   return data;
 }

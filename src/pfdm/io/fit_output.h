@@ -33,8 +33,9 @@ constexpr int kSurfaceMeridians = 48;
 std::string ParametersCsv(const std::vector<Model>& frames);
 
 // The fitted surface (a u, v grid of triangles) and the data points as
-// vertices, with point data u, v, twist_deg (tau at u), is_data and the
-// residual vectors.
+// vertices, with point data u, v, twist_deg (tau at u), is_data, the
+// residual vectors and, for a fit with a robust loss, loss_weight (each
+// data point's FrameFit::loss_weights, 1 on the surface).
 VtkPolyData FramePolyData(const Model& model, const Frame& frame,
                           const FrameFit& fit);
 std::string FrameVtk(const Model& model, const Frame& frame,

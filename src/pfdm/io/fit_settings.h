@@ -31,7 +31,9 @@ struct FitSettings {
   double prior = 0.001;
   double untracked_prior = FitOptions().untracked_prior_weight;
   std::string loss = "none";
-  double loss_scale = 1.0;
+  // "auto" (measured: fit/stages/loss_scale.h) or a number of mm; refused
+  // with a loss of none.
+  std::string loss_scale = "auto";
   int threads = 1;
   std::string apex;  // "x,y,z" in mm, with base; empty: from the data.
   std::string base;

@@ -95,6 +95,9 @@ struct LvFrameTruth {
   // Per LvRingHeights(), at the mid-wall ring's nu.
   std::vector<double> wall_thickening_percent;
   std::vector<LvSegmentTruth> segments;
+  // Ids of the tags moved as outliers in this frame (LvPhantomOptions),
+  // ascending.
+  std::vector<int> outlier_ids;
 };
 
 // Lays out the material samples once; Measure() takes them moved to the

@@ -53,6 +53,7 @@ Json FrameJson(const LvFrameTruth& truth) {
          {"radial_contraction_percent", segment.radial_contraction_percent}});
   }
   frame["segments"] = segments;
+  frame["outlier_ids"] = truth.outlier_ids;
   return frame;
 }
 
@@ -78,6 +79,8 @@ std::string LvTruthJson(const LvPhantom& phantom) {
     json["slice_heights"] = LvSliceHeights(options);
   }
   json["noise_mm"] = options.noise_mm;
+  json["outlier_fraction"] = options.outlier_fraction;
+  json["outlier_mm"] = {options.outlier_min_mm, options.outlier_max_mm};
   json["seed"] = options.seed;
   json["geometry"] = {{"length_mm", options.shape.length_mm},
                       {"radius_mm", options.shape.radius_mm},

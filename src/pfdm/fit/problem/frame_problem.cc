@@ -5,7 +5,6 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <string>
 #include <utility>
 
 #include "ceres/ceres.h"
@@ -19,8 +18,8 @@
 #include "pfdm/fit/residuals/point_residual.h"
 #include "pfdm/fit/residuals/precomputed_groups.h"
 #include "pfdm/fit/residuals/regularizer.h"
+#include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/fit/residuals/spin_gauge_residual.h"
-#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
@@ -72,17 +71,6 @@ void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
     solver->damping_scale[pose].assign(problem.ParameterBlockTangentSize(pose),
                                        groups.pose);
   }
-}
-
-ceres::LossFunction* MakeLoss(const FitOptions& options) {
-  if (options.loss == "none") return nullptr;
-  if (options.loss == "huber")
-    return new ceres::HuberLoss(options.loss_scale_mm);
-  if (options.loss == "cauchy") {
-    return new ceres::CauchyLoss(options.loss_scale_mm);
-  }
-  throw InputError("unknown --loss '" + options.loss +
-                   "' (expected none, huber or cauchy)");
 }
 
 // One frame's ceres::Problem as it is built up, term by term, and solved.
@@ -145,7 +133,8 @@ class FrameProblem {
   std::unique_ptr<PrecomputedGroups> precomputed_;
   ceres::Problem problem_;
   FrameBlocks blocks_;
-  ceres::LossFunction* loss_ = MakeLoss(options_);  // Owned by problem_.
+  // Owned by problem_.
+  ceres::LossFunction* loss_ = MakeLoss(options_.loss, options_.loss_scale_mm);
   // The axis gauge's partial sums, parameter blocks of the problem.
   std::optional<AxisGaugeChain> axis_gauge_;
   // The residual blocks of each term but the data (null: a constant left

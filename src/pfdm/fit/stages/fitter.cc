@@ -5,6 +5,7 @@
 #include "pfdm/fit/stages/apex_coverage.h"
 #include "pfdm/fit/stages/frame_fit.h"
 #include "pfdm/fit/stages/frame_verdict.h"
+#include "pfdm/fit/stages/loss_scale.h"
 #include "pfdm/fit/stages/start.h"
 #include "pfdm/fit/stages/wall_stage.h"
 
@@ -27,8 +28,10 @@ SequenceFit FitSequence(const PointSequence& sequence,
   result.surface =
       result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;
   if (result.config.Solid() && start.has_tags) {
-    TakeOutTagNoise(sequence, start.frames_per_id, &result);
+    TakeOutTagNoise(sequence, start.frames_per_id, &result,
+                    /*robust=*/options.loss != "none");
   }
+  WeighPoints(options.loss, &result);
   MeasureApexCoverage(Positions(sequence.frames[0]), &result);
   JudgeFrames(sequence, options, &result);
   return result;

@@ -53,7 +53,8 @@ void GlobalRounds::Start() {
   // frame's ranks (RerankDepths).
   rerank_depths_ = model_->config.Solid() && !frame_.tracked.empty();
   if (rerank_depths_) {
-    RerankDepths(*model_, frame_.positions, frame_.tracked, &fit_->material);
+    RerankDepths(*model_, frame_.positions, frame_.tracked, &fit_->material,
+                 rank_band_mm_);
   }
 }
 
@@ -70,7 +71,7 @@ void GlobalRounds::SolveCoarse() {
   pfdm::UpdateClosest(*model_, frame_.positions, coarse,
                       options_.solver.num_threads, frame_.layer_w,
                       frame_.assign_depth, false, &fit_->material, &normals_,
-                      &found_);
+                      &found_, rank_band_mm_);
   fit_->correspondence_seconds += SecondsSince(closest_start);
   std::vector<Eigen::Vector3d> coarse_points, coarse_normals;
   std::vector<MaterialPoint> coarse_material;
@@ -144,7 +145,7 @@ bool GlobalRounds::Settled(int round) {
     // between tags (kRerankRounds).
     return round + 1 >= kRerankRounds ||
            RerankDepths(*model_, frame_.positions, frame_.tracked,
-                        &fit_->material) < tolerance;
+                        &fit_->material, rank_band_mm_) < tolerance;
   }
   if (frame_.untracked.empty()) return true;
   if (frame_.kind == FrameKind::kReference) {
@@ -175,7 +176,7 @@ double GlobalRounds::UpdateClosest(std::vector<Eigen::Vector3d> now) {
   pfdm::UpdateClosest(*model_, frame_.positions, frame_.untracked,
                       options_.solver.num_threads, frame_.layer_w,
                       frame_.assign_depth, found_closest_, &fit_->material,
-                      &normals_, &found_);
+                      &normals_, &found_, rank_band_mm_);
   const double moved = found_closest_ || frame_.untracked.empty()
                            ? MaxDistance(now, found_)
                            : std::numeric_limits<double>::infinity();

@@ -22,8 +22,9 @@ class GlobalRounds {
  public:
   // `prior` is the state the prior term pulls toward (the previous frame's,
   // or frame 0's for an untracked frame), reference_quaternion frame 0's
-  // pose; both outlive the rounds.  The rounds move *model and fill *fit's
-  // material points, counts and trace.
+  // pose; both outlive the rounds, and so do `options`, read at every
+  // solve (frame_fit.cc turns the loss on between runs).  The rounds move
+  // *model and fill *fit's material points, counts and trace.
   GlobalRounds(const FramePoints& frame, const ModelState& prior,
                const std::array<double, 4>& reference_quaternion,
                const FitOptions& options, const std::string& source,
@@ -38,6 +39,10 @@ class GlobalRounds {
   void Run(TrajectoryRecorder* recorder);
   // A fresh search, after the model changed under the rounds (the wall).
   void Search();
+  // With a robust loss, the ranks of tags across a solid's wall leave out
+  // those farther than band_mm outside it (QuantileDepths); 0, the
+  // default, ranks them all.
+  void set_rank_band_mm(double band_mm) { rank_band_mm_ = band_mm; }
 
   // The last solve's report.
   const SolverReport& report() const { return report_; }
@@ -68,6 +73,7 @@ class GlobalRounds {
   bool found_closest_ = false;  // Then searches start from the last.
   double moved_ = 0.0;          // By the last search.
   bool rerank_depths_ = false;
+  double rank_band_mm_ = 0.0;
   SolverReport report_;
 };
 

@@ -67,6 +67,15 @@ struct FrameFit {
   // Every solver iteration of every correspondence round, numbered on.
   std::vector<SolverTracePoint> trace;
   std::vector<TrajectoryPoint> trajectory;  // See trajectory_per_decade.
+  // The robust loss's scale the frame was fitted with (measured for
+  // --loss_scale auto: fit/stages/loss_scale.h; else
+  // FitOptions::loss_scale_mm); 0 without a loss.
+  double loss_scale_mm = 0.0;
+  // Per data point, the robust loss's weight at its final residual,
+  // rho'(|r|^2) in (0, 1] (fit/residuals/robust_loss.h): near 0 for a
+  // point the fit took for an outlier.  Empty without a loss (every point
+  // weighs 1).  Filled by FitSequence.
+  std::vector<double> loss_weights;
 };
 
 struct SequenceFit {

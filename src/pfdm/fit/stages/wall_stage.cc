@@ -142,7 +142,8 @@ bool DecideWallFromTags(const FramePoints& frame,
 }
 
 void TakeOutTagNoise(const PointSequence& sequence,
-                     const FramesPerId& frames_per_id, SequenceFit* result) {
+                     const FramesPerId& frames_per_id, SequenceFit* result,
+                     bool robust) {
   double sum_squared = 0.0;
   int frames = 0;
   for (size_t t = 1; t < result->frames.size(); ++t) {
@@ -158,7 +159,7 @@ void TakeOutTagNoise(const PointSequence& sequence,
     if (tags.empty()) continue;
     const double sigma =
         TangentialNoiseMm(result->ModelAt(static_cast<int>(t)), frame.residuals,
-                          frame.material, tags);
+                          frame.material, tags, robust);
     sum_squared += sigma * sigma;
     ++frames;
   }
