@@ -1,11 +1,15 @@
 // pfdm fit's verdict end to end: what a clean fit, a fit the regularizer
 // decides and an absurd fit say, and their exit codes.
+#include <algorithm>
 #include <cstdio>
 #include <random>
 #include <string>
+#include <vector>
 
+#include "Eigen/Geometry"
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
+#include "pfdm/io/point_reader.h"
 #include "pfdm/testing/test_util.h"
 
 namespace pfdm {
@@ -136,6 +140,47 @@ TEST(CliVerdictTest, ASegmentWithoutApexSaysTheApexIsExtrapolated) {
     EXPECT_TRUE(extrapolated) << frame["quality_reasons"];
   }
   EXPECT_NE(run.error.find("are extrapolated"), std::string::npos) << run.error;
+
+  // The same data told that the apex is the centre of their lowest ring
+  // (the data's own 5 % lowest along the axis the fit found): the hint is
+  // taken, and frame 0 cannot settle on it (once RMS 5.5 mm, closest points
+  // moving by 22.6 mm, "CONVERGENCE" and exit 0).  It fails, and says why.
+  const nlohmann::json& pose = fit["frames"][0]["pose"]["quaternion_wxyz"];
+  const Eigen::Vector3d axis =
+      Eigen::Quaterniond(pose[0], pose[1], pose[2], pose[3]) *
+      Eigen::Vector3d::UnitZ();
+  const PointSequence sequence = ReadPointsCsv(dir + "/segment.csv");
+  const std::vector<DataPoint>& points = sequence.frames[0].points;
+  std::vector<double> heights;
+  for (const DataPoint& p : points) heights.push_back(axis.dot(p.position));
+  std::vector<double> sorted = heights;
+  std::sort(sorted.begin(), sorted.end());
+  const double low = sorted[sorted.size() / 20];
+  const double high = sorted[sorted.size() - 1 - sorted.size() / 20];
+  Eigen::Vector3d apex = Eigen::Vector3d::Zero(), base = apex;
+  int num_low = 0, num_high = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (heights[i] < low) apex += points[i].position, ++num_low;
+    if (heights[i] > high) base += points[i].position, ++num_high;
+  }
+  apex /= num_low;
+  base /= num_high;
+  const auto text = [](const Eigen::Vector3d& x) {
+    return std::to_string(x.x()) + "," + std::to_string(x.y()) + "," +
+           std::to_string(x.z());
+  };
+  run = RunPfdm("fit --points " + dir + "/segment.csv --out " + dir +
+                "/hinted/fit --apex=" + text(apex) + " --base=" + text(base));
+  EXPECT_EQ(run.exit_code, 3) << run.error;
+  const nlohmann::json hinted = FitJsonOf(dir + "/hinted");
+  EXPECT_EQ(hinted["frames"][0]["quality"], "failed");
+  bool unsettled = false;
+  for (const auto& reason : hinted["frames"][0]["quality_reasons"]) {
+    unsettled = unsettled || reason["code"] == "unsettled";
+  }
+  EXPECT_TRUE(unsettled) << hinted["frames"][0]["quality_reasons"];
+  EXPECT_GT(hinted["frames"][0]["correspondence_unsettled_mm"].get<double>(),
+            5.0);
 }
 
 }  // namespace
