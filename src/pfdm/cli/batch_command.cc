@@ -75,8 +75,10 @@ std::string RunCase(const BatchCase& c, const std::string& out,
     SvgRendering plots;  // gnuplot loads while the case is fitted.
     const SequenceFit fit = FitSequence(points, config, case_options);
     CheckPlanesBelowApex(c.points, planes, fit);
-    WriteFitOutputs(dir, points, fit, AnalyzeFit(fit, planes), options,
-                    VtkFormatFromFlags(), &plots);
+    WriteFitOutputs(
+        dir, points, fit,
+        AnalyzeFit(fit, planes, RegionLayout(), ShowExtrapolatedFromFlags()),
+        options, VtkFormatFromFlags(), &plots);
     fs::remove(dir + "/error.txt");
     RemoveAbandonedTemporaries(dir, "error.txt");
   } catch (const std::exception& error) {

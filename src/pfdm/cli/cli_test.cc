@@ -160,9 +160,11 @@ const BadInput kBadInputs[] = {
      "",
      "tags.csv: frame 0: the points lie in a plane; a surface needs points "
      "that span space"},
-    {"zero loss scale", "frame,id,x,y,z\n0,1,2,3,4\n", "--loss huber --loss_scale 0",
+    {"zero loss scale", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--loss huber --loss_scale 0",
      "--loss_scale must be auto or a positive number of mm, got '0'"},
-    {"nan loss scale", "frame,id,x,y,z\n0,1,2,3,4\n", "--loss huber --loss_scale nan",
+    {"nan loss scale", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--loss huber --loss_scale nan",
      "--loss_scale must be auto or a positive number of mm, got 'nan'"},
     {"negative smoothness", "frame,id,x,y,z\n0,1,2,3,4\n", "--smoothness -1",
      "--smoothness must be between 0 and 1e6, got -1"},

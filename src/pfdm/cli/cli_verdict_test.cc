@@ -140,6 +140,20 @@ TEST(CliVerdictTest, ASegmentWithoutApexSaysTheApexIsExtrapolated) {
     EXPECT_TRUE(extrapolated) << frame["quality_reasons"];
   }
   EXPECT_NE(run.error.find("are extrapolated"), std::string::npos) << run.error;
+  // What lies below the data is null, unless asked for.
+  EXPECT_EQ(fit["not_measured"]["extrapolated"]["levels"],
+            nlohmann::json({"apical"}));
+  EXPECT_TRUE(fit["frames"][2]["clinical"]["net_twist_deg"].is_null());
+  EXPECT_TRUE(fit["frames"][2]["clinical"]["base_rotation_deg"].is_number());
+  EXPECT_TRUE(fit["regions"][15]["ecc_percent"][2].is_null());
+  EXPECT_TRUE(fit["regions"][6]["ecc_percent"][2].is_number());
+  run = RunPfdm("fit --extrapolated --points " + dir + "/segment.csv --out " +
+                dir + "/shown/fit");
+  EXPECT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json shown = FitJsonOf(dir + "/shown");
+  EXPECT_TRUE(shown["not_measured"]["extrapolated"]["shown"].get<bool>());
+  EXPECT_TRUE(shown["frames"][2]["clinical"]["net_twist_deg"].is_number());
+  EXPECT_TRUE(shown["regions"][15]["ecc_percent"][2].is_number());
 
   // The same data told that the apex is the centre of their lowest ring
   // (the data's own 5 % lowest along the axis the fit found): the hint is

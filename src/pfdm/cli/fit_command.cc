@@ -72,7 +72,8 @@ int RunFit() {
   CheckPlanesBelowApex(FLAGS_points, planes, fit);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
-  const FitAnalysis analysis = AnalyzeFit(fit, planes);
+  const FitAnalysis analysis =
+      AnalyzeFit(fit, planes, RegionLayout(), ShowExtrapolatedFromFlags());
   WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format,
                   &plots);
   const int exit_code = ReportQuality(fit, analysis);

@@ -84,8 +84,14 @@ DEFINE_string(base_plane, kDefaults.base_plane.c_str(),
               "closed: auto (the mitral valve plane when biv-me guide points "
               "have MITRAL_VALVE points in every frame, else rim) or rim "
               "(a flat lid at the base rim)");
+DEFINE_bool(extrapolated, false,
+            "fit, batch: report the numbers measured where frame 0 has no "
+            "data (the apical level and ring when the data do not reach the "
+            "apex); by default they are null / n/a");
 
 namespace pfdm {
+
+bool ShowExtrapolatedFromFlags() { return FLAGS_extrapolated; }
 
 FitSettings FitSettingsFromFlags() {
   FitSettings s;

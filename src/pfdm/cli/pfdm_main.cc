@@ -29,7 +29,7 @@ const Command kCommands[] = {
     {"fit", RunFit,
      "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
      "[--solver direct|damped|integrator]",
-     "points out solver vtk_format base_plane " + kFitFlags},
+     "points out solver vtk_format base_plane extrapolated " + kFitFlags},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
      "out frames tags noise outliers seed phantom kinematics wall_tags "
@@ -40,7 +40,8 @@ const Command kCommands[] = {
      "points out trajectory_per_decade " + kFitFlags},
     {"batch", RunBatch,
      "--manifest cases.csv --out DIR [--jobs N] [--shard i/n]: fits a cohort",
-     "manifest out jobs shard solver vtk_format base_plane " + kFitFlags},
+     "manifest out jobs shard solver vtk_format base_plane extrapolated " +
+         kFitFlags},
     {"mesh-points", RunMeshPoints,
      "--mesh FILE|DIR --out FILE.csv [--mesh_filter S] [--label 0] "
      "[--cap_surfaces ED-endo,ES-endo]: mesh vertices as tracked points",

@@ -23,6 +23,16 @@ double InnerRadius(RegionLevel level) {
 }
 
 // A colour-scale half range holding every value, in round steps.
+// A segment whose value the data cannot determine: unfilled, "n/a".
+void NotMeasuredLabel(const WallRegion& region, double begin_deg,
+                      double end_deg, std::ostringstream* script) {
+  const double middle = (begin_deg + end_deg) / 2 / kDegreesPerRadian;
+  const double radius = InnerRadius(region.level) + 0.5;
+  *script << "set label 'n/a' at " << radius * std::cos(middle) << ','
+          << radius * std::sin(middle)
+          << " center front font 'sans,9' tc rgb '#777777'\n";
+}
+
 double ScaleOf(const std::vector<double>& values) {
   double largest = 0.0;
   for (double v : values) largest = std::max(largest, std::abs(v));
@@ -81,6 +91,10 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
     for (size_t r = 0; r < regions.size() && r < map.values.size(); ++r) {
       const WallRegion& region = regions[r];
       const auto [begin, end] = BullseyeSpanDeg(region);
+      if (!Measured(map.values[r])) {
+        NotMeasuredLabel(region, begin, end, &script);
+        continue;
+      }
       const double inner = InnerRadius(region.level), outer = inner + 1.0;
       const int steps =
           std::max(2, static_cast<int>(std::ceil((end - begin) / kArcStepDeg)));

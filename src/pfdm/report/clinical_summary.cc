@@ -147,6 +147,16 @@ void LeaveOutRotation(ClinicalSummary* summary) {
   }
 }
 
+void LeaveOutApexRing(ClinicalSummary* summary) {
+  for (double* value :
+       {&summary->apex_rotation_deg, &summary->net_twist_deg,
+        &summary->torsion_deg_per_cm, &summary->shear_angle_deg,
+        &summary->endo_apex_rotation_deg, &summary->endo_net_twist_deg,
+        &summary->epi_apex_rotation_deg, &summary->epi_net_twist_deg}) {
+    *value = kNotMeasured;
+  }
+}
+
 std::vector<ClinicalSummary> SummarizeSequence(
     const std::vector<Model>& frames) {
   std::vector<ClinicalSummary> summaries;

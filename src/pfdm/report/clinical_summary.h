@@ -98,6 +98,11 @@ struct EjectionFraction {
 // a solid's walls.
 void LeaveOutRotation(ClinicalSummary* summary);
 
+// Sets what the apical ring (kApicalRingFraction) measures to
+// kNotMeasured: its rotations, the net twists, the torsion and the shear
+// angle; the base ring's rotations stay.
+void LeaveOutApexRing(ClinicalSummary* summary);
+
 // reference is frame 0's model, current the frame's.
 ClinicalSummary SummarizeFrame(int frame, const Model& reference,
                                const Model& current);

@@ -32,11 +32,51 @@ void LeaveOutFrameRotation(size_t t, FitAnalysis* analysis) {
   analysis->strain[t].gcl_percent = kNotMeasured;
 }
 
+// Heights of the levels' middles, fractions of frame 0's length from the
+// apex pole: the regions' thirds (wall_motion.h).
+constexpr double kLevelMiddle[3] = {5.0 / 6.0, 0.5, 1.0 / 6.0};
+
+void FindExtrapolated(const SequenceFit& fit, FitAnalysis* analysis) {
+  if (fit.apex_in_data) return;
+  for (int level : {kBasal, kMid, kApical}) {
+    analysis->level_extrapolated[level] =
+        fit.lowest_data_height > kLevelMiddle[level];
+  }
+  analysis->apex_ring_extrapolated =
+      fit.lowest_data_height > kApicalRingFraction;
+}
+
+void LeaveOutRegion(RegionMotion* motion) {
+  for (double* value :
+       {&motion->rotation_deg, &motion->radial_contraction_percent,
+        &motion->ecc_percent, &motion->ell_percent, &motion->ecl_percent,
+        &motion->thickening_percent}) {
+    *value = kNotMeasured;
+  }
+}
+
+// kNotMeasured in frame t's numbers measured where frame 0 has no data.
+void LeaveOutExtrapolated(size_t t, FitAnalysis* analysis) {
+  if (analysis->apex_ring_extrapolated) {
+    LeaveOutApexRing(&analysis->clinical[t]);
+  }
+  for (size_t r = 0; r < analysis->regions.size(); ++r) {
+    if (analysis->level_extrapolated[analysis->regions[r].level]) {
+      LeaveOutRegion(&analysis->region_motion[t][r]);
+    }
+  }
+  for (int level : {kBasal, kMid, kApical}) {
+    if (!analysis->level_extrapolated[level]) continue;
+    analysis->strain[t].level_ecc_percent[level] = kNotMeasured;
+    analysis->strain[t].level_ell_percent[level] = kNotMeasured;
+  }
+}
+
 }  // namespace
 
 FitAnalysis AnalyzeFit(const SequenceFit& fit,
                        const std::vector<BasePlane>& base_planes,
-                       const RegionLayout& layout) {
+                       const RegionLayout& layout, bool show_extrapolated) {
   FitAnalysis analysis;
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.models.push_back(fit.ModelAt(static_cast<int>(t)));
@@ -76,6 +116,11 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   analysis.rotation_measured = RotationMeasured(fit);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (!analysis.rotation_measured[t]) LeaveOutFrameRotation(t, &analysis);
+  }
+  FindExtrapolated(fit, &analysis);
+  analysis.extrapolated_shown = show_extrapolated;
+  for (size_t t = 0; t < fit.frames.size() && !show_extrapolated; ++t) {
+    LeaveOutExtrapolated(t, &analysis);
   }
   return analysis;
 }

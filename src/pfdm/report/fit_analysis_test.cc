@@ -85,6 +85,56 @@ TEST(FitAnalysisTest, FramesWithoutTrackedPointsHaveNoRotation) {
   EXPECT_EQ(RotationMeasured(fit), std::vector<bool>(3, false));
 }
 
+// Data that stop 49 % of the length above the apex pole (a
+// mid-ventricular segment): the apical level (middle at 1/6) and the apical
+// ring (at 0.2) lie below them, the mid level's middle (0.5) does not.
+// What lies there is null unless shown; the rest is as measured.
+TEST(FitAnalysisTest, WhatLiesBelowTheDataIsNotMeasuredUnlessShown) {
+  PhantomOptions options;
+  options.num_points = 1;
+  options.num_frames = 3;
+  SequenceFit fit = TruthAsFit(MakePhantom(options));
+  const FitAnalysis full = AnalyzeFit(fit);
+  EXPECT_EQ(full.level_extrapolated, (std::array<bool, 3>{}));
+  fit.apex_in_data = false;
+  fit.lowest_data_height = 0.49;
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  EXPECT_EQ(analysis.level_extrapolated,
+            (std::array<bool, 3>{false, false, true}));
+  EXPECT_TRUE(analysis.apex_ring_extrapolated);
+  EXPECT_FALSE(analysis.extrapolated_shown);
+  const ClinicalSummary& c = analysis.clinical[2];
+  for (double value : {c.apex_rotation_deg, c.net_twist_deg,
+                       c.torsion_deg_per_cm, c.shear_angle_deg,
+                       analysis.strain[2].level_ecc_percent[kApical],
+                       analysis.strain[2].level_ell_percent[kApical]}) {
+    EXPECT_FALSE(Measured(value));
+  }
+  EXPECT_EQ(c.base_rotation_deg, full.clinical[2].base_rotation_deg);
+  EXPECT_EQ(c.volume_ml, full.clinical[2].volume_ml);
+  EXPECT_EQ(analysis.strain[2].gcs_percent, full.strain[2].gcs_percent);
+  EXPECT_EQ(analysis.strain[2].level_ecc_percent[kMid],
+            full.strain[2].level_ecc_percent[kMid]);
+  for (size_t r = 0; r < analysis.regions.size(); ++r) {
+    const RegionMotion& m = analysis.region_motion[2][r];
+    const bool apical = analysis.regions[r].level == kApical;
+    EXPECT_EQ(Measured(m.ecc_percent), !apical) << r;
+    EXPECT_EQ(Measured(m.radial_contraction_percent), !apical) << r;
+    EXPECT_EQ(Measured(m.rotation_deg), !apical) << r;
+  }
+  const FitAnalysis shown =
+      AnalyzeFit(fit, {}, RegionLayout(), /*show_extrapolated=*/true);
+  EXPECT_TRUE(shown.extrapolated_shown);
+  EXPECT_EQ(shown.clinical[2].net_twist_deg, full.clinical[2].net_twist_deg);
+  EXPECT_EQ(shown.region_motion[2][15].ecc_percent,
+            full.region_motion[2][15].ecc_percent);
+
+  fit.lowest_data_height = 0.1;  // Below the ring: only nothing.
+  const FitAnalysis low = AnalyzeFit(fit);
+  EXPECT_EQ(low.level_extrapolated, (std::array<bool, 3>{}));
+  EXPECT_FALSE(low.apex_ring_extrapolated);
+}
+
 TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
   PhantomOptions options;
   options.num_points = 1;
