@@ -13,6 +13,7 @@ namespace pfdm {
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options) {
   SequenceStart start = StartSequence(sequence, config, options);
+  CheckInterrupt(options.solver);
   CarriedState carried(start.model);
   SequenceFit result;
   for (const Frame& frame : sequence.frames) {
@@ -29,6 +30,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
   if (result.config.Solid() && start.has_tags) {
     TakeOutTagNoise(sequence, start.frames_per_id, &result);
   }
+  CheckInterrupt(options.solver);
   MeasureApexCoverage(Positions(sequence.frames[0]), &result);
   JudgeFrames(sequence, options, &result);
   return result;
