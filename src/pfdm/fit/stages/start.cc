@@ -62,7 +62,8 @@ SequenceStart StartSequence(const PointSequence& sequence,
     CheckEnoughPoints(sequence.source, frame, options.min_points);
     CheckSpansSpace(sequence.source, frame);
   }
-  CheckIdsFollowPoints(sequence);
+  CheckInterrupt(options.solver);
+  CheckIdsFollowPoints(sequence, options.solver.interrupt);
   CheckInterrupt(options.solver);
   const Frame& first = sequence.frames[0];
   StartAxis axis = ChooseStartAxis(first, config, options, sequence.source);

@@ -96,8 +96,10 @@ bool IdsScrambled(const IdMotion& motion) {
          motion.by_id_mm > 4.0 * motion.nearest_mm;
 }
 
-void CheckIdsFollowPoints(const PointSequence& sequence) {
+void CheckIdsFollowPoints(const PointSequence& sequence,
+                          const std::function<void()>& between) {
   for (size_t t = 1; t < sequence.frames.size(); ++t) {
+    if (between) between();
     const Frame& before = sequence.frames[t - 1];
     const Frame& after = sequence.frames[t];
     const IdMotion motion = MeasureIdMotion(before, after);

@@ -5,6 +5,8 @@
 #ifndef PFDM_FIT_STAGES_TRACKED_IDS_H_
 #define PFDM_FIT_STAGES_TRACKED_IDS_H_
 
+#include <functional>
+
 #include "pfdm/util/point_data.h"
 
 namespace pfdm {
@@ -33,8 +35,10 @@ bool IdsScrambled(const IdMotion& motion);
 
 // Throws InputError "SOURCE: frame T: the ids do not follow the points of
 // frame S: ..." for the first frame whose ids are scrambled against the
-// frame before it.
-void CheckIdsFollowPoints(const PointSequence& sequence);
+// frame before it.  Calls between (if any) after each frame: a caller's
+// interrupt check (SolverOptions::interrupt).
+void CheckIdsFollowPoints(const PointSequence& sequence,
+                          const std::function<void()>& between = {});
 
 }  // namespace pfdm
 
