@@ -141,7 +141,7 @@ void BindFitFrame(py::module_& m) {
           py::arg("u"), py::arg("v"), kEvaluateDoc)
       .def(
           "surface",
-          [](const FitFrame& f, int rings, int meridians) {
+          [](const FitFrame& f, std::int64_t rings, std::int64_t meridians) {
             return SurfaceArrays(f.model(), rings, meridians);
           },
           py::arg("rings") = kSurfaceRings,

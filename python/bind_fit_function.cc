@@ -42,10 +42,11 @@ std::string LossScaleText(const py::object& scale) {
   return py::repr(py::float_(scale)).cast<std::string>();
 }
 
-// Lets Ctrl-C stop a fit: checked at every solver step, with the GIL held
-// for the check only.  The exception stops the solve (SolverOptions::on_step)
-// and reaches Python as KeyboardInterrupt.
-void CheckSignals(const SolverTracePoint&) {
+// Lets Ctrl-C stop a fit: checked at every step of every solver, refused
+// ones too, and between the fit's rounds and stages
+// (SolverOptions::interrupt), with the GIL held for the check only.  The
+// exception stops the fit and reaches Python as KeyboardInterrupt.
+void CheckSignals() {
   py::gil_scoped_acquire gil;
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
 }
@@ -77,7 +78,7 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   CheckOptionsAgainstPoints(result->options, result->points);
   result->base_planes = BasePlanesFrom(settings, result->points.source);
   FitOptions options = result->options;
-  options.solver.on_step = CheckSignals;
+  options.solver.interrupt = CheckSignals;
   AddLandmarkAxis(result->points.source, &options);
   py::gil_scoped_release release;
   result->fit = FitSequence(result->points, config, options);

@@ -283,6 +283,12 @@ class DampedCallback : public ceres::IterationCallback {
 
   ceres::CallbackReturnType operator()(
       const ceres::IterationSummary& summary) override {
+    try {  // An exception must not unwind through Ceres.
+      CheckInterrupt(options_);
+    } catch (...) {
+      error_ = std::current_exception();
+      return ceres::SOLVER_ABORT;
+    }
     const double dt = radius_;
     radius_ = summary.trust_region_radius;
     if (summary.iteration == 0) {
@@ -342,6 +348,7 @@ void Fail(const std::string& message, SolverReport* report) {
 SolverReport SolveIntegrator(ceres::Problem* problem,
                              const SolverOptions& options) {
   const Clock::time_point start = Clock::now();
+  CheckInterrupt(options);
   SolverReport report;
   const State state = FreeBlocks(*problem);
   Evaluation now;
@@ -383,6 +390,7 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
   Evaluation next;
   int refusals = 0;
   while (report.iterations < options.max_steps) {
+    CheckInterrupt(options);  // Refused steps too.
     for (int i = 0; i < state.tangent_size; ++i) {
       step[i] = -dt * now.gradient[i] / d[i];
     }

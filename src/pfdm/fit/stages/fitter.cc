@@ -14,6 +14,7 @@ namespace pfdm {
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options) {
   SequenceStart start = StartSequence(sequence, config, options);
+  CheckInterrupt(options.solver);
   CarriedState carried(start.model);
   SequenceFit result;
   for (const Frame& frame : sequence.frames) {
@@ -31,6 +32,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
     TakeOutTagNoise(sequence, start.frames_per_id, &result,
                     /*robust=*/options.loss != "none");
   }
+  CheckInterrupt(options.solver);
   WeighPoints(options.loss, &result);
   MeasureApexCoverage(Positions(sequence.frames[0]), &result);
   JudgeFrames(sequence, options, &result);

@@ -112,9 +112,11 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   const ModelState& prior = points.kind == FrameKind::kUntracked
                                 ? carried->reference
                                 : carried->previous;
+  CheckInterrupt(options.solver);
   FitGlobal(points, prior, options, source, wall, carried, &fit);
   RememberTags(frame, points, fit, &carried->tracked_material);
   CanonicalizeBending(&model, &fit);
+  CheckInterrupt(options.solver);
   if (options.local.enabled) {
     FitLocalStage(points, WithLossScale(options, fit.loss_scale_mm), source,
                   &model, &fit);

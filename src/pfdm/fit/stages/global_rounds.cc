@@ -49,6 +49,7 @@ void GlobalRounds::Start() {
     SolveCoarse();
   }
   moved_ = UpdateClosest();
+  CheckInterrupt(options_.solver);
   // A solid's tracked tags keep (u, v) but take their depth from this
   // frame's ranks (RerankDepths).
   rerank_depths_ = model_->config.Solid() && !frame_.tracked.empty();
@@ -95,6 +96,7 @@ void GlobalRounds::Search() { moved_ = UpdateClosest(); }
 void GlobalRounds::Run(TrajectoryRecorder* recorder) {
   fit_->unsettled_mm = 0.0;
   for (int round = 0; round < options_.max_correspondence_rounds; ++round) {
+    CheckInterrupt(options_.solver);  // After the search, before the solve.
     report_ = SolveRound(recorder);
     if (!report_.usable) {
       throw InputError(source_ + ": frame " + std::to_string(frame_.index) +

@@ -6,6 +6,7 @@
 #include "Eigen/Dense"
 #include "pfdm/fit/stages/initialization.h"
 #include "pfdm/fit/stages/start_axis.h"
+#include "pfdm/fit/stages/tracked_ids.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -61,6 +62,9 @@ SequenceStart StartSequence(const PointSequence& sequence,
     CheckEnoughPoints(sequence.source, frame, options.min_points);
     CheckSpansSpace(sequence.source, frame);
   }
+  CheckInterrupt(options.solver);
+  CheckIdsFollowPoints(sequence, options.solver.interrupt);
+  CheckInterrupt(options.solver);
   const Frame& first = sequence.frames[0];
   StartAxis axis = ChooseStartAxis(first, config, options, sequence.source);
   SequenceStart start{std::move(axis.model), CountFramesPerId(sequence), false,
