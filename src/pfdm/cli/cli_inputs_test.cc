@@ -181,6 +181,15 @@ TEST_F(EndocardialMeshTest, TriggerTimesAndEndDiastoleFrame) {
   EXPECT_EQ(swapped_json["ejection_fraction"]["es_frame"], 0);
   EXPECT_NEAR(swapped_json["ejection_fraction"]["ratio"].get<double>(),
               timed_json["ejection_fraction"]["ratio"].get<double>(), 0.01);
+  // ED is the clinical numbers' reference: its own shortening is 0, ES's
+  // that of the sequence in order.
+  const auto shortening = [](const nlohmann::json& json, int t) {
+    return json["frames"][t]["clinical"]["longitudinal_shortening_percent"]
+        .get<double>();
+  };
+  EXPECT_EQ(shortening(swapped_json, 1), 0.0);
+  EXPECT_GT(shortening(timed_json, 1), 10.0);
+  EXPECT_NEAR(shortening(swapped_json, 0), shortening(timed_json, 1), 1.0);
   const std::string report = ReadText(dir_ + "/timed/report.html");
   EXPECT_NE(report.find("time from the trigger (ms)"), std::string::npos);
   EXPECT_NE(ReadText(dir_ + "/timed/fit.pvd").find("timestep=\"310"),
