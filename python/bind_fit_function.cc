@@ -95,9 +95,10 @@ std::shared_ptr<FitResult> FitWithFlags(
     const py::object& points, const std::string& format,
     const std::string& contours, const std::string& base_plane,
     const std::string& model, int knots, const std::string& wall,
-    double smoothness, double prior, double untracked_prior,
-    const std::string& loss, const py::object& loss_scale, int threads,
-    const py::object& apex, const py::object& base, const std::string& solver,
+    const std::string& surface, int ed_frame, double smoothness, double prior,
+    double untracked_prior, const std::string& loss,
+    const py::object& loss_scale, int threads, const py::object& apex,
+    const py::object& base, const std::string& solver,
     const std::string& linear_solver, double time_step, double rest_tolerance,
     int max_steps, const std::string& damping, const std::string& damping_scale,
     const std::string& jacobian, const std::string& local,
@@ -109,6 +110,8 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.model = model;
   s.knots = knots;
   s.wall = wall;
+  s.surface = surface;
+  s.ed_frame = ed_frame;
   s.smoothness = smoothness;
   s.prior = prior;
   s.untracked_prior = untracked_prior;
@@ -142,6 +145,8 @@ void BindFitFunction(py::module_& m) {
         py::arg("model") = fit_defaults.model,
         py::arg("knots") = fit_defaults.knots,
         py::arg("wall") = fit_defaults.wall,
+        py::arg("surface") = fit_defaults.surface,
+        py::arg("ed_frame") = fit_defaults.ed_frame,
         py::arg("smoothness") = fit_defaults.smoothness,
         py::arg("prior") = fit_defaults.prior,
         py::arg("untracked_prior") = fit_defaults.untracked_prior,

@@ -49,6 +49,26 @@ int ReportQuality(const SequenceFit& fit, const FitAnalysis& analysis) {
   return 0;
 }
 
+// ED and ES volumes, and the ejection fraction where they are the
+// cavity's; else what they are and how to say the points are the
+// endocardium's.
+void ReportVolumes(const FitAnalysis& analysis) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  const bool cavity = analysis.volume_surface == "cavity";
+  std::printf("%s volume: ED %.1f ml (frame %d), ES %.1f ml (frame %d)",
+              analysis.volume_surface.c_str(), ef.edv_ml, ef.ed_frame,
+              ef.esv_ml, ef.es_frame);
+  if (ef.es_frame == ef.ed_frame) {
+    std::printf("; no frame holds less than ED, so no ejection fraction\n");
+  } else if (cavity) {
+    std::printf(", ejection fraction %.2f\n", ef.ratio);
+  } else {
+    std::printf(
+        "; not the cavity, so no ejection fraction (--surface endo if the "
+        "points are the endocardium's)\n");
+  }
+}
+
 }  // namespace
 
 int RunFit() {
@@ -77,6 +97,7 @@ int RunFit() {
   WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format,
                   &plots);
   const int exit_code = ReportQuality(fit, analysis);
+  ReportVolumes(analysis);
   std::printf(
       "wrote %s/fit.json, parameters.csv, parameters.svg, report.html, "
       "frame_*.vtk, frame_*.vtp, fit.pvd\n",

@@ -24,6 +24,14 @@ DEFINE_string(wall, kDefaults.wall.c_str(),
               "midwall (one surface), solid (endocardium to epicardium, "
               "wall thickness h and transmural twist dtau) or auto: solid "
               "for contours of both walls or tags spread across the wall");
+DEFINE_string(surface, kDefaults.surface.c_str(),
+              "the wall the points lie on, fitted as one surface: endo (its "
+              "volume is the cavity's: an ejection fraction), midwall, epi, "
+              "or auto (from the contour types or a mesh's surface column, "
+              "else midwall)");
+DEFINE_int32(ed_frame, kDefaults.ed_frame,
+             "end-diastole: the frame the ejection fraction's EDV and the "
+             "strains are measured from (ES: the least volume)");
 DEFINE_double(smoothness, kDefaults.smoothness,
               "smoothness weight, relative to one knot's data, 0 to 1e6");
 DEFINE_double(prior, kDefaults.prior,
@@ -101,6 +109,8 @@ FitSettings FitSettingsFromFlags() {
   s.model = FLAGS_model;
   s.knots = FLAGS_knots;
   s.wall = FLAGS_wall;
+  s.surface = FLAGS_surface;
+  s.ed_frame = FLAGS_ed_frame;
   s.smoothness = FLAGS_smoothness;
   s.prior = FLAGS_prior;
   s.untracked_prior = FLAGS_untracked_prior;

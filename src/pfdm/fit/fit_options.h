@@ -38,6 +38,25 @@ struct LocalOptions {
   double stiffness = 0.02;
 };
 
+// Which wall the points lie on, as the user declares it (--surface): kAuto
+// takes it from the points' walls (contour types, a mesh's surface column),
+// else the mid-wall.  A declared wall makes the fit one surface there; the
+// endocardium's encloses the cavity, which gives an ejection fraction.
+enum class SurfaceChoice { kAuto, kEndocardium, kMidwall, kEpicardium };
+// Its --surface word: auto, endo, midwall or epi.
+inline const char* SurfaceChoiceName(SurfaceChoice surface) {
+  switch (surface) {
+    case SurfaceChoice::kEndocardium:
+      return "endo";
+    case SurfaceChoice::kMidwall:
+      return "midwall";
+    case SurfaceChoice::kEpicardium:
+      return "epi";
+    default:
+      return "auto";
+  }
+}
+
 struct FitOptions {
   // Regularizer weights, each relative to one knot's share of the data
   // (N / K points).  Smoothness: 1 penalizes a knot bent 1 mm off the line
@@ -67,6 +86,10 @@ struct FitOptions {
   std::optional<AxisHint> hint;
   int min_points = 10;
   WallModel wall = WallModel::kAuto;
+  SurfaceChoice surface = SurfaceChoice::kAuto;
+  // End-diastole: the frame the ejection fraction's EDV is read at
+  // (SequenceFit::ed_frame); the fit itself starts at frame 0.
+  int ed_frame = 0;
   // Model states kept along each frame's solver path, log-spaced in the
   // iteration count at this many per decade, plus the start and the end;
   // 0 keeps none (FrameFit::trajectory).

@@ -34,7 +34,8 @@ constexpr const char* kGaugeConvention =
     "the same bend) until their knot means lie in [0, 2).";
 
 constexpr const char* kEjectionDefinition =
-    "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; the "
+    "(EDV - ESV) / EDV; ED is settings.ed_frame (--ed_frame, frame 0 unless "
+    "given), ES the frame of least volume; the "
     "volumes are the frames' cavity_volume_ml, closed as cavity_closure "
     "says.";
 
@@ -43,8 +44,9 @@ constexpr const char* kVolumeFractionDefinition =
     "is not the cavity (volume_surface says what it is: a surface through "
     "the middle of the wall encloses the cavity and about half the "
     "myocardium), so this is not the ejection fraction: fit tags through "
-    "the wall or contours of both walls (--wall solid) for that; ED is frame "
-    "0, ES the frame of least volume.";
+    "the wall or contours of both walls (--wall solid), or points of the "
+    "endocardium (--surface endo), for that; ED is settings.ed_frame, ES the "
+    "frame of least volume.";
 
 constexpr const char* kWallDefinition =
     "A solid (model.wall): x(u, v, w) with w from -1 (endocardium) to +1 "
@@ -210,6 +212,8 @@ json Settings(const PointSequence& points, const SequenceFit& fit,
       {"points", points.source},
       {"smoothness_weight", options.smoothness_weight},
       {"wall", WallModelName(options.wall)},
+      {"surface", SurfaceChoiceName(options.surface)},
+      {"ed_frame", options.ed_frame},
       {"prior_weight", options.prior_weight},
       {"untracked_prior_weight", options.untracked_prior_weight},
       {"loss", options.loss},
@@ -349,6 +353,8 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
     entry["myocardial_volume_ml"] = summary.myocardial_volume_ml;
     entry["lv_mass_g"] = summary.lv_mass_g;
   }
+  // Only when the input gave times: a frame number is no time.
+  if (Measured(summary.time_ms)) entry["time_ms"] = summary.time_ms;
   entry["pose"] = {{"center_mm", frame.state.center},
                    {"quaternion_wxyz", frame.state.quaternion}};
   entry["clinical"] = FrameClinical(summary, strain, solid);

@@ -260,7 +260,8 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
   // plots (one gnuplot for the four: its start-up, not the plotting, was
   // most of their time).
   plots->Render({ParameterPlots(analysis.models, analysis.rotation_measured),
-                 CycleCurves(analysis.clinical, analysis.volume_surface),
+                 CycleCurves(analysis.clinical, analysis.volume_surface,
+                             analysis.ejection_fraction.ed_frame),
                  StrainCurves(analysis.strain),
                  Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::string> frame_names;
@@ -269,7 +270,10 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     char name[32];
     std::snprintf(name, sizeof(name), "frame_%03d", frame.frame);
     frame_names.push_back(name);
-    timesteps.emplace_back(frame.frame, std::string(name) + ".vtp");
+    // ParaView's time: the trigger time (ms) where the input gave one.
+    const bool timed = fit.time_ms.size() == fit.frames.size();
+    timesteps.emplace_back(timed ? fit.time_ms[frame.frame] : frame.frame,
+                           std::string(name) + ".vtp");
   }
   std::vector<std::string> names = {
       "parameters.csv", "fit.pvd", "parameters.svg", "report.html", "fit.json"};

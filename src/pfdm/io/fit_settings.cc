@@ -179,6 +179,30 @@ void CheckSettingsApply(const FitSettings& s, bool every_solver) {
   }
 }
 
+// --surface declares one surface (FitOptions::surface); a solid has two.
+void SetSurface(const FitSettings& s, FitOptions* options) {
+  const SurfaceChoice choices[] = {
+      SurfaceChoice::kAuto, SurfaceChoice::kEndocardium,
+      SurfaceChoice::kMidwall, SurfaceChoice::kEpicardium};
+  const auto it = std::find_if(
+      std::begin(choices), std::end(choices),
+      [&](SurfaceChoice c) { return s.surface == SurfaceChoiceName(c); });
+  if (it == std::end(choices)) {
+    throw InputError("--surface must be auto, endo, midwall or epi, got '" +
+                     Clip(s.surface) + "'");
+  }
+  options->surface = *it;
+  if (*it != SurfaceChoice::kAuto && options->wall == WallModel::kSolid) {
+    throw InputError("--surface " + s.surface +
+                     " declares one surface; --wall solid fits two");
+  }
+  if (s.ed_frame < 0) {
+    throw InputError("--ed_frame must be a frame number from 0, got " +
+                     std::to_string(s.ed_frame));
+  }
+  options->ed_frame = s.ed_frame;
+}
+
 FitOptions OptionsFrom(const FitSettings& s, bool every_solver) {
   FitOptions options;
   options.smoothness_weight = Weight("smoothness", s.smoothness);
@@ -186,6 +210,7 @@ FitOptions OptionsFrom(const FitSettings& s, bool every_solver) {
   options.untracked_prior_weight = Weight("untracked_prior", s.untracked_prior);
   options.wall = WallModelFromName(s.wall);
   CheckLossName(s.loss);
+  SetSurface(s, &options);
   options.loss = s.loss;
   // The choices the other settings depend on, then whether those apply,
   // then their values.
@@ -225,6 +250,12 @@ FitOptions FitOptionsForEverySolver(const FitSettings& settings) {
 
 void CheckOptionsAgainstPoints(const FitOptions& options,
                                const PointSequence& points) {
+  if (!points.frames.empty() &&
+      options.ed_frame >= static_cast<int>(points.frames.size())) {
+    throw InputError("--ed_frame " + std::to_string(options.ed_frame) +
+                     " is not a frame of " + points.source + " (frames 0 to " +
+                     std::to_string(points.frames.size() - 1) + ")");
+  }
   // Too few points, or all at one place, are the data's fault, which the
   // fit's start names (StartSequence): no scale to measure here.
   if (points.frames.empty() ||

@@ -26,6 +26,8 @@ struct FitSettings {
   std::string model = "paper";
   int knots = 17;
   std::string wall = "auto";
+  std::string surface = "auto";  // auto, endo, midwall or epi.
+  int ed_frame = 0;
   // The fit.
   double smoothness = 1.0;
   double prior = 0.001;

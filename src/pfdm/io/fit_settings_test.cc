@@ -304,5 +304,38 @@ TEST(FitSettingsTest, LossScaleAndAxisHintAreBoundedByTheDatasScale) {
   EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), one_place), "");
 }
 
+// --surface declares one surface, so not with --wall solid; --ed_frame is a
+// frame of the points.
+TEST(FitSettingsTest, SurfaceAndEndDiastoleAreCheckedAndReachTheOptions) {
+  FitSettings s;
+  EXPECT_EQ(FitOptionsFrom(s).surface, SurfaceChoice::kAuto);
+  EXPECT_EQ(FitOptionsFrom(s).ed_frame, 0);
+  s.surface = "endo";
+  s.ed_frame = 3;
+  EXPECT_EQ(FitOptionsFrom(s).surface, SurfaceChoice::kEndocardium);
+  EXPECT_EQ(FitOptionsFrom(s).ed_frame, 3);
+  s.surface = "epi";
+  EXPECT_EQ(FitOptionsFrom(s).surface, SurfaceChoice::kEpicardium);
+  s.surface = "midwall";
+  EXPECT_EQ(FitOptionsFrom(s).surface, SurfaceChoice::kMidwall);
+  s.wall = "solid";
+  EXPECT_EQ(ErrorOf(s),
+            "--surface midwall declares one surface; --wall solid fits two");
+  s = FitSettings();
+  s.surface = "endocardium";
+  EXPECT_EQ(ErrorOf(s),
+            "--surface must be auto, endo, midwall or epi, got 'endocardium'");
+  s = FitSettings();
+  s.ed_frame = -1;
+  EXPECT_EQ(ErrorOf(s), "--ed_frame must be a frame number from 0, got -1");
+  s.ed_frame = 1;  // Cube() has one frame.
+  PointSequence cube = Cube();
+  cube.source = "cube.csv";
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube),
+            "--ed_frame 1 is not a frame of cube.csv (frames 0 to 0)");
+  s.ed_frame = 0;
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube), "");
+}
+
 }  // namespace
 }  // namespace pfdm

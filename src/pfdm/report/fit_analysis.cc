@@ -81,7 +81,13 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.models.push_back(fit.ModelAt(static_cast<int>(t)));
   }
-  analysis.clinical = SummarizeSequence(analysis.models);
+  const int ed = fit.ed_frame;
+  analysis.clinical = SummarizeSequence(analysis.models, ed);
+  if (fit.time_ms.size() == fit.frames.size()) {
+    for (size_t t = 0; t < fit.frames.size(); ++t) {
+      analysis.clinical[t].time_ms = fit.time_ms[t];
+    }
+  }
   analysis.volume_surface = VolumeSurfaceName(fit);
   if (base_planes.size() == fit.frames.size()) {
     analysis.base_planes = base_planes;
@@ -97,7 +103,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
       }
     }
   }
-  analysis.ejection_fraction = EjectionFractionOf(analysis.clinical);
+  analysis.ejection_fraction = EjectionFractionOf(analysis.clinical, ed);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.verdicts.push_back(fit.frames[t].verdict);
     analysis.verdicts.back().Add(JudgeClinical(analysis.clinical,
@@ -107,7 +113,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   analysis.layout = layout;
   analysis.regions = Regions(layout);
   const ReferenceSamples reference =
-      SampleReference(analysis.models.front(), layout);
+      SampleReference(analysis.models.at(ed), layout);
   for (const Model& model : analysis.models) {
     analysis.region_motion.push_back(SummarizeRegions(reference, model));
     analysis.strain.push_back(

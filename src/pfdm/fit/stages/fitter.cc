@@ -26,6 +26,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
   result.config = carried.model.config;
   result.wall_reason = start.wall.reason;
   result.axis_source = start.axis_source;
+  result.ed_frame = options.ed_frame;
+  result.time_ms = sequence.time_ms;
   result.surface =
       result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;
   if (result.config.Solid() && start.has_tags) {

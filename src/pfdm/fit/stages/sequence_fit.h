@@ -107,6 +107,11 @@ struct SequenceFit {
   double apex_data_distance = 0.0;
   double lowest_data_height = 0.0;
   double lowest_data_u = 0.0;
+  // End-diastole (FitOptions::ed_frame), and each frame's time from the
+  // trigger (ms) when the input gave them (PointSequence::time_ms), else
+  // empty.
+  int ed_frame = 0;
+  std::vector<double> time_ms;
   std::vector<FrameFit> frames;
   Model ModelAt(int frame) const { return {config, frames[frame].state}; }
 };

@@ -58,6 +58,11 @@ SequenceStart StartSequence(const PointSequence& sequence,
   if (sequence.frames.empty()) {
     throw InputError(sequence.source + ": no frames");
   }
+  if (options.ed_frame < 0 ||
+      options.ed_frame >= static_cast<int>(sequence.frames.size())) {
+    throw InputError(sequence.source + ": no frame " +
+                     std::to_string(options.ed_frame) + " for end-diastole");
+  }
   for (const Frame& frame : sequence.frames) {
     CheckEnoughPoints(sequence.source, frame, options.min_points);
     CheckSpansSpace(sequence.source, frame);
