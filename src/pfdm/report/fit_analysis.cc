@@ -32,6 +32,19 @@ void LeaveOutFrameRotation(size_t t, FitAnalysis* analysis) {
   analysis->strain[t].gcl_percent = kNotMeasured;
 }
 
+// kNotMeasured in every number of the apex cap (segment 17), the
+// model's continuation below the data when they do not reach the apex.
+void LeaveOutApexCap(FitAnalysis* analysis) {
+  for (size_t r = 0; r < analysis->regions.size(); ++r) {
+    if (analysis->regions[r].level != kApex) continue;
+    for (std::vector<RegionMotion>& frame : analysis->region_motion) {
+      const double area = frame[r].area_mm2;
+      frame[r] = {kNotMeasured, kNotMeasured, kNotMeasured, kNotMeasured,
+                  kNotMeasured, kNotMeasured, area};
+    }
+  }
+}
+
 }  // namespace
 
 FitAnalysis AnalyzeFit(const SequenceFit& fit,
@@ -73,6 +86,9 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
     analysis.strain.push_back(
         SummarizeStrain(analysis.regions, analysis.region_motion.back()));
   }
+  // After the levels' strain, which keeps the cap as the apical third.
+  analysis.apex_cap_measured = fit.apex_in_data;
+  if (!fit.apex_in_data) LeaveOutApexCap(&analysis);
   analysis.rotation_measured = RotationMeasured(fit);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (!analysis.rotation_measured[t]) LeaveOutFrameRotation(t, &analysis);

@@ -30,6 +30,11 @@ struct FitAnalysis {
   // gcl are kNotMeasured: contours show no turn about the axis, and the
   // circumferential-longitudinal shear is a twist's gradient.
   std::vector<bool> rotation_measured;
+  // Whether the apex cap's (segment 17's) numbers are measured: frame 0's
+  // data reach the apex (SequenceFit::apex_in_data).  Where they do not, its
+  // entries in region_motion are kNotMeasured (its area kept); the levels'
+  // and global strains still take the model's cap in.
+  bool apex_cap_measured = true;
   // What clinical[t].volume_ml encloses: "cavity" (a solid's endocardium,
   // or a surface fitted to endocardial contours), "epicardial" or "midwall"
   // (VolumeSurfaceName).

@@ -30,7 +30,9 @@ TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
   EXPECT_NEAR(analysis.clinical[4].net_twist_deg, 7.0 * 0.65, 0.01);
   EXPECT_EQ(analysis.ejection_fraction.es_frame, 4);
   ASSERT_EQ(analysis.region_motion.size(), 5u);
-  ASSERT_EQ(analysis.region_motion[4].size(), 16u);
+  ASSERT_EQ(analysis.region_motion[4].size(), 17u);
+  EXPECT_FALSE(analysis.layout.anatomical);
+  EXPECT_TRUE(analysis.apex_cap_measured);
   // The phantom's a1 shrinks 20 % everywhere and a2 by 20 % at the apex to
   // 10 % at the base: every segment contracts by 10-20 %.
   for (const RegionMotion& m : analysis.region_motion[4]) {
@@ -83,6 +85,35 @@ TEST(FitAnalysisTest, FramesWithoutTrackedPointsHaveNoRotation) {
   fit.frames[2].tracked = true;
   fit.frames[0].tracked = false;  // The reference of every rotation.
   EXPECT_EQ(RotationMeasured(fit), std::vector<bool>(3, false));
+}
+
+// Without data near the apex (SequenceFit::apex_in_data) the apex cap's
+// numbers are not measured, its area kept; the apical level's strain and
+// the global strain still take the model's cap in, as they did.
+TEST(FitAnalysisTest, ApexCapIsNotMeasuredWithoutDataNearTheApex) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  const FitAnalysis seen = AnalyzeFit(fit);
+  fit.apex_in_data = false;
+  const FitAnalysis unseen = AnalyzeFit(fit);
+  EXPECT_FALSE(unseen.apex_cap_measured);
+  ASSERT_EQ(unseen.regions[16].level, kApex);
+  EXPECT_GT(seen.region_motion[4][16].radial_contraction_percent, 9.0);
+  for (size_t t = 0; t < 5; ++t) {
+    const RegionMotion& cap = unseen.region_motion[t][16];
+    for (double value : {cap.rotation_deg, cap.radial_contraction_percent,
+                         cap.ecc_percent, cap.ell_percent, cap.ecl_percent}) {
+      EXPECT_FALSE(Measured(value)) << t;
+    }
+    EXPECT_EQ(cap.area_mm2, seen.region_motion[t][16].area_mm2);
+    EXPECT_EQ(unseen.strain[t].gcs_percent, seen.strain[t].gcs_percent);
+    EXPECT_EQ(unseen.strain[t].level_ecc_percent[kApical],
+              seen.strain[t].level_ecc_percent[kApical]);
+    EXPECT_EQ(unseen.region_motion[t][15].ecc_percent,
+              seen.region_motion[t][15].ecc_percent);
+  }
 }
 
 TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
