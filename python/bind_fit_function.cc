@@ -66,7 +66,7 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   auto result = std::make_shared<FitResult>();
   const ModelConfig config = ModelConfigFrom(settings);
   result->options = FitOptionsFrom(settings);
-  BasePlanesFrom(settings, "");  // Checks base_plane before the fit.
+  BasePlanesFrom(settings, "");             // Checks base_plane before the fit.
   ParseRvInsertion(settings.rv_insertion);  // Likewise.
   result->points = SequenceFrom(points, settings);
   CheckOptionsAgainstPoints(result->options, result->points);
@@ -79,9 +79,9 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   CheckPlanesBelowApex(result->points.source, result->base_planes, result->fit);
   result->analysis = AnalyzeFit(
       result->fit, result->base_planes,
-      AnatomicalLayout(result->fit.ModelAt(0),
-                       RvInsertionFrom(settings.rv_insertion,
-                                       result->points.source)));
+      AnatomicalLayout(
+          result->fit.ModelAt(0),
+          RvInsertionFrom(settings.rv_insertion, result->points.source)));
   result->json =
       FitJson(result->points, result->fit, result->options, result->analysis);
   return result;
@@ -92,12 +92,13 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
 std::shared_ptr<FitResult> FitWithFlags(
     const py::object& points, const std::string& format,
     const std::string& contours, const std::string& base_plane,
-    const py::object& rv_insertion, const std::string& model, int knots, const std::string& wall,
-    double smoothness, double prior, double untracked_prior,
-    const std::string& loss, double loss_scale, int threads,
-    const py::object& apex, const py::object& base, const std::string& solver,
-    const std::string& linear_solver, double time_step, double rest_tolerance,
-    int max_steps, const std::string& damping, const std::string& damping_scale,
+    const py::object& rv_insertion, const std::string& model, int knots,
+    const std::string& wall, double smoothness, double prior,
+    double untracked_prior, const std::string& loss, double loss_scale,
+    int threads, const py::object& apex, const py::object& base,
+    const std::string& solver, const std::string& linear_solver,
+    double time_step, double rest_tolerance, int max_steps,
+    const std::string& damping, const std::string& damping_scale,
     const std::string& jacobian, const std::string& local,
     const std::string& local_grid, double local_stiffness) {
   FitSettings s;
