@@ -16,6 +16,10 @@ constexpr int kSearchMeridians = 72;
 // The two insertions of one slice lie a septum apart (about 120 degrees);
 // nearer than this they do not say which side the septum is on.
 constexpr double kLeastPairAngle = 10.0 * kPi / 180.0;
+// An insertion farther than this fraction of the model's apex-to-base
+// length from its surface is not the LV's (a typo, another frame's
+// coordinates): its angle would say nothing.
+constexpr double kFarthestInsertion = 0.5;
 
 double Wrapped(double angle) {
   return angle - 2.0 * kPi * std::floor((angle + kPi) / (2.0 * kPi));
@@ -125,6 +129,16 @@ RegionLayout AnatomicalLayout(const Model& reference,
   if (!insertion) return layout;
   std::string why = "no RV insertion points";
   const std::vector<Located> located = Locate(reference, *insertion, &why);
+  const double length = std::abs(RingHeight(reference, reference.config.u_max) -
+                                 RingHeight(reference, reference.config.u_min));
+  for (const Located& l : located) {
+    if (l.at.distance_mm > kFarthestInsertion * length) {
+      layout.anchor = insertion->source + ": a point lies " +
+                      std::to_string(static_cast<int>(l.at.distance_mm)) +
+                      " mm from frame 0's model, not on the LV";
+      return layout;
+    }
+  }
   // The anchor from the basal and mid thirds' points if there are some.
   bool upper = false;
   for (const Located& l : located) {

@@ -45,7 +45,9 @@ MaterialLongitude NearestLongitude(const Model& reference,
 // RAS); so is a lone labelled anterior insertion's direction.  Points of
 // the basal and mid thirds set the anchor when there are some (the AHA
 // places those levels by it), else all.  Without an insertion, or when its
-// points do not make one, `layout` as it was with anchor saying why.
+// points do not make one (unpaired, or a point farther from the model's
+// surface than half its length), `layout` as it was with anchor saying
+// why.
 RegionLayout AnatomicalLayout(const Model& reference,
                               const std::optional<RvInsertion>& insertion,
                               RegionLayout layout = RegionLayout());

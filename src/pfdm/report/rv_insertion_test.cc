@@ -119,6 +119,17 @@ TEST(RvInsertionTest, WithoutAnInsertionTheLayoutSaysWhy) {
   EXPECT_EQ(unpaired.anchor,
             "3 RV_INSERT points of GPFile_000.txt: 3 RV insertion points, not "
             "one anterior and one inferior per slice");
+  // A point off the LV (the sphere's axis is 60 mm long here).
+  RvInsertion far;
+  far.source = "--rv_insertion";
+  far.anterior = {At(1.0, 0.0, 80.0)};
+  const RegionLayout off = AnatomicalLayout(model, far);
+  EXPECT_FALSE(off.anatomical);
+  EXPECT_EQ(off.anchor,
+            "--rv_insertion: a point lies 40 mm from frame 0's model, not on "
+            "the LV");
+  far.anterior = {At(1.0, 0.0, 65.0)};  // 25 mm off: kept.
+  EXPECT_TRUE(AnatomicalLayout(model, far).anatomical);
   RvInsertion together;
   together.source = "RV_INSERT";
   together.unlabelled = {At(1.0, 0.0), At(1.05, 0.0)};
