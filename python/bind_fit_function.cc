@@ -11,6 +11,7 @@
 #include "pfdm/io/fit_settings.h"
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
+#include "pfdm/io/rv_insertion_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/error.h"
 #include "pybind11/stl.h"
@@ -19,8 +20,8 @@
 namespace pfdm::python {
 namespace {
 
-// --apex or --base as the CLI reads it, from None (not given), a 'x,y,z'
-// text or a sequence of numbers.
+// --apex, --base or --rv_insertion as the CLI reads it, from None (not
+// given), a 'x,y,z' text or a sequence of numbers.
 std::string PointText(const py::object& point, const char* name) {
   if (point.is_none()) return "";
   if (py::isinstance<py::str>(point)) return point.cast<std::string>();
@@ -73,7 +74,8 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   auto result = std::make_shared<FitResult>();
   const ModelConfig config = ModelConfigFrom(settings);
   result->options = FitOptionsFrom(settings);
-  BasePlanesFrom(settings, "");  // Checks base_plane before the fit.
+  BasePlanesFrom(settings, "");             // Checks base_plane before the fit.
+  ParseRvInsertion(settings.rv_insertion);  // Likewise.
   result->points = SequenceFrom(points, settings);
   CheckOptionsAgainstPoints(result->options, result->points);
   result->base_planes = BasePlanesFrom(settings, result->points.source);
@@ -83,7 +85,11 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   py::gil_scoped_release release;
   result->fit = FitSequence(result->points, config, options);
   CheckPlanesBelowApex(result->points.source, result->base_planes, result->fit);
-  result->analysis = AnalyzeFit(result->fit, result->base_planes);
+  result->analysis = AnalyzeFit(
+      result->fit, result->base_planes,
+      AnatomicalLayout(
+          result->fit.ModelAt(0),
+          RvInsertionFrom(settings.rv_insertion, result->points.source)));
   result->json =
       FitJson(result->points, result->fit, result->options, result->analysis);
   return result;
@@ -94,11 +100,11 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
 std::shared_ptr<FitResult> FitWithFlags(
     const py::object& points, const std::string& format,
     const std::string& contours, const std::string& base_plane,
-    const std::string& model, int knots, const std::string& wall,
-    const std::string& surface, int ed_frame, double smoothness, double prior,
-    double untracked_prior, const std::string& loss,
-    const py::object& loss_scale, int threads, const py::object& apex,
-    const py::object& base, const std::string& solver,
+    const py::object& rv_insertion, const std::string& model, int knots,
+    const std::string& wall, const std::string& surface, int ed_frame,
+    double smoothness, double prior, double untracked_prior,
+    const std::string& loss, const py::object& loss_scale, int threads,
+    const py::object& apex, const py::object& base, const std::string& solver,
     const std::string& linear_solver, double time_step, double rest_tolerance,
     int max_steps, const std::string& damping, const std::string& damping_scale,
     const std::string& jacobian, const std::string& local,
@@ -107,6 +113,7 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.format = format;
   s.contours = contours;
   s.base_plane = base_plane;
+  s.rv_insertion = PointText(rv_insertion, "rv_insertion");
   s.model = model;
   s.knots = knots;
   s.wall = wall;
@@ -142,6 +149,7 @@ void BindFitFunction(py::module_& m) {
         py::arg("format") = fit_defaults.format,
         py::arg("contours") = fit_defaults.contours,
         py::arg("base_plane") = fit_defaults.base_plane,
+        py::arg("rv_insertion") = py::none(),
         py::arg("model") = fit_defaults.model,
         py::arg("knots") = fit_defaults.knots,
         py::arg("wall") = fit_defaults.wall,
@@ -172,6 +180,9 @@ void BindFitFunction(py::module_& m) {
         "together.  base_plane 'auto' closes the cavity at the mitral valve "
         "planes of guide points read from a path, 'rim' at the base rim.  "
         "loss_scale: 'auto' or a number of mm.  "
+        "rv_insertion: the anterior RV insertion (x, y, z), or it and the "
+        "inferior one (6 numbers), or 'x,y,z[,x,y,z]': the AHA segments' "
+        "anchor; without, guide points' RV_INSERT.  "
         "Releases the GIL; Ctrl-C raises KeyboardInterrupt within a solver "
         "step.  Raises InputError for bad options or data, with the CLI's "
         "message.");

@@ -44,6 +44,7 @@ def test_bad_options_raise_the_clis_message(cli_phantom):
         ({"max_steps": 0}, ["--max_steps", "0"]),
         ({"damping_scale": "spin=2"}, ["--damping_scale", "spin=2"]),
         ({"base_plane": "lid"}, ["--base_plane", "lid"]),
+        ({"rv_insertion": "1,2"}, ["--rv_insertion", "1,2"]),
         ({"format": "xml"}, ["--format", "xml"]),
         ({"jacobian": "guess"}, ["--jacobian", "guess"]),
         # Issue 29: settings of no use or of no sense, and those checked

@@ -238,3 +238,66 @@ TEST(LvPhantomCliTest, ARobustLossRecordsItsScaleAndWeights) {
 
 }  // namespace
 }  // namespace pfdm
+
+namespace pfdm {
+namespace {
+
+// The truth's RV insertion, given to `pfdm fit --rv_insertion`, makes the
+// segments the AHA's: named, said to be anatomical in fit.json, the
+// console and the report; without it they say they are not; a bad value is
+// refused before the fit.
+TEST(LvPhantomCliTest, RvInsertionAnchorsTheAhaSegments) {
+  const std::string dir = ScratchDirectory("lv");
+  CommandResult run =
+      RunPfdm("simulate --phantom lv --lesion --tags 300 --frames 3 --out " +
+              dir + "/lv.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json truth =
+      nlohmann::json::parse(ReadText(dir + "/lv_truth.json"));
+  std::string flag;
+  for (const char* which : {"anterior", "inferior"}) {
+    for (const auto& x : truth["rv_insertion"][which]) {
+      flag += (flag.empty() ? "" : ",") + std::to_string(x.get<double>());
+    }
+  }
+  run = RunPfdm("fit --local off --points " + dir + "/lv.csv --rv_insertion " +
+                flag + " --out " + dir + "/aha");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_NE(run.output.find("segments: AHA, anatomical (--rv_insertion)"),
+            std::string::npos)
+      << run.output;
+  const nlohmann::json aha =
+      nlohmann::json::parse(ReadText(dir + "/aha/fit.json"));
+  EXPECT_EQ(aha["segments_anatomical"], true);
+  EXPECT_NEAR(aha["segments"]["rv_insertion"]["septal_arc_deg"].get<double>(),
+              120.0, 5.0);
+  EXPECT_EQ(aha["regions"][7]["name"], "mid anteroseptal");
+  EXPECT_EQ(aha["regions"][16]["name"], "apex");
+  const std::string report = ReadText(dir + "/aha/report.html");
+  EXPECT_NE(report.find("mid anteroseptal"), std::string::npos);
+  EXPECT_NE(report.find("The segments are anatomical"), std::string::npos);
+
+  run = RunPfdm("fit --local off --points " + dir + "/lv.csv --out " + dir +
+                "/plain");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_NE(run.output.find("segments: not anatomical (no RV insertion "
+                            "given)"),
+            std::string::npos);
+  const nlohmann::json plain =
+      nlohmann::json::parse(ReadText(dir + "/plain/fit.json"));
+  EXPECT_EQ(plain["segments_anatomical"], false);
+  EXPECT_EQ(plain["regions"][7]["name"], "mid 2");
+  EXPECT_NE(ReadText(dir + "/plain/report.html")
+                .find("The segments are not anatomical"),
+            std::string::npos);
+
+  run = RunPfdm("fit --points " + dir + "/lv.csv --rv_insertion 1,2 --out " +
+                dir + "/bad");
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.error.find("--rv_insertion '1,2'"), std::string::npos)
+      << run.error;
+  EXPECT_FALSE(fs::exists(dir + "/bad/fit.json"));
+}
+
+}  // namespace
+}  // namespace pfdm

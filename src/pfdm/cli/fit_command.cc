@@ -6,6 +6,7 @@
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
+#include "pfdm/io/rv_insertion_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/error.h"
@@ -76,6 +77,7 @@ int RunFit() {
   const ModelConfig config = ModelConfigFromFlags();
   const FitOptions options = FitOptionsFromFlags();
   BasePlanesFromFlags("");  // Checks the flag before the fit.
+  ParseRvInsertion(FitSettingsFromFlags().rv_insertion);  // Likewise.
   const VtkFormat vtk_format = VtkFormatFromFlags();
   // Before the minutes of work, not after them.
   CheckFitOutputFolder(FLAGS_out, FLAGS_points);
@@ -92,8 +94,15 @@ int RunFit() {
   CheckPlanesBelowApex(FLAGS_points, planes, fit);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
-  const FitAnalysis analysis =
-      AnalyzeFit(fit, planes, RegionLayout(), ShowExtrapolatedFromFlags());
+  const FitAnalysis analysis = AnalyzeFit(
+      fit, planes,
+      AnatomicalLayout(
+          fit.ModelAt(0),
+          RvInsertionFrom(FitSettingsFromFlags().rv_insertion, FLAGS_points)),
+      ShowExtrapolatedFromFlags());
+  std::printf("segments: %s (%s)\n",
+              analysis.layout.anatomical ? "AHA, anatomical" : "not anatomical",
+              analysis.layout.anchor.c_str());
   WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format,
                   &plots);
   const int exit_code = ReportQuality(fit, analysis);

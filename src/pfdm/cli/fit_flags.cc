@@ -52,6 +52,11 @@ DEFINE_string(apex, "",
               "biv-me's APEX_POINT and valve points, the normal of parallel "
               "slices, or the point cloud's best candidate axis");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
+DEFINE_string(rv_insertion, "",
+              "the RV insertion at frame 0, x,y,z (anterior) or "
+              "x,y,z,x,y,z (anterior, inferior), mm: places the AHA "
+              "segments; without it biv-me's RV_INSERT points, else the "
+              "segments are not anatomical");
 DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
 DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
               "direct and damped: Ceres linear solver of the global "
@@ -106,6 +111,7 @@ FitSettings FitSettingsFromFlags() {
   s.format = FLAGS_format;
   s.contours = FLAGS_contours;
   s.base_plane = FLAGS_base_plane;
+  s.rv_insertion = FLAGS_rv_insertion;
   s.model = FLAGS_model;
   s.knots = FLAGS_knots;
   s.wall = FLAGS_wall;

@@ -30,7 +30,8 @@ const Command kCommands[] = {
     {"fit", RunFit,
      "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
      "[--solver direct|damped|integrator]",
-     "points out solver vtk_format base_plane extrapolated " + kFitFlags},
+     "points out solver vtk_format base_plane extrapolated rv_insertion " +
+         kFitFlags},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
      "out frames tags noise outliers seed phantom kinematics wall_tags "

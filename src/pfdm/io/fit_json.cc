@@ -6,6 +6,7 @@
 #include "ceres/types.h"
 #include "nlohmann/json.hpp"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/segments_json.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
 #include "pfdm/util/verdict.h"
@@ -76,14 +77,13 @@ constexpr const char* kQualityDefinition =
     "fraction): docs/verdict.md";
 
 constexpr const char* kRegionsConvention =
-    "AHA-style segments: thirds of frame 0's axis from the base rim to the "
-    "apex (segments 1-6 basal, 7-12 mid, 13-16 apical), each cut into equal "
-    "sectors of longitude v counted counter-clockwise about +z (seen from "
-    "the base) from v = -180 degrees, the model's -x axis, not the RV "
-    "insertion; per frame, rotation_deg is the mean turn of the segment's "
-    "material points about frame 0's long axis (about their ring's "
-    "centroid) and radial_contraction_percent the mean of 1 - r / r(frame "
-    "0), r a material point's distance from its ring's centroid.";
+    "segments 1-17 as \"segments\" places them (anatomical or not), each "
+    "with its name and its range of longitude v on frame 0's model; per "
+    "frame, rotation_deg is the mean turn of the segment's material points "
+    "about frame 0's long axis (about their ring's centroid) and "
+    "radial_contraction_percent the mean of 1 - r / r(frame 0), r a "
+    "material point's distance from its ring's centroid; null where not "
+    "measured (segment 17 without data near the apex).";
 
 constexpr const char* kStrainDefinition =
     "Lagrangian (Green-Lagrange) surface strain of the fitted model's "
@@ -409,15 +409,15 @@ json RegionEntry(const FitAnalysis& analysis, size_t r, double peak_ecc,
       {"v_range_deg",
        {region.v_begin * kDegreesPerRadian, region.v_end * kDegreesPerRadian}},
       {"rotation_deg", Values(rotation)},
-      {"radial_contraction_percent", radial},
-      {"ecc_percent", ecc},
-      {"ell_percent", ell},
+      {"radial_contraction_percent", Values(radial)},
+      {"ecc_percent", Values(ecc)},
+      {"ell_percent", Values(ell)},
       {"ecl_percent", Values(ecl)},
-      {"peak_ecc_percent", peak_ecc},
+      {"peak_ecc_percent", Value(peak_ecc)},
       {"area_mm2", analysis.region_motion.empty()
                        ? 0.0
                        : analysis.region_motion[0][r].area_mm2}};
-  if (solid) entry["thickening_percent"] = thickening;
+  if (solid) entry["thickening_percent"] = Values(thickening);
   return entry;
 }
 
@@ -509,7 +509,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   document[cavity ? "ejection_fraction"
                   : analysis.volume_surface + "_volume_fraction"] =
       EjectionSection(analysis);
-  document.update(json{{"regions_convention", kRegionsConvention},
+  document.update(json{{"segments_anatomical", analysis.layout.anatomical},
+                       {"segments", SegmentsSection(analysis)},
+                       {"regions_convention", kRegionsConvention},
                        {"regions", Regions(analysis, solid)},
                        {"strain", StrainSection(analysis)},
                        {"frames", Frames(fit, analysis)}});

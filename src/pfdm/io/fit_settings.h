@@ -22,6 +22,9 @@ struct FitSettings {
   std::string format = "auto";
   std::string contours = "lv-cavity";
   std::string base_plane = "auto";
+  // The AHA segments' anchor (io/rv_insertion_source.h): "x,y,z[,x,y,z]"
+  // anterior, inferior; empty: guide points' RV_INSERT, if any.
+  std::string rv_insertion;
   // The model.
   std::string model = "paper";
   int knots = 17;

@@ -279,6 +279,16 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
       slices ? ImagePlanes(shape, options, num_frames)
              : std::vector<LvImagePlane>();
   const int per_contour = slices ? ContourPoints(options, planes.size()) : 0;
+  const LvFrameMotion ed =
+      ScenarioMotion(options.kinematics, 0, num_frames, options.breathing);
+  const double insertion_nu =
+      shape.NuAtHeight(kLvInsertionHeight * shape.base_z(), 0.0);
+  auto insertion = [&](double phi_deg) {
+    return LvWorldPoint(shape, options.deformation, ed,
+                        shape.Position(insertion_nu, phi_deg * kPi / 180, 0.0));
+  };
+  phantom.rv_anterior = insertion(kLvAnteriorInsertionDeg);
+  phantom.rv_inferior = insertion(kLvInferiorInsertionDeg);
 
   // Noise from its own stream, so that it leaves the placement unchanged.
   std::seed_seq noise_seed{options.seed, 0x6e6f6973u};

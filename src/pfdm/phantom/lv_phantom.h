@@ -122,8 +122,22 @@ LvHeights LvRegionHeights(LvRegion region);
 // the base plane left out, as in a short-axis stack).
 std::vector<double> LvSliceHeights(const LvPhantomOptions& options);
 
+// The RV insertion the phantom's AHA segments hang on: the anterior at body
+// longitude phi = atan2(y, x) = kLvAnteriorInsertionDeg, the inferior 120
+// degrees on clockwise seen from the base (as the septum runs from the
+// anterior insertion in a right-handed patient frame), at the body's -x.
+// AHA segment 8 (mid anteroseptal) then spans phi -120 to -60 degrees,
+// longitude lambda 60 to 120 from -x: the default lesion's.
+inline constexpr double kLvAnteriorInsertionDeg = -60.0;
+inline constexpr double kLvInferiorInsertionDeg = -180.0;
+// The insertion points' ED height fraction, on the mid-wall.
+inline constexpr double kLvInsertionHeight = 0.6;
+
 struct LvPhantom {
   LvPhantomOptions options;  // num_frames resolved.
+  // The RV insertion points at frame 0, world (see kLvAnteriorInsertionDeg).
+  Eigen::Vector3d rv_anterior = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rv_inferior = Eigen::Vector3d::Zero();
   // source "lv-phantom"; id = tag index (sax-slices: frame x num_tags +
   // the point's index in its frame).
   PointSequence points;

@@ -38,6 +38,7 @@ constexpr double kLevelMiddle[3] = {5.0 / 6.0, 0.5, 1.0 / 6.0};
 
 void FindExtrapolated(const SequenceFit& fit, FitAnalysis* analysis) {
   if (fit.apex_in_data) return;
+  analysis->level_extrapolated[kApex] = true;
   for (int level : {kBasal, kMid, kApical}) {
     analysis->level_extrapolated[level] =
         fit.lowest_data_height > kLevelMiddle[level];
@@ -128,6 +129,8 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   for (size_t t = 0; t < fit.frames.size() && !show_extrapolated; ++t) {
     LeaveOutExtrapolated(t, &analysis);
   }
+  // The levels' strain, above, keeps the cap as part of the apical third.
+  analysis.apex_cap_measured = fit.apex_in_data || show_extrapolated;
   return analysis;
 }
 

@@ -34,13 +34,20 @@ struct FitAnalysis {
   // Without data near the apex (SequenceFit::apex_in_data), what lies
   // where frame 0 has no data is the model's continuation of the data
   // above: a level (kBasal, kMid, kApical) whose middle height lies below
-  // frame 0's lowest data point, and the apical ring (kApicalRingFraction)
-  // when it does.  Unless AnalyzeFit is asked to show them, their numbers
-  // are kNotMeasured: the level's regions and strains, and the ring's
-  // rotations, net twist, torsion and shear angle (LeaveOutApexRing).
-  std::array<bool, 3> level_extrapolated{};
+  // frame 0's lowest data point, the apex cap (kApex, segment 17) always,
+  // and the apical ring (kApicalRingFraction) when it lies below it.  Unless
+  // AnalyzeFit is asked to show them, their numbers are kNotMeasured: the
+  // level's regions and strains, and the ring's rotations, net twist, torsion
+  // and shear angle (LeaveOutApexRing).
+  std::array<bool, 4> level_extrapolated{};  // By RegionLevel.
   bool apex_ring_extrapolated = false;
   bool extrapolated_shown = false;
+  // Whether the apex cap's (segment 17's) numbers are given: frame 0's
+  // data reach the apex (SequenceFit::apex_in_data), or they are shown
+  // anyway.  Where not, its entries in region_motion are kNotMeasured (its
+  // area kept); the levels' and global strains still take the model's cap
+  // in.
+  bool apex_cap_measured = true;
   // What clinical[t].volume_ml encloses: "cavity" (a solid's endocardium,
   // or a surface fitted to endocardial contours), "epicardial" or "midwall"
   // (VolumeSurfaceName).

@@ -30,7 +30,9 @@ TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
   EXPECT_NEAR(analysis.clinical[4].net_twist_deg, 7.0 * 0.65, 0.01);
   EXPECT_EQ(analysis.ejection_fraction.es_frame, 4);
   ASSERT_EQ(analysis.region_motion.size(), 5u);
-  ASSERT_EQ(analysis.region_motion[4].size(), 16u);
+  ASSERT_EQ(analysis.region_motion[4].size(), 17u);
+  EXPECT_FALSE(analysis.layout.anatomical);
+  EXPECT_TRUE(analysis.apex_cap_measured);
   // The phantom's a1 shrinks 20 % everywhere and a2 by 20 % at the apex to
   // 10 % at the base: every segment contracts by 10-20 %.
   for (const RegionMotion& m : analysis.region_motion[4]) {
@@ -95,19 +97,19 @@ TEST(FitAnalysisTest, WhatLiesBelowTheDataIsNotMeasuredUnlessShown) {
   options.num_frames = 3;
   SequenceFit fit = TruthAsFit(MakePhantom(options));
   const FitAnalysis full = AnalyzeFit(fit);
-  EXPECT_EQ(full.level_extrapolated, (std::array<bool, 3>{}));
+  EXPECT_EQ(full.level_extrapolated, (std::array<bool, 4>{}));
   fit.apex_in_data = false;
   fit.lowest_data_height = 0.49;
   const FitAnalysis analysis = AnalyzeFit(fit);
   EXPECT_EQ(analysis.level_extrapolated,
-            (std::array<bool, 3>{false, false, true}));
+            (std::array<bool, 4>{false, false, true, true}));
   EXPECT_TRUE(analysis.apex_ring_extrapolated);
   EXPECT_FALSE(analysis.extrapolated_shown);
   const ClinicalSummary& c = analysis.clinical[2];
-  for (double value : {c.apex_rotation_deg, c.net_twist_deg,
-                       c.torsion_deg_per_cm, c.shear_angle_deg,
-                       analysis.strain[2].level_ecc_percent[kApical],
-                       analysis.strain[2].level_ell_percent[kApical]}) {
+  for (double value :
+       {c.apex_rotation_deg, c.net_twist_deg, c.torsion_deg_per_cm,
+        c.shear_angle_deg, analysis.strain[2].level_ecc_percent[kApical],
+        analysis.strain[2].level_ell_percent[kApical]}) {
     EXPECT_FALSE(Measured(value));
   }
   EXPECT_EQ(c.base_rotation_deg, full.clinical[2].base_rotation_deg);
@@ -117,7 +119,8 @@ TEST(FitAnalysisTest, WhatLiesBelowTheDataIsNotMeasuredUnlessShown) {
             full.strain[2].level_ecc_percent[kMid]);
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
     const RegionMotion& m = analysis.region_motion[2][r];
-    const bool apical = analysis.regions[r].level == kApical;
+    const bool apical = analysis.regions[r].level == kApical ||
+                        analysis.regions[r].level == kApex;
     EXPECT_EQ(Measured(m.ecc_percent), !apical) << r;
     EXPECT_EQ(Measured(m.radial_contraction_percent), !apical) << r;
     EXPECT_EQ(Measured(m.rotation_deg), !apical) << r;
@@ -129,10 +132,40 @@ TEST(FitAnalysisTest, WhatLiesBelowTheDataIsNotMeasuredUnlessShown) {
   EXPECT_EQ(shown.region_motion[2][15].ecc_percent,
             full.region_motion[2][15].ecc_percent);
 
-  fit.lowest_data_height = 0.1;  // Below the ring: only nothing.
+  fit.lowest_data_height = 0.1;  // Below the ring: only the cap.
   const FitAnalysis low = AnalyzeFit(fit);
-  EXPECT_EQ(low.level_extrapolated, (std::array<bool, 3>{}));
+  EXPECT_EQ(low.level_extrapolated,
+            (std::array<bool, 4>{false, false, false, true}));
   EXPECT_FALSE(low.apex_ring_extrapolated);
+}
+
+// Without data near the apex (SequenceFit::apex_in_data) the apex cap's
+// numbers are not measured, its area kept; the apical level's strain and
+// the global strain still take the model's cap in, as they did.
+TEST(FitAnalysisTest, ApexCapIsNotMeasuredWithoutDataNearTheApex) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  const FitAnalysis seen = AnalyzeFit(fit);
+  fit.apex_in_data = false;
+  const FitAnalysis unseen = AnalyzeFit(fit);
+  EXPECT_FALSE(unseen.apex_cap_measured);
+  ASSERT_EQ(unseen.regions[16].level, kApex);
+  EXPECT_GT(seen.region_motion[4][16].radial_contraction_percent, 9.0);
+  for (size_t t = 0; t < 5; ++t) {
+    const RegionMotion& cap = unseen.region_motion[t][16];
+    for (double value : {cap.rotation_deg, cap.radial_contraction_percent,
+                         cap.ecc_percent, cap.ell_percent, cap.ecl_percent}) {
+      EXPECT_FALSE(Measured(value)) << t;
+    }
+    EXPECT_EQ(cap.area_mm2, seen.region_motion[t][16].area_mm2);
+    EXPECT_EQ(unseen.strain[t].gcs_percent, seen.strain[t].gcs_percent);
+    EXPECT_EQ(unseen.strain[t].level_ecc_percent[kApical],
+              seen.strain[t].level_ecc_percent[kApical]);
+    EXPECT_EQ(unseen.region_motion[t][15].ecc_percent,
+              seen.region_motion[t][15].ecc_percent);
+  }
 }
 
 TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {

@@ -52,7 +52,7 @@ TEST(FitReportTest, WhatIsNotMeasuredReadsNA) {
                 analysis.clinical[4].radial_contraction_percent);
   EXPECT_NE(html.find(radial), std::string::npos) << radial;
   // Per frame: net twist, apex, base, torsion; per segment: rotation, Ecl.
-  EXPECT_EQ(CountOf(html, "<td>n/a</td>"), 5 * 4 + 16 * 2);
+  EXPECT_EQ(CountOf(html, "<td>n/a</td>"), 5 * 4 + 17 * 2);
 
   // Frame 2 alone without tracked points: ES has numbers, frame 2 n/a.
   fit = TruthAsFit(phantom);
@@ -112,8 +112,8 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
                       "last search)"),
             std::string::npos);
   EXPECT_EQ(CountOf(html, "unsettled"), 1);
-  // 5 frame rows and 16 segment rows, each a <tr> after its table's head.
-  EXPECT_EQ(CountOf(html, "<tr>"), 2 + 5 + 16);
+  // 5 frame rows and 17 segment rows, each a <tr> after its table's head.
+  EXPECT_EQ(CountOf(html, "<tr>"), 2 + 5 + 17);
   EXPECT_NE(html.find("apical 4"), std::string::npos);
   EXPECT_EQ(html.find("No tracked points"), std::string::npos);  // Tags.
   EXPECT_EQ(html.find("n/a"), std::string::npos);
@@ -129,6 +129,9 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   EXPECT_NE(with_maps.find("<svg id='s'></svg>"), std::string::npos);
   EXPECT_NE(with_maps.find("<svg id='b'></svg>"), std::string::npos);
   EXPECT_NE(with_maps.find("model's &minus;x axis"), std::string::npos);
+  EXPECT_NE(with_maps.find("The segments are not anatomical</b> (no RV "
+                           "insertion given)"),
+            std::string::npos);
   const StrainPeak gcs = PeakGcs(analysis.strain);
   EXPECT_LT(gcs.percent, -3.0);
   char peak[64];

@@ -161,8 +161,11 @@ Fitted FitPhantom(bool lesion, LvKinematics kinematics = LvKinematics::kSystole,
         SectorOffset(MakeLvPhantom(options), frame0.ModelAt(0)) * 180 / kPi;
   }
   Fitted f{MakeLvPhantom(options), {}, {}};
+  RegionLayout sixteen;  // As PhantomTruthStrain's: the apical third whole.
+  sixteen.apex_cap_fraction = 0.0;
   f.analysis = AnalyzeFit(
-      FitSequence(f.phantom.points, ModelConfig::Paper(17), fit_options));
+      FitSequence(f.phantom.points, ModelConfig::Paper(17), fit_options), {},
+      sixteen);
   f.truth = PhantomTruthStrain(f.phantom,
                                SectorOffset(f.phantom, f.analysis.models[0]));
   return f;
