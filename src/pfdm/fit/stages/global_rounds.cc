@@ -1,5 +1,6 @@
 #include "pfdm/fit/stages/global_rounds.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -96,7 +97,12 @@ void GlobalRounds::Run(TrajectoryRecorder* recorder) {
   acceleration_.reset();
   best_.reset();
   int max_rounds = options_.max_correspondence_rounds;
-  if (!rerank_depths_ && !frame_.untracked.empty()) {
+  // Only contour points: a tag's material point, found here on its first
+  // frame, is kept for every later frame, so tagged fits stay as they were.
+  const bool contours_only =
+      std::none_of(frame_.untracked.begin(), frame_.untracked.end(),
+                   [this](size_t i) { return frame_.is_tag[i]; });
+  if (!rerank_depths_ && !frame_.untracked.empty() && contours_only) {
     acceleration_.emplace();
     probes_ = Listed(fit_->material, frame_.untracked);
     max_rounds = options_.max_accelerated_rounds;

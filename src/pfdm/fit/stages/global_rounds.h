@@ -38,10 +38,10 @@ class GlobalRounds {
   // subset of them; in a solid, the tracked tags' depths ranked.
   void Start();
   // Solves and searches until the closest points settle; a solid's tracked
-  // tags are re-ranked between solves instead.  With untracked points the
-  // rounds are accelerated and may run to FitOptions::
-  // max_accelerated_rounds; if they run out, the frame ends on the round
-  // whose search moved the points least.  Throws InputError naming
+  // tags are re-ranked between solves instead.  With contour points only
+  // (no tag among the untracked points) the rounds are accelerated and may run
+  // to FitOptions:: max_accelerated_rounds; if they run out, the frame ends on
+  // the round whose search moved the points least.  Throws InputError naming
   // the frame when a solve is unusable.
   void Run(TrajectoryRecorder* recorder);
   // A fresh search, after the model changed under the rounds (the wall).
@@ -85,7 +85,7 @@ class GlobalRounds {
   double moved_ = 0.0;          // By the last search.
   bool rerank_depths_ = false;
   SolverReport report_;
-  // Frames with untracked points and no re-ranked tags: the rounds are
+  // Frames whose untracked points are all contour points: the rounds are
   // accelerated (round_acceleration.h), the change of each measured at the
   // untracked points' first material points.
   std::optional<RoundAcceleration> acceleration_;
