@@ -78,6 +78,11 @@ struct FitOptions {
   bool loss_scale_auto = true;
   double loss_scale_mm = 1.0;
   int max_correspondence_rounds = 10;
+  // The rounds of a frame with untracked points may run to this many while
+  // the points still move, the rounds past max_correspondence_rounds
+  // mixing the last rounds' solutions (round_acceleration.h): on biv-me's
+  // contours 12 of the 15 frames that ran out of 10 rounds then settle.
+  int max_accelerated_rounds = 20;
   // Rounds stop when no material point's model position moves more.
   double correspondence_tolerance_mm = 0.05;
   SolverOptions solver;

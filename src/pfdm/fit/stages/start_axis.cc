@@ -145,6 +145,7 @@ CandidateFit FitCandidate(const std::vector<DataPoint>& points,
   choice.damping_groups = DampingGroups();
   choice.trajectory_per_decade = 0;
   choice.max_correspondence_rounds = max_rounds;
+  choice.max_accelerated_rounds = max_rounds;
   Model fitted = model;
   GlobalRounds rounds(frame_points, model.state, model.state.quaternion, choice,
                       source, &fitted, &fit);
