@@ -37,7 +37,7 @@ def test_fit_from_a_path_gives_the_cli_fit_json_to_the_last_digit(cli_phantom):
     assert fit.to_dict()["midwall_volume_fraction"] == (
         cli_json["midwall_volume_fraction"])
     assert fit.regions == cli_json["regions"]
-    assert len(fit.regions) == 16
+    assert len(fit.regions) == 17
 
 
 def test_written_outputs_equal_the_clis_byte_for_byte(cli_phantom):

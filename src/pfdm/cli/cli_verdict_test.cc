@@ -155,7 +155,7 @@ TEST(CliVerdictTest, ASegmentWithoutApexSaysTheApexIsExtrapolated) {
   EXPECT_NE(run.error.find("are extrapolated"), std::string::npos) << run.error;
   // What lies below the data is null, unless asked for.
   EXPECT_EQ(fit["not_measured"]["extrapolated"]["levels"],
-            nlohmann::json({"apical"}));
+            nlohmann::json({"apical", "apex cap"}));
   EXPECT_TRUE(fit["frames"][2]["clinical"]["net_twist_deg"].is_null());
   EXPECT_TRUE(fit["frames"][2]["clinical"]["base_rotation_deg"].is_number());
   EXPECT_TRUE(fit["regions"][15]["ecc_percent"][2].is_null());

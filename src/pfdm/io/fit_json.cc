@@ -6,6 +6,7 @@
 #include "ceres/types.h"
 #include "nlohmann/json.hpp"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/not_measured_json.h"
 #include "pfdm/io/segments_json.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
@@ -112,25 +113,6 @@ constexpr const char* kClinicalDefinition =
     "longitudinal_shortening_percent, 1 - L / L0, L from the apex pole to the "
     "centroid of the base rim's material points.  The *_per_knot ratios are "
     "a1, a2, a3 against frame 0 (the paper's Fig. 5).";
-
-constexpr const char* kNotMeasuredDefinition =
-    "null marks what the data cannot determine.  A turn about the long axis "
-    "is seen only on tracked points (ids in more than one frame: tags); in "
-    "the frames listed, which have none (contours), or when frame 0 has none, "
-    "the fit holds tau, and every number a turn makes is null: the "
-    "rotations, twists, torsion and shear angle in clinical (a solid's "
-    "endo_* and epi_* ones too), gcl_percent, and the regions' rotation_deg "
-    "and ecl_percent.";
-
-constexpr const char* kExtrapolatedDefinition =
-    "Frame 0's data do not reach the apex (model apex_in_data): the levels "
-    "listed (thirds of frame 0's length, whose middle lies below the lowest "
-    "data point) and the apical ring (at 20 % of the length, when below it) "
-    "are the model's continuation of the data above them.  Unless shown "
-    "(--extrapolated), their numbers are null: the levels' regions and "
-    "strains, the apical ring's rotations, the net twists, torsion and "
-    "shear angle.  Volumes and mass include the extrapolated apex cap "
-    "(the frames' quality says so).";
 
 // A number, or null where it is kNotMeasured.
 json Value(double value) { return Measured(value) ? json(value) : json(); }
@@ -443,38 +425,6 @@ json StrainLevels(const FitAnalysis& analysis) {
     levels[kLevelNames[level]] = {{"ecc_percent", ecc}, {"ell_percent", ell}};
   }
   return levels;
-}
-
-// The frames whose rotation is null, and why; null when there are none.
-// The levels and the apical ring measured where frame 0 has no data
-// (FitAnalysis::level_extrapolated); null when there are none.
-json Extrapolated(const FitAnalysis& analysis) {
-  static const char* const kLevelNames[] = {"basal", "mid", "apical"};
-  json levels = json::array();
-  for (int level : {kBasal, kMid, kApical}) {
-    if (analysis.level_extrapolated[level])
-      levels.push_back(kLevelNames[level]);
-  }
-  if (levels.empty() && !analysis.apex_ring_extrapolated) return json();
-  return {{"levels", levels},
-          {"apex_ring", analysis.apex_ring_extrapolated},
-          {"shown", analysis.extrapolated_shown},
-          {"definition", kExtrapolatedDefinition}};
-}
-
-json NotMeasured(const FitAnalysis& analysis) {
-  json frames = json::array();
-  for (size_t t = 0; t < analysis.rotation_measured.size(); ++t) {
-    if (!analysis.rotation_measured[t]) frames.push_back(t);
-  }
-  const json extrapolated = Extrapolated(analysis);
-  if (frames.empty() && extrapolated.is_null()) return json();
-  json section;
-  if (!frames.empty()) {
-    section = {{"frames", frames}, {"definition", kNotMeasuredDefinition}};
-  }
-  if (!extrapolated.is_null()) section["extrapolated"] = extrapolated;
-  return section;
 }
 
 json StrainSection(const FitAnalysis& analysis) {
