@@ -71,6 +71,9 @@ struct FitOptions {
   // iteration count at this many per decade, plus the start and the end;
   // 0 keeps none (FrameFit::trajectory).
   int trajectory_per_decade = 0;
+  // Each frame's covariance of its global parameters at the solution
+  // (FrameFit::covariance, fit/problem/frame_covariance.h).
+  bool uncertainty = true;
   LocalOptions local;
 };
 
