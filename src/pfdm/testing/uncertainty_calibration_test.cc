@@ -47,8 +47,10 @@ Draw FitDraw(unsigned seed, int num_points) {
   options.num_knots = 9;
   options.seed = seed;
   const Phantom phantom = MakePhantom(options);
+  FitOptions fit_options;
+  fit_options.uncertainty = true;
   const SequenceFit fit =
-      FitSequence(phantom.points, ModelConfig::Paper(9), FitOptions());
+      FitSequence(phantom.points, ModelConfig::Paper(9), fit_options);
   Draw draw;
   for (const Judged& j : JudgedValues()) {
     const Model model = fit.ModelAt(j.frame);
