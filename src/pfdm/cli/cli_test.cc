@@ -51,7 +51,7 @@ TEST(CliTest, SimulateThenFitWritesEveryOutput) {
   std::istringstream rows(ReadText(dir + "/fit/parameters.csv"));
   std::string line;
   std::getline(rows, line);
-  EXPECT_EQ(line, "frame,function,knot,u,z_mm,value");
+  EXPECT_EQ(line, "frame,function,knot,u,z_mm,value,sd");
   int count = 0;
   while (std::getline(rows, line)) ++count;
   EXPECT_EQ(count, 3 * kNumFunctions * 17);

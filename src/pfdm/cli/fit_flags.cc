@@ -88,6 +88,9 @@ DEFINE_string(local_grid, kDefaults.local_grid.c_str(),
 DEFINE_double(local_stiffness, kDefaults.local_stiffness,
               "local deformations' membrane and thin-plate weight, relative "
               "to one node's data, 1e-4 to 1e6 (--local off: none)");
+DEFINE_string(uncertainty, kDefaults.uncertainty.c_str(),
+              "each frame's parameter covariance, a standard deviation per "
+              "knot value in parameters.csv: on or off");
 DEFINE_string(vtk_format, kDefaults.vtk_format.c_str(),
               "fit, batch: frame_NNN.vtk and .vtp as binary (legacy BINARY, "
               "XML appended raw; exact, no formatting) or ascii (text, 9 "
@@ -136,6 +139,7 @@ FitSettings FitSettingsFromFlags() {
   s.local = FLAGS_local;
   s.local_grid = FLAGS_local_grid;
   s.local_stiffness = FLAGS_local_stiffness;
+  s.uncertainty = FLAGS_uncertainty;
   s.vtk_format = FLAGS_vtk_format;
   return s;
 }

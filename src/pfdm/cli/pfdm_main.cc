@@ -24,7 +24,7 @@ const std::string kFitFlags =
     "untracked_prior loss "
     "loss_scale threads apex base linear_solver time_step rest_tolerance "
     "max_steps damping damping_scale jacobian local local_grid "
-    "local_stiffness ";
+    "local_stiffness uncertainty ";
 
 const Command kCommands[] = {
     {"fit", RunFit,

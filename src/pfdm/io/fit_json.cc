@@ -212,7 +212,8 @@ json Settings(const PointSequence& points, const SequenceFit& fit,
       {"local", options.local.enabled},
       {"local_grid", std::to_string(options.local.rows) + "x" +
                          std::to_string(options.local.cols)},
-      {"local_stiffness", options.local.stiffness}};
+      {"local_stiffness", options.local.stiffness},
+      {"uncertainty", options.uncertainty}};
   if (!points.contour_types.empty()) {
     settings["contour_types"] = points.contour_types;
   }
@@ -309,7 +310,10 @@ json QualitySection(const FitAnalysis& analysis) {
 }
 
 // One frame's fit errors, solve, verdict, volume (under volume_key, named
-// after the surface measured), pose and clinical numbers.
+// after the surface measured), pose and clinical numbers; with
+// --uncertainty on, what its covariance rests on (fit/problem/
+// frame_covariance.h: the data's sigma, the directions left undetermined)
+// and what it took.
 json FrameEntry(const FrameFit& frame, const Verdict& verdict,
                 const ClinicalSummary& summary, const GlobalStrain& strain,
                 const std::string& volume_key, bool solid) {
@@ -340,6 +344,16 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
   entry["pose"] = {{"center_mm", frame.state.center},
                    {"quaternion_wxyz", frame.state.quaternion}};
   entry["clinical"] = FrameClinical(summary, strain, solid);
+  if (frame.covariance.computed) {
+    const FrameCovariance& covariance = frame.covariance;
+    entry["uncertainty"] = {
+        {"sigma_mm", covariance.sigma_mm},
+        {"degrees_of_freedom", covariance.degrees_of_freedom},
+        {"parameters", covariance.entries.size()},
+        {"rank_deficiency", covariance.rank_deficiency},
+        {"deficient_directions", covariance.deficient_directions},
+        {"seconds", covariance.seconds}};
+  }
   return entry;
 }
 

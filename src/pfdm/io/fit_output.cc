@@ -1,5 +1,6 @@
 #include "pfdm/io/fit_output.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -161,10 +162,27 @@ const char* ReportedUnit(int f) {
   return f == kTau || f == kDtau ? "rad" : IsLength(f) ? "mm" : "1";
 }
 
-std::string ParametersCsv(const std::vector<Model>& frames) {
+double ReportedSd(const Model& model, const FrameCovariance& covariance, int f,
+                  int k) {
+  const int i = covariance.FunctionIndex(model.config, f, k);
+  const auto variance = [&](int a, int b) {
+    return a < 0 || b < 0 ? 0.0 : covariance.covariance(a, b);
+  };
+  if (f != kA1 && f != kA2 && f != kA3) return std::sqrt(variance(i, i));
+  // d(a0 a_i) = a_i da0 + a0 da_i.
+  const double a0 = model.state.globals[kA0];
+  const double ai = model.FunctionAt(f, model.config.Grid().KnotU(k));
+  const int j = covariance.FunctionIndex(model.config, kA0, k);
+  return std::sqrt(std::max(0.0, a0 * a0 * variance(i, i) +
+                                     ai * ai * variance(j, j) +
+                                     2.0 * a0 * ai * variance(i, j)));
+}
+
+std::string ParametersCsv(const std::vector<Model>& frames,
+                          const SequenceFit* fit) {
   std::ostringstream out;
   out.precision(10);
-  out << "frame,function,knot,u,z_mm,value\n";
+  out << "frame,function,knot,u,z_mm,value" << (fit ? ",sd" : "") << '\n';
   for (size_t t = 0; t < frames.size(); ++t) {
     const Model& model = frames[t];
     const KnotGrid grid = model.config.Grid();
@@ -172,7 +190,13 @@ std::string ParametersCsv(const std::vector<Model>& frames) {
       for (int k = 0; k < grid.num_knots(); ++k) {
         const double u = grid.KnotU(k);
         out << t << ',' << FunctionName(f) << ',' << k << ',' << u << ','
-            << KnotRingZ(model, u) << ',' << ReportedValue(model, f, u) << '\n';
+            << KnotRingZ(model, u) << ',' << ReportedValue(model, f, u);
+        if (fit != nullptr) {
+          const FrameCovariance& covariance = fit->frames[t].covariance;
+          out << ',';
+          if (covariance.computed) out << ReportedSd(model, covariance, f, k);
+        }
+        out << '\n';
       }
     }
   }
@@ -305,7 +329,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
       write(name + ".vtk", ToLegacyVtk(data, "pfdm " + name, vtk_format));
       write(name + ".vtp", ToVtkXmlPolyData(data, vtk_format));
     }
-    write("parameters.csv", ParametersCsv(analysis.models));
+    write("parameters.csv", ParametersCsv(analysis.models, &fit));
     write("fit.pvd", PvdCollection(timesteps));
     const std::string json = FitJson(points, fit, options, analysis);
     const std::vector<std::string> svgs = plots->Finish();

@@ -218,6 +218,11 @@ FitOptions OptionsFrom(const FitSettings& s, bool every_solver) {
   if (s.local != "on" && s.local != "off") {
     throw InputError("--local must be on or off, got '" + Clip(s.local) + "'");
   }
+  if (s.uncertainty != "on" && s.uncertainty != "off") {
+    throw InputError("--uncertainty must be on or off, got '" +
+                     Clip(s.uncertainty) + "'");
+  }
+  options.uncertainty = s.uncertainty == "on";
   CheckSettingsApply(s, every_solver);
   // A number is bounded further by the data's scale
   // (CheckOptionsAgainstPoints).

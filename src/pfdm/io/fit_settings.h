@@ -54,6 +54,8 @@ struct FitSettings {
   std::string local = FitOptions().local.enabled ? "on" : "off";
   std::string local_grid = "13x24";  // LocalOptions' rows x cols.
   double local_stiffness = FitOptions().local.stiffness;
+  // Each frame's parameter covariance (FitOptions::uncertainty): on or off.
+  std::string uncertainty = FitOptions().uncertainty ? "on" : "off";
   // The outputs.
   std::string vtk_format = "binary";
 };

@@ -108,6 +108,10 @@ class FrameProblem {
   // Each term's cost at the parameters' current values, the data's as the
   // rest of the solve's final cost.
   TermCosts Costs(const SolverReport& report) const;
+  // The free parameters' covariance at their current values.
+  FrameCovariance Covariance(const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<MaterialPoint>& material,
+                             const std::vector<Eigen::Vector3d>& normals);
 
  private:
   static std::unique_ptr<PrecomputedGroups> MakePrecomputed(
@@ -344,6 +348,43 @@ TermCosts FrameProblem::Costs(const SolverReport& report) const {
   return costs;
 }
 
+FrameCovariance FrameProblem::Covariance(
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material,
+    const std::vector<Eigen::Vector3d>& normals) {
+  using Kind = CovarianceEntry::Kind;
+  std::vector<CovarianceBlock> blocks;
+  ModelState& state = model_->state;
+  const std::array<std::pair<double*, Kind>, 2> pose = {
+      {{state.center.data(), Kind::kCenter},
+       {state.quaternion.data(), Kind::kRotation}}};
+  for (const auto& [parameters, kind] : pose) {
+    if (problem_.IsParameterBlockConstant(parameters)) continue;
+    CovarianceBlock block{parameters, {}};
+    for (int axis = 0; axis < 3; ++axis) {
+      block.entries.push_back({kind, -1, axis});
+    }
+    blocks.push_back(std::move(block));
+  }
+  for (int b = kGlobalsBlock; b < model_->config.num_knots; ++b) {
+    const FreeEntries* entries = blocks_.entries(b);
+    if (entries == nullptr) continue;
+    CovarianceBlock block{blocks_.parameters(b), {}};
+    const Kind kind = b == kGlobalsBlock ? Kind::kGlobal : Kind::kKnot;
+    for (int f : entries->free()) block.entries.push_back({kind, b, f});
+    blocks.push_back(std::move(block));
+  }
+  int num_parameters = 0;
+  for (const CovarianceBlock& block : blocks) {
+    num_parameters += static_cast<int>(block.entries.size());
+  }
+  double sigma_mm = 0.0, degrees_of_freedom = 0.0;
+  DataSigma(*model_, points, material, normals, options_.loss,
+            options_.loss_scale_mm, num_parameters, &sigma_mm,
+            &degrees_of_freedom);
+  return BlockCovariance(&problem_, blocks, sigma_mm, degrees_of_freedom);
+}
+
 double FrameProblem::CostOf(
     const std::vector<ceres::ResidualBlockId>& ids) const {
   double cost = 0.0;
@@ -361,6 +402,22 @@ double FrameProblem::CostOf(
   return cost;
 }
 
+// The frame's terms, as SolveFrame adds them.
+void BuildFrameProblem(const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<MaterialPoint>& material,
+                       const std::vector<Eigen::Vector3d>& normals,
+                       std::optional<double> rim_height,
+                       const ModelState& prior,
+                       const std::array<double, 4>& reference_quaternion,
+                       FrameProblem* problem) {
+  CHECK_EQ(normals.size(), points.size());
+  problem->AddData(points, material, normals);
+  problem->AddSmoothness(points.size());
+  if (rim_height) problem->AddRim(points.size(), *rim_height);
+  problem->AddGauges(points.size(), reference_quaternion);
+  problem->AddPrior(points.size(), prior);
+}
+
 }  // namespace
 
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
@@ -371,16 +428,28 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::array<double, 4>& reference_quaternion,
                         const FitOptions& options, Model* model,
                         TermCosts* costs) {
-  CHECK_EQ(normals.size(), points.size());
   FrameProblem problem(kind, options, model);
-  problem.AddData(points, material, normals);
-  problem.AddSmoothness(points.size());
-  if (rim_height) problem.AddRim(points.size(), *rim_height);
-  problem.AddGauges(points.size(), reference_quaternion);
-  problem.AddPrior(points.size(), prior);
+  BuildFrameProblem(points, material, normals, rim_height, prior,
+                    reference_quaternion, &problem);
   SolverReport report = problem.Solve();
   if (costs != nullptr) *costs = problem.Costs(report);
   return report;
+}
+
+FrameCovariance EstimateFrameCovariance(
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material,
+    const std::vector<Eigen::Vector3d>& normals,
+    std::optional<double> rim_height, FrameKind kind, const ModelState& prior,
+    const std::array<double, 4>& reference_quaternion,
+    const FitOptions& options, const Model& model) {
+  // The problem holds pointers into the model's state; Ceres only
+  // evaluates it here, but the copy keeps the caller's model out of reach.
+  Model at = model;
+  FrameProblem problem(kind, options, &at);
+  BuildFrameProblem(points, material, normals, rim_height, prior,
+                    reference_quaternion, &problem);
+  return problem.Covariance(points, material, normals);
 }
 
 }  // namespace pfdm

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pfdm/fit/stages/frame_summary.h"
+#include "pfdm/fit/stages/frame_uncertainty.h"
 #include "pfdm/fit/stages/global_rounds.h"
 #include "pfdm/fit/stages/local_stage.h"
 #include "pfdm/fit/stages/loss_scale.h"
@@ -116,6 +117,11 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   FitGlobal(points, prior, options, source, wall, carried, &fit);
   RememberTags(frame, points, fit, &carried->tracked_material);
   CanonicalizeBending(&model, &fit);
+  if (options.uncertainty) {
+    fit.covariance = MeasureFrameCovariance(
+        points, fit.material, prior, carried->reference.quaternion,
+        WithLossScale(options, fit.loss_scale_mm), model);
+  }
   CheckInterrupt(options.solver);
   if (options.local.enabled) {
     FitLocalStage(points, WithLossScale(options, fit.loss_scale_mm), source,

@@ -8,6 +8,7 @@
 
 #include "Eigen/Core"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/problem/frame_covariance.h"
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/model/model.h"
 #include "pfdm/solvers/solver.h"
@@ -76,6 +77,10 @@ struct FrameFit {
   // point the fit took for an outlier.  Empty without a loss (every point
   // weighs 1).  Filled by FitSequence.
   std::vector<double> loss_weights;
+  // The global parameters' covariance at the frame's global solution
+  // (before the local field), with FitOptions::uncertainty; computed false
+  // without.
+  FrameCovariance covariance;
 };
 
 struct SequenceFit {
