@@ -171,8 +171,11 @@ def test_ctrl_c_interrupts_every_solver_within_a_second(
     timer = threading.Timer(delay, interrupt)
     timer.start()
     try:
+        # Fitted again until interrupted: an idle machine fits the direct
+        # solve's 10 frames in about a second, before the later signal.
         with pytest.raises(KeyboardInterrupt):
-            pfdm.fit(long_phantom, solver=solver, **long_steps)
+            while True:
+                pfdm.fit(long_phantom, solver=solver, **long_steps)
         raised = time.monotonic()
     finally:
         timer.cancel()
