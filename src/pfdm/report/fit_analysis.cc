@@ -32,16 +32,18 @@ void LeaveOutFrameRotation(size_t t, FitAnalysis* analysis) {
   analysis->strain[t].gcl_percent = kNotMeasured;
 }
 
-// Heights of the levels' middles, fractions of frame 0's length from the
-// apex pole: the regions' thirds (wall_motion.h).
-constexpr double kLevelMiddle[3] = {5.0 / 6.0, 0.5, 1.0 / 6.0};
-
-void FindExtrapolated(const SequenceFit& fit, FitAnalysis* analysis) {
+// Without data near the apex: the cap, and each level whose middle height
+// (a fraction of frame 0's length from the apex pole; thirds, the apical
+// one above the cap: wall_motion.h) lies below the lowest data point.
+void FindExtrapolated(const SequenceFit& fit, const RegionLayout& layout,
+                      FitAnalysis* analysis) {
   if (fit.apex_in_data) return;
   analysis->level_extrapolated[kApex] = true;
+  const double middle[3] = {5.0 / 6.0, 0.5,
+                            (layout.apex_cap_fraction + 1.0 / 3.0) / 2.0};
   for (int level : {kBasal, kMid, kApical}) {
     analysis->level_extrapolated[level] =
-        fit.lowest_data_height > kLevelMiddle[level];
+        fit.lowest_data_height > middle[level];
   }
   analysis->apex_ring_extrapolated =
       fit.lowest_data_height > kApicalRingFraction;
@@ -124,7 +126,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (!analysis.rotation_measured[t]) LeaveOutFrameRotation(t, &analysis);
   }
-  FindExtrapolated(fit, &analysis);
+  FindExtrapolated(fit, layout, &analysis);
   analysis.extrapolated_shown = show_extrapolated;
   for (size_t t = 0; t < fit.frames.size() && !show_extrapolated; ++t) {
     LeaveOutExtrapolated(t, &analysis);

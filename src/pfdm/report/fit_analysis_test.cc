@@ -132,6 +132,10 @@ TEST(FitAnalysisTest, WhatLiesBelowTheDataIsNotMeasuredUnlessShown) {
   EXPECT_EQ(shown.region_motion[2][15].ecc_percent,
             full.region_motion[2][15].ecc_percent);
 
+  // The apical level lies above the cap (0.1 to 1/3 of the length): its
+  // middle, 0.217, is above data from 0.21.
+  fit.lowest_data_height = 0.21;
+  EXPECT_FALSE(AnalyzeFit(fit).level_extrapolated[kApical]);
   fit.lowest_data_height = 0.1;  // Below the ring: only the cap.
   const FitAnalysis low = AnalyzeFit(fit);
   EXPECT_EQ(low.level_extrapolated,
