@@ -5,6 +5,7 @@
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/testing/test_util.h"
+#include "pfdm/testing/truth_as_fit.h"
 
 namespace pfdm {
 namespace {
@@ -96,14 +97,7 @@ TEST(BullseyePlotTest, NoRotationMapWhereRotationIsNotMeasured) {
   PhantomOptions options;
   options.num_points = 1;
   const Phantom phantom = MakePhantom(options);
-  SequenceFit fit;
-  fit.config = phantom.truth[0].config;
-  for (size_t t = 0; t < phantom.truth.size(); ++t) {
-    FrameFit frame;
-    frame.frame = static_cast<int>(t);
-    frame.state = phantom.truth[t].state;
-    fit.frames.push_back(frame);
-  }
+  SequenceFit fit = TruthAsFit(phantom);
   const std::vector<BullseyeMap> tags = ClinicalBullseyeMaps(AnalyzeFit(fit));
   ASSERT_EQ(tags.size(), 3u);
   EXPECT_EQ(tags[2].title, "rotation at ES, degrees");

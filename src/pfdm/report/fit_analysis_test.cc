@@ -3,21 +3,10 @@
 #include "gtest/gtest.h"
 #include "pfdm/model/model_surface.h"
 #include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/truth_as_fit.h"
 
 namespace pfdm {
 namespace {
-
-SequenceFit TruthAsFit(const Phantom& phantom) {
-  SequenceFit fit;
-  fit.config = phantom.truth[0].config;
-  for (size_t t = 0; t < phantom.truth.size(); ++t) {
-    FrameFit frame;
-    frame.frame = static_cast<int>(t);
-    frame.state = phantom.truth[t].state;
-    fit.frames.push_back(frame);
-  }
-  return fit;
-}
 
 TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
   PhantomOptions options;

@@ -5,6 +5,7 @@
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/testing/test_util.h"
+#include "pfdm/testing/truth_as_fit.h"
 
 namespace pfdm {
 namespace {
@@ -13,19 +14,6 @@ TEST(FitReportTest, InlinesSvg) {
   EXPECT_EQ(InlineSvg("<?xml version=\"1.0\"?>\n<!DOCTYPE svg>\n<svg a='1'/>"),
             "<svg a='1'/>");
   EXPECT_EQ(InlineSvg("not a plot"), "");
-}
-
-SequenceFit TruthAsFit(const Phantom& phantom) {
-  SequenceFit fit;
-  fit.config = phantom.truth[0].config;
-  for (size_t t = 0; t < phantom.truth.size(); ++t) {
-    FrameFit frame;
-    frame.frame = static_cast<int>(t);
-    frame.state = phantom.truth[t].state;
-    frame.termination = "CONVERGENCE";
-    fit.frames.push_back(frame);
-  }
-  return fit;
 }
 
 // Without tracked points at ES the cards read n/a for twist, torsion and
@@ -70,17 +58,9 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   PhantomOptions options;
   options.num_points = 50;
   const Phantom phantom = MakePhantom(options);
-  SequenceFit fit;
-  fit.config = phantom.truth[0].config;
-  for (size_t t = 0; t < phantom.truth.size(); ++t) {
-    FrameFit frame;
-    frame.frame = static_cast<int>(t);
-    frame.state = phantom.truth[t].state;
-    frame.rms_mm = 0.5 + t;
-    frame.termination = "CONVERGENCE";
-    if (t == 3) frame.unsettled_mm = 0.94;
-    fit.frames.push_back(frame);
-  }
+  SequenceFit fit = TruthAsFit(phantom);
+  for (size_t t = 0; t < fit.frames.size(); ++t) fit.frames[t].rms_mm = 0.5 + t;
+  fit.frames[3].unsettled_mm = 0.94;
   PointSequence points = phantom.points;
   points.source = "tags<1>.csv";
   const FitAnalysis analysis = AnalyzeFit(fit);
