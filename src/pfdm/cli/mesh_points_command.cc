@@ -27,8 +27,9 @@ DEFINE_string(mesh_format, kDefaults.mesh_format.c_str(),
               "mesh-points: obj, vtk, cap-mean or auto");
 DEFINE_string(label, "",
               "mesh-points: VTK only, keep the points whose point "
-              "scalar equals this (e.g. 0 = endocardium in the UK Digital "
-              "Heart mesh); NAME=N picks the array when there are several");
+              "scalar equals this (e.g. 1 = endocardium, 0 = epicardium in "
+              "the UK Digital Heart mean LV); NAME=N picks the array when "
+              "there are several");
 DEFINE_string(cap_surfaces, kDefaults.cap_surfaces.c_str(),
               "mesh-points: CAP surfaces "
               "to take as frames, from ED-endo, ED-epi, ES-endo, ES-epi");

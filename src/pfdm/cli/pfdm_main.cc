@@ -1,11 +1,14 @@
 // pfdm: fits deformable models with parameter functions to LV point data.
 #include <cstdio>
 #include <exception>
+#include <iterator>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "pfdm/cli/commands.h"
+#include "pfdm/cli/help.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -16,6 +19,7 @@ struct Command {
   int (*run)();
   const char* usage;
   std::string flags;  // Those it reads, each followed by a space.
+  const char* summary;
 };
 
 // The model's and the fit's, FitSettings' but for the solver and outputs.
@@ -31,23 +35,30 @@ const Command kCommands[] = {
      "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
      "[--solver direct|damped|integrator]",
      "points out solver vtk_format base_plane extrapolated rv_insertion " +
-         kFitFlags},
+         kFitFlags,
+     "fits the model to tags or contours over the cycle: functions, clinical "
+     "numbers, report"},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
      "out frames tags noise outliers seed phantom kinematics wall_tags "
-     "breathing lesion region sampling slices "},
-    {"check-jacobians", RunCheckJacobians, "[--tolerance 1e-6]", "tolerance "},
-    {"compare-solvers", RunCompareSolvers,
-     "--points FILE --out DIR: direct, damped and integrator side by side",
-     "points out trajectory_per_decade " + kFitFlags},
+     "breathing lesion region sampling slices ",
+     "writes a phantom's points and its truth (the model's own, or the "
+     "independent LV)"},
+    {"check-jacobians", RunCheckJacobians, "[--tolerance 1e-6]", "tolerance ",
+     "checks the analytic Jacobians against Ceres' GradientChecker"},
+    {"compare-solvers", RunCompareSolvers, "--points FILE --out DIR",
+     "points out trajectory_per_decade " + kFitFlags,
+     "fits with the direct, damped and integrator solvers side by side"},
     {"batch", RunBatch,
-     "--manifest cases.csv --out DIR [--jobs N] [--shard i/n]: fits a cohort",
+     "--manifest cases.csv --out DIR [--jobs N] [--shard i/n]",
      "manifest out jobs shard solver vtk_format base_plane extrapolated " +
-         kFitFlags},
+         kFitFlags,
+     "fits a cohort: one case per manifest row, a merged summary.csv"},
     {"mesh-points", RunMeshPoints,
      "--mesh FILE|DIR --out FILE.csv [--mesh_filter S] [--label 0] "
-     "[--cap_surfaces ED-endo,ES-endo]: mesh vertices as tracked points",
-     "mesh out mesh_filter mesh_format label cap_surfaces "},
+     "[--cap_surfaces ED-endo,ES-endo]",
+     "mesh out mesh_filter mesh_format label cap_surfaces ",
+     "writes a mesh sequence's vertices as tracked points for fit"},
 };
 
 bool Reads(const Command& command, const std::string& flag) {
@@ -79,28 +90,62 @@ void CheckFlagsAreTheCommands(const Command& command) {
   }
 }
 
-std::string Usage() {
-  std::string usage = "pfdm <command> [flags]\n";
+std::vector<CommandHelp> Help() {
+  std::vector<CommandHelp> help;
   for (const Command& command : kCommands) {
-    usage += "  " + std::string(command.name) + "  " + command.usage + "\n";
+    std::istringstream names(command.flags);
+    std::vector<std::string> flags(std::istream_iterator<std::string>(names),
+                                   {});
+    help.push_back({command.name, command.usage, command.summary, flags});
   }
-  return usage + "Run 'pfdm --help' for every flag.";
+  return help;
+}
+
+// Help, version and usage errors, before gflags sees argv; -1 to go on.
+int AnswerHelpRequest(const HelpRequest& request,
+                      const std::vector<CommandHelp>& help) {
+  switch (request.kind) {
+    case HelpRequest::kRun:
+      return -1;
+    case HelpRequest::kNoCommand:
+      std::fprintf(stderr, "%s", OverviewText(help).c_str());
+      return 2;
+    case HelpRequest::kOverview:
+      std::printf("%s", OverviewText(help).c_str());
+      return 0;
+    case HelpRequest::kVersion:
+      std::printf("%s", VersionText().c_str());
+      return 0;
+    case HelpRequest::kUsageError:
+      std::fprintf(stderr, "pfdm: error: %s\n", request.message.c_str());
+      return 2;
+    case HelpRequest::kCommand:
+      break;
+  }
+  for (const CommandHelp& command : help) {
+    if (command.name == request.command) {
+      std::printf("%s", CommandText(command).c_str());
+    }
+  }
+  return 0;
 }
 
 }  // namespace
 }  // namespace pfdm
 
 int main(int argc, char** argv) {
-  const std::string usage = pfdm::Usage();
-  gflags::SetUsageMessage(usage);
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  if (argc != 2) {
-    std::fprintf(stderr, "%s\n", usage.c_str());
-    return 2;
+  const std::vector<pfdm::CommandHelp> help = pfdm::Help();
+  const pfdm::HelpRequest request = pfdm::ReadHelpRequest(argc, argv, help);
+  if (request.kind == pfdm::HelpRequest::kNoCommand) {
+    // gflags' --helpxml, which tools (and CliTest) read the flags from.
+    gflags::ParseCommandLineNonHelpFlags(&argc, &argv, true);
+    gflags::HandleCommandLineHelpFlags();
   }
-  const std::string name = argv[1];
+  const int answered = pfdm::AnswerHelpRequest(request, help);
+  if (answered >= 0) return answered;
+  gflags::ParseCommandLineNonHelpFlags(&argc, &argv, true);
   for (const pfdm::Command& command : pfdm::kCommands) {
-    if (name != command.name) continue;
+    if (request.command != command.name) continue;
     try {
       CheckFlagsAreTheCommands(command);
       return command.run();
@@ -113,7 +158,5 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  std::fprintf(stderr, "pfdm: unknown command '%s'\n%s\n", name.c_str(),
-               usage.c_str());
-  return 2;
+  return 2;  // ReadHelpRequest found the command.
 }
