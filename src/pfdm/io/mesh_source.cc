@@ -1,7 +1,9 @@
 #include "pfdm/io/mesh_source.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "pfdm/io/legacy_vtk_reader.h"
@@ -91,6 +93,36 @@ void CheckNotPfdmData(const VtkMesh& vtk, const std::string& path) {
                        ": a pfdm frame with its data points (is_data = 1); "
                        "--label is_data=0 keeps the model's vertices");
     }
+  }
+}
+
+// A mesh of two surfaces (the UK Digital Heart mean LV: endocardium 1,
+// epicardium 0) taken whole mixes both walls into one set of points.  An
+// integer point scalar whose values no triangle joins labels separate
+// surfaces: refused, naming the --label that picks one.
+void CheckOneSurface(const VtkMesh& vtk, const std::string& path) {
+  constexpr size_t kMostLabels = 16;
+  for (const auto& [name, values] : vtk.point_scalars) {
+    if (values.size() != vtk.mesh.points.size()) continue;
+    std::set<double> labels;
+    for (double value : values) {
+      if (value != std::round(value) || labels.size() > kMostLabels) break;
+      labels.insert(value);
+    }
+    if (labels.size() < 2 || labels.size() > kMostLabels) continue;
+    const bool joined = std::any_of(
+        vtk.mesh.triangles.begin(), vtk.mesh.triangles.end(),
+        [&values = values](const auto& t) {
+          return values[t[0]] != values[t[1]] || values[t[1]] != values[t[2]];
+        });
+    if (joined) continue;
+    std::string listed;
+    for (double label : labels) {
+      listed += (listed.empty() ? "" : ", ") + std::to_string(int(label));
+    }
+    throw InputError(path + ": point scalars '" + Clip(name) + "' label " +
+                     std::to_string(labels.size()) + " separate surfaces (" +
+                     listed + "); keep one with --label " + Clip(name) + "=N");
   }
 }
 
@@ -186,7 +218,10 @@ std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
     for (const std::string& file :
          FrameFiles(p, ".vtk", settings.mesh_filter)) {
       const VtkMesh vtk = ReadLegacyVtkPolyData(file);
-      if (settings.label.empty()) CheckNotPfdmData(vtk, file);
+      if (settings.label.empty()) {
+        CheckNotPfdmData(vtk, file);
+        CheckOneSurface(vtk, file);
+      }
       frames.push_back(settings.label.empty()
                            ? vtk.mesh
                            : KeepLabel(vtk, file, settings.label));

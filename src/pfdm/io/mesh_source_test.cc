@@ -101,5 +101,27 @@ TEST(MeshSourceTest, PfdmFramesNeedTheirLabel) {
   EXPECT_EQ(ReadMeshFrames(path, MeshSettings())[0].points.size(), 3u);
 }
 
+// Two triangles labelled 0 and 1 by `wall`: two surfaces, as the UK
+// Digital Heart mean LV holds its epicardium (0) and endocardium (1).
+// Taken whole they would mix both walls: refused, naming the label.
+TEST(MeshSourceTest, TwoSurfacesNeedALabel) {
+  const std::string path = ScratchDirectory("mesh_source") + "/two.vtk";
+  const std::string points =
+      "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 6 "
+      "double\n0 0 0 1 0 0 0 1 0 0 0 5 1 0 5 0 1 5\nPOLYGONS 2 8\n3 0 1 2\n"
+      "3 3 4 5\nPOINT_DATA 6\nSCALARS wall double 1\nLOOKUP_TABLE default\n";
+  WriteText(path, points + "0 0 0 1 1 1\n");
+  EXPECT_EQ(InputErrorOf([&] { ReadMeshFrames(path, MeshSettings()); }),
+            path +
+                ": point scalars 'wall' label 2 separate surfaces (0, 1); "
+                "keep one with --label wall=N");
+  MeshSettings endo;
+  endo.label = "wall=1";
+  EXPECT_EQ(ReadMeshFrames(path, endo)[0].points.size(), 3u);
+  // A field that varies within a surface (a thickness, say) is no label.
+  WriteText(path, points + "0 0 1 1 1 2\n");
+  EXPECT_EQ(ReadMeshFrames(path, MeshSettings())[0].points.size(), 6u);
+}
+
 }  // namespace
 }  // namespace pfdm

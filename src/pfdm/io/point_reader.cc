@@ -18,6 +18,7 @@
 #include "libfccp/csv.h"
 #include "pfdm/io/frame_times.h"
 #include "pfdm/io/gp_file_header.h"
+#include "pfdm/io/point_file_mistakes.h"
 #include "pfdm/io/point_spread.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/input_file.h"
@@ -157,6 +158,7 @@ PointSequence Assemble(const std::string& path,
   PointSequence sequence;
   sequence.source = path;
   if (frames.empty()) throw InputError(path + ": no points");
+  CheckFramesStartAtZero(path, frames.begin()->first);
   int expected = 0;
   for (auto& [index, points] : frames) {
     if (index != expected) {
@@ -186,6 +188,7 @@ WallLayer ParseSurface(const std::string& path, unsigned line,
 PointSequence ReadPointsCsv(const std::string& path) {
   // Read whole first: a folder, FIFO or NUL byte is refused up front.
   const std::string text = ReadInputFile(path);
+  CheckIsPointCsv(path, text);
   std::map<long long, std::vector<DataPoint>> frames;
   std::map<long long, std::vector<unsigned>> lines;  // Each point's.
   FrameTimes times;
