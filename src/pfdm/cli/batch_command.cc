@@ -93,13 +93,21 @@ std::string RunCase(const BatchCase& c, const std::string& out,
   if (s.twist_measured) {
     std::snprintf(twist, sizeof(twist), "%.1f deg", s.net_twist_deg);
   }
-  char line[200];
+  // A mid-wall or epicardial volume's fraction is no ejection fraction;
+  // summary.csv leaves it empty too.
+  char ef[48] = "n/a";
+  if (s.volume_surface == "cavity") {
+    std::snprintf(ef, sizeof(ef), "%.1f %%", 100.0 * s.ejection_fraction);
+  } else {
+    std::snprintf(ef, sizeof(ef), "n/a (a %s surface)",
+                  s.volume_surface.c_str());
+  }
+  char line[240];
   std::snprintf(
       line, sizeof(line),
-      "done, %s, %d frames, max RMS %.2f mm, EF %.1f %%, net twist at ES %s, "
+      "done, %s, %d frames, max RMS %.2f mm, EF %s, net twist at ES %s, "
       "%.1f s",
-      s.quality.c_str(), s.frames, s.max_rms_mm, 100.0 * s.ejection_fraction,
-      twist,
+      s.quality.c_str(), s.frames, s.max_rms_mm, ef, twist,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count());
   return line;

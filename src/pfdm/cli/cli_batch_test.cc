@@ -63,6 +63,9 @@ TEST(CliBatchTest, FitsInParallelRecordsFailuresAndResumes) {
             "pfdm: error: 1 of 3 cases failed, see " + out + "/summary.csv\n");
   EXPECT_EQ(Lines(run.output, "] alpha: done, ok, 3 frames"), 1) << run.output;
   EXPECT_EQ(Lines(run.output, "] beta: done, ok, 3 frames"), 1);
+  // Mid-wall phantoms: no cavity, so no ejection fraction, as in summary.csv.
+  EXPECT_EQ(Lines(run.output, ", EF n/a (a midwall surface), "), 2)
+      << run.output;
   EXPECT_EQ(Lines(run.output, "] gamma: FAILED: " + dir +
                                   "/missing.csv: cannot open the file"),
             1)
