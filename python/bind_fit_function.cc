@@ -108,7 +108,8 @@ std::shared_ptr<FitResult> FitWithFlags(
     const std::string& linear_solver, double time_step, double rest_tolerance,
     int max_steps, const std::string& damping, const std::string& damping_scale,
     const std::string& jacobian, const std::string& local,
-    const std::string& local_grid, double local_stiffness) {
+    const std::string& local_grid, double local_stiffness,
+    const std::string& uncertainty) {
   FitSettings s;
   s.format = format;
   s.contours = contours;
@@ -138,6 +139,7 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.local = local;
   s.local_grid = local_grid;
   s.local_stiffness = local_stiffness;
+  s.uncertainty = uncertainty;
   return FitPoints(points, s);
 }
 
@@ -145,7 +147,7 @@ std::shared_ptr<FitResult> FitWithFlags(
 
 void BindFitFunction(py::module_& m) {
   const FitSettings fit_defaults;
-  m.def("fit", &FitWithFlags, py::arg("points"), py::kw_only(),
+  m.def("_fit", &FitWithFlags, py::arg("points"), py::kw_only(),
         py::arg("format") = fit_defaults.format,
         py::arg("contours") = fit_defaults.contours,
         py::arg("base_plane") = fit_defaults.base_plane,
@@ -172,7 +174,9 @@ void BindFitFunction(py::module_& m) {
         py::arg("local") = fit_defaults.local,
         py::arg("local_grid") = fit_defaults.local_grid,
         py::arg("local_stiffness") = fit_defaults.local_stiffness,
-        "Fits every frame, as `pfdm fit` does "
+        py::arg("uncertainty") = fit_defaults.uncertainty,
+        "pfdm.fit's compiled part, its keywords the CLI's strings.  Fits every "
+        "frame, as `pfdm fit` does "
         "with the flags of the same names and defaults.  points: a "
         "PointSequence, a path (read as read_points with format and "
         "contours), or a list of (N, 3) arrays (point i of every frame the "

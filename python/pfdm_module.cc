@@ -1,4 +1,4 @@
-// The Python module `pfdm`: points in and fits out as NumPy arrays and
+// The compiled part of the Python package `pfdm` (python/pfdm/ wraps it): points in and fits out as NumPy arrays and
 // plain dicts (README "Python").  The dicts are fit.json's, parsed, so what
 // FitJson reports reaches Python without a change here.  Each class and
 // group of functions is bound in a bind_*.cc of its own (bindings.h).
@@ -30,4 +30,4 @@ void BindModule(py::module_& m) {
 
 }  // namespace pfdm::python
 
-PYBIND11_MODULE(pfdm, m) { pfdm::python::BindModule(m); }
+PYBIND11_MODULE(_pfdm, m) { pfdm::python::BindModule(m); }

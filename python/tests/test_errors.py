@@ -1,5 +1,7 @@
 """Bad input raises pfdm.InputError with the CLI's message; Ctrl-C stops fits."""
+import inspect
 import os
+import re
 import signal
 import threading
 import time
@@ -66,9 +68,35 @@ def test_bad_options_raise_the_clis_message(cli_phantom):
                             folder / "never", *flags)
         with pytest.raises(pfdm.InputError) as raised:
             pfdm.fit(points_csv, **kwargs)
-        assert str(raised.value) == message, kwargs
-    with pytest.raises(TypeError):
-        pfdm.fit(points_csv, no_such_option=1)
+        # The CLI's message, its flags named as fit's keywords.
+        keywords = inspect.signature(pfdm.fit).parameters
+        python_words = re.sub(
+            r"--(\w+)",
+            lambda m: m.group(1) if m.group(1) in keywords else m.group(0),
+            message)
+        assert "--" not in python_words, message
+        assert str(raised.value) == python_words, kwargs
+    with pytest.raises(TypeError,
+                       match="^fit\\(\\) got an unexpected keyword argument "
+                       "'smoothnes'$"):
+        pfdm.fit(points_csv, smoothnes=1)
+
+
+def test_wrong_types_are_type_errors_naming_the_keyword(cli_phantom):
+    _, points_csv, _ = cli_phantom
+    cases = [({"knots": "17"}, "fit() argument 'knots' must be int, not str"),
+             ({"smoothness": "1"},
+              "fit() argument 'smoothness' must be float, not str"),
+             ({"local": "yes"}, "fit() argument 'local' must be bool, not str"),
+             ({"local_grid": (13,)},
+              "fit() argument 'local_grid' must be (rings, sectors), not (13,)"),
+             ({"contours": 3},
+              "fit() argument 'contours' must be a str or a list of str, not "
+              "int")]
+    for kwargs, message in cases:
+        with pytest.raises(TypeError) as raised:
+            pfdm.fit(points_csv, **kwargs)
+        assert str(raised.value) == message
 
 
 def test_bad_arrays_raise_naming_the_frame():

@@ -127,7 +127,7 @@ def test_simulate_gives_the_clis_phantom_and_its_truth_is_recovered(cli_phantom)
 
 def test_a_robust_loss_records_its_scale_and_weighs_each_point(cli_phantom):
     folder, points_csv, _ = cli_phantom
-    fit = pfdm.fit(points_csv, loss="huber", local="off")
+    fit = pfdm.fit(points_csv, loss="huber", local=False)
     assert fit.settings["loss_scale"] == "auto"
     scales = fit.settings["loss_scale_mm"]
     assert len(scales) == 3 and all(0.1 < s < 5.0 for s in scales)
@@ -145,9 +145,9 @@ def test_a_robust_loss_records_its_scale_and_weighs_each_point(cli_phantom):
         np.testing.assert_allclose(
             weights, np.minimum(1.0, scale / np.maximum(distances, 1e-300)),
             rtol=1e-12)
-    fixed = pfdm.fit(points_csv, loss="cauchy", loss_scale=2.5, local="off")
+    fixed = pfdm.fit(points_csv, loss="cauchy", loss_scale=2.5, local=False)
     assert fixed.settings["loss_scale"] == 2.5
     assert fixed.settings["loss_scale_mm"] == 2.5
-    plain = pfdm.fit(points_csv, local="off")
+    plain = pfdm.fit(points_csv, local=False)
     assert "loss_scale" not in plain.settings
     assert (plain.frames[1].loss_weights == 1.0).all()

@@ -21,7 +21,7 @@ def wall_tags():
 
 def test_tags_through_the_wall_fit_a_solid(wall_tags):
     folder, csv = wall_tags
-    fit = pfdm.fit(str(csv), local="off")
+    fit = pfdm.fit(str(csv), local=False)
     assert fit.model_info["wall"] == "solid"
     assert fit.model_info["wall_reason"].startswith("tags spread ")
     assert fit.volume_surface == "cavity"
@@ -52,7 +52,7 @@ def test_tags_through_the_wall_fit_a_solid(wall_tags):
 
 def test_midwall_keeps_one_surface(wall_tags):
     _, csv = wall_tags
-    fit = pfdm.fit(str(csv), wall="midwall", local="off")
+    fit = pfdm.fit(str(csv), wall="midwall", local=False)
     assert fit.model_info["wall"] == "midwall"
     assert fit.ejection_fraction is None
     assert "midwall_volume_ml" in fit[0].clinical
@@ -72,11 +72,11 @@ def test_surface_ed_frame_and_trigger_times_reach_the_fit(wall_tags):
         + "\n")
     points = pfdm.read_points(str(timed))
     assert points.time_ms == [10.0, 50.0, 90.0]
-    fit = pfdm.fit(str(timed), surface="endo", ed_frame=1, local="off")
+    fit = pfdm.fit(str(timed), surface="endo", ed_frame=1, local=False)
     assert fit.settings["surface"] == "endo"
     assert fit.settings["ed_frame"] == 1
     assert fit.volume_surface == "cavity"
     assert fit.ejection_fraction["ed_frame"] == 1
     assert fit.to_dict()["frames"][2]["time_ms"] == 90.0
-    with pytest.raises(pfdm.InputError, match="--surface must be auto, endo"):
+    with pytest.raises(pfdm.InputError, match="^surface must be auto, endo"):
         pfdm.fit(str(timed), surface="inner")

@@ -1,0 +1,72 @@
+"""Fit's Python side: slicing and a long-form table of every number."""
+import math
+
+_compiled_getitem = None
+
+
+def _getitem(self, index):
+    """fit[t] (negative counts from the end) or fit[a:b:c], a list."""
+    if isinstance(index, slice):
+        return [_compiled_getitem(self, t)
+                for t in range(*index.indices(len(self)))]
+    if not isinstance(index, int):
+        index = getattr(index, "__index__", lambda: index)()
+    if isinstance(index, int) and index < 0:
+        index += len(self)
+    if isinstance(index, int) and not 0 <= index < len(self):
+        raise IndexError(f"frame {index} of a fit of {len(self)} frames")
+    return _compiled_getitem(self, index)
+
+
+def _iter(self):
+    return (_compiled_getitem(self, t) for t in range(len(self)))
+
+
+def _rows(document):
+    """(frame, time_ms, quantity, segment, value) of every number fit.json
+    holds per frame: its scalar clinical numbers, RMS and volumes, and each
+    segment's numbers. Lists per knot are left out (see Fit.functions)."""
+    frames = document["frames"]
+    times = [frame.get("time_ms", math.nan) for frame in frames]
+    for t, frame in enumerate(frames):
+        for key, value in frame.items():
+            if key in ("rms_mm", "n_points") or key.endswith("_volume_ml"):
+                yield t, times[t], key, None, value
+        for key, value in frame.get("clinical", {}).items():
+            if not isinstance(value, (list, dict)):
+                yield t, times[t], key, None, value
+    regions = document.get("regions") or []
+    for region in regions:
+        for key, values in region.items():
+            if isinstance(values, list) and len(values) == len(frames):
+                for t, value in enumerate(values):
+                    yield t, times[t], key, region["name"], value
+
+
+def _to_dataframe(self):
+    """Every per-frame number in long form, for pandas.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns frame, time_ms (NaN where the data carry no times),
+        quantity (fit.json's name, e.g. ``net_twist_deg``, ``ecc_percent``),
+        segment (the AHA segment's name, None for global numbers) and value
+        (NaN where fit.json has null: not measured). One row per frame,
+        quantity and segment.
+    """
+    import pandas  # Only where wanted: Debian's python3-pandas.
+
+    rows = [(t, time, quantity, segment,
+             math.nan if value is None else float(value))
+            for t, time, quantity, segment, value in _rows(self.to_dict())]
+    return pandas.DataFrame(
+        rows, columns=["frame", "time_ms", "quantity", "segment", "value"])
+
+
+def extend_fit_class(fit_class):
+    global _compiled_getitem
+    _compiled_getitem = fit_class.__getitem__
+    fit_class.__getitem__ = _getitem
+    fit_class.__iter__ = _iter
+    fit_class.to_dataframe = _to_dataframe
