@@ -145,7 +145,7 @@ void FitArguments(benchmark::internal::Benchmark* b) {
   b->Args({2000, 1, kSparse, 0, kEigen});
   for (int points : {1000, 10000, 50000}) {
     for (int threads : {1, 2}) b->Args({points, threads, kSparse, 0, kEigen});
-    // The alternatives the default was chosen over (README, Performance).
+    // The alternatives the default was chosen over (docs/performance.md).
     b->Args({points, 1, kSparse, 0, ceres::SUITE_SPARSE});
     b->Args({points, 1, ceres::DENSE_NORMAL_CHOLESKY, 0, kEigen});
     if (points <= 10000) {

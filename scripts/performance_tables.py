@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Runs pfdm's benchmarks and rewrites README.md's performance tables.
+"""Runs pfdm's benchmarks and rewrites docs/performance.md's tables.
 
     /usr/bin/python3 scripts/performance_tables.py            # run, rewrite
     /usr/bin/python3 scripts/performance_tables.py --no-run   # rewrite only
@@ -7,10 +7,10 @@
 Each benchmark writes Google Benchmark JSON (--benchmark_format=json) into
 --results (default build/benchmark_results/); `pfdm batch` is timed on a
 manifest of phantom cases and its numbers saved in the same folder as
-batch.json.  The README's text between the markers
+batch.json.  docs/performance.md's text between the markers
 <!-- performance-tables:NAME:begin --> and <!-- ...:end --> is then replaced
 by tables made from those files, with the machine, date and load average
-each run recorded, so the README never drifts from the code.  Timings on a
+each run recorded, so the tables never drift from the code.  Timings on a
 loaded machine are inflated and noisy: run this on a quiet one.
 Standard library only.
 """
@@ -304,7 +304,7 @@ def replace(readme, name, text):
                          r"(<!-- performance-tables:%s:end -->)" % (name, name),
                          re.S)
     if not pattern.search(readme):
-        sys.exit("README.md has no performance-tables:%s markers" % name)
+        sys.exit("docs/performance.md has no performance-tables:%s markers" % name)
     return pattern.sub(lambda m: m.group(1) + text + "\n" + m.group(2),
                        readme)
 
@@ -314,9 +314,9 @@ def main():
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
     parser.add_argument("--results", default=None,
                         help="JSON folder (default BUILD/benchmark_results)")
-    parser.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    parser.add_argument("--readme", default=os.path.join(ROOT, "docs", "performance.md"))
     parser.add_argument("--no-run", action="store_true",
-                        help="only rewrite the README from saved JSON")
+                        help="only rewrite the tables from saved JSON")
     parser.add_argument("--only", nargs="*", default=None,
                         help="run only these benchmarks (and 'batch')")
     options = parser.parse_args()
