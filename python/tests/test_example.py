@@ -18,5 +18,5 @@ def test_the_python_example_fits_and_writes_the_outputs():
     assert "frame 2: rms" in done.stdout
     assert "midwall volume fraction 0." in done.stdout
     plotted = importlib.util.find_spec("matplotlib") is not None
-    for name in ("functions.png", "surface.png"):
+    for name in ("functions.png", "strain.png", "surface.png"):
         assert (out / name).exists() == plotted, name
