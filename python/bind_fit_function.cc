@@ -14,6 +14,7 @@
 #include "pfdm/io/rv_insertion_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/version.h"
 #include "pybind11/stl.h"
 #include "python_conversions.h"
 
@@ -90,6 +91,8 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
       AnatomicalLayout(
           result->fit.ModelAt(0),
           RvInsertionFrom(settings.rv_insertion, result->points.source)));
+  result->analysis.made_by = "pfdm.fit (Python)";
+  result->analysis.made_utc = UtcMinuteNow();
   result->json =
       FitJson(result->points, result->fit, result->options, result->analysis);
   return result;

@@ -1,10 +1,12 @@
-// The compiled part of the Python package `pfdm` (python/pfdm/ wraps it): points in and fits out as NumPy arrays and
-// plain dicts (README "Python").  The dicts are fit.json's, parsed, so what
-// FitJson reports reaches Python without a change here.  Each class and
-// group of functions is bound in a bind_*.cc of its own (bindings.h).
+// The compiled part of the Python package `pfdm` (python/pfdm/ wraps it):
+// points in and fits out as NumPy arrays and plain dicts (README "Python"). The
+// dicts are fit.json's, parsed, so what FitJson reports reaches Python without
+// a change here.  Each class and group of functions is bound in a bind_*.cc of
+// its own (bindings.h).
 #include "binding_helpers.h"
 #include "bindings.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/version.h"
 #include "pybind11/pybind11.h"
 
 namespace pfdm::python {
@@ -13,7 +15,7 @@ void BindModule(py::module_& m) {
   m.doc() =
       "pfdm: deformable models with parameter functions (Park, Metaxas & "
       "Young, CVPR 1994) fitted to 3D LV points; NumPy arrays in and out.";
-  m.attr("__version__") = "0.1.0";
+  m.attr("__version__") = PfdmVersion();
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError)
       .attr("__doc__") =
       "Bad input (file, data, option) or a failed solve; the message is the "

@@ -21,6 +21,7 @@
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
+#include "pfdm/util/version.h"
 
 DEFINE_string(manifest, "", "batch: CSV with columns case,points[,contours]");
 DEFINE_int32(jobs, 1, "batch: cases fitted at once, one per thread, 1 to 256");
@@ -79,10 +80,12 @@ std::string RunCase(const BatchCase& c, const std::string& out,
     // The case's own RV_INSERT points, if any, place its AHA segments.
     const RegionLayout layout =
         AnatomicalLayout(fit.ModelAt(0), RvInsertionFrom("", c.points));
-    WriteFitOutputs(
-        dir, points, fit,
-        AnalyzeFit(fit, planes, layout, ShowExtrapolatedFromFlags()), options,
-        VtkFormatFromFlags(), &plots);
+    FitAnalysis analysis =
+        AnalyzeFit(fit, planes, layout, ShowExtrapolatedFromFlags());
+    analysis.made_by = CommandLine() + " (case " + c.name + ")";
+    analysis.made_utc = UtcMinuteNow();
+    WriteFitOutputs(dir, points, fit, analysis, options, VtkFormatFromFlags(),
+                    &plots);
     fs::remove(dir + "/error.txt");
     RemoveAbandonedTemporaries(dir, "error.txt");
   } catch (const std::exception& error) {

@@ -29,6 +29,14 @@ TEST(CliTest, SimulateThenFitWritesEveryOutput) {
   for (const auto& entry : fs::directory_iterator(dir + "/fit")) {
     EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos);
   }
+  // The report's footer: the version, when, and the command line.
+  const std::string report = ReadText(dir + "/fit/report.html");
+  EXPECT_NE(report.find("<footer class=\"note\">Made by pfdm 0.1.0 on 20"),
+            std::string::npos);
+  EXPECT_NE(report.find(" UTC: <code>pfdm fit --points " + dir +
+                        "/phantom.csv --out " + dir + "/fit</code></footer>"),
+            std::string::npos)
+      << report.substr(report.find("<footer"));
   const nlohmann::json fit =
       nlohmann::json::parse(ReadText(dir + "/fit/fit.json"));
   ASSERT_EQ(fit["frames"].size(), 3u);

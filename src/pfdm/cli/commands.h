@@ -22,6 +22,10 @@ namespace pfdm {
 // used.
 constexpr int kExitImplausible = 3;
 
+// The command line pfdm was run with, shell-quoted where needed (for the
+// report's footer, FitAnalysis::made_by); set by main.
+const std::string& CommandLine();
+
 // Each returns the exit code; bad input throws InputError.
 int RunFit();
 int RunSimulate();

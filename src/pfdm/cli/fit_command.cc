@@ -11,6 +11,7 @@
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/verdict.h"
+#include "pfdm/util/version.h"
 
 namespace pfdm {
 
@@ -94,12 +95,14 @@ int RunFit() {
   CheckPlanesBelowApex(FLAGS_points, planes, fit);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
-  const FitAnalysis analysis = AnalyzeFit(
+  FitAnalysis analysis = AnalyzeFit(
       fit, planes,
       AnatomicalLayout(
           fit.ModelAt(0),
           RvInsertionFrom(FitSettingsFromFlags().rv_insertion, FLAGS_points)),
       ShowExtrapolatedFromFlags());
+  analysis.made_by = CommandLine();
+  analysis.made_utc = UtcMinuteNow();
   std::printf("segments: %s (%s)\n",
               analysis.layout.anatomical ? "AHA, anatomical" : "not anatomical",
               analysis.layout.anchor.c_str());

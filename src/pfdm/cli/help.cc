@@ -6,10 +6,8 @@
 #include "Eigen/Core"
 #include "ceres/version.h"
 #include "gflags/gflags.h"
+#include "pfdm/util/version.h"
 
-#ifndef PFDM_VERSION
-#define PFDM_VERSION "unknown"
-#endif
 #ifndef PFDM_BUILD_TYPE
 #define PFDM_BUILD_TYPE "unknown"
 #endif
@@ -245,7 +243,7 @@ HelpRequest ReadHelpRequest(int argc, const char* const* argv,
 
 std::string OverviewText(const std::vector<CommandHelp>& commands) {
   std::string text =
-      "pfdm " PFDM_VERSION
+      "pfdm " + std::string(PfdmVersion()) +
       ": fits deformable models with parameter functions (Park, Metaxas\n"
       "and Young, CVPR 1994) to tracked tags or contours of the left "
       "ventricle.\n\nusage: pfdm <command> [--flag=value ...]\n\ncommands:\n";
@@ -270,9 +268,10 @@ std::string CommandText(const CommandHelp& command) {
 }
 
 std::string VersionText() {
-  return std::string("pfdm " PFDM_VERSION " (") + PFDM_BUILD_TYPE + " build, " +
-         kCompiler + __VERSION__ + ", Ceres " CERES_VERSION_STRING +
-         ", Eigen " + std::to_string(EIGEN_WORLD_VERSION) + "." +
+  return "pfdm " + std::string(PfdmVersion()) + " (" + PFDM_BUILD_TYPE +
+         " build, " + kCompiler + __VERSION__ +
+         ", Ceres " CERES_VERSION_STRING + ", Eigen " +
+         std::to_string(EIGEN_WORLD_VERSION) + "." +
          std::to_string(EIGEN_MAJOR_VERSION) + "." +
          std::to_string(EIGEN_MINOR_VERSION) + ")\n";
 }

@@ -14,6 +14,24 @@
 namespace pfdm {
 namespace {
 
+std::string command_line;
+
+// argv as one line, each argument with a space or quote in single quotes.
+std::string QuotedCommandLine(int argc, char** argv) {
+  std::string line = "pfdm";
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg.find_first_of(" \t'\"$") != std::string::npos) {
+      std::string quoted = "'";
+      for (char c : arg)
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      arg = quoted + "'";
+    }
+    line += " " + arg;
+  }
+  return line;
+}
+
 struct Command {
   const char* name;
   int (*run)();
@@ -131,9 +149,13 @@ int AnswerHelpRequest(const HelpRequest& request,
 }
 
 }  // namespace
+
+const std::string& CommandLine() { return command_line; }
+
 }  // namespace pfdm
 
 int main(int argc, char** argv) {
+  pfdm::command_line = pfdm::QuotedCommandLine(argc, argv);
   const std::vector<pfdm::CommandHelp> help = pfdm::Help();
   const pfdm::HelpRequest request = pfdm::ReadHelpRequest(argc, argv, help);
   if (request.kind == pfdm::HelpRequest::kNoCommand) {

@@ -11,6 +11,7 @@
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
 #include "pfdm/util/verdict.h"
+#include "pfdm/util/version.h"
 
 namespace pfdm {
 namespace {
@@ -461,7 +462,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                     const FitOptions& options, const FitAnalysis& analysis) {
   const bool solid = fit.config.Solid();
   const bool cavity = analysis.volume_surface == "cavity";
-  json document = {{"pfdm_version", "0.1.0"},
+  json document = {{"pfdm_version", PfdmVersion()},
                    {"settings", Settings(points, fit, options)},
                    {"model", ModelSection(fit, analysis)},
                    {"quality", QualitySection(analysis)},

@@ -55,6 +55,10 @@ struct FitAnalysis {
   // Per frame: the fit's verdict (FrameFit::verdict) and the clinical
   // numbers' (JudgeClinical).
   std::vector<Verdict> verdicts;
+  // The report's footer: what made the fit (the command line, or "Python")
+  // and when (UtcMinuteNow); empty: no footer.  Set by the caller.
+  std::string made_by;
+  std::string made_utc;
 };
 
 // "cavity", "epicardial" or "midwall": see FitAnalysis::volume_surface.

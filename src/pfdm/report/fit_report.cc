@@ -10,6 +10,7 @@
 #include "pfdm/report/verdict_box.h"
 #include "pfdm/util/markup_escape.h"
 #include "pfdm/util/verdict.h"
+#include "pfdm/util/version.h"
 
 namespace pfdm {
 namespace {
@@ -405,6 +406,14 @@ std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
   return h.str();
 }
 
+// What made the report and when (FitAnalysis::made_by, made_utc).
+std::string Footer(const FitAnalysis& analysis) {
+  if (analysis.made_by.empty()) return "";
+  return "<footer class=\"note\">Made by pfdm " + std::string(PfdmVersion()) +
+         (analysis.made_utc.empty() ? "" : " on " + analysis.made_utc) +
+         ": <code>" + EscapeMarkup(analysis.made_by) + "</code></footer>\n";
+}
+
 }  // namespace
 
 std::string InlineSvg(const std::string& svg_document) {
@@ -424,7 +433,7 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   h << UntrackedNote(analysis);
   h << PlotSections(parameters_svg, cycle_svg, strain_svg)
     << FrameTable(fit, analysis) << RegionalSection(fit, analysis, bullseye_svg)
-    << "</body></html>\n";
+    << Footer(analysis) << "</body></html>\n";
   return h.str();
 }
 
