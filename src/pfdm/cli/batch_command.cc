@@ -82,7 +82,7 @@ std::string RunCase(const BatchCase& c, const std::string& out,
     WriteFitOutputs(
         dir, points, fit,
         AnalyzeFit(fit, planes, layout, ShowExtrapolatedFromFlags()), options,
-        VtkFormatFromFlags(), &plots);
+        VtkOutputFromFlags(), &plots);
     fs::remove(dir + "/error.txt");
     RemoveAbandonedTemporaries(dir, "error.txt");
   } catch (const std::exception& error) {
@@ -121,7 +121,7 @@ int RunBatch() {
   const ModelConfig config = ModelConfigFromFlags();
   const FitOptions options = FitOptionsFromFlags();
   BasePlanesFromFlags("");  // Checks --base_plane before any case.
-  VtkFormatFromFlags();
+  VtkOutputFromFlags();
   EnsureDirectory(FLAGS_out);
 
   std::atomic<size_t> next{0};

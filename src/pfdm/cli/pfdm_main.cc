@@ -30,7 +30,8 @@ const Command kCommands[] = {
     {"fit", RunFit,
      "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
      "[--solver direct|damped|integrator]",
-     "points out solver vtk_format base_plane extrapolated rv_insertion " +
+     "points out solver vtk_format vtk_precision base_plane extrapolated "
+     "rv_insertion " +
          kFitFlags},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
@@ -42,7 +43,8 @@ const Command kCommands[] = {
      "points out trajectory_per_decade " + kFitFlags},
     {"batch", RunBatch,
      "--manifest cases.csv --out DIR [--jobs N] [--shard i/n]: fits a cohort",
-     "manifest out jobs shard solver vtk_format base_plane extrapolated " +
+     "manifest out jobs shard solver vtk_format vtk_precision base_plane "
+     "extrapolated " +
          kFitFlags},
     {"mesh-points", RunMeshPoints,
      "--mesh FILE|DIR --out FILE.csv [--mesh_filter S] [--label 0] "
