@@ -33,6 +33,7 @@
 #include "pfdm/fit/fit_options.h"
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/phantom/phantom.h"
+#include "thread_cpu.h"
 
 namespace pfdm {
 namespace {
@@ -116,7 +117,9 @@ void BM_FitFrame(benchmark::State& state) {
   std::optional<PinnedToThisCpu> pinned;
   if (options.solver.num_threads == 1) pinned.emplace();
   const double rate = MeasureMatrixMultiplyRate();
+  const CpuSnapshot cpu_start = TakeCpuSnapshot();
   const SequenceFit fit = TimedFits(state, phantom.points, options);
+  CountThreadCpu(cpu_start, state);
   pinned.reset();
   const FrameFit& frame = fit.frames[1];  // Tracked: one solve.
   const double iterations = std::max(frame.iterations, 1);

@@ -6,7 +6,8 @@
 // frames' mean, the tracked frame's minimizer time, the analysis (the
 // clinical numbers, AnalyzeFit, which WriteFitOutputs runs first) apart
 // from the writing, and the ratios the README quotes: frame 0 over a
-// tracked frame, outputs' share of the job.
+// tracked frame, outputs' share of the job; and the CPU each thread got and
+// whether other processes were busy (thread_cpu.h).
 #include <sys/resource.h>
 
 #include <chrono>
@@ -26,6 +27,7 @@
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/atomic_file.h"
+#include "thread_cpu.h"
 
 namespace pfdm {
 namespace {
@@ -58,14 +60,17 @@ std::string ScratchFolder(const std::string& name) {
 
 // Times one job on the points at `path` and fills the state's counters.
 void RunJob(benchmark::State& state, const std::string& path,
-            const std::string& contours, int num_threads) {
+            const std::string& contours, int num_threads,
+            const VtkOutput& vtk_output = VtkOutput()) {
   const std::string out = ScratchFolder("out");
   FitOptions options;
   options.solver.num_threads = num_threads;
   double read = 0, frame0 = 0, tracked = 0, tracked_minimizer = 0, write = 0,
          correspondence0 = 0, job_cpu = 0, write_cpu = 0, analysis = 0;
   int num_tracked = 0;
+  CpuSnapshot cpu_start;
   for (auto _ : state) {
+    cpu_start = TakeCpuSnapshot();
     const double job_cpu_start = CpuSeconds();
     auto start = std::chrono::steady_clock::now();
     const PointSequence points = ReadPoints(path, "auto", contours);
@@ -78,7 +83,7 @@ void RunJob(benchmark::State& state, const std::string& path,
     analysis = SecondsSince(start);
     start = std::chrono::steady_clock::now();
     const double write_cpu_start = CpuSeconds();
-    WriteFitOutputs(out, points, fit, fit_analysis, options, VtkFormat::kBinary,
+    WriteFitOutputs(out, points, fit, fit_analysis, options, vtk_output,
                     &plots);
     write = SecondsSince(start);
     write_cpu = CpuSeconds() - write_cpu_start;
@@ -92,6 +97,7 @@ void RunJob(benchmark::State& state, const std::string& path,
       tracked_minimizer += fit.frames[t].minimizer_seconds;
     }
   }
+  CountThreadCpu(cpu_start, state);
   const double job = read + frame0 + tracked + analysis + write;
   const double per_tracked = tracked / std::max(num_tracked, 1);
   state.counters["job_ms"] = 1e3 * job;
@@ -132,6 +138,29 @@ BENCHMARK(BM_PhantomJob)
     ->Iterations(1)
     ->Repetitions(3)
     ->ReportAggregatesOnly(true);
+
+// The outputs as the default writes them (0: one binary .vtp per frame,
+// float32) and as pfdm wrote them before (1: .vtk and .vtp, doubles), at
+// 100,000 tags x 5 frames and a million.  Args: tags, outputs.
+void BM_OutputsJob(benchmark::State& state) {
+  PhantomOptions phantom_options;
+  phantom_options.num_points = static_cast<int>(state.range(0));
+  phantom_options.num_frames = 5;
+  const std::string path = ScratchFolder("phantom") + "/points_" +
+                           std::to_string(phantom_options.num_points) + ".csv";
+  if (!std::filesystem::exists(path)) {
+    WriteFileAtomically(path, ToPointsCsv(MakePhantom(phantom_options).points));
+  }
+  RunJob(
+      state, path, "", 1,
+      state.range(1) == 0 ? VtkOutput() : VtkOutputFromNames("both", "double"));
+}
+BENCHMARK(BM_OutputsJob)
+    ->ArgNames({"tags", "outputs"})
+    ->ArgsProduct({{100000, 1000000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(1);
 
 // biv-me patient 1, LV endocardium: every frame untracked.
 void BM_BivMeJob(benchmark::State& state) {

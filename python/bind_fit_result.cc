@@ -10,7 +10,7 @@
 #include "fit_result.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/fit_settings.h"
-#include "pfdm/io/vtk_writer.h"
+#include "pfdm/io/vtk_output.h"
 #include "pfdm/report/gnuplot.h"
 #include "pybind11/stl.h"
 #include "python_conversions.h"
@@ -55,9 +55,10 @@ py::object EjectionFraction(const FitResult& result) {
 
 // What `pfdm fit --out` writes; the GIL released once the arguments are read.
 void WriteFitFiles(const FitResult& result, const py::object& out,
-                   const std::string& vtk_format) {
+                   const std::string& vtk_format,
+                   const std::string& vtk_precision) {
   const std::string dir = PathString(out);
-  const VtkFormat format = VtkFormatFromName(vtk_format);
+  const VtkOutput format = VtkOutputFromNames(vtk_format, vtk_precision);
   py::gil_scoped_release release;
   CheckFitOutputFolder(dir, result.points.source);
   SvgRendering plots;
@@ -152,11 +153,13 @@ void BindFitResult(py::module_& m) {
   DefFitJson(fit);
   fit.def("write", &WriteFitFiles, py::arg("out"), py::kw_only(),
           py::arg("vtk_format") = FitSettings().vtk_format,
+          py::arg("vtk_precision") = FitSettings().vtk_precision,
           "Writes the files `pfdm fit --out` writes into folder out "
           "(fit.json, parameters.csv, parameters.svg, report.html, "
-          "frame_NNN.vtk and .vtp, fit.pvd), each whole or not at all, "
-          "fit.json last; vtk_format 'binary' (legacy BINARY, XML appended "
-          "raw) or 'ascii' as `--vtk_format`.")
+          "frame_NNN.vtp and fit.pvd by default), each whole or not at all, "
+          "fit.json last; vtk_format as `--vtk_format` (vtp, vtk or both; "
+          "binary or ascii: 'both,ascii'), vtk_precision as "
+          "`--vtk_precision` (float or double).")
       .def("__repr__", &FitRepr);
 }
 

@@ -50,9 +50,9 @@ void BindReadMeshPoints(py::module_& m) {
       py::arg("cap_surfaces") = mesh_defaults.cap_surfaces,
       "Reads a PointSequence: the vertices of corresponding meshes as tracked "
       "points (id = vertex "
-      "index), as `pfdm mesh-points` reads them: a folder of .obj or .vtk "
-      "files (one frame each, name order), a legacy .vtk polydata (ASCII or "
-      "binary) or the CAP mean_shape.csv.");
+      "index), as `pfdm mesh-points` reads them: a folder of .obj, .vtk or "
+      ".vtp files (one frame each, name order; pfdm's own output), a legacy "
+      ".vtk polydata (ASCII or binary), a .vtp or the CAP mean_shape.csv.");
 }
 
 // frames or tags as an int for CheckPhantomOptions, which names the flag

@@ -32,12 +32,12 @@ if command -v xvfb-run > /dev/null; then
   fi
 fi
 # ParaView's legacy files of frame 0 read back by pfdm mesh-points as pfdm's
-# own frame_000.vtk does: the same vertices and the same measures (the
-# binary file's doubles exactly; the text's to the printed digits).
+# own frame_000.vtp does: the same vertices and the same measures (the
+# binary file's floats exactly; the text's to the printed digits).
 measure() {
   "$build/pfdm" mesh-points --mesh "$1" --label is_data=0 --out "$2" | tail -n 1
 }
-own=$(measure "$out/fit/frame_000.vtk" "$out/own.csv")
+own=$(measure "$out/fit/frame_000.vtp" "$out/own.csv")
 for file_type in binary ascii; do
   theirs=$(measure "$out/legacy_$file_type.vtk" "$out/$file_type.csv")
   if [ "$theirs" != "$own" ]; then

@@ -33,6 +33,8 @@ SPARSE_LIBRARIES = {0: "SuiteSparse", 1: "CXSparse", 2: "Eigen"}
 SOLVERS = {0: "direct", 1: "damped (dt = 1,000)", 2: "integrator"}
 BATCH_CASES = 6
 BATCH_TAGS = 2000
+# As benchmarks/thread_cpu.h's kIdleOthersCores.
+IDLE_OTHERS_CORES = 0.1
 
 
 def run_benchmarks(build, results, names):
@@ -139,6 +141,60 @@ def describe(document, what):
              c.get("host_name", "?"), c.get("num_cpus", "?"), load_avg))
 
 
+def means(document):
+    """{run name: mean row}, for counters where any repetition counts."""
+    return {re.sub(r"/(iterations|repeats|real_time).*$", "", b["run_name"]): b
+            for b in document["benchmarks"]
+            if b.get("aggregate_name") == "mean"}
+
+
+def speedup_table(document, prefix, time_counter):
+    """Two threads against one, per configuration of the benchmarks named
+    prefix*: each run's busiest two threads' CPU (a share of a core) and
+    the cores' worth of CPU other processes used meanwhile (thread_cpu.h,
+    from /proc/stat less the benchmark's own CPU, the mean over the
+    repetitions).  The speed-up is only given when both runs had the
+    machine to themselves (others under IDLE_OTHERS_CORES): with the
+    second core busy, two threads' time says nothing about threads."""
+    found = medians(document)
+    mean = means(document)
+    pairs = {}
+    for key, b in found.items():
+        if not key.startswith(prefix) or "thread1_cpu_share" not in b:
+            continue
+        a = args(key)
+        if "threads" not in a:
+            continue
+        rest = re.sub(r"/threads:\d+", "", key)
+        pairs.setdefault(rest, {})[a["threads"]] = (b, mean.get(key, b))
+    rows = []
+    for rest, runs in sorted(pairs.items()):
+        if 1 not in runs or 2 not in runs:
+            continue
+        (one, one_mean), (two, two_mean) = runs[1], runs[2]
+        busy = max(one_mean["others_cores"], two_mean["others_cores"])
+        verdict = ("%.2fx" % (one[time_counter] / two[time_counter])
+                   if busy < IDLE_OTHERS_CORES else
+                   "not shown: other processes used %.2f cores" % busy)
+        rows.append([re.sub(r"^BM_\w+/", "", rest) or "-",
+                     number(one[time_counter]), number(two[time_counter]),
+                     "%.2f, %.2f" % (two["thread1_cpu_share"],
+                                     two["thread2_cpu_share"]),
+                     "%.2f, %.2f" % (one_mean["others_cores"],
+                                     two_mean["others_cores"]),
+                     verdict])
+    if not rows:
+        return ""
+    return ("\n\nTwo threads against one: the CPU the 2-thread run's two "
+            "busiest threads got (1 = a whole core), the cores' worth other "
+            "processes used during each run (from /proc/stat less the "
+            "benchmark's own CPU), and the speed-up only where both runs "
+            "had other processes under %.1f core:\n\n" % IDLE_OTHERS_CORES +
+            table(["configuration", "1 thread ms", "2 threads ms",
+                   "2-thread run: CPU of its threads",
+                   "others' cores (1 thread, 2 threads)", "speed-up"], rows))
+
+
 def fit_table(document):
     rows = []
     for key, b in medians(document).items():
@@ -158,7 +214,8 @@ def fit_table(document):
     return table(["points", "threads", "linear solver", "sparse library",
                   "Jacobian", "ms/iter", "evaluation ms/iter",
                   "linear ms/iter", "frame ms", "x floor", "iterations"],
-                 [r[-1] for r in rows])
+                 [r[-1] for r in rows]) + \
+        speedup_table(document, "BM_FitFrame", "frame_ms")
 
 
 def cost_table(document):
@@ -191,8 +248,11 @@ def job_table(document, batch):
                 number(b.get("evaluations_per_point", float("nan")), 2)])
             continue
         case = ("phantom, {:,} tags x 5 frames".format(a["tags"])
-                if key.startswith("BM_PhantomJob") else
+                if key.startswith(("BM_PhantomJob", "BM_OutputsJob")) else
                 "biv-me patient 1, LV endo contours, 25 frames")
+        if key.startswith("BM_OutputsJob"):
+            case += (", outputs as before (.vtk and .vtp, doubles)"
+                     if a["outputs"] else ", default outputs (.vtp, float32)")
         rows.append([case, str(a.get("threads", a.get("arg", 1))),
                      number(b["job_ms"]), number(b["read_ms"]),
                      "%s (%s)" % (number(b["frame0_ms"]),
@@ -214,6 +274,7 @@ def job_table(document, batch):
                   "frame 0 / later frame", "outputs share",
                   "outputs share of CPU time",
                   "analysis and outputs share"], rows)
+    text += speedup_table(document, "BM_PhantomJob", "job_ms")
     if closest:
         text += ("\n\nFrame 0's first closest-point search alone (20,000 "
                  "tags against the initialized model):\n\n")

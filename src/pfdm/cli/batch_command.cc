@@ -84,7 +84,7 @@ std::string RunCase(const BatchCase& c, const std::string& out,
         AnalyzeFit(fit, planes, layout, ShowExtrapolatedFromFlags());
     analysis.made_by = CommandLine() + " (case " + c.name + ")";
     analysis.made_utc = UtcMinuteNow();
-    WriteFitOutputs(dir, points, fit, analysis, options, VtkFormatFromFlags(),
+    WriteFitOutputs(dir, points, fit, analysis, options, VtkOutputFromFlags(),
                     &plots);
     fs::remove(dir + "/error.txt");
     RemoveAbandonedTemporaries(dir, "error.txt");
@@ -132,7 +132,7 @@ int RunBatch() {
   const ModelConfig config = ModelConfigFromFlags();
   const FitOptions options = FitOptionsFromFlags();
   BasePlanesFromFlags("");  // Checks --base_plane before any case.
-  VtkFormatFromFlags();
+  VtkOutputFromFlags();
   EnsureDirectory(FLAGS_out);
 
   std::atomic<size_t> next{0};

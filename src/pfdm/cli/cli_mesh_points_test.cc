@@ -83,11 +83,12 @@ TEST(CliMeshPointsTest, LabelNamesItsArrayWhenThereAreSeveral) {
             "frame,id,x,y,z\n0,0,0,0,0\n0,1,1,0,0\n");
 }
 
-// The meshes `pfdm fit` writes (binary legacy VTK by default) read back as
-// frames of material points: the model's vertices (is_data = 0) keep their
-// count over frames, and the volume the meshes enclose is the mid-wall
-// volume fit.json reports, measured a second way (on the faceted surface:
-// within 1 %).  Written as text instead, the same volumes to 0.01 ml.
+// The meshes `pfdm fit` writes (binary .vtp of float32 by default; legacy
+// VTK as text on request) read back as frames of material points: the model's
+// vertices (is_data = 0) keep their count over frames, and the volume the
+// meshes enclose is the mid-wall volume fit.json reports, measured a second way
+// (on the faceted surface: within 1 %).  Written as legacy text instead, the
+// same volumes to 0.01 ml.
 TEST(CliMeshPointsTest, FitMeshesReadBackAsFramesOfTheirVolume) {
   const std::string dir = ScratchDirectory("mesh_points_fit");
   ASSERT_EQ(
@@ -95,22 +96,22 @@ TEST(CliMeshPointsTest, FitMeshesReadBackAsFramesOfTheirVolume) {
           .exit_code,
       0);
   std::vector<double> volumes[2];
-  for (const std::string format : {"binary", "ascii"}) {
-    const std::string out = dir + "/fit_" + format;
+  for (const std::string format : {"vtp", "vtk,ascii"}) {
+    const std::string out = dir + "/fit_" + format.substr(0, 3);
     const CommandResult fit =
         RunPfdm("fit --points " + dir + "/phantom.csv --vtk_format " + format +
                 " --out " + out);
     ASSERT_EQ(fit.exit_code, 0) << fit.error;
     const CommandResult run =
         RunPfdm("mesh-points --mesh " + out + " --label is_data=0 --out " +
-                dir + "/points_" + format + ".csv");
+                dir + "/points_" + format.substr(0, 3) + ".csv");
     ASSERT_EQ(run.exit_code, 0) << run.error;
     EXPECT_NE(run.output.find("(3 frames x "), std::string::npos) << run.output;
     const nlohmann::json json =
         nlohmann::json::parse(ReadText(out + "/fit.json"));
     std::istringstream lines(run.output);
     std::string line;
-    std::vector<double>& measured = volumes[format == "ascii"];
+    std::vector<double>& measured = volumes[format != "vtp"];
     while (std::getline(lines, line)) {
       int frame;
       double volume;
@@ -125,12 +126,12 @@ TEST(CliMeshPointsTest, FitMeshesReadBackAsFramesOfTheirVolume) {
   }
   // Without the label the data points would join the vertices.
   const CommandResult unlabelled =
-      RunPfdm("mesh-points --mesh " + dir + "/fit_binary --out " + dir +
+      RunPfdm("mesh-points --mesh " + dir + "/fit_vtp --out " + dir +
               "/unlabelled.csv");
   EXPECT_EQ(unlabelled.exit_code, 1);
   EXPECT_EQ(unlabelled.error,
             "pfdm: error: " + dir +
-                "/fit_binary/frame_000.vtk: a pfdm frame with its data points "
+                "/fit_vtp/frame_000.vtp: a pfdm frame with its data points "
                 "(is_data = 1); --label is_data=0 keeps the model's "
                 "vertices\n");
   EXPECT_FALSE(std::filesystem::exists(dir + "/unlabelled.csv"));

@@ -207,7 +207,7 @@ TEST(LvPhantomCliTest, ARobustLossRecordsItsScaleAndWeights) {
   ASSERT_EQ(run.exit_code, 0) << run.error;
   const std::string fit =
       "fit --local off --wall midwall --points " + dir + "/lv.csv --out " + dir;
-  run = RunPfdm(fit + "/auto --loss cauchy");
+  run = RunPfdm(fit + "/auto --loss cauchy --vtk_format both");
   ASSERT_EQ(run.exit_code, 0) << run.error;
   nlohmann::json settings =
       nlohmann::json::parse(ReadText(dir + "/auto/fit.json"))["settings"];
@@ -227,7 +227,7 @@ TEST(LvPhantomCliTest, ARobustLossRecordsItsScaleAndWeights) {
       nlohmann::json::parse(ReadText(dir + "/fixed/fit.json"))["settings"];
   EXPECT_EQ(settings["loss_scale"].get<double>(), 2.0);
   EXPECT_EQ(settings["loss_scale_mm"].get<double>(), 2.0);
-  run = RunPfdm(fit + "/none");
+  run = RunPfdm(fit + "/none --vtk_format vtk");
   ASSERT_EQ(run.exit_code, 0) << run.error;
   settings =
       nlohmann::json::parse(ReadText(dir + "/none/fit.json"))["settings"];

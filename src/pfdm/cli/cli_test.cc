@@ -22,10 +22,12 @@ TEST(CliTest, SimulateThenFitWritesEveryOutput) {
   ASSERT_TRUE(fs::exists(dir + "/phantom_truth.csv"));
   run = RunPfdm("fit --points " + dir + "/phantom.csv --out " + dir + "/fit");
   ASSERT_EQ(run.exit_code, 0) << run.error;
-  for (const char* name : {"fit.json", "parameters.csv", "frame_000.vtk",
-                           "frame_001.vtk", "frame_002.vtk"}) {
+  for (const char* name : {"fit.json", "parameters.csv", "fit.pvd",
+                           "frame_000.vtp", "frame_001.vtp", "frame_002.vtp"}) {
     EXPECT_TRUE(fs::exists(dir + "/fit/" + name)) << name;
   }
+  // One format by default; the legacy .vtk on request (--vtk_format).
+  EXPECT_FALSE(fs::exists(dir + "/fit/frame_000.vtk"));
   for (const auto& entry : fs::directory_iterator(dir + "/fit")) {
     EXPECT_EQ(entry.path().string().find(".tmp."), std::string::npos);
   }

@@ -36,12 +36,13 @@ int RunMeshPoints();
 
 // From the shared flags (--points --format --contours; --model --knots;
 // --smoothness --prior --loss --loss_scale --threads --apex --base --solver
-// ...; --base_plane --vtk_format), all of them FitSettings' (fit_flags.cc).
+// ...; --base_plane --vtk_format --vtk_precision), all of them FitSettings'
+// (fit_flags.cc).
 FitSettings FitSettingsFromFlags();
 PointSequence PointsFromFlags();
 ModelConfig ModelConfigFromFlags();
 FitOptions FitOptionsFromFlags();
-VtkFormat VtkFormatFromFlags();
+VtkOutput VtkOutputFromFlags();
 // --extrapolated: AnalyzeFit's show_extrapolated.
 bool ShowExtrapolatedFromFlags();
 // Per frame, the plane closing the cavity for --base_plane; "" only checks

@@ -79,7 +79,7 @@ int RunFit() {
   const FitOptions options = FitOptionsFromFlags();
   BasePlanesFromFlags("");  // Checks the flag before the fit.
   ParseRvInsertion(FitSettingsFromFlags().rv_insertion);  // Likewise.
-  const VtkFormat vtk_format = VtkFormatFromFlags();
+  const VtkOutput vtk_output = VtkOutputFromFlags();
   // Before the minutes of work, not after them.
   CheckFitOutputFolder(FLAGS_out, FLAGS_points);
   const PointSequence points = PointsFromFlags();
@@ -106,14 +106,17 @@ int RunFit() {
   std::printf("segments: %s (%s)\n",
               analysis.layout.anatomical ? "AHA, anatomical" : "not anatomical",
               analysis.layout.anchor.c_str());
-  WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format,
+  WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_output,
                   &plots);
   const int exit_code = ReportQuality(fit, analysis);
   ReportVolumes(analysis);
   std::printf(
-      "wrote %s/fit.json, parameters.csv, parameters.svg, report.html, "
-      "frame_*.vtk, frame_*.vtp, fit.pvd\n",
-      FLAGS_out.c_str());
+      "wrote %s/fit.json, parameters.csv, parameters.svg, report.html, %s\n",
+      FLAGS_out.c_str(),
+      vtk_output.files == VtkFiles::kVtp ? "frame_*.vtp, fit.pvd"
+      : vtk_output.files == VtkFiles::kVtk
+          ? "frame_*.vtk"
+          : "frame_*.vtk, frame_*.vtp, fit.pvd");
   return exit_code;
 }
 

@@ -92,9 +92,14 @@ DEFINE_string(uncertainty, kDefaults.uncertainty.c_str(),
               "each frame's parameter covariance, a standard deviation per "
               "knot value in parameters.csv: on or off");
 DEFINE_string(vtk_format, kDefaults.vtk_format.c_str(),
-              "fit, batch: frame_NNN.vtk and .vtp as binary (legacy BINARY, "
-              "XML appended raw; exact, no formatting) or ascii (text, 9 "
-              "digits)");
+              "fit, batch: each frame as vtp (frame_NNN.vtp, with fit.pvd), "
+              "vtk (legacy frame_NNN.vtk) or both, binary (legacy BINARY, "
+              "XML appended raw) or ascii (text), comma-separated: "
+              "'vtk,ascii'");
+DEFINE_string(vtk_precision, kDefaults.vtk_precision.c_str(),
+              "fit, batch: the frames' points and values as float (float32: "
+              "a micrometre on a heart, half the bytes) or double (exact); "
+              "flags and weights are float32 either way");
 DEFINE_string(base_plane, kDefaults.base_plane.c_str(),
               "fit, batch: where the cavity volume is "
               "closed: auto (the mitral valve plane when biv-me guide points "
@@ -141,6 +146,7 @@ FitSettings FitSettingsFromFlags() {
   s.local_stiffness = FLAGS_local_stiffness;
   s.uncertainty = FLAGS_uncertainty;
   s.vtk_format = FLAGS_vtk_format;
+  s.vtk_precision = FLAGS_vtk_precision;
   return s;
 }
 
@@ -157,7 +163,7 @@ FitOptions FitOptionsFromFlags() {
   return FitOptionsFrom(FitSettingsFromFlags());
 }
 
-VtkFormat VtkFormatFromFlags() { return VtkFormatFrom(FitSettingsFromFlags()); }
+VtkOutput VtkOutputFromFlags() { return VtkOutputFrom(FitSettingsFromFlags()); }
 
 std::vector<BasePlane> BasePlanesFromFlags(const std::string& points) {
   return BasePlanesFrom(FitSettingsFromFlags(), points);

@@ -17,14 +17,14 @@ const pfdm::MeshSettings kDefaults;
 }  // namespace
 
 DEFINE_string(mesh, "",
-              "mesh-points: an .obj or legacy .vtk file (ASCII or binary), "
-              "a folder of .obj or .vtk files (one frame each, in name "
-              "order) or a CAP mean_shape.csv");
+              "mesh-points: an .obj, legacy .vtk (ASCII or binary) or .vtp "
+              "file, a folder of .obj, .vtk or .vtp files (one frame each, in "
+              "name order; pfdm fit's --out) or a CAP mean_shape.csv");
 DEFINE_string(mesh_filter, "",
               "mesh-points: in a folder, only the files "
               "whose name contains this");
 DEFINE_string(mesh_format, kDefaults.mesh_format.c_str(),
-              "mesh-points: obj, vtk, cap-mean or auto");
+              "mesh-points: obj, vtk, vtp, cap-mean or auto");
 DEFINE_string(label, "",
               "mesh-points: VTK only, keep the points whose point "
               "scalar equals this (e.g. 1 = endocardium, 0 = epicardium in "

@@ -52,7 +52,8 @@ const Command kCommands[] = {
     {"fit", RunFit,
      "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
      "[--solver direct|damped|integrator]",
-     "points out solver vtk_format base_plane extrapolated rv_insertion " +
+     "points out solver vtk_format vtk_precision base_plane extrapolated "
+     "rv_insertion " +
          kFitFlags,
      "fits the model to tags or contours over the cycle: functions, clinical "
      "numbers, report"},
@@ -69,7 +70,8 @@ const Command kCommands[] = {
      "fits with the direct, damped and integrator solvers side by side"},
     {"batch", RunBatch,
      "--manifest cases.csv --out DIR [--jobs N] [--shard i/n]",
-     "manifest out jobs shard solver vtk_format base_plane extrapolated " +
+     "manifest out jobs shard solver vtk_format vtk_precision base_plane "
+     "extrapolated " +
          kFitFlags,
      "fits a cohort: one case per manifest row, a merged summary.csv"},
     {"mesh-points", RunMeshPoints,

@@ -249,6 +249,8 @@ VtkPolyData FramePolyData(const Model& model, const Frame& frame,
                         {"w", w_values},
                         {"twist_deg", twist},
                         {"is_data", is_data}};
+  // For display: a flag, a weight and degrees to see the twist by.
+  data.float32_scalars = {"is_data", "loss_weight", "twist_deg"};
   if (!fit.loss_weights.empty()) {
     // The surface's vertices weigh 1, as data points the loss trusts.
     std::vector<double> weights(data.points.size() - frame.points.size(), 1.0);
@@ -269,16 +271,16 @@ std::string FrameVtk(const Model& model, const Frame& frame,
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
                      const std::vector<BasePlane>& base_planes,
-                     VtkFormat vtk_format) {
+                     const VtkOutput& vtk_output) {
   // gnuplot starts while the fit is analysed.
   SvgRendering plots;
   WriteFitOutputs(dir, points, fit, AnalyzeFit(fit, base_planes), options,
-                  vtk_format, &plots);
+                  vtk_output, &plots);
 }
 
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitAnalysis& analysis,
-                     const FitOptions& options, VtkFormat vtk_format,
+                     const FitOptions& options, const VtkOutput& vtk_output,
                      SvgRendering* plots) {
   // The frames' meshes are formatted and written while gnuplot renders the
   // plots (one gnuplot for the four: its start-up, not the plotting, was
@@ -299,11 +301,12 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     timesteps.emplace_back(timed ? fit.time_ms[frame.frame] : frame.frame,
                            std::string(name) + ".vtp");
   }
-  std::vector<std::string> names = {
-      "parameters.csv", "fit.pvd", "parameters.svg", "report.html", "fit.json"};
+  std::vector<std::string> names = {"parameters.csv", "parameters.svg",
+                                    "report.html", "fit.json"};
+  if (vtk_output.Vtp()) names.push_back("fit.pvd");
   for (const std::string& name : frame_names) {
-    names.push_back(name + ".vtk");
-    names.push_back(name + ".vtp");
+    if (vtk_output.Vtk()) names.push_back(name + ".vtk");
+    if (vtk_output.Vtp()) names.push_back(name + ".vtp");
   }
 
   EnsureDirectory(dir);
@@ -326,11 +329,18 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
       const VtkPolyData data =
           FramePolyData(analysis.models[t], points.frames[t], fit.frames[t]);
       const std::string& name = frame_names[t];
-      write(name + ".vtk", ToLegacyVtk(data, "pfdm " + name, vtk_format));
-      write(name + ".vtp", ToVtkXmlPolyData(data, vtk_format));
+      if (vtk_output.Vtk()) {
+        write(name + ".vtk",
+              ToLegacyVtk(data, "pfdm " + name, vtk_output.format,
+                          vtk_output.precision));
+      }
+      if (vtk_output.Vtp()) {
+        write(name + ".vtp",
+              ToVtkXmlPolyData(data, vtk_output.format, vtk_output.precision));
+      }
     }
     write("parameters.csv", ParametersCsv(analysis.models, &fit));
-    write("fit.pvd", PvdCollection(timesteps));
+    if (vtk_output.Vtp()) write("fit.pvd", PvdCollection(timesteps));
     const std::string json = FitJson(points, fit, options, analysis);
     const std::vector<std::string> svgs = plots->Finish();
     write("parameters.svg", svgs[0]);

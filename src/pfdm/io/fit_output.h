@@ -9,7 +9,7 @@
 
 #include "pfdm/fit/fit_options.h"
 #include "pfdm/fit/stages/sequence_fit.h"
-#include "pfdm/io/vtk_writer.h"
+#include "pfdm/io/vtk_output.h"
 #include "pfdm/model/model.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
@@ -77,12 +77,12 @@ void CheckFitOutputFolder(const std::string& dir,
 // complete set (pfdm batch resumes on it), is removed, then every other file
 // and temporary of an older set (stale frames of a longer fit too), then the
 // new files are written, each atomically, and fit.json last.  A failed write
-// removes what it wrote. base_planes as for AnalyzeFit; vtk_format for the .vtk
-// and .vtp files.
+// removes what it wrote. base_planes as for AnalyzeFit; vtk_output says
+// which of each frame's .vtp (with fit.pvd) and .vtk are written, and how.
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitOptions& options,
                      const std::vector<BasePlane>& base_planes = {},
-                     VtkFormat vtk_format = VtkFormat::kBinary);
+                     const VtkOutput& vtk_output = VtkOutput());
 
 // The same from the fit's analysis, made by the caller, with the plots
 // rendered by `plots`, which the caller started (its Render not called):
@@ -90,7 +90,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
 // libraries) overlaps the fit instead of adding to the outputs.
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitAnalysis& analysis,
-                     const FitOptions& options, VtkFormat vtk_format,
+                     const FitOptions& options, const VtkOutput& vtk_output,
                      SvgRendering* plots);
 
 }  // namespace pfdm

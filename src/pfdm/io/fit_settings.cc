@@ -308,8 +308,8 @@ void CheckOptionsAgainstPoints(const FitOptions& options,
   }
 }
 
-VtkFormat VtkFormatFrom(const FitSettings& settings) {
-  return VtkFormatFromName(settings.vtk_format);
+VtkOutput VtkOutputFrom(const FitSettings& settings) {
+  return VtkOutputFromNames(settings.vtk_format, settings.vtk_precision);
 }
 
 std::vector<BasePlane> BasePlanesFrom(const FitSettings& settings,

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "pfdm/fit/fit_options.h"
-#include "pfdm/io/vtk_writer.h"
+#include "pfdm/io/vtk_output.h"
 #include "pfdm/model/base_plane.h"
 #include "pfdm/model/model.h"
 #include "pfdm/solvers/solver.h"
@@ -57,7 +57,8 @@ struct FitSettings {
   // Each frame's parameter covariance (FitOptions::uncertainty): on or off.
   std::string uncertainty = FitOptions().uncertainty ? "on" : "off";
   // The outputs.
-  std::string vtk_format = "binary";
+  std::string vtk_format = "vtp";  // VtkOutputFromNames.
+  std::string vtk_precision = "float";
 };
 
 // Each throws InputError naming the flag at fault, its value and what it
@@ -74,7 +75,7 @@ FitOptions FitOptionsForEverySolver(const FitSettings& settings);
 // the farthest of those points from it.  Throws InputError naming the flag.
 void CheckOptionsAgainstPoints(const FitOptions& options,
                                const PointSequence& points);
-VtkFormat VtkFormatFrom(const FitSettings& settings);
+VtkOutput VtkOutputFrom(const FitSettings& settings);
 // Per frame, the plane closing the cavity: none for base_plane "rim", the
 // mitral valve planes of the guide points at `points` for "auto" (none
 // when they have none), whatever the file's name when settings.format says

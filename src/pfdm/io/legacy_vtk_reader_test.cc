@@ -124,6 +124,44 @@ TEST(LegacyVtkReaderTest, BinaryGivesBackWhatPfdmWrote) {
   EXPECT_EQ(text.mesh.triangles, data.triangles);
 }
 
+// pfdm's float precision, binary and text: each point the float nearest the
+// double written, is_data (float32 at any precision) exact.
+TEST(LegacyVtkReaderTest, FloatPrecisionGivesBackTheNearestFloats) {
+  VtkPolyData data;
+  data.points = {{0.1, -2.5, 3e-7}, {1.0 / 3, 4, 5}, {-6, 7.25, 8}};
+  data.triangles = {{0, 1, 2}};
+  data.point_scalars = {{"u", {0.5, -1, 1.0 / 7}}, {"is_data", {0, 0, 1}}};
+  data.float32_scalars = {"is_data"};
+  const std::string path = ScratchDirectory("vtk_float") + "/m.vtk";
+  for (VtkFormat format : {VtkFormat::kBinary, VtkFormat::kAscii}) {
+    const std::string text =
+        ToLegacyVtk(data, "pfdm frame 0", format, VtkPrecision::kFloat);
+    EXPECT_NE(text.find("POINTS 3 float\n"), std::string::npos);
+    EXPECT_NE(text.find("SCALARS is_data float 1"), std::string::npos);
+    WriteText(path, text);
+    const VtkMesh vtk = ReadLegacyVtkPolyData(path);
+    ASSERT_EQ(vtk.mesh.points.size(), 3u);
+    // Binary: the float itself; text: its shortest decimal, a double that
+    // rounds to the same float.
+    const auto as_written = [format](double value) {
+      return format == VtkFormat::kBinary ? value
+                                          : double{static_cast<float>(value)};
+    };
+    for (size_t i = 0; i < 3; ++i) {
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(as_written(vtk.mesh.points[i][k]),
+                  static_cast<float>(data.points[i][k]));
+      }
+    }
+    EXPECT_EQ(as_written(vtk.point_scalars.at("u")[2]),
+              static_cast<float>(1.0 / 7));
+    EXPECT_EQ(vtk.point_scalars.at("is_data"), (std::vector<double>{0, 0, 1}));
+  }
+  EXPECT_NE(ToLegacyVtk(data, "t", VtkFormat::kAscii, VtkPrecision::kDouble)
+                .find("SCALARS u double 1"),
+            std::string::npos);
+}
+
 // Other writers' binary files: float points, the classic int cell list,
 // unsigned char labels, a colour table; a title naming ASCII, and a binary
 // byte that is a line break (10) in the data, change nothing.

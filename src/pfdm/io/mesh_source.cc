@@ -8,6 +8,7 @@
 
 #include "pfdm/io/legacy_vtk_reader.h"
 #include "pfdm/io/mesh_reader.h"
+#include "pfdm/io/vtk_xml_reader.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/input_file.h"
 
@@ -148,14 +149,16 @@ std::vector<std::string> FrameFiles(const fs::path& path,
   return files;
 }
 
-// A folder's format: its meshes' extension, .obj where it has both.
+// A folder's format: its meshes' extension, .obj before .vtk before .vtp
+// (pfdm's own frames, written as both on request).
 std::string FolderFormat(const fs::path& path) {
-  bool vtk = false;
+  bool vtk = false, vtp = false;
   for (const auto& entry : fs::directory_iterator(path)) {
     if (entry.path().extension() == ".obj") return "obj";
     vtk = vtk || entry.path().extension() == ".vtk";
+    vtp = vtp || entry.path().extension() == ".vtp";
   }
-  return vtk ? "vtk" : "obj";
+  return vtk ? "vtk" : vtp ? "vtp" : "obj";
 }
 
 std::string MeshFormat(const std::string& path, const MeshSettings& settings) {
@@ -165,6 +168,7 @@ std::string MeshFormat(const std::string& path, const MeshSettings& settings) {
     format = fs::is_directory(p)       ? FolderFormat(p)
              : p.extension() == ".obj" ? "obj"
              : p.extension() == ".vtk" ? "vtk"
+             : p.extension() == ".vtp" ? "vtp"
              : p.extension() == ".csv" ? "cap-mean"
                                        : "";
     if (format.empty()) {
@@ -195,7 +199,8 @@ WallLayer MeshSurface(const std::string& path, const MeshSettings& settings) {
   const std::string format = MeshFormat(path, settings);
   if (format == "cap-mean") return WallNamed(Split(settings.cap_surfaces));
   // A label's number means what the mesh's maker chose.
-  if (!settings.label.empty() || (format != "obj" && format != "vtk")) {
+  if (!settings.label.empty() ||
+      (format != "obj" && format != "vtk" && format != "vtp")) {
     return WallLayer::kAnywhere;
   }
   std::vector<std::string> names;
@@ -214,10 +219,11 @@ std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
   if (format == "obj") {
     for (const std::string& file : FrameFiles(p, ".obj", settings.mesh_filter))
       frames.push_back(ReadObj(file));
-  } else if (format == "vtk") {
+  } else if (format == "vtk" || format == "vtp") {
     for (const std::string& file :
-         FrameFiles(p, ".vtk", settings.mesh_filter)) {
-      const VtkMesh vtk = ReadLegacyVtkPolyData(file);
+         FrameFiles(p, "." + format, settings.mesh_filter)) {
+      const VtkMesh vtk = format == "vtk" ? ReadLegacyVtkPolyData(file)
+                                          : ReadVtkXmlPolyData(file);
       if (settings.label.empty()) {
         CheckNotPfdmData(vtk, file);
         CheckOneSurface(vtk, file);
@@ -243,7 +249,7 @@ std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
     }
   } else {
     throw InputError("unknown --mesh_format '" + format +
-                     "' (expected obj, vtk, cap-mean or auto)");
+                     "' (expected obj, vtk, vtp, cap-mean or auto)");
   }
   if (frames.empty()) throw InputError(path + ": no frames");
   return frames;

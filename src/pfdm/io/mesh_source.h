@@ -1,5 +1,5 @@
 // Frames of meshes whose vertices correspond (pfdm mesh-points): a folder
-// of OBJ or legacy VTK files, one such file, or the CAP mean shape.
+// of OBJ, legacy VTK or VTK XML files, one such file, or the CAP mean shape.
 #ifndef PFDM_IO_MESH_SOURCE_H_
 #define PFDM_IO_MESH_SOURCE_H_
 
@@ -14,14 +14,15 @@ namespace pfdm {
 // pfdm mesh-points' settings under their flag names, with the flags'
 // defaults (the Python module's keyword arguments too).
 struct MeshSettings {
-  std::string mesh_format = "auto";  // obj, vtk, cap-mean or auto.
+  std::string mesh_format = "auto";  // obj, vtk, vtp, cap-mean or auto.
   std::string mesh_filter;  // In a folder, the file names containing it.
   std::string label;        // VTK: keep the points whose scalar is this.
   std::string cap_surfaces = "ED-endo,ES-endo";  // CAP: the frames.
 };
 
 // One mesh per frame: the .obj files of a folder in name order (or its .vtk
-// files, where it has no .obj or mesh_format is vtk), one .obj or .vtk
+// files, where it has no .obj or mesh_format is vtk, or its .vtp files,
+// where it has neither or mesh_format is vtp), one .obj, .vtk or .vtp
 // file, or the CAP surfaces listed (their faces from surface_face.csv beside
 // mean_shape.csv).  Throws InputError.
 std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,

@@ -1,5 +1,6 @@
 #include "pfdm/io/vtk_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
@@ -40,6 +41,15 @@ void AppendBigEndian(double value, std::string* out) {
   AppendBigEndian(bits, out);
 }
 
+void AppendBigEndian(float value, std::string* out) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &value, sizeof(bits));
+  const char bytes[4] = {static_cast<char>(bits >> 24),
+                         static_cast<char>(bits >> 16),
+                         static_cast<char>(bits >> 8), static_cast<char>(bits)};
+  out->append(bytes, 4);
+}
+
 void AppendBigEndian(int value, std::string* out) {
   const auto bits = static_cast<std::uint32_t>(value);
   const char bytes[4] = {static_cast<char>(bits >> 24),
@@ -57,6 +67,27 @@ VtkFormat VtkFormatFromName(const std::string& name) {
                    "' (expected ascii or binary)");
 }
 
+VtkPrecision VtkPrecisionFromName(const std::string& name) {
+  if (name == "float") return VtkPrecision::kFloat;
+  if (name == "double") return VtkPrecision::kDouble;
+  throw InputError("unknown --vtk_precision '" + name +
+                   "' (expected float or double)");
+}
+
+bool IsFloat32Array(const VtkPolyData& data, const std::string& name,
+                    VtkPrecision precision) {
+  return precision == VtkPrecision::kFloat ||
+         std::find(data.float32_scalars.begin(), data.float32_scalars.end(),
+                   name) != data.float32_scalars.end();
+}
+
+void AppendVtkNumber(float value, std::string* out) {
+  char buffer[32];
+  const std::to_chars_result end =
+      std::to_chars(buffer, buffer + sizeof(buffer), value);
+  out->append(buffer, end.ptr);
+}
+
 void AppendVtkNumber(double value, std::string* out) {
   char buffer[32];
   const std::to_chars_result end = std::to_chars(
@@ -72,7 +103,7 @@ void AppendVtkNumber(int value, std::string* out) {
 }
 
 std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title,
-                        VtkFormat format) {
+                        VtkFormat format, VtkPrecision precision) {
   const size_t n = data.points.size();
   const bool binary = format == VtkFormat::kBinary;
   CHECK_EQ(title.find('\n'), std::string::npos) << title;
@@ -93,11 +124,25 @@ std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title,
   const auto end_section = [&out, binary] {
     if (binary) out += '\n';
   };
-  const auto append_vector = [&append_number](const Eigen::Vector3d& v) {
-    append_number(v.x(), ' ');
-    append_number(v.y(), ' ');
-    append_number(v.z(), '\n');
+  // A real as float or double, as its array's type says.
+  const auto append_real = [&append_number](double value, bool single,
+                                            char separator) {
+    if (single) {
+      append_number(static_cast<float>(value), separator);
+    } else {
+      append_number(value, separator);
+    }
   };
+  const auto append_vector = [&append_real](const Eigen::Vector3d& v,
+                                            bool single) {
+    append_real(v.x(), single, ' ');
+    append_real(v.y(), single, ' ');
+    append_real(v.z(), single, '\n');
+  };
+  const auto type_name = [](bool single) {
+    return single ? std::string("float") : std::string("double");
+  };
+  const bool single_points = precision == VtkPrecision::kFloat;
   const auto append_count = [&out](size_t count) {
     out += std::to_string(count);
   };
@@ -106,8 +151,8 @@ std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title,
   out += binary ? "\nBINARY" : "\nASCII";
   out += "\nDATASET POLYDATA\nPOINTS ";
   append_count(n);
-  out += " double\n";
-  for (const auto& p : data.points) append_vector(p);
+  out += " " + type_name(single_points) + "\n";
+  for (const auto& p : data.points) append_vector(p, single_points);
   end_section();
   if (!data.vertices.empty()) {
     out += "VERTICES ";
@@ -145,15 +190,18 @@ std::string ToLegacyVtk(const VtkPolyData& data, const std::string& title,
   for (const auto& [name, values] : data.point_scalars) {
     CheckToken(name);
     CHECK_EQ(values.size(), n) << name;
-    out += "SCALARS " + name + " double 1\nLOOKUP_TABLE default\n";
-    for (double value : values) append_number(value, '\n');
+    const bool single = IsFloat32Array(data, name, precision);
+    out += "SCALARS " + name + " " + type_name(single) +
+           " 1\nLOOKUP_TABLE default\n";
+    for (double value : values) append_real(value, single, '\n');
     end_section();
   }
   for (const auto& [name, values] : data.point_vectors) {
     CheckToken(name);
     CHECK_EQ(values.size(), n) << name;
-    out += "VECTORS " + name + " double\n";
-    for (const auto& v : values) append_vector(v);
+    const bool single = IsFloat32Array(data, name, precision);
+    out += "VECTORS " + name + " " + type_name(single) + "\n";
+    for (const auto& v : values) append_vector(v, single);
     end_section();
   }
   return out;

@@ -14,9 +14,11 @@ namespace pfdm {
 // The same content as ToLegacyVtk, as VTK XML PolyData.  Binary: every
 // array appended raw after the XML (<AppendedData encoding="raw">, each
 // block a UInt64 byte count and the values in the machine's byte order,
-// which the header names), Float64 and Int64 as in ASCII.
+// which the header names), of the same types as in ASCII: reals Float32 or
+// Float64 as precision says (IsFloat32Array), indices Int32 where they fit.
 std::string ToVtkXmlPolyData(const VtkPolyData& data,
-                             VtkFormat format = VtkFormat::kAscii);
+                             VtkFormat format = VtkFormat::kAscii,
+                             VtkPrecision precision = VtkPrecision::kDouble);
 
 // A collection of (time, file) pairs, files relative to the .pvd's folder.
 std::string PvdCollection(

@@ -28,7 +28,7 @@ TEST(VtpWriterTest, PolyDataHasPointsCellsAndNamedArrays) {
   EXPECT_NE(xml.find("Name=\"residual\" NumberOfComponents=\"3\""),
             std::string::npos);
   // Verts: connectivity 3, offsets 1; Polys: connectivity 0 1 2, offsets 3.
-  EXPECT_NE(xml.find("<Verts>\n        <DataArray type=\"Int64\" "
+  EXPECT_NE(xml.find("<Verts>\n        <DataArray type=\"Int32\" "
                      "Name=\"connectivity\" format=\"ascii\">\n 3\n"),
             std::string::npos);
   EXPECT_NE(xml.find("Name=\"offsets\" format=\"ascii\">\n 3\n"),
@@ -75,6 +75,10 @@ TEST(VtpWriterTest, BinaryPolyDataReadsBackExactly) {
             data.point_scalars[1].second);
   EXPECT_EQ(arrays.float64.at("PointData/residual"),
             (std::vector<double>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, -2, 1.0 / 7.0}));
+  EXPECT_EQ(arrays.types.at("Points"), "Float64");
+  EXPECT_EQ(arrays.types.at("PointData/twist_deg"), "Float64");
+  EXPECT_EQ(arrays.types.at("Polys/connectivity"), "Int32");
+  EXPECT_EQ(arrays.types.at("Verts/offsets"), "Int32");
   EXPECT_EQ(arrays.int64.at("Verts/connectivity"),
             (std::vector<std::int64_t>{3}));
   EXPECT_EQ(arrays.int64.at("Verts/offsets"), (std::vector<std::int64_t>{1}));
@@ -82,6 +86,49 @@ TEST(VtpWriterTest, BinaryPolyDataReadsBackExactly) {
             (std::vector<std::int64_t>{0, 1, 2, 1, 2, 3}));
   EXPECT_EQ(arrays.int64.at("Polys/offsets"),
             (std::vector<std::int64_t>{3, 6}));
+}
+
+// Float precision: every real array Float32, each value the nearest float
+// to the double given (a relative 6e-8); float32_scalars are Float32 even
+// in double precision, the rest Float64 there.
+TEST(VtpWriterTest, FloatPrecisionHalvesTheRealsAndKeepsFlagsNarrow) {
+  VtkPolyData data;
+  data.points = {{1.0 / 3.0, 40.123456789, -55.5}, {1, 0, 0}, {0, 1, 0}};
+  data.triangles = {{0, 1, 2}};
+  data.point_scalars = {{"u", {0.1, 0.2, 1.0 / 7.0}}, {"is_data", {0, 0, 1}}};
+  data.point_vectors = {{"residual", {{0, 0, 0}, {0, 0, 0}, {0.5, -1e-3, 2}}}};
+  data.float32_scalars = {"is_data"};
+  const VtkXmlArrays single = ReadAppendedRawVtkXml(
+      ToVtkXmlPolyData(data, VtkFormat::kBinary, VtkPrecision::kFloat));
+  for (const char* key :
+       {"Points", "PointData/u", "PointData/is_data", "PointData/residual"}) {
+    EXPECT_EQ(single.types.at(key), "Float32") << key;
+  }
+  const std::vector<double>& points = single.float64.at("Points");
+  ASSERT_EQ(points.size(), 9u);
+  for (size_t i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(points[3 * i + k], static_cast<float>(data.points[i][k]));
+      EXPECT_NEAR(points[3 * i + k], data.points[i][k],
+                  6e-8 * std::abs(data.points[i][k]));
+    }
+  }
+  EXPECT_EQ(single.float64.at("PointData/is_data"),
+            (std::vector<double>{0, 0, 1}));
+  const VtkXmlArrays exact = ReadAppendedRawVtkXml(
+      ToVtkXmlPolyData(data, VtkFormat::kBinary, VtkPrecision::kDouble));
+  EXPECT_EQ(exact.types.at("Points"), "Float64");
+  EXPECT_EQ(exact.types.at("PointData/u"), "Float64");
+  EXPECT_EQ(exact.types.at("PointData/residual"), "Float64");
+  EXPECT_EQ(exact.types.at("PointData/is_data"), "Float32");
+  EXPECT_EQ(exact.float64.at("PointData/u"), data.point_scalars[0].second);
+  // In text, floats as their shortest decimal.
+  const std::string ascii =
+      ToVtkXmlPolyData(data, VtkFormat::kAscii, VtkPrecision::kFloat);
+  EXPECT_NE(ascii.find("type=\"Float32\" Name=\"u\" format=\"ascii\">\n "
+                       "0.1 0.2 0.14285715\n"),
+            std::string::npos)
+      << ascii;
 }
 
 TEST(VtpWriterTest, CollectionListsEveryTimestep) {

@@ -121,12 +121,22 @@ VtkXmlArrays ReadAppendedRawVtkXml(const std::string& xml) {
     EXPECT_LE(data + offset + sizeof(size) + size, xml.size()) << tag;
     const std::string name = Attribute(tag, "Name");
     const std::string key = name.empty() ? section : section + "/" + name;
-    if (Attribute(tag, "type") == "Float64") {
+    const std::string type = Attribute(tag, "type");
+    arrays.types[key] = type;
+    if (type == "Float64") {
       std::vector<double>& values = arrays.float64[key];
       values.resize(size / sizeof(double));
       std::memcpy(values.data(), bytes, size);
+    } else if (type == "Float32") {
+      std::vector<float> values(size / sizeof(float));
+      std::memcpy(values.data(), bytes, size);
+      arrays.float64[key].assign(values.begin(), values.end());
+    } else if (type == "Int32") {
+      std::vector<std::int32_t> values(size / sizeof(std::int32_t));
+      std::memcpy(values.data(), bytes, size);
+      arrays.int64[key].assign(values.begin(), values.end());
     } else {
-      EXPECT_EQ(Attribute(tag, "type"), "Int64") << tag;
+      EXPECT_EQ(type, "Int64") << tag;
       std::vector<std::int64_t>& values = arrays.int64[key];
       values.resize(size / sizeof(std::int64_t));
       std::memcpy(values.data(), bytes, size);

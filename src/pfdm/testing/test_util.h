@@ -34,11 +34,13 @@ CommandResult RunPfdm(const std::string& arguments);
 
 // The arrays of a VTK XML file written with appended raw data (header_type
 // UInt64), read back independently of the writer: keyed by section and
-// name ("PointData/u", "Points", "Polys/connectivity"), Float64 arrays in
-// float64 and Int64 ones in int64.  Fails the test on a malformed file.
+// name ("PointData/u", "Points", "Polys/connectivity"), Float64 and
+// Float32 arrays in float64, Int64 and Int32 ones in int64, each array's
+// VTK type in types.  Fails the test on a malformed file.
 struct VtkXmlArrays {
   std::map<std::string, std::vector<double>> float64;
   std::map<std::string, std::vector<std::int64_t>> int64;
+  std::map<std::string, std::string> types;
 };
 VtkXmlArrays ReadAppendedRawVtkXml(const std::string& xml);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/correspondence/transmural.h"
 
 namespace pfdm {
@@ -52,7 +53,7 @@ std::vector<double> SurfacesOf(const Model& model,
 
 // Off the mid-wall, the closest point of the point's own surface replaces
 // the mid-wall's in closest, found and found_normals.
-void RefineOnSurfaces(const Model& model,
+void RefineOnSurfaces(const SurfaceGrid& grid, const Model& model,
                       const std::vector<Eigen::Vector3d>& subset,
                       const std::vector<size_t>& which,
                       const std::vector<double>& surfaces,
@@ -74,8 +75,8 @@ void RefineOnSurfaces(const Model& model,
     if (warm) on_surface.hints.push_back(material[which[j]]);
   }
   std::vector<Eigen::Vector3d> found_off, normals_off;
-  const std::vector<MaterialPoint> refined = ClosestMaterialPoints(
-      model, off_points, on_surface, &found_off, &normals_off);
+  const std::vector<MaterialPoint> refined = ClosestMaterialPointsFrom(
+      grid, model, off_points, on_surface, &found_off, &normals_off);
   for (size_t k = 0; k < off.size(); ++k) {
     (*closest)[off[k]] = refined[k];
     (*found)[off[k]] = found_off[k];
@@ -113,18 +114,21 @@ void UpdateClosest(const Model& model,
                    double outlier_band_mm) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
+  // One grid for the mid-wall search and, in a solid, the walls' after it:
+  // both searches start from the mid-wall's samples.
+  const SurfaceGrid grid(model);
   CorrespondenceOptions correspondence;
   correspondence.num_threads = num_threads;
   if (warm) {
     for (size_t i : which) correspondence.hints.push_back((*material)[i]);
   }
   std::vector<Eigen::Vector3d> found_normals;
-  std::vector<MaterialPoint> closest = ClosestMaterialPoints(
-      model, subset, correspondence, found, &found_normals);
+  std::vector<MaterialPoint> closest = ClosestMaterialPointsFrom(
+      grid, model, subset, correspondence, found, &found_normals);
   if (model.config.Solid()) {
     const std::vector<double> surfaces = SurfacesOf(
         model, subset, which, layer_w, assign_depth, closest, outlier_band_mm);
-    RefineOnSurfaces(model, subset, which, surfaces, correspondence, warm,
+    RefineOnSurfaces(grid, model, subset, which, surfaces, correspondence, warm,
                      *material, &closest, found, &found_normals);
   }
   for (size_t j = 0; j < which.size(); ++j) {

@@ -1,0 +1,69 @@
+#include "pfdm/fit/correspondence/surface_grid.h"
+
+#include <limits>
+#include <random>
+
+#include "gtest/gtest.h"
+#include "pfdm/phantom/phantom.h"
+
+namespace pfdm {
+namespace {
+
+Model TruthModel() {
+  PhantomOptions options;
+  options.num_points = 1;
+  options.num_frames = 5;
+  return MakePhantom(options).truth[3];  // Twisted, offset, contracted.
+}
+
+// The tree's nearest sample is the brute-force nearest of the grid's world
+// points, to the last bit of its distance.
+TEST(SurfaceGridTest, NearestSampleIsTheBruteForceNearest) {
+  const Model model = TruthModel();
+  const SurfaceGrid grid(model);
+  const int samples = SurfaceGrid::kGridU * SurfaceGrid::kGridV;
+  std::vector<MaterialPoint> all;
+  for (int i = 0; i < samples; ++i) all.push_back(grid.Sample(i));
+  const std::vector<Eigen::Vector3d> world = WorldPoints(model, all);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-60.0, 60.0);
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Vector3d p(coordinate(random), coordinate(random),
+                            coordinate(random) - 30.0);
+    double best = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& x : world) {
+      best = std::min(best, (x - p).squaredNorm());
+    }
+    const SurfaceGrid::Nearest nearest = grid.NearestTo(p);
+    EXPECT_NEAR(nearest.distance_squared, best, 1e-9 * best) << k;
+    EXPECT_NEAR((world[nearest.index] - p).squaredNorm(), best, 1e-9 * best);
+  }
+}
+
+// A search from a grid shared between searches finds what a search that
+// builds its own finds, bit for bit, on the mid-wall and on a wall.
+TEST(SurfaceGridTest, SharedGridFindsTheSamePoints) {
+  Model model = TruthModel();
+  const SurfaceGrid grid(model);
+  std::mt19937 random(3);
+  std::normal_distribution<double> noise(0.0, 1.5);
+  std::vector<Eigen::Vector3d> points;
+  for (double u = -1.4; u < 0.6; u += 0.1) {
+    for (double v = -3.1; v < 3.1; v += 0.3) {
+      points.push_back(model.WorldPoint(u, v) + Eigen::Vector3d(noise(random),
+                                                                noise(random),
+                                                                noise(random)));
+    }
+  }
+  CorrespondenceOptions options;
+  const auto own = ClosestMaterialPoints(model, points, options);
+  const auto shared = ClosestMaterialPointsFrom(grid, model, points, options);
+  ASSERT_EQ(own.size(), shared.size());
+  for (size_t i = 0; i < own.size(); ++i) {
+    EXPECT_EQ(own[i].u, shared[i].u) << i;
+    EXPECT_EQ(own[i].v, shared[i].v) << i;
+  }
+}
+
+}  // namespace
+}  // namespace pfdm
