@@ -9,6 +9,7 @@ machine's load while it ran.
 
     scripts/uncertainty_calibration.py [--build build] [--seeds 400]
         [--scale 2] [--doc docs/uncertainty.md] [--filter '*']
+        [--from OUTPUT ...]   # tables from saved test outputs, no run
 """
 import argparse
 import collections
@@ -83,16 +84,25 @@ def main():
     parser.add_argument("--scale", type=int, default=1)
     parser.add_argument("--doc", default="docs/uncertainty.md")
     parser.add_argument("--filter", default="*")
+    parser.add_argument("--from", dest="saved", nargs="*")
+    parser.add_argument("--note", default="")
     args = parser.parse_args()
-    result, seconds, load = run(args.build, args.seeds, args.scale,
-                                args.filter)
-    sys.stdout.write(result.stdout)
-    text = table(result.stdout)
-    note = ("%d seeds, points x%d, %.0f s on %d cores, load average %.1f "
-            "before and %.1f after (the machine shared); gtest exit %d, "
-            "%s." % (args.seeds, args.scale, seconds, os.cpu_count(), load[0],
-                     load[1], result.returncode,
-                     time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())))
+    if args.saved:
+        output = "".join(open(f).read() for f in args.saved)
+        text = table(output)
+        note = args.note or "From saved outputs."
+        code = 0
+    else:
+        result, seconds, load = run(args.build, args.seeds, args.scale,
+                                    args.filter)
+        sys.stdout.write(result.stdout)
+        text = table(result.stdout)
+        code = result.returncode
+        note = ("%d seeds, points x%d, %.0f s on %d cores, load average %.1f "
+                "before and %.1f after (the machine shared); gtest exit %d, "
+                "%s." % (args.seeds, args.scale, seconds, os.cpu_count(),
+                         load[0], load[1], code,
+                         time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())))
     block = "%s\n%s\n\n%s\n%s" % (BEGIN, text, note, END)
     with open(args.doc) as f:
         doc = f.read()
@@ -104,7 +114,7 @@ def main():
         f.write(doc)
     print(text)
     print(note)
-    return result.returncode
+    return code
 
 
 if __name__ == "__main__":
