@@ -102,8 +102,8 @@ struct FitOptions {
   // Each frame's covariance of its global parameters at the solution
   // (FrameFit::covariance, fit/problem/frame_covariance.h).  Off by
   // default so far; it cost 46 % of a tracked frame's fit at 2,000 tags
-  // until its normal matrix was scaled before the Cholesky, a few % since
-  // (docs/uncertainty.md, Cost).
+  // until its normal matrix was scaled before the Cholesky, 8-11 % of the
+  // sequence fit's CPU since (docs/uncertainty.md, Cost).
   bool uncertainty = false;
   LocalOptions local;
 };
