@@ -101,9 +101,9 @@ struct FitOptions {
   int trajectory_per_decade = 0;
   // Each frame's covariance of its global parameters at the solution
   // (FrameFit::covariance, fit/problem/frame_covariance.h).  Off by
-  // default: it cost 46 % of the frames' fits at 2,000 tags and 26 % at
-  // 20,000 (15 and 28 ms a tracked frame of 176 parameters, one thread),
-  // over the 25 % it may cost to be on by default.
+  // default so far; it cost 46 % of a tracked frame's fit at 2,000 tags
+  // until its normal matrix was scaled before the Cholesky, 8-11 % of the
+  // sequence fit's CPU since (docs/uncertainty.md, Cost).
   bool uncertainty = false;
   LocalOptions local;
 };

@@ -310,6 +310,18 @@ json QualitySection(const FitAnalysis& analysis) {
           {"definition", kQualityDefinition}};
 }
 
+// What the frame's covariance takes as known (docs/uncertainty.md): the
+// intervals are conditional on these, and too narrow where they move.
+std::vector<std::string> HeldByCovariance(const FrameFit& frame, bool solid) {
+  std::vector<std::string> held = {"correspondences", "prior_target"};
+  if (frame.kind == FrameKind::kTracked) {
+    held.push_back("tracked_material_points");
+  }
+  if (solid) held.push_back("tag_depths");
+  if (!frame.state.local.empty()) held.push_back("local_field");
+  return held;
+}
+
 // One frame's fit errors, solve, verdict, volume (under volume_key, named
 // after the surface measured), pose and clinical numbers; with
 // --uncertainty on, what its covariance rests on (fit/problem/
@@ -353,6 +365,7 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
         {"parameters", covariance.entries.size()},
         {"rank_deficiency", covariance.rank_deficiency},
         {"deficient_directions", covariance.deficient_directions},
+        {"held", HeldByCovariance(frame, solid)},
         {"seconds", covariance.seconds}};
   }
   return entry;

@@ -96,7 +96,10 @@ TEST(UncertaintyCalibrationTest, NinetyFivePercentIntervalsCoverTheTruth) {
   for (size_t j = 0; j < judged.size(); ++j) {
     const double ratio = sd_large[j] / sd_small[j];
     EXPECT_NEAR(ratio, 0.5, 0.1) << j;
-    // a2 is the worst (see the top): no value's coverage under 60 %.
+    // a2 is the worst: its curved profile pays the smoothness prior, whose
+    // bias (the noise-free fit 0.06-0.15 mm off, against an sd of 0.09)
+    // the interval of the noise does not hold (docs/uncertainty.md);
+    // with the smoothness off it covers 90-100 %.  No value under 60 %.
     EXPECT_GE(inside[j], 0.6 * kSeeds) << j;
   }
 }

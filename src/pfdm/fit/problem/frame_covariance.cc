@@ -34,33 +34,55 @@ std::string DirectionName(const std::vector<CovarianceEntry>& entries,
   return name;
 }
 
-// The top-left n x n of normal's inverse by Cholesky, when normal is
-// positive definite and its condition number, estimated from below by the
-// largest diagonals of A and A^-1 (within a factor n^2 of it), is under
-// 1 / kMinReciprocalCondition: then the pseudo-inverse is the inverse.
-// Directions the problem leaves undetermined sit at round-off (1e-16 of
-// the largest), far under the cut even times n^2.
-bool CholeskyInverse(const Eigen::MatrixXd& normal, int n,
-                     Eigen::MatrixXd* unscaled) {
-  const Eigen::LLT<Eigen::MatrixXd> llt(normal);
+// J'J scaled to a unit diagonal, D^-1/2 J'J D^-1/2 (D its diagonal), and
+// D^-1/2 in *scale.  The gauge residuals' stiff weights (10 sqrt(N) on
+// each, kGaugeWeight) put a few diagonal entries 1e4-1e6 times above the
+// data's, so J'J's condition number measured the gauge's weight, not what
+// the data leave undetermined: it failed the Cholesky's test below on
+// every tracked frame and sent it to the eigen-decomposition, 15 of a 2,000
+// tag frame's 24 ms.  Scaled, each coordinate is measured against its own
+// curvature.  A coordinate nothing sees (diagonal 0) keeps scale 0: its
+// variance comes out 0 and its direction is reported by the caller's
+// pseudo-inverse.
+Eigen::MatrixXd UnitDiagonal(const Eigen::MatrixXd& normal,
+                             Eigen::VectorXd* scale) {
+  const Eigen::VectorXd diagonal = normal.diagonal();
+  *scale = Eigen::VectorXd::Zero(diagonal.size());
+  for (int i = 0; i < diagonal.size(); ++i) {
+    if (diagonal[i] > 0.0) (*scale)[i] = 1.0 / std::sqrt(diagonal[i]);
+  }
+  Eigen::MatrixXd scaled = scale->asDiagonal() * normal * scale->asDiagonal();
+  for (int i = 0; i < diagonal.size(); ++i) {
+    if (diagonal[i] <= 0.0) scaled(i, i) = 0.0;
+  }
+  return scaled;
+}
+
+// A's inverse by Cholesky, A = scaled with its unit
+// diagonal, when A is positive definite and its condition number,
+// estimated from below by the largest diagonal of A^-1 (A's are 1; within
+// a factor n^2 of it), is under 1 / kMinReciprocalCondition: then the
+// pseudo-inverse is the inverse.  Directions the problem leaves
+// undetermined sit at round-off (1e-16 of the largest), far under the cut
+// even times n^2.
+bool CholeskyInverse(const Eigen::MatrixXd& scaled, Eigen::MatrixXd* unscaled) {
+  const Eigen::LLT<Eigen::MatrixXd> llt(scaled);
   if (llt.info() != Eigen::Success) return false;
   const Eigen::MatrixXd inverse =
-      llt.solve(Eigen::MatrixXd::Identity(normal.rows(), normal.cols()));
-  const double estimate =
-      normal.diagonal().maxCoeff() * inverse.diagonal().maxCoeff();
-  if (!(estimate < 1.0 / kMinReciprocalCondition)) {
+      llt.solve(Eigen::MatrixXd::Identity(scaled.rows(), scaled.cols()));
+  if (!(inverse.diagonal().maxCoeff() < 1.0 / kMinReciprocalCondition)) {
     return false;
   }
-  *unscaled = inverse.topLeftCorner(n, n);
+  *unscaled = inverse;
   return true;
 }
 
-// The pseudo-inverse's top-left n x n, dropping the eigen-directions under
-// kMinReciprocalCondition times the largest; those lying mostly in the
-// first n coordinates are reported.
-void PseudoInverse(const Eigen::MatrixXd& normal, int n,
+// The pseudo-inverse of the unit-diagonal A, dropping the
+// eigen-directions under kMinReciprocalCondition times the largest; those
+// lying mostly in the first n coordinates are reported.
+void PseudoInverse(const Eigen::MatrixXd& scaled, int n,
                    FrameCovariance* result, Eigen::MatrixXd* unscaled) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(normal);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(scaled);
   const Eigen::VectorXd& values = eigen.eigenvalues();  // Ascending.
   const Eigen::MatrixXd& vectors = eigen.eigenvectors();
   const double cut = kMinReciprocalCondition * values[values.size() - 1];
@@ -75,8 +97,7 @@ void PseudoInverse(const Eigen::MatrixXd& normal, int n,
           DirectionName(result->entries, ours.normalized()));
     }
   }
-  const auto head = vectors.topRows(n);
-  *unscaled = head * inverse_values.asDiagonal() * head.transpose();
+  *unscaled = vectors * inverse_values.asDiagonal() * vectors.transpose();
 }
 
 }  // namespace
@@ -122,6 +143,32 @@ double FrameCovariance::KnotSd(const ModelConfig& config, int f, int k) const {
   return i < 0 ? 0.0 : std::sqrt(std::max(0.0, covariance(i, i)));
 }
 
+namespace {
+
+// J'J over `columns`, and J_d'J_d of its first data_rows rows, the data's
+// (the problem's residual blocks come in the order they were added, the
+// data's first: frame_problem.cc).
+bool NormalMatrices(ceres::Problem* problem,
+                    const std::vector<double*>& columns, int data_rows,
+                    Eigen::MatrixXd* normal, Eigen::MatrixXd* data_normal) {
+  ceres::Problem::EvaluateOptions options;
+  options.parameter_blocks = columns;
+  ceres::CRSMatrix jacobian;
+  if (!problem->Evaluate(options, nullptr, nullptr, nullptr, &jacobian)) {
+    return false;
+  }
+  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> j(
+      jacobian.num_rows, jacobian.num_cols,
+      static_cast<int>(jacobian.values.size()), jacobian.rows.data(),
+      jacobian.cols.data(), jacobian.values.data());
+  *normal = Eigen::SparseMatrix<double>(j.transpose() * j).toDense();
+  const auto data = j.topRows(std::min(data_rows, jacobian.num_rows));
+  *data_normal = Eigen::SparseMatrix<double>(data.transpose() * data).toDense();
+  return true;
+}
+
+}  // namespace
+
 // The columns: `blocks` first, then every other free block of the problem
 // (the axis gauge chain's partial sums: holding them would pin each knot's
 // offset instead of their sum), all in tangent coordinates.
@@ -143,9 +190,10 @@ std::vector<double*> ColumnOrder(ceres::Problem* problem,
   return order;
 }
 
-FrameCovariance BlockCovariance(ceres::Problem* problem,
-                                const std::vector<CovarianceBlock>& blocks,
-                                double sigma_mm, double degrees_of_freedom) {
+FrameCovariance BlockCovariance(
+    ceres::Problem* problem, const std::vector<CovarianceBlock>& blocks,
+    double sigma_mm, double degrees_of_freedom,
+    const std::vector<ceres::ResidualBlockId>& data) {
   const auto start = Clock::now();
   FrameCovariance result;
   result.sigma_mm = sigma_mm;
@@ -161,25 +209,32 @@ FrameCovariance BlockCovariance(ceres::Problem* problem,
   // 2,000-tag tracked frame whose whole fit took 0.14 s.  J'J squares the
   // condition number, which the cut at kMinReciprocalCondition (singular
   // values 1e-5 of the largest) stays far above double's round-off.
-  ceres::Problem::EvaluateOptions options;
-  options.parameter_blocks = ColumnOrder(problem, blocks);
-  ceres::CRSMatrix jacobian;
+  const std::vector<double*> columns = ColumnOrder(problem, blocks);
+  int data_rows = 0;
+  for (ceres::ResidualBlockId id : data) {
+    if (id == nullptr) continue;  // A constant, left out (frame_blocks.h).
+    data_rows += problem->GetCostFunctionForResidualBlock(id)->num_residuals();
+  }
+  Eigen::MatrixXd normal, data_normal;
   if (n == 0 ||
-      !problem->Evaluate(options, nullptr, nullptr, nullptr, &jacobian)) {
+      !NormalMatrices(problem, columns, data_rows, &normal, &data_normal)) {
     result.seconds = SecondsSince(start);
     return result;
   }
-  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> j(
-      jacobian.num_rows, jacobian.num_cols,
-      static_cast<int>(jacobian.values.size()), jacobian.rows.data(),
-      jacobian.cols.data(), jacobian.values.data());
-  const Eigen::MatrixXd normal =
-      Eigen::SparseMatrix<double>(j.transpose() * j).toDense();
-  Eigen::MatrixXd unscaled;
-  if (!CholeskyInverse(normal, n, &unscaled)) {
-    PseudoInverse(normal, n, &result, &unscaled);
+  Eigen::VectorXd scale;
+  const Eigen::MatrixXd scaled = UnitDiagonal(normal, &scale);
+  Eigen::MatrixXd inverse;  // Of `scaled`.
+  if (!CholeskyInverse(scaled, &inverse)) {
+    PseudoInverse(scaled, n, &result, &inverse);
   }
-  result.covariance = sigma_mm * sigma_mm * unscaled;
+  // tr((J'J)^+ J_d'J_d), in the scaled coordinates as tr(A^+ D J_d'J_d D).
+  result.effective_parameters =
+      inverse
+          .cwiseProduct(scale.asDiagonal() * data_normal * scale.asDiagonal())
+          .sum();
+  const auto head_scale = scale.head(n).asDiagonal();
+  result.covariance = sigma_mm * sigma_mm *
+                      (head_scale * inverse.topLeftCorner(n, n) * head_scale);
   result.computed = true;
   result.seconds = SecondsSince(start);
   return result;
@@ -189,7 +244,7 @@ void DataSigma(const Model& model, const std::vector<Eigen::Vector3d>& points,
                const std::vector<MaterialPoint>& material,
                const std::vector<Eigen::Vector3d>& normals,
                const std::string& loss, double loss_scale_mm,
-               int num_parameters, double* sigma_mm,
+               double num_parameters, double* sigma_mm,
                double* degrees_of_freedom) {
   const std::vector<Eigen::Vector3d> at = WorldPoints(model, material);
   std::vector<Eigen::Vector3d> residuals(points.size());

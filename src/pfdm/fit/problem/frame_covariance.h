@@ -9,16 +9,17 @@
 // 10 sqrt(N)) act as constraints, and held entries are not parameters at
 // all (their standard deviation is 0, by definition of the gauge).
 //
-// What it is conditional on: the frame's material points.  Tags keep
-// theirs, but contours' (and on frame 0 the tags') closest points are
-// re-found every round, and the covariance treats the final ones as known.
-// A point's closest point slides with the surface, so its pull along the
-// normal, the only one contours give, is what a fixed correspondence gives
-// too to first order; what is left out is that the correspondences were
-// chosen from the noisy data themselves, which makes these intervals
-// somewhat too narrow for contours (a sandwich estimate or resampling would
-// take it in: issue 30).  The prior's target (the previous frame) is taken
-// as known too, so uncertainty is not carried from frame to frame.
+// What it is conditional on (docs/uncertainty.md).  Contours' (and frame
+// 0's tags') closest points are re-found every round: at the solution the
+// residual is normal to the surface, so the distance's derivative with
+// respect to the parameters is the point-to-plane residual's, and
+// minimizing over the correspondences leaves the same Gauss-Newton matrix
+// to first order (a variable projection; checked by sampling in
+// LvUncertaintyCalibrationTest's contour case).  Tracked frames' material
+// points, found on frame 0 from noisy tags, are held: their per-point error
+// shows in sigma, frame 0's shared error does not.  Held too: the prior's
+// target (the previous frame), a solid's tag depths w, and the local field,
+// fitted after this.
 #ifndef PFDM_FIT_PROBLEM_FRAME_COVARIANCE_H_
 #define PFDM_FIT_PROBLEM_FRAME_COVARIANCE_H_
 
@@ -51,11 +52,19 @@ struct FrameCovariance {
   // sqrt(sum_i w_i |r_i|^2 / (sum_i w_i d_i - n)), r_i point i's residual
   // (its distance along the normal for a point-to-plane one, d_i = 1, else
   // the vector, d_i = 3), w_i the robust loss's weight (1 without a loss),
-  // n the number of free parameters.
+  // n the free parameters' effective number (effective_parameters).
   double sigma_mm = 0.0;
   double degrees_of_freedom = 0.0;
-  // The directions of J'J under kMinReciprocalCondition times its largest
-  // eigenvalue that lie mostly in these parameters, left out of the
+  // n above: the trace of the data's hat matrix, tr((J'J)^+ J_d'J_d), J_d
+  // the data's rows.  The regularizers and the gauge take part of the
+  // parameters' freedom, so it is less than their count: dividing by the
+  // count's degrees of freedom overstated sigma by up to 15 % on a frame of
+  // 150 sliding points and 74 parameters (intervals too wide, and
+  // narrowing faster than 1/sqrt(N) as points were added).
+  double effective_parameters = 0.0;
+  // The directions of J'J (scaled to a unit diagonal) under
+  // kMinReciprocalCondition times its largest eigenvalue that lie mostly in
+  // these parameters, left out of the
   // pseudo-inverse: what the problem does not determine.  Each is named by
   // its largest entries.
   int rank_deficiency = 0;
@@ -91,20 +100,26 @@ struct CovarianceBlock {
 // problem (as ceres::Covariance's DENSE_SVD with null_space_rank -1 would
 // give it, which tolerates a rank deficiency: the deficient directions are
 // left out and reported), its rows and columns of `blocks` kept, times
-// sigma_mm^2.  The loss, when the residuals have one, weighs them as the
-// solve did.  computed false when the problem cannot be evaluated.
-FrameCovariance BlockCovariance(ceres::Problem* problem,
-                                const std::vector<CovarianceBlock>& blocks,
-                                double sigma_mm, double degrees_of_freedom);
+// sigma_mm^2.  J'J is scaled to a unit diagonal first, so that the gauge's
+// stiff weights do not count as ill-conditioning; the cut is on the scaled
+// matrix's eigenvalues.  The loss, when the residuals have one, weighs them
+// as the solve did.  `data`: the data's residual blocks, the problem's
+// first, for effective_parameters.  computed false when the problem cannot
+// be evaluated.
+FrameCovariance BlockCovariance(
+    ceres::Problem* problem, const std::vector<CovarianceBlock>& blocks,
+    double sigma_mm, double degrees_of_freedom,
+    const std::vector<ceres::ResidualBlockId>& data = {});
 
 // The data's residual standard deviation at the model (FrameCovariance::
 // sigma_mm) and its degrees of freedom, for num_parameters free
-// parameters.  normals as SolveFrame's; loss and scale as the fit's.
+// parameters (effective_parameters).  normals as SolveFrame's; loss and
+// scale as the fit's.
 void DataSigma(const Model& model, const std::vector<Eigen::Vector3d>& points,
                const std::vector<MaterialPoint>& material,
                const std::vector<Eigen::Vector3d>& normals,
                const std::string& loss, double loss_scale_mm,
-               int num_parameters, double* sigma_mm,
+               double num_parameters, double* sigma_mm,
                double* degrees_of_freedom);
 
 }  // namespace pfdm

@@ -26,6 +26,7 @@ struct LineProblem {
   std::array<double, 2> c{0.0, 0.0};
   ceres::Problem problem;
   Eigen::MatrixXd design;
+  std::vector<ceres::ResidualBlockId> data;
 };
 
 // y = 1 + 2 x + noise of 0.3 at 200 x in [-1, 1], solved.
@@ -36,10 +37,10 @@ void MakeLine(bool sum, LineProblem* line) {
   for (int i = 0; i < 200; ++i) {
     const double x = -1.0 + 2.0 * i / 199.0;
     line->design.row(i) << 1.0, x;
-    line->problem.AddResidualBlock(
+    line->data.push_back(line->problem.AddResidualBlock(
         new ceres::AutoDiffCostFunction<LineResidual, 1, 2>(
             new LineResidual(x, 1.0 + 2.0 * x + noise(random), sum)),
-        nullptr, line->c.data());
+        nullptr, line->c.data()));
   }
   ceres::Solver::Options options;
   ceres::Solver::Summary summary;
@@ -106,6 +107,68 @@ TEST(FrameCovarianceTest, RankDeficientProblemReportsTheDirection) {
   const Eigen::Matrix2d ceres_covariance = CeresCovariance(&line, 0.3);
   EXPECT_LT((covariance.covariance - ceres_covariance).norm(),
             1e-8 * ceres_covariance.norm());
+}
+
+// r = s (c[index] - target): a prior on one coefficient, or with a large s
+// a stiff gauge-like constraint.
+struct CoefficientPrior {
+  CoefficientPrior(double s, int index, double target)
+      : s(s), index(index), target(target) {}
+  template <typename T>
+  bool operator()(const T* c, T* r) const {
+    r[0] = s * (c[index] - target);
+    return true;
+  }
+  double s;
+  int index;
+  double target;
+};
+
+void AddPrior(double s, int index, LineProblem* line) {
+  line->problem.AddResidualBlock(
+      new ceres::AutoDiffCostFunction<CoefficientPrior, 1, 2>(
+          new CoefficientPrior(s, index, line->c[index])),
+      nullptr, line->c.data());
+}
+
+// x is symmetric about 0, so the design's columns are orthogonal and a
+// prior s on c1 leaves the data's hat matrix a trace of
+// 1 + x'x / (x'x + s^2); without it, 2, the parameters' count.
+TEST(FrameCovarianceTest, EffectiveParametersAreTheDataHatMatrixTrace) {
+  LineProblem line;
+  MakeLine(false, &line);
+  const double x2 = line.design.col(1).squaredNorm();
+  EXPECT_NEAR(
+      BlockCovariance(&line.problem, LineBlocks(&line), 1.0, 0.0, line.data)
+          .effective_parameters,
+      2.0, 1e-9);
+  AddPrior(std::sqrt(x2), 1, &line);
+  const FrameCovariance covariance =
+      BlockCovariance(&line.problem, LineBlocks(&line), 1.0, 0.0, line.data);
+  EXPECT_NEAR(covariance.effective_parameters, 1.5, 1e-9);
+  EXPECT_NEAR(covariance.covariance(1, 1), 1.0 / (2.0 * x2), 1e-12 / x2);
+}
+
+// A constraint 1e6 times stiffer than the data (as the gauge residuals
+// are) is no rank deficiency: the unit diagonal scaling keeps the Cholesky
+// path, whose result is the textbook (X'X + s^2 e0 e0')^-1 and what
+// ceres::Covariance gives.
+TEST(FrameCovarianceTest, StiffConstraintIsNotADeficiency) {
+  LineProblem line;
+  MakeLine(false, &line);
+  const double s = 1e6 * std::sqrt(line.design.col(0).squaredNorm());
+  AddPrior(s, 0, &line);
+  const FrameCovariance covariance =
+      BlockCovariance(&line.problem, LineBlocks(&line), 0.3, 198.0);
+  ASSERT_TRUE(covariance.computed);
+  EXPECT_EQ(covariance.rank_deficiency, 0);
+  Eigen::Matrix2d normal = line.design.transpose() * line.design;
+  normal(0, 0) += s * s;
+  const Eigen::Matrix2d expected = 0.09 * normal.inverse();
+  EXPECT_NEAR(covariance.covariance(1, 1), expected(1, 1),
+              1e-9 * expected(1, 1));
+  EXPECT_NEAR(covariance.covariance(0, 0), expected(0, 0),
+              1e-6 * expected(0, 0));
 }
 
 TEST(FrameCovarianceTest, KnotSdReadsTheKnotOrTheGlobalEntry) {

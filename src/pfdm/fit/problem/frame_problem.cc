@@ -144,6 +144,9 @@ class FrameProblem {
   // The residual blocks of each term but the data (null: a constant left
   // out, see FrameBlocks::AddResidual).
   std::vector<ceres::ResidualBlockId> smoothness_ids_, prior_ids_, gauge_ids_;
+  // The data's residual blocks, the problem's first (the covariance's
+  // effective number of parameters).
+  std::vector<ceres::ResidualBlockId> data_ids_;
 };
 
 std::unique_ptr<PrecomputedGroups> FrameProblem::MakePrecomputed(
@@ -198,8 +201,8 @@ void FrameProblem::AddData(const std::vector<Eigen::Vector3d>& points,
                                 unit_exponents, normal, options_.jacobian, w)
               : MakePointCost(points[i], u, v, span.weight, free_mask,
                               unit_exponents, options_.jacobian, w);
-    blocks_.AddResidual(cost, loss_, true,
-                        {kGlobalsBlock, span.k0, span.k0 + 1});
+    data_ids_.push_back(blocks_.AddResidual(
+        cost, loss_, true, {kGlobalsBlock, span.k0, span.k0 + 1}));
   }
   for (int k0 = 0; k0 + 1 < config.num_knots; ++k0) {
     if (!groups[k0].empty()) add_group(k0);
@@ -219,6 +222,7 @@ void FrameProblem::AddPointGroup(int k0, std::vector<PointSample> group) {
   const ceres::ResidualBlockId id =
       blocks_.AddResidual(residual, loss_, true, {kGlobalsBlock, k0, k0 + 1},
                           FrameBlocks::Takes::kProblemBlocks);
+  data_ids_.push_back(id);
   std::vector<double*> parameters;
   problem_.GetParameterBlocksForResidualBlock(id, &parameters);
   precomputed_->Add(residual, std::move(parameters));
@@ -374,15 +378,16 @@ FrameCovariance FrameProblem::Covariance(
     for (int f : entries->free()) block.entries.push_back({kind, b, f});
     blocks.push_back(std::move(block));
   }
-  int num_parameters = 0;
-  for (const CovarianceBlock& block : blocks) {
-    num_parameters += static_cast<int>(block.entries.size());
-  }
-  double sigma_mm = 0.0, degrees_of_freedom = 0.0;
+  // sigma's degrees of freedom need the covariance's effective number of
+  // parameters: computed at unit sigma, then scaled.
+  FrameCovariance result =
+      BlockCovariance(&problem_, blocks, 1.0, 0.0, data_ids_);
+  if (!result.computed) return result;
   DataSigma(*model_, points, material, normals, options_.loss,
-            options_.loss_scale_mm, num_parameters, &sigma_mm,
-            &degrees_of_freedom);
-  return BlockCovariance(&problem_, blocks, sigma_mm, degrees_of_freedom);
+            options_.loss_scale_mm, result.effective_parameters,
+            &result.sigma_mm, &result.degrees_of_freedom);
+  result.covariance *= result.sigma_mm * result.sigma_mm;
+  return result;
 }
 
 double FrameProblem::CostOf(

