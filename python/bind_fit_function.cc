@@ -108,7 +108,8 @@ std::shared_ptr<FitResult> FitWithFlags(
     const std::string& linear_solver, double time_step, double rest_tolerance,
     int max_steps, const std::string& damping, const std::string& damping_scale,
     const std::string& jacobian, const std::string& local,
-    const std::string& local_grid, double local_stiffness) {
+    const std::string& local_grid, double local_stiffness,
+    const std::string& uncertainty) {
   FitSettings s;
   s.format = format;
   s.contours = contours;
@@ -138,6 +139,7 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.local = local;
   s.local_grid = local_grid;
   s.local_stiffness = local_stiffness;
+  s.uncertainty = uncertainty;
   return FitPoints(points, s);
 }
 
@@ -172,6 +174,7 @@ void BindFitFunction(py::module_& m) {
         py::arg("local") = fit_defaults.local,
         py::arg("local_grid") = fit_defaults.local_grid,
         py::arg("local_stiffness") = fit_defaults.local_stiffness,
+        py::arg("uncertainty") = fit_defaults.uncertainty,
         "Fits every frame, as `pfdm fit` does "
         "with the flags of the same names and defaults.  points: a "
         "PointSequence, a path (read as read_points with format and "
@@ -182,7 +185,9 @@ void BindFitFunction(py::module_& m) {
         "loss_scale: 'auto' or a number of mm.  "
         "rv_insertion: the anterior RV insertion (x, y, z), or it and the "
         "inferior one (6 numbers), or 'x,y,z[,x,y,z]': the AHA segments' "
-        "anchor; without, guide points' RV_INSERT.  "
+        "anchor; without, guide points' RV_INSERT.  uncertainty 'on': "
+        "each number's sd and 95 % interval (Fit.intervals, fit.json's "
+        "*_ci95).  "
         "Releases the GIL; Ctrl-C raises KeyboardInterrupt within a solver "
         "step.  Raises InputError for bad options or data, with the CLI's "
         "message.");
