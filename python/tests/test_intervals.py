@@ -15,7 +15,7 @@ def test_intervals_are_arrays_beside_the_values_and_fit_json():
     gcs = got["frames"]["gcs_percent"]
     assert gcs["value"].shape == (2,) and gcs["ci95"].shape == (2, 2)
     # ED against itself: no strain, no spread; ES spreads.
-    assert gcs["sd"][0] == 0.0 and gcs["sd"][1] > 0.0
+    assert gcs["sd"][0] < 1e-9 and gcs["sd"][1] > 0.01
     np.testing.assert_allclose(gcs["ci95"][:, 1] - gcs["value"],
                                1.959963984540054 * gcs["sd"])
     ecc = got["segments"]["ecc_percent"]
