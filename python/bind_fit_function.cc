@@ -189,7 +189,9 @@ void BindFitFunction(py::module_& m) {
         "loss_scale: 'auto' or a number of mm.  "
         "rv_insertion: the anterior RV insertion (x, y, z), or it and the "
         "inferior one (6 numbers), or 'x,y,z[,x,y,z]': the AHA segments' "
-        "anchor; without, guide points' RV_INSERT.  "
+        "anchor; without, guide points' RV_INSERT.  uncertainty 'on': "
+        "each number's sd and 95 % interval (Fit.intervals, fit.json's "
+        "*_ci95).  "
         "Releases the GIL; Ctrl-C raises KeyboardInterrupt within a solver "
         "step.  Raises InputError for bad options or data, with the CLI's "
         "message.");

@@ -7,6 +7,7 @@
 
 #include "binding_helpers.h"
 #include "bindings.h"
+#include "fit_intervals.h"
 #include "fit_result.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/fit_settings.h"
@@ -134,6 +135,13 @@ void DefFitJson(FitClass& fit) {
           "volume_surface",
           [](const FitResult& r) { return r.analysis.volume_surface; },
           "What the volumes enclose: 'cavity', 'midwall' or 'epicardial'.")
+      .def_property_readonly(
+          "intervals", &Intervals,
+          "dict of arrays, every derived number's value, sd and 95 % "
+          "interval (ci95, value -+ 1.96 sd by the delta method), with "
+          "uncertainty='on': 'frames' {name: {'value', 'sd', 'ci95'}} per "
+          "frame, 'segments' the same per (frame, segment), "
+          "'ejection_fraction' of (ratio, edv_ml, esv_ml); None without.")
       .def_property_readonly(
           "regions",
           [](const FitResult& r) { return FitJsonMember(r, "regions"); },

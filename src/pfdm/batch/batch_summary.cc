@@ -1,13 +1,71 @@
 #include "pfdm/batch/batch_summary.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
 #include <sstream>
 
 #include "nlohmann/json.hpp"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
+
+const char* const kHalfWidthColumns[10] = {
+    "ed_volume_ml",
+    "es_volume_ml",
+    "ejection_fraction",
+    "lv_mass_g",
+    "wall_thickening_at_es_percent",
+    "net_twist_at_es_deg",
+    "longitudinal_shortening_at_es_percent",
+    "radial_contraction_at_es_percent",
+    "peak_gcs_percent",
+    "peak_gls_percent"};
+
 namespace {
+
+// Half the width of object[key + "_ci95"], NaN without one.
+double HalfWidth(const nlohmann::json& object, const std::string& key) {
+  const auto it = object.find(key + "_ci95");
+  if (it == object.end() || !it->is_array() || it->size() != 2) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return 0.5 * ((*it)[1].get<double>() - (*it)[0].get<double>());
+}
+
+// The intervals' half-widths, in kHalfWidthColumns' order.
+void ReadHalfWidths(const nlohmann::json& fit, const nlohmann::json& ef,
+                    CaseSummary* summary) {
+  const nlohmann::json& frames = fit.at("frames");
+  const nlohmann::json& es = frames.at(summary->es_frame).at("clinical");
+  const nlohmann::json strain = fit.value("strain", nlohmann::json::object());
+  summary->half_widths = {HalfWidth(ef, "edv_ml"),
+                          HalfWidth(ef, "esv_ml"),
+                          HalfWidth(ef, "ratio"),
+                          HalfWidth(frames.at(0), "lv_mass_g"),
+                          HalfWidth(es, "wall_thickening_percent"),
+                          HalfWidth(es, "net_twist_deg"),
+                          HalfWidth(es, "longitudinal_shortening_percent"),
+                          HalfWidth(es, "radial_contraction_percent"),
+                          HalfWidth(strain, "peak_gcs_percent"),
+                          HalfWidth(strain, "peak_gls_percent")};
+  summary->has_intervals = fit.contains("uncertainty_definition");
+}
+
+// ",hw,hw,..." for the case (empty fields where it has none).
+std::string HalfWidthFields(const CaseSummary& c) {
+  std::ostringstream out;
+  out.precision(6);
+  for (size_t i = 0; i < std::size(kHalfWidthColumns); ++i) {
+    out << ',';
+    if (i < c.half_widths.size() && !std::isnan(c.half_widths[i])) {
+      if (i == 2 && c.volume_surface != "cavity") continue;
+      out << c.half_widths[i];
+    }
+  }
+  return out.str();
+}
 
 std::string CsvField(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
@@ -86,6 +144,7 @@ CaseSummary SummaryFromFitJson(const std::string& name,
           es.at("wall_thickening_percent").get<double>();
     }
     ReadQuality(fit, &summary);
+    ReadHalfWidths(fit, ef, &summary);
     if (fit.contains("strain")) {
       summary.has_strain = true;
       summary.peak_gcs_percent =
@@ -107,7 +166,14 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
          "wall_thickening_at_es_percent,net_twist_at_es_deg,"
          "longitudinal_shortening_at_es_percent,"
          "radial_contraction_at_es_percent,peak_gcs_percent,"
-         "peak_gls_percent,quality_reasons,error\n";
+         "peak_gls_percent,quality_reasons,error";
+  const bool intervals =
+      std::any_of(cases.begin(), cases.end(),
+                  [](const CaseSummary& c) { return c.has_intervals; });
+  for (const char* column : kHalfWidthColumns) {
+    if (intervals) out << ',' << column << "_hw95";
+  }
+  out << '\n';
   for (const CaseSummary& c : cases) {
     out << CsvField(c.name) << ',' << c.status << ',' << c.quality << ',';
     if (c.status == "done") {
@@ -132,7 +198,9 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
     } else {
       out << ",,,,,,,,,,,,,,,";
     }
-    out << CsvField(c.error) << '\n';
+    out << CsvField(c.error);
+    if (intervals) out << HalfWidthFields(c);
+    out << '\n';
   }
   return out.str();
 }

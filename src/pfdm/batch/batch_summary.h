@@ -43,7 +43,16 @@ struct CaseSummary {
   double peak_gcs_percent = 0.0;
   double peak_gls_percent = 0.0;
   std::string error;  // For a failed case.
+  // The half-widths of the 95 % intervals of the numbers above (fit.json's
+  // "<key>_ci95", --uncertainty on), in kHalfWidthColumns' order; NaN where
+  // fit.json has none.  has_intervals: fit.json has any.
+  bool has_intervals = false;
+  std::vector<double> half_widths;
 };
+
+// summary.csv's half-width columns, written after the others when some
+// case has intervals: "<column>_hw95", the half-width of its 95 % interval.
+extern const char* const kHalfWidthColumns[10];
 
 // The numbers of a finished case, read back from its fit.json text, so a
 // resumed run summarizes cases it skipped exactly like ones it fitted.

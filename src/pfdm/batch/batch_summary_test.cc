@@ -1,5 +1,8 @@
 #include "pfdm/batch/batch_summary.h"
 
+#include <cmath>
+#include <string>
+
 #include "gtest/gtest.h"
 #include "pfdm/util/error.h"
 
@@ -139,6 +142,32 @@ TEST(BatchSummaryTest, NamesWhatTheVolumesEnclose) {
   EXPECT_NE(csv.find("\nm,done,,3,1.25,midwall,150,60,1,,,,12.5,"),
             std::string::npos)
       << csv;
+}
+
+// With --uncertainty on: the half-widths of fit.json's intervals in
+// columns of their own after the others, empty for a case without.
+TEST(BatchSummaryTest, HalfWidthColumnsWhenACaseHasIntervals) {
+  std::string text = kFitJson;
+  text.replace(text.find("\"edv_ml\": 150.0"), 15,
+               "\"edv_ml\": 150.0, \"edv_ml_ci95\": [146.0, 154.0]");
+  text.replace(text.find("\"peak_gcs_frame\""), 16,
+               "\"peak_gcs_percent_ci95\": [-19.5, -17.5], \"peak_gcs_frame\"");
+  text.insert(1, "\"uncertainty_definition\": \"...\", ");
+  const CaseSummary with = SummaryFromFitJson("a", text, "a/fit.json");
+  EXPECT_TRUE(with.has_intervals);
+  ASSERT_EQ(with.half_widths.size(), 10u);
+  EXPECT_EQ(with.half_widths[0], 4.0);
+  EXPECT_EQ(with.half_widths[8], 1.0);
+  EXPECT_TRUE(std::isnan(with.half_widths[1]));
+  const CaseSummary without = SummaryFromFitJson("b", kFitJson, "b/fit.json");
+  EXPECT_FALSE(without.has_intervals);
+  const std::string csv = SummaryCsv({with, without});
+  EXPECT_NE(csv.find("error,ed_volume_ml_hw95,es_volume_ml_hw95,"),
+            std::string::npos);
+  EXPECT_NE(csv.find(",4,,,,,,,,1,\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nb,done"), std::string::npos);
+  // Without any intervals the columns are not there.
+  EXPECT_EQ(SummaryCsv({without}).find("_hw95"), std::string::npos);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "ceres/types.h"
 #include "nlohmann/json.hpp"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/intervals_json.h"
 #include "pfdm/io/not_measured_json.h"
 #include "pfdm/io/segments_json.h"
 #include "pfdm/report/clinical_summary.h"
@@ -493,6 +494,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                        {"regions", Regions(analysis, solid)},
                        {"strain", StrainSection(analysis)},
                        {"frames", Frames(fit, analysis)}});
+  AddIntervals(analysis, &document);
   return document.dump(2) + "\n";
 }
 

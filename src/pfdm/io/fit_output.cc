@@ -285,11 +285,16 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
   // The frames' meshes are formatted and written while gnuplot renders the
   // plots (one gnuplot for the four: its start-up, not the plotting, was
   // most of their time).
-  plots->Render({ParameterPlots(analysis.models, analysis.rotation_measured),
-                 CycleCurves(analysis.clinical, analysis.volume_surface,
-                             analysis.ejection_fraction.ed_frame),
-                 StrainCurves(analysis.strain),
-                 Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
+  std::vector<FrameCovariance> covariances;
+  for (const FrameFit& frame : fit.frames) {
+    covariances.push_back(frame.covariance);
+  }
+  plots->Render(
+      {ParameterPlots(analysis.models, analysis.rotation_measured, covariances),
+       CycleCurves(analysis.clinical, analysis.volume_surface,
+                   analysis.ejection_fraction.ed_frame, analysis.sd.clinical),
+       StrainCurves(analysis.strain, analysis.sd.strain),
+       Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::string> frame_names;
   std::vector<std::pair<double, std::string>> timesteps;
   for (const FrameFit& frame : fit.frames) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "pfdm/report/fit_plots.h"
+#include "pfdm/report/interval_text.h"
 
 namespace pfdm {
 namespace {
@@ -60,6 +61,11 @@ const char* PaletteOf(BullseyePalette palette) {
 }
 
 }  // namespace
+
+bool UncertainSegment(const BullseyeMap& map, size_t r) {
+  return r < map.half_widths.size() && Measured(map.half_widths[r]) &&
+         map.half_widths[r] > map.uncertain_half_width;
+}
 
 std::pair<double, double> BullseyeSpanDeg(const WallRegion& region) {
   const double width = (region.v_end - region.v_begin) * kDegreesPerRadian;
@@ -122,7 +128,8 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
       if (std::isnan(map.values[r])) {
         std::snprintf(value, sizeof(value), "n/a");
       } else {
-        std::snprintf(value, sizeof(value), "%.1f", map.values[r]);
+        std::snprintf(value, sizeof(value), "%.1f%s", map.values[r],
+                      UncertainSegment(map, r) ? "?" : "");
       }
       script << "set label '" << value << "' at " << radius * std::cos(middle)
              << ',' << radius * std::sin(middle)
@@ -155,6 +162,27 @@ std::string BullseyeSvg(const std::vector<WallRegion>& regions,
   return RenderSvgString(Bullseye(regions, maps));
 }
 
+namespace {
+
+// The maps' half-widths (peak Ecc's at its frame) and their rules.
+void AddHalfWidths(const FitAnalysis& analysis, BullseyeMap* ecc,
+                   BullseyeMap* radial, BullseyeMap* rotation) {
+  const size_t es = analysis.ejection_fraction.es_frame;
+  for (size_t r = 0; r < analysis.regions.size(); ++r) {
+    ecc->half_widths.push_back(HalfWidth95(RegionSd(
+        analysis, PeakEccFrame(analysis, r), r, &RegionMotion::ecc_percent)));
+    radial->half_widths.push_back(HalfWidth95(
+        RegionSd(analysis, es, r, &RegionMotion::radial_contraction_percent)));
+    rotation->half_widths.push_back(
+        HalfWidth95(RegionSd(analysis, es, r, &RegionMotion::rotation_deg)));
+  }
+  ecc->uncertain_half_width = kUncertainEccPercent;
+  radial->uncertain_half_width = kUncertainContractionPercent;
+  rotation->uncertain_half_width = kUncertainRotationDeg;
+}
+
+}  // namespace
+
 std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
   const int es = analysis.ejection_fraction.es_frame;
   BullseyeMap ecc{"peak Ecc, %", PeakRegionEcc(analysis.region_motion),
@@ -169,6 +197,7 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
       rotation.values.push_back(m.rotation_deg);
     }
   }
+  if (analysis.sd.computed) AddHalfWidths(analysis, &ecc, &radial, &rotation);
   // At an ES without tracked points rotation is not measured: no map.  (The
   // apex cap alone may be n/a: no data near the apex.)
   bool measured = !rotation.values.empty();
@@ -181,7 +210,9 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
   return {ecc, radial, rotation};
 }
 
-SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain) {
+SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,
+                     const std::vector<GlobalStrain>& sd) {
+  const bool bars = !sd.empty() && sd.size() == strain.size();
   PlotData block{"strain", {}};
   for (size_t t = 0; t < strain.size(); ++t) {
     const GlobalStrain& g = strain[t];
@@ -189,7 +220,9 @@ SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain) {
         {static_cast<double>(t), g.gcs_percent, g.level_ecc_percent[kBasal],
          g.level_ecc_percent[kMid], g.level_ecc_percent[kApical], g.gls_percent,
          g.level_ell_percent[kBasal], g.level_ell_percent[kMid],
-         g.level_ell_percent[kApical]});
+         g.level_ell_percent[kApical],
+         bars ? HalfWidth95(sd[t].gcs_percent) : 0.0,
+         bars ? HalfWidth95(sd[t].gls_percent) : 0.0});
   }
   std::ostringstream script;
   script << "set multiplot layout 1,2 margins 0.06,0.98,0.14,0.82 "
@@ -205,7 +238,8 @@ SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain) {
     const int first = 2 + 4 * p;
     script << "set title '" << panels[p][0] << "'\n"
            << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
-           << "$strain using 1:" << first << " lc rgb '#222222' pt 5 lw 2 "
+           << "$strain " << UsingWithBars(first, 10 + p, bars)
+           << " lc rgb '#222222' pt 5 lw 2 "
            << "title '" << panels[p][1] << " (global)', "
            << "'' using 1:" << first + 1
            << " lc rgb '#2471a3' pt 7 title 'basal', "
@@ -218,8 +252,9 @@ SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain) {
   return {"strain.svg", {block}, script.str(), 1200, 380};
 }
 
-std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain) {
-  return RenderSvgString(StrainCurves(strain));
+std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain,
+                            const std::vector<GlobalStrain>& sd) {
+  return RenderSvgString(StrainCurves(strain, sd));
 }
 
 }  // namespace pfdm

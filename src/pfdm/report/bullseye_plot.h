@@ -25,7 +25,24 @@ struct BullseyeMap {
   std::string title;           // Panel title, units included.
   std::vector<double> values;  // One per region of the layout.
   BullseyePalette palette = BullseyePalette::kShorteningRed;
+  // The values' 95 % half-widths (empty: none, --uncertainty off); a
+  // segment whose half-width exceeds uncertain_half_width is marked
+  // uncertain ("?" after its value), a reliable one is not.
+  std::vector<double> half_widths;
+  double uncertain_half_width = 0.0;
 };
+
+// The bull's-eye's rule: a segment is uncertain when its 95 % interval's
+// half-width exceeds a quarter of the number's normal size at end-systole
+// (peak Ecc about -18 %, radial contraction about 22 %, apical rotation
+// about 8 degrees): an interval that wide could hold both a normal and a
+// hypokinetic segment.
+inline constexpr double kUncertainEccPercent = 4.5;
+inline constexpr double kUncertainContractionPercent = 5.5;
+inline constexpr double kUncertainRotationDeg = 2.0;
+
+// Whether map's segment r is marked uncertain.
+bool UncertainSegment(const BullseyeMap& map, size_t r);
 
 // The display angles (degrees, counter-clockwise from the +x of the page)
 // a region spans: as the AHA draws it, sector 1 of every ring centred at
@@ -54,8 +71,11 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis);
 
 // Over the frames: Ecc and Ell, the global means (GCS, GLS) and each
 // level's, one panel each.
-std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain);
-SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain);
+// sd (NumberSd::strain), when given: 95 % error bars on GCS and GLS.
+std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain,
+                            const std::vector<GlobalStrain>& sd = {});
+SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,
+                     const std::vector<GlobalStrain>& sd = {});
 
 }  // namespace pfdm
 

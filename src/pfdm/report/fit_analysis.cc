@@ -1,6 +1,7 @@
 #include "pfdm/report/fit_analysis.h"
 
 #include "pfdm/model/model_surface.h"
+#include "pfdm/report/number_uncertainty.h"
 #include "pfdm/report/plausibility.h"
 
 namespace pfdm {
@@ -133,6 +134,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   }
   // The levels' strain, above, keeps the cap as part of the apical third.
   analysis.apex_cap_measured = fit.apex_in_data || show_extrapolated;
+  analysis.sd = PropagateUncertainty(fit, analysis);
   return analysis;
 }
 

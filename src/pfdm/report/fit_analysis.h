@@ -11,6 +11,7 @@
 #include "pfdm/model/model.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
+#include "pfdm/report/number_sd.h"
 #include "pfdm/report/wall_motion.h"
 #include "pfdm/util/verdict.h"
 
@@ -59,6 +60,10 @@ struct FitAnalysis {
   // and when (UtcMinuteNow); empty: no footer.  Set by the caller.
   std::string made_by;
   std::string made_utc;
+  // Every number's standard deviation, by the delta method over the
+  // frames' covariances (report/number_uncertainty.h); computed false
+  // without them (--uncertainty off).
+  NumberSd sd;
 };
 
 // "cavity", "epicardial" or "midwall": see FitAnalysis::volume_surface.

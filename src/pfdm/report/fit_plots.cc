@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "pfdm/report/gnuplot.h"
+#include "pfdm/report/number_sd.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -33,10 +34,37 @@ std::string FrameColor(int t, int n) {
   return color;
 }
 
+// The 95 % half-widths of frame `model`'s plotted values at knot k (the
+// columns of ParameterPlots after the knot), 0 without a covariance.
+std::vector<double> KnotHalfWidths(const Model& model, const Model& ed,
+                                   const FrameCovariance* covariance, int k,
+                                   double degrees, bool reference) {
+  static const int kColumns[] = {kA1, kA2, kA3, kTau, kB0, kB2, kH, kDtau};
+  std::vector<double> widths;
+  const double u = model.config.Grid().KnotU(k);
+  for (int f : kColumns) {
+    double sd = covariance != nullptr && covariance->computed
+                    ? covariance->KnotSd(model.config, f, k)
+                    : 0.0;
+    // Frame 0's ratios are 1 by definition.
+    if (f == kA1 || f == kA2 || f == kA3)
+      sd *= reference ? 0.0 : 1.0 / ed.FunctionAt(f, u);
+    if (f == kTau || f == kDtau) sd *= degrees;
+    widths.push_back(HalfWidth95(sd));
+  }
+  return widths;
+}
+
 }  // namespace
 
+std::string UsingWithBars(int column, int half_width, bool bars) {
+  return "using 1:" + std::to_string(column) +
+         (bars ? ":" + std::to_string(half_width) + " with yerrorlines" : "");
+}
+
 SvgPlot ParameterPlots(const std::vector<Model>& frames,
-                       const std::vector<bool>& rotation_measured) {
+                       const std::vector<bool>& rotation_measured,
+                       const std::vector<FrameCovariance>& covariances) {
   const int n = static_cast<int>(frames.size());
   const int knots = frames.front().config.num_knots;
   const KnotGrid grid = frames.front().config.Grid();
@@ -61,6 +89,11 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
            m.FunctionAt(kTau, u) * degrees, m.FunctionAt(kB0, u),
            m.FunctionAt(kB2, u), m.FunctionAt(kH, u),
            m.FunctionAt(kDtau, u) * degrees});
+      const bool has = t < static_cast<int>(covariances.size());
+      const std::vector<double> widths = KnotHalfWidths(
+          m, ed, has ? &covariances[t] : nullptr, k, degrees, t == 0);
+      block.rows.back().insert(block.rows.back().end(), widths.begin(),
+                               widths.end());
     }
   }
   std::ostringstream colors;
@@ -93,6 +126,9 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
       {8, "wall thickness h (mm)", "0"},
       {9, "epi minus endo twist dtau (degrees)", "0"},
   };
+  const bool bands =
+      std::any_of(covariances.begin(), covariances.end(),
+                  [](const FrameCovariance& c) { return c.computed; });
   bool first = true;
   for (const Panel& p : panels) {
     if (!solid && p.column > 7) break;
@@ -109,8 +145,15 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
       script << "unset key\n";
     }
     script << "plot " << p.reference
-           << " notitle with lines dt 2 lc rgb '#888888', "
-           << "for [t=0:" << n - 1 << "] $knots index t using 1:" << p.column
+           << " notitle with lines dt 2 lc rgb '#888888', ";
+    if (bands) {  // The 95 % bands under the lines.
+      const int c = p.column, w = p.column + 8;
+      script << "for [t=0:" << n - 1 << "] $knots index t using 1:($" << c
+             << "-$" << w << "):($" << c << "+$" << w
+             << ") with filledcurves lc rgb word(colors, t + 1) "
+                "fs transparent solid 0.18 noborder notitle, ";
+    }
+    script << "for [t=0:" << n - 1 << "] $knots index t using 1:" << p.column
            << " lc rgb word(colors, t + 1) pt 7 title sprintf('%d', t)\n";
     if (twist_panel && !any_twist) script << "unset label 1\n";
     first = false;
@@ -120,12 +163,15 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
 }
 
 std::string ParameterPlotsSvg(const std::vector<Model>& frames,
-                              const std::vector<bool>& rotation_measured) {
-  return RenderSvgString(ParameterPlots(frames, rotation_measured));
+                              const std::vector<bool>& rotation_measured,
+                              const std::vector<FrameCovariance>& covariances) {
+  return RenderSvgString(
+      ParameterPlots(frames, rotation_measured, covariances));
 }
 
 SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
-                    const std::string& volume_surface, int ed_frame) {
+                    const std::string& volume_surface, int ed_frame,
+                    const std::vector<ClinicalSummary>& sd) {
   // Against the time from the trigger where every frame has one, else the
   // frame number.
   const bool timed =
@@ -135,12 +181,21 @@ SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
   auto x_of = [&](const ClinicalSummary& s) {
     return timed ? s.time_ms : static_cast<double>(s.frame);
   };
+  // Columns 2-7 the numbers, 8-13 their 95 % half-widths.
+  const bool bars = sd.size() == summaries.size() && !sd.empty();
   PlotData block{"cycle", {}};
-  for (const ClinicalSummary& s : summaries) {
+  for (size_t t = 0; t < summaries.size(); ++t) {
+    const ClinicalSummary& s = summaries[t];
     block.rows.push_back({x_of(s), s.volume_ml, s.apex_rotation_deg,
                           s.base_rotation_deg, s.net_twist_deg,
                           s.radial_contraction_percent,
                           s.longitudinal_shortening_percent});
+    const ClinicalSummary* e = bars ? &sd[t] : &s;
+    for (double v : {e->volume_ml, e->apex_rotation_deg, e->base_rotation_deg,
+                     e->net_twist_deg, e->radial_contraction_percent,
+                     e->longitudinal_shortening_percent}) {
+      block.rows.back().push_back(bars ? HalfWidth95(v) : 0.0);
+    }
   }
   const EjectionFraction ef = EjectionFractionOf(summaries, ed_frame);
   const double ed_x = summaries.empty() ? 0.0 : x_of(summaries[ef.ed_frame]);
@@ -168,27 +223,34 @@ SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
          << " offset 0.5,0.8\n"
          << "set label 2 'ES' at " << es_x << ',' << ef.esv_ml
          << " offset 0,-1\n"
-         << "plot $cycle using 1:2 lc rgb '#1f3f8f' pt 7 title 'volume'\n"
+         << "plot $cycle " << UsingWithBars(2, 8, bars)
+         << " lc rgb '#1f3f8f' pt 7 title 'volume'\n"
          << "unset label 1\nunset label 2\n"
          << "set key top right opaque font 'sans,10' samplen 2\n";
   if (any_rotation) {
     script << "set title 'rotation about the LV axis'\nset ylabel 'degrees'\n"
-           << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
-              "$cycle using 1:3 lc rgb '#c0392b' pt 7 title 'apex', "
-              "'' using 1:4 lc rgb '#2471a3' pt 7 title 'base', "
-              "'' using 1:5 lc rgb '#222222' pt 5 lw 2 title 'net twist'\n";
+           << "plot 0 notitle with lines dt 2 lc rgb '#888888', $cycle "
+           << UsingWithBars(3, 9, bars)
+           << " lc rgb '#c0392b' pt 7 title 'apex', '' "
+           << UsingWithBars(4, 10, bars)
+           << " lc rgb '#2471a3' pt 7 title 'base', '' "
+           << UsingWithBars(5, 11, bars)
+           << " lc rgb '#222222' pt 5 lw 2 title 'net twist'\n";
   }
   script << "set title 'contraction'\nset ylabel 'percent'\n"
-         << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
-            "$cycle using 1:6 lc rgb '#c0392b' pt 7 title 'radial', "
-            "'' using 1:7 lc rgb '#2471a3' pt 5 title 'longitudinal'\n"
+         << "plot 0 notitle with lines dt 2 lc rgb '#888888', $cycle "
+         << UsingWithBars(6, 12, bars)
+         << " lc rgb '#c0392b' pt 7 title 'radial', '' "
+         << UsingWithBars(7, 13, bars)
+         << " lc rgb '#2471a3' pt 5 title 'longitudinal'\n"
          << "unset multiplot\n";
   return {"cycle.svg", {block}, script.str(), 1200, 380};
 }
 
 std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
-                           const std::string& volume_surface, int ed_frame) {
-  return RenderSvgString(CycleCurves(summaries, volume_surface, ed_frame));
+                           const std::string& volume_surface, int ed_frame,
+                           const std::vector<ClinicalSummary>& sd) {
+  return RenderSvgString(CycleCurves(summaries, volume_surface, ed_frame, sd));
 }
 
 }  // namespace pfdm

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "pfdm/fit/problem/frame_covariance.h"
 #include "pfdm/model/model.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/gnuplot.h"
@@ -16,10 +17,16 @@ namespace pfdm {
 // apex to base, one line per frame (dark early, light late) with a legend.
 // rotation_measured (FitAnalysis::rotation_measured), when given: the twist
 // panels leave out the frames where it is false, whose tau the fit held.
-std::string ParameterPlotsSvg(const std::vector<Model>& frames,
-                              const std::vector<bool>& rotation_measured = {});
+// covariances (FrameFit::covariance per frame), when given and computed:
+// each line in a band of its knots' 95 % intervals (the ratios' from the
+// frame's a's alone, frame 0's taken as exact).
+std::string ParameterPlotsSvg(
+    const std::vector<Model>& frames,
+    const std::vector<bool>& rotation_measured = {},
+    const std::vector<FrameCovariance>& covariances = {});
 SvgPlot ParameterPlots(const std::vector<Model>& frames,
-                       const std::vector<bool>& rotation_measured = {});
+                       const std::vector<bool>& rotation_measured = {},
+                       const std::vector<FrameCovariance>& covariances = {});
 
 // Over the frames: cavity volume (ED and ES marked), apex and base rotation
 // with net twist, and radial and longitudinal contraction.  Rotations that
@@ -27,13 +34,19 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
 // volume_surface: what the volumes enclose (FitAnalysis::volume_surface);
 // only the cavity's gives an ejection fraction, ED at ed_frame.  The x axis
 // is the time from the trigger (ms) when every summary has one, else the
-// frame number.
+// frame number.  sd (NumberSd::clinical), when given: 95 % error bars.
 std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
                            const std::string& volume_surface = "cavity",
-                           int ed_frame = 0);
+                           int ed_frame = 0,
+                           const std::vector<ClinicalSummary>& sd = {});
 SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
                     const std::string& volume_surface = "cavity",
-                    int ed_frame = 0);
+                    int ed_frame = 0,
+                    const std::vector<ClinicalSummary>& sd = {});
+
+// gnuplot's "using" of column `column` against column 1, with "with
+// yerrorlines" and the half-width from column `half_width` when bars.
+std::string UsingWithBars(int column, int half_width, bool bars);
 
 }  // namespace pfdm
 

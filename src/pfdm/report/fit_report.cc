@@ -7,6 +7,7 @@
 
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/report/clinical_summary.h"
+#include "pfdm/report/interval_text.h"
 #include "pfdm/report/verdict_box.h"
 #include "pfdm/util/markup_escape.h"
 #include "pfdm/util/verdict.h"
@@ -133,27 +134,42 @@ std::string PageHead(const PointSequence& points, const SequenceFit& fit,
 // volumes under what they are of.
 std::string VolumeCard(const FitAnalysis& analysis) {
   const EjectionFraction& ef = analysis.ejection_fraction;
+  const EjectionFraction& sd = analysis.sd.ejection_fraction;
+  const bool with_sd = analysis.sd.computed;
   std::ostringstream h;
   if (analysis.volume_surface == "cavity") {
-    h << "<div>ejection fraction<b>" << Fixed(100 * ef.ratio, 1) << " %</b>"
-      << "EDV " << Fixed(ef.edv_ml, 1) << " ml, ESV " << Fixed(ef.esv_ml, 1)
+    h << "<div>ejection fraction<b>" << Fixed(100 * ef.ratio, 1)
+      << (with_sd ? PlusMinus(100 * sd.ratio, 1) : "") << " %</b>"
+      << "EDV " << Fixed(ef.edv_ml, 1)
+      << (with_sd ? PlusMinus(sd.edv_ml, 1) : "") << " ml, ESV "
+      << Fixed(ef.esv_ml, 1) << (with_sd ? PlusMinus(sd.esv_ml, 1) : "")
       << " ml</div>";
   } else {
     h << "<div>" << VolumeName(analysis) << "<b>" << Fixed(ef.edv_ml, 1)
-      << " ml</b>"
+      << (with_sd ? PlusMinus(sd.edv_ml, 1) : "") << " ml</b>"
       << "at ED, " << Fixed(ef.esv_ml, 1)
+      << (with_sd ? PlusMinus(sd.esv_ml, 1) : "")
       << " ml at ES: not the cavity, no ejection fraction</div>";
   }
   return h.str();
 }
 
 // A solid's mass, wall thickening and endocardial and epicardial motion.
-std::string SolidCards(const ClinicalSummary& ed, const ClinicalSummary& es) {
+std::string SolidCards(const FitAnalysis& a) {
+  const size_t ed_frame = a.ejection_fraction.ed_frame;
+  const size_t es_frame = a.ejection_fraction.es_frame;
+  const ClinicalSummary& ed = a.clinical[ed_frame];
+  const ClinicalSummary& es = a.clinical[es_frame];
   std::ostringstream h;
-  h << "<div>LV mass at ED<b>" << Fixed(ed.lv_mass_g, 0) << " g</b>"
+  h << "<div>LV mass at ED<b>" << Fixed(ed.lv_mass_g, 0)
+    << PlusMinus(ClinicalSd(a, ed_frame, &ClinicalSummary::lv_mass_g), 0)
+    << " g</b>"
     << "myocardium " << Fixed(ed.myocardial_volume_ml, 0)
     << " ml at 1.05 g/ml</div>"
     << "<div>wall thickening at ES<b>" << Fixed(es.wall_thickening_percent, 1)
+    << PlusMinus(
+           ClinicalSd(a, es_frame, &ClinicalSummary::wall_thickening_percent),
+           1)
     << " %</b>" << Fixed(ed.wall_thickness_mm, 1) << " to "
     << Fixed(es.wall_thickness_mm, 1) << " mm</div>"
     << "<div>endo / epi net twist at ES<b>"
@@ -172,29 +188,41 @@ std::string KeyNumbers(const SequenceFit& fit, const FitAnalysis& analysis) {
   const StrainPeak gcs = PeakGcs(analysis.strain);
   const StrainPeak gls = PeakGls(analysis.strain);
   const ClinicalSummary& es = analysis.clinical[ef.es_frame];
-  const ClinicalSummary& ed = analysis.clinical[ef.ed_frame];
+  const size_t e = ef.es_frame;
+  auto pm = [&](double ClinicalSummary::*field, int digits) {
+    return PlusMinus(ClinicalSd(analysis, e, field), digits);
+  };
   std::ostringstream h;
   h << "<div class=\"key\">" << VolumeCard(analysis);
-  if (fit.config.Solid()) h << SolidCards(ed, es);
-  h << "<div>net twist at ES<b>" << WithUnit(es.net_twist_deg, 1, "&deg;")
+  if (fit.config.Solid()) h << SolidCards(analysis);
+  h << "<div>net twist at ES<b>"
+    << WithUnit(es.net_twist_deg, 1,
+                (pm(&ClinicalSummary::net_twist_deg, 1) + "&deg;").c_str())
     << "</b>"
     << (Measured(es.net_twist_deg)
             ? "apex " + Fixed(es.apex_rotation_deg, 1) + "&deg;, base " +
                   Fixed(es.base_rotation_deg, 1) + "&deg;"
             : "no tracked points at ES")
     << "</div><div>torsion at ES<b>"
-    << WithUnit(es.torsion_deg_per_cm, 2, "&deg;/cm") << "</b>shear angle "
-    << WithUnit(es.shear_angle_deg, 1, "&deg;") << "</div>"
+    << WithUnit(
+           es.torsion_deg_per_cm, 2,
+           (pm(&ClinicalSummary::torsion_deg_per_cm, 2) + "&deg;/cm").c_str())
+    << "</b>shear angle " << WithUnit(es.shear_angle_deg, 1, "&deg;")
+    << "</div>"
     << "<div>radial contraction at ES<b>"
-    << Fixed(es.radial_contraction_percent, 1) << " %</b>"
+    << Fixed(es.radial_contraction_percent, 1)
+    << pm(&ClinicalSummary::radial_contraction_percent, 1) << " %</b>"
     << "mean over ten rings</div>"
     << "<div>longitudinal shortening at ES<b>"
-    << Fixed(es.longitudinal_shortening_percent, 1) << " %</b>"
+    << Fixed(es.longitudinal_shortening_percent, 1)
+    << pm(&ClinicalSummary::longitudinal_shortening_percent, 1) << " %</b>"
     << "apex to base-rim centroid</div>"
-    << "<div>peak GCS<b>" << Fixed(gcs.percent, 1) << " %</b>frame "
-    << gcs.frame << ", circumferential</div>"
-    << "<div>peak GLS<b>" << Fixed(gls.percent, 1) << " %</b>frame "
-    << gls.frame << ", longitudinal</div></div>\n";
+    << "<div>peak GCS<b>" << Fixed(gcs.percent, 1)
+    << PlusMinus(StrainSd(analysis, gcs.frame, &GlobalStrain::gcs_percent), 1)
+    << " %</b>frame " << gcs.frame << ", circumferential</div>"
+    << "<div>peak GLS<b>" << Fixed(gls.percent, 1)
+    << PlusMinus(StrainSd(analysis, gls.frame, &GlobalStrain::gls_percent), 1)
+    << " %</b>frame " << gls.frame << ", longitudinal</div></div>\n";
   return h.str();
 }
 
@@ -281,25 +309,32 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& f = fit.frames[t];
     const ClinicalSummary& c = analysis.clinical[t];
+    auto pm = [&](double ClinicalSummary::*field, int digits) {
+      return Fixed(c.*field, digits) +
+             PlusMinus(ClinicalSd(analysis, t, field), digits);
+    };
+    auto strain = [&](double GlobalStrain::*field) {
+      return t < analysis.strain.size()
+                 ? Fixed(analysis.strain[t].*field, 1) +
+                       PlusMinus(StrainSd(analysis, t, field), 1)
+                 : "";
+    };
     h << "<tr><td>" << f.frame
       << (static_cast<int>(t) == ef.es_frame ? " ES"
           : t == 0                           ? " ED"
                                              : "")
       << "</td><td>" << f.residuals.size() << "</td><td>" << Fixed(f.rms_mm, 2)
       << "</td><td>" << Fixed(f.mean_distance_mm, 2) << "</td><td>"
-      << Fixed(f.max_distance_mm, 2) << "</td><td>" << Fixed(c.volume_ml, 1)
-      << "</td><td>" << Fixed(c.net_twist_deg, 1) << "</td><td>"
-      << Fixed(c.apex_rotation_deg, 1) << "</td><td>"
-      << Fixed(c.base_rotation_deg, 1) << "</td><td>"
-      << Fixed(c.torsion_deg_per_cm, 2) << "</td><td>"
-      << Fixed(c.radial_contraction_percent, 1) << "</td><td>"
-      << Fixed(c.longitudinal_shortening_percent, 1) << "</td><td>"
-      << (t < analysis.strain.size() ? Fixed(analysis.strain[t].gcs_percent, 1)
-                                     : "")
-      << "</td><td>"
-      << (t < analysis.strain.size() ? Fixed(analysis.strain[t].gls_percent, 1)
-                                     : "")
-      << "</td><td class=\"l\">"
+      << Fixed(f.max_distance_mm, 2) << "</td><td>"
+      << pm(&ClinicalSummary::volume_ml, 1) << "</td><td>"
+      << pm(&ClinicalSummary::net_twist_deg, 1) << "</td><td>"
+      << pm(&ClinicalSummary::apex_rotation_deg, 1) << "</td><td>"
+      << pm(&ClinicalSummary::base_rotation_deg, 1) << "</td><td>"
+      << pm(&ClinicalSummary::torsion_deg_per_cm, 2) << "</td><td>"
+      << pm(&ClinicalSummary::radial_contraction_percent, 1) << "</td><td>"
+      << pm(&ClinicalSummary::longitudinal_shortening_percent, 1) << "</td><td>"
+      << strain(&GlobalStrain::gcs_percent) << "</td><td>"
+      << strain(&GlobalStrain::gls_percent) << "</td><td class=\"l\">"
       << EscapeMarkup(f.termination + UnsettledNote(f))
       << "</td><td class=\"l\">"
       << (t < analysis.verdicts.size()
@@ -312,24 +347,36 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
 }
 
 // One segment's motion and strain at ES, tinted, and its peak Ecc.
-std::string RegionRow(const WallRegion& region, const RegionMotion& motion,
-                      double peak_ecc, bool solid) {
+std::string RegionRow(const FitAnalysis& analysis, size_t r, bool solid) {
   constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+  const WallRegion& region = analysis.regions[r];
+  const size_t es = analysis.ejection_fraction.es_frame;
+  const RegionMotion& motion = analysis.region_motion[es][r];
+  const int peak = PeakEccFrame(analysis, r);
+  const double peak_ecc = PeakRegionEcc(analysis.region_motion)[r];
+  auto pm = [&](double RegionMotion::*field, size_t t = 0) {
+    return PlusMinus(RegionSd(analysis, t ? t : es, r, field), 1);
+  };
   std::ostringstream h;
   h << "<tr><td>" << region.segment << "</td><td class=\"l\">" << region.Name()
     << "</td><td>" << Fixed(region.v_begin * kDegrees, 0) << " to "
     << Fixed(region.v_end * kDegrees, 0) << "</td><td"
     << Tint(motion.rotation_deg, 15.0) << ">" << Fixed(motion.rotation_deg, 1)
-    << "</td><td" << Tint(motion.radial_contraction_percent, 40.0) << ">"
-    << Fixed(motion.radial_contraction_percent, 1) << "</td><td"
+    << pm(&RegionMotion::rotation_deg) << "</td><td"
+    << Tint(motion.radial_contraction_percent, 40.0) << ">"
+    << Fixed(motion.radial_contraction_percent, 1)
+    << pm(&RegionMotion::radial_contraction_percent) << "</td><td"
     << Tint(-motion.ecc_percent, 30.0) << ">" << Fixed(motion.ecc_percent, 1)
-    << "</td><td" << Tint(-motion.ell_percent, 30.0) << ">"
-    << Fixed(motion.ell_percent, 1) << "</td><td>"
-    << Fixed(motion.ecl_percent, 1) << "</td><td" << Tint(-peak_ecc, 30.0)
-    << ">" << Fixed(peak_ecc, 1) << "</td>";
+    << pm(&RegionMotion::ecc_percent) << "</td><td"
+    << Tint(-motion.ell_percent, 30.0) << ">" << Fixed(motion.ell_percent, 1)
+    << pm(&RegionMotion::ell_percent) << "</td><td>"
+    << Fixed(motion.ecl_percent, 1) << pm(&RegionMotion::ecl_percent)
+    << "</td><td" << Tint(-peak_ecc, 30.0) << ">" << Fixed(peak_ecc, 1)
+    << (peak > 0 ? pm(&RegionMotion::ecc_percent, peak) : "") << "</td>";
   if (solid) {
     h << "<td" << Tint(motion.thickening_percent, 60.0) << ">"
-      << Fixed(motion.thickening_percent, 1) << "</td>";
+      << Fixed(motion.thickening_percent, 1)
+      << pm(&RegionMotion::thickening_percent) << "</td>";
   }
   h << "</tr>\n";
   return h.str();
@@ -339,8 +386,6 @@ std::string RegionRow(const WallRegion& region, const RegionMotion& motion,
 std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
                             const std::string& bullseye_svg) {
   const EjectionFraction& ef = analysis.ejection_fraction;
-  const std::vector<RegionMotion>& motion = analysis.region_motion[ef.es_frame];
-  const std::vector<double> peak_ecc = PeakRegionEcc(analysis.region_motion);
   std::ostringstream h;
   h << "<h2>Regional wall motion at ES (frame " << ef.es_frame << ")</h2>\n";
   if (!bullseye_svg.empty()) {
@@ -376,8 +421,7 @@ std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
     << "<th>Ecl %</th><th>peak Ecc %</th>"
     << (fit.config.Solid() ? "<th>thickening %</th>" : "") << "</tr>\n";
   for (size_t r = 0; r < analysis.regions.size(); ++r) {
-    h << RegionRow(analysis.regions[r], motion[r], peak_ecc[r],
-                   fit.config.Solid());
+    h << RegionRow(analysis, r, fit.config.Solid());
   }
   h << "</table>\n<p class=\"note\">Segments: thirds of the ED axis (basal, "
        "mid, apical) cut into "
@@ -429,7 +473,8 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const std::string& bullseye_svg) {
   std::ostringstream h;
   h << PageHead(points, fit, analysis) << VerdictBoxHtml(fit, analysis)
-    << KeyNumbers(fit, analysis) << MeasurementNote(fit, analysis);
+    << KeyNumbers(fit, analysis) << IntervalNoteHtml(analysis)
+    << MeasurementNote(fit, analysis);
   h << UntrackedNote(analysis);
   h << PlotSections(parameters_svg, cycle_svg, strain_svg)
     << FrameTable(fit, analysis) << RegionalSection(fit, analysis, bullseye_svg)

@@ -1,0 +1,30 @@
+"""Fit.intervals: every derived number's value, sd and 95 % interval."""
+import json
+
+import numpy as np
+import pfdm
+
+
+def test_intervals_are_arrays_beside_the_values_and_fit_json():
+    points, _ = pfdm.simulate(frames=2, tags=300, seed=5)
+    off = pfdm.fit(points, knots=7)
+    assert off.intervals is None
+    assert "_ci95" not in off.to_json()
+    fit = pfdm.fit(points, knots=7, uncertainty="on")
+    got = fit.intervals
+    gcs = got["frames"]["gcs_percent"]
+    assert gcs["value"].shape == (2,) and gcs["ci95"].shape == (2, 2)
+    # ED against itself: no strain, no spread; ES spreads.
+    assert gcs["sd"][0] < 1e-9 and gcs["sd"][1] > 0.01
+    np.testing.assert_allclose(gcs["ci95"][:, 1] - gcs["value"],
+                               1.959963984540054 * gcs["sd"])
+    ecc = got["segments"]["ecc_percent"]
+    assert ecc["value"].shape == (2, 17) and ecc["ci95"].shape == (2, 17, 2)
+    # The same numbers as fit.json's.
+    document = json.loads(fit.to_json())
+    np.testing.assert_allclose(document["frames"][1]["clinical"]["gcs_percent_ci95"],
+                               gcs["ci95"][1])
+    np.testing.assert_allclose(document["regions"][4]["ecc_percent_ci95"][1],
+                               ecc["ci95"][1, 4])
+    ef = got["ejection_fraction"]
+    assert ef["value"].shape == (3,) and np.all(ef["sd"][1:] > 0.0)

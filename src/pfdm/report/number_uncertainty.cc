@@ -1,0 +1,346 @@
+#include "pfdm/report/number_uncertainty.h"
+
+#include <cmath>
+
+#include "Eigen/Geometry"
+#include "pfdm/model/model_surface.h"
+
+namespace pfdm {
+
+std::vector<double*> ClinicalFields(ClinicalSummary* c) {
+  return {&c->apex_rotation_deg,
+          &c->base_rotation_deg,
+          &c->net_twist_deg,
+          &c->torsion_deg_per_cm,
+          &c->shear_angle_deg,
+          &c->radial_contraction_percent,
+          &c->longitudinal_shortening_percent,
+          &c->volume_ml,
+          &c->endo_apex_rotation_deg,
+          &c->endo_base_rotation_deg,
+          &c->endo_net_twist_deg,
+          &c->epi_apex_rotation_deg,
+          &c->epi_base_rotation_deg,
+          &c->epi_net_twist_deg,
+          &c->endo_radial_contraction_percent,
+          &c->epi_radial_contraction_percent,
+          &c->wall_thickness_mm,
+          &c->wall_thickening_percent,
+          &c->myocardial_volume_ml,
+          &c->lv_mass_g};
+}
+
+std::vector<double*> RegionFields(RegionMotion* m) {
+  return {&m->rotation_deg, &m->radial_contraction_percent,
+          &m->ecc_percent,  &m->ell_percent,
+          &m->ecl_percent,  &m->thickening_percent};
+}
+
+std::vector<double*> StrainFields(GlobalStrain* s) {
+  return {&s->gcs_percent,          &s->gls_percent,
+          &s->gcl_percent,          &s->level_ecc_percent[0],
+          &s->level_ecc_percent[1], &s->level_ecc_percent[2],
+          &s->level_ell_percent[0], &s->level_ell_percent[1],
+          &s->level_ell_percent[2]};
+}
+
+const std::vector<std::string>& ClinicalFieldNames() {
+  static const std::vector<std::string> names = {
+      "apex_rotation_deg",
+      "base_rotation_deg",
+      "net_twist_deg",
+      "torsion_deg_per_cm",
+      "shear_angle_deg",
+      "radial_contraction_percent",
+      "longitudinal_shortening_percent",
+      "volume_ml",
+      "endo_apex_rotation_deg",
+      "endo_base_rotation_deg",
+      "endo_net_twist_deg",
+      "epi_apex_rotation_deg",
+      "epi_base_rotation_deg",
+      "epi_net_twist_deg",
+      "endo_radial_contraction_percent",
+      "epi_radial_contraction_percent",
+      "wall_thickness_mm",
+      "wall_thickening_percent",
+      "myocardial_volume_ml",
+      "lv_mass_g"};
+  return names;
+}
+
+const std::vector<std::string>& RegionFieldNames() {
+  static const std::vector<std::string> names = {
+      "rotation_deg", "radial_contraction_percent",
+      "ecc_percent",  "ell_percent",
+      "ecl_percent",  "thickening_percent"};
+  return names;
+}
+
+const std::vector<std::string>& StrainFieldNames() {
+  static const std::vector<std::string> names = {
+      "gcs_percent",       "gls_percent",     "gcl_percent",
+      "basal_ecc_percent", "mid_ecc_percent", "apical_ecc_percent",
+      "basal_ell_percent", "mid_ell_percent", "apical_ell_percent"};
+  return names;
+}
+
+Model Nudged(const Model& model, const std::vector<CovarianceEntry>& entries,
+             const Eigen::VectorXd& delta) {
+  using Kind = CovarianceEntry::Kind;
+  Model nudged = model;
+  ModelState& state = nudged.state;
+  Eigen::Vector3d rotation = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const CovarianceEntry& e = entries[i];
+    switch (e.kind) {
+      case Kind::kCenter:
+        state.center[e.function] += delta[i];
+        break;
+      case Kind::kRotation:
+        rotation[e.function] += delta[i];
+        break;
+      case Kind::kGlobal:
+        state.globals[e.function] += delta[i];
+        break;
+      case Kind::kKnot:
+        state.knots[e.knot][e.function] += delta[i];
+        break;
+    }
+  }
+  const double angle = rotation.norm();
+  if (angle > 0.0) {
+    const auto& q = state.quaternion;
+    const Eigen::Quaterniond turned =
+        Eigen::Quaterniond(Eigen::AngleAxisd(angle, rotation / angle)) *
+        Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+    state.quaternion = {turned.w(), turned.x(), turned.y(), turned.z()};
+  }
+  return nudged;
+}
+
+Eigen::MatrixXd NumberJacobian(const Model& model,
+                               const FrameCovariance& covariance,
+                               const NumbersOf& numbers) {
+  const int n = static_cast<int>(covariance.entries.size());
+  const std::vector<double> at = numbers(model);
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(at.size(), n);
+  for (int j = 0; j < n; ++j) {
+    const double sd = std::sqrt(std::max(0.0, covariance.covariance(j, j)));
+    if (!(sd > 0.0)) continue;
+    const double step = kStepSd * sd;
+    Eigen::VectorXd delta = Eigen::VectorXd::Zero(n);
+    delta[j] = step;
+    const std::vector<double> up =
+        numbers(Nudged(model, covariance.entries, delta));
+    const std::vector<double> down =
+        numbers(Nudged(model, covariance.entries, -delta));
+    for (size_t i = 0; i < at.size(); ++i) {
+      jacobian(i, j) = (up[i] - down[i]) / (2.0 * step);
+    }
+  }
+  return jacobian;
+}
+
+Eigen::VectorXd Variances(const Eigen::MatrixXd& jacobian,
+                          const Eigen::MatrixXd& covariance) {
+  return (jacobian * covariance).cwiseProduct(jacobian).rowwise().sum();
+}
+
+FrameNumbers MeasureFrame(const Model& ed, const ReferenceSamples& samples,
+                          const std::vector<WallRegion>& regions,
+                          const Model& current, const BasePlane* plane) {
+  FrameNumbers numbers;
+  ClinicalSummary& c = numbers.clinical;
+  c = SummarizeFrame(0, ed, current);
+  if (plane != nullptr) {  // As AnalyzeFit with base planes.
+    const bool solid = current.config.Solid();
+    c.volume_ml = CavityVolumeMl(current, plane, solid ? -1.0 : 0.0);
+    if (solid) {
+      c.myocardial_volume_ml =
+          CavityVolumeMl(current, plane, 1.0) - c.volume_ml;
+      c.lv_mass_g = kMyocardialDensity * c.myocardial_volume_ml;
+    }
+  }
+  numbers.regions = SummarizeRegions(samples, current);
+  numbers.strain = SummarizeStrain(regions, numbers.regions);
+  return numbers;
+}
+
+std::vector<double> Flatten(const FrameNumbers& numbers) {
+  FrameNumbers copy = numbers;
+  std::vector<double> values;
+  for (double* field : ClinicalFields(&copy.clinical)) {
+    values.push_back(*field);
+  }
+  for (RegionMotion& motion : copy.regions) {
+    for (double* field : RegionFields(&motion)) values.push_back(*field);
+  }
+  for (double* field : StrainFields(&copy.strain)) values.push_back(*field);
+  return values;
+}
+
+void Unflatten(const double* values, FrameNumbers* numbers) {
+  for (double* field : ClinicalFields(&numbers->clinical)) *field = *values++;
+  for (RegionMotion& motion : numbers->regions) {
+    for (double* field : RegionFields(&motion)) *field = *values++;
+  }
+  for (double* field : StrainFields(&numbers->strain)) *field = *values++;
+}
+
+namespace {
+
+// NaN where the analysis left a number out (or has no sd for it).
+void MaskLike(const std::vector<double*>& values,
+              const std::vector<double*>& sds) {
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (!Measured(*values[i])) *sds[i] = kNotMeasured;
+  }
+}
+
+// ClinicalSummary's fields that are no number with an sd.
+void ClearNonNumbers(ClinicalSummary* sd) {
+  sd->time_ms = kNotMeasured;
+  sd->radial_ratio_x.clear();
+  sd->radial_ratio_y.clear();
+  sd->longitudinal_ratio.clear();
+}
+
+// The sds (square roots of `variance`, Flatten's order) of frame t, masked
+// like the analysis's numbers.
+void StoreFrame(const FitAnalysis& analysis, size_t t,
+                const Eigen::VectorXd& variance, NumberSd* sd) {
+  FrameNumbers numbers{analysis.clinical[t], analysis.region_motion[t],
+                       analysis.strain[t]};
+  FrameNumbers sds = numbers;
+  const Eigen::VectorXd root = variance.cwiseMax(0.0).cwiseSqrt();
+  Unflatten(root.data(), &sds);
+  MaskLike(ClinicalFields(&numbers.clinical), ClinicalFields(&sds.clinical));
+  ClearNonNumbers(&sds.clinical);
+  for (size_t r = 0; r < sds.regions.size(); ++r) {
+    MaskLike(RegionFields(&numbers.regions[r]), RegionFields(&sds.regions[r]));
+    sds.regions[r].area_mm2 = kNotMeasured;
+  }
+  MaskLike(StrainFields(&numbers.strain), StrainFields(&sds.strain));
+  sd->clinical[t] = sds.clinical;
+  sd->region_motion[t] = sds.regions;
+  sd->strain[t] = sds.strain;
+}
+
+// The ejection fraction's sd from the two volumes', taken as independent.
+EjectionFraction EjectionSd(const FitAnalysis& analysis, const NumberSd& sd) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  EjectionFraction out = ef;
+  out.edv_ml = sd.clinical[ef.ed_frame].volume_ml;
+  out.esv_ml = sd.clinical[ef.es_frame].volume_ml;
+  out.ratio = kNotMeasured;
+  if (ef.edv_ml > 0.0) {
+    const double d_edv = ef.esv_ml / (ef.edv_ml * ef.edv_ml);
+    const double d_esv = -1.0 / ef.edv_ml;
+    out.ratio = ef.es_frame == ef.ed_frame
+                    ? 0.0
+                    : std::hypot(d_edv * out.edv_ml, d_esv * out.esv_ml);
+  }
+  return out;
+}
+
+const BasePlane* PlaneOf(const FitAnalysis& analysis, size_t t) {
+  return analysis.base_planes.empty() ? nullptr : &analysis.base_planes[t];
+}
+
+// Each frame's numbers' variance from its own parameters, ED held.
+std::vector<Eigen::VectorXd> OwnVariances(const SequenceFit& fit,
+                                          const FitAnalysis& analysis) {
+  const size_t ed = static_cast<size_t>(fit.ed_frame);
+  const Model& ed_model = analysis.models[ed];
+  const ReferenceSamples samples = SampleReference(ed_model, analysis.layout);
+  std::vector<Eigen::VectorXd> variance(fit.frames.size());
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    if (t == ed) continue;
+    const NumbersOf numbers = [&](const Model& model) {
+      return Flatten(MeasureFrame(ed_model, samples, analysis.regions, model,
+                                  PlaneOf(analysis, t)));
+    };
+    const FrameCovariance& covariance = fit.frames[t].covariance;
+    variance[t] =
+        Variances(NumberJacobian(analysis.models[t], covariance, numbers),
+                  covariance.covariance);
+  }
+  return variance;
+}
+
+}  // namespace
+
+Model SpunWith(const Model& ed, const Model& moved_ed, const Model& model) {
+  const Eigen::Vector3d axis = ed.Rotation().col(2);
+  const Eigen::AngleAxisd turn(moved_ed.Rotation() * ed.Rotation().transpose());
+  const double spin = turn.angle() * turn.axis().dot(axis);
+  if (spin == 0.0) return model;
+  const Eigen::AngleAxisd about(spin, axis);
+  const Eigen::Vector3d pivot(ed.state.center.data());
+  Model spun = model;
+  const Eigen::Vector3d center =
+      pivot + about * (Eigen::Vector3d(model.state.center.data()) - pivot);
+  spun.state.center = {center.x(), center.y(), center.z()};
+  const auto& q = model.state.quaternion;
+  const Eigen::Quaterniond turned =
+      Eigen::Quaterniond(about) * Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+  spun.state.quaternion = {turned.w(), turned.x(), turned.y(), turned.z()};
+  return spun;
+}
+
+namespace {
+
+// Every frame's numbers' variance from ED's parameters, in frame order; a
+// spin of ED about its axis turns the other frames with it (SpunWith).
+Eigen::VectorXd EdVariances(const SequenceFit& fit,
+                            const FitAnalysis& analysis) {
+  const size_t ed = static_cast<size_t>(fit.ed_frame);
+  const NumbersOf numbers = [&](const Model& ed_model) {
+    const ReferenceSamples samples = SampleReference(ed_model, analysis.layout);
+    std::vector<double> all;
+    for (size_t t = 0; t < fit.frames.size(); ++t) {
+      const Model current =
+          t == ed ? ed_model
+                  : SpunWith(analysis.models[ed], ed_model, analysis.models[t]);
+      const std::vector<double> values = Flatten(MeasureFrame(
+          ed_model, samples, analysis.regions, current, PlaneOf(analysis, t)));
+      all.insert(all.end(), values.begin(), values.end());
+    }
+    return all;
+  };
+  const FrameCovariance& covariance = fit.frames[ed].covariance;
+  return Variances(NumberJacobian(analysis.models[ed], covariance, numbers),
+                   covariance.covariance);
+}
+
+}  // namespace
+
+NumberSd PropagateUncertainty(const SequenceFit& fit,
+                              const FitAnalysis& analysis) {
+  NumberSd sd;
+  if (fit.frames.empty() || fit.ed_frame < 0 ||
+      static_cast<size_t>(fit.ed_frame) >= fit.frames.size()) {
+    return sd;
+  }
+  for (const FrameFit& frame : fit.frames) {
+    if (!frame.covariance.computed) return sd;
+  }
+  std::vector<Eigen::VectorXd> variance = OwnVariances(fit, analysis);
+  const Eigen::VectorXd from_ed = EdVariances(fit, analysis);
+  const size_t size = from_ed.size() / fit.frames.size();
+  const size_t frames = fit.frames.size();
+  sd.clinical.resize(frames);
+  sd.region_motion.resize(frames);
+  sd.strain.resize(frames);
+  for (size_t t = 0; t < frames; ++t) {
+    Eigen::VectorXd total = from_ed.segment(t * size, size);
+    if (variance[t].size() == total.size()) total += variance[t];
+    StoreFrame(analysis, t, total, &sd);
+  }
+  sd.ejection_fraction = EjectionSd(analysis, sd);
+  sd.computed = true;
+  return sd;
+}
+
+}  // namespace pfdm

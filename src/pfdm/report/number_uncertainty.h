@@ -1,0 +1,92 @@
+// The delta method: each derived number's standard deviation from the
+// covariance of the frames' parameters (fit/problem/frame_covariance.h).
+//
+// A number y = f(x) of a frame's free parameters x (pose, globals, knots)
+// with covariance C has var y ~ g' C g, g = df/dx at the fit.  g is taken
+// by central differences along each coordinate of x, not by Jets: the
+// numbers are measured on sampled rings, segments and closed surfaces
+// (material_rings, wall_motion, model_surface) in double, and templating
+// all of them for ceres::Jet would double the report's code for a gradient
+// that 2n evaluations give.  The step is kStepSd of the coordinate's own
+// sd: the scale over which the interval must hold, and far over the
+// round-off of the sampled means (docs/uncertainty.md).
+//
+// A number of frame t is measured against end-diastole's model (ED), so it
+// depends on two frames' parameters.  Their fits are taken as independent
+// (each frame's covariance is conditional on the previous frame's model,
+// frame_covariance.h) and the two variances add: var y = g_t' C_t g_t +
+// g_ED' C_ED g_ED, but for ED's spin about its axis, which every frame
+// shares (SpunWith).  ED's own numbers (and everything at t = ED) vary both
+// at once.  The ejection fraction, (EDV - ESV) / EDV, adds the two
+// volumes' variances likewise.
+#ifndef PFDM_REPORT_NUMBER_UNCERTAINTY_H_
+#define PFDM_REPORT_NUMBER_UNCERTAINTY_H_
+
+#include <functional>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/fit/problem/frame_covariance.h"
+#include "pfdm/fit/stages/sequence_fit.h"
+#include "pfdm/model/base_plane.h"
+#include "pfdm/model/model.h"
+#include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/number_sd.h"
+
+namespace pfdm {
+
+// The finite differences' step, in sds of the coordinate varied.
+inline constexpr double kStepSd = 0.5;
+
+// `model` moved by `delta` along the covariance's coordinates `entries`
+// (the pose's rotation coordinates as one rotation vector applied on the
+// left, as ceres::QuaternionManifold's tangent).
+Model Nudged(const Model& model, const std::vector<CovarianceEntry>& entries,
+             const Eigen::VectorXd& delta);
+
+// d numbers / d x at `model` (rows: numbers, columns: covariance's
+// entries), central differences with steps kStepSd sd; a column of an
+// entry without variance is 0.
+using NumbersOf = std::function<std::vector<double>(const Model&)>;
+Eigen::MatrixXd NumberJacobian(const Model& model,
+                               const FrameCovariance& covariance,
+                               const NumbersOf& numbers);
+
+// diag(D C D'): each number's variance.
+Eigen::VectorXd Variances(const Eigen::MatrixXd& jacobian,
+                          const Eigen::MatrixXd& covariance);
+
+// One frame's numbers as AnalyzeFit measures them (before it leaves any
+// out): against end-diastole's model `ed` and its samples, the volume
+// closed by `plane` when given (a solid's cavity and myocardium).
+struct FrameNumbers {
+  ClinicalSummary clinical;
+  std::vector<RegionMotion> regions;
+  GlobalStrain strain;
+};
+FrameNumbers MeasureFrame(const Model& ed, const ReferenceSamples& samples,
+                          const std::vector<WallRegion>& regions,
+                          const Model& current, const BasePlane* plane);
+std::vector<double> Flatten(const FrameNumbers& numbers);
+// numbers' fields set from values, in Flatten's order.
+void Unflatten(const double* values, FrameNumbers* numbers);
+
+// `model` (frame t's) turned with ED's spin about its long axis: moved_ed
+// is ed turned (and moved) by a step of the delta method, whose turn about
+// ed's axis (through its centre) is applied to `model` likewise.  The
+// frames are independent but for this: a later frame's tags keep the
+// material points ED's fit gave them and its gauge holds ED's spin (gauge.h),
+// so a spin of ED, which the data of a near-round LV hardly fix, relabels
+// the longitudes of every frame alike and changes no number; taken as
+// independent it would read as a turn of every segment (on the LV phantom,
+// segment rotation sd 3.8 degrees against a spread of 0.4).
+Model SpunWith(const Model& ed, const Model& moved_ed, const Model& model);
+
+// Every number's sd in `analysis` (AnalyzeFit(fit, ...)): computed false
+// unless every frame has its covariance (--uncertainty on).
+NumberSd PropagateUncertainty(const SequenceFit& fit,
+                              const FitAnalysis& analysis);
+
+}  // namespace pfdm
+
+#endif  // PFDM_REPORT_NUMBER_UNCERTAINTY_H_

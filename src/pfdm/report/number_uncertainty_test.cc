@@ -1,0 +1,196 @@
+#include "pfdm/report/number_uncertainty.h"
+
+#include <cmath>
+#include <random>
+
+#include "Eigen/Eigenvalues"
+#include "gtest/gtest.h"
+#include "pfdm/fit/stages/fitter.h"
+#include "pfdm/phantom/lv_phantom.h"
+
+namespace pfdm {
+namespace {
+
+// Two frames (ED, ES) of the LV phantom's 400 mid-wall tags, fitted with
+// the covariances.
+struct Fitted {
+  SequenceFit fit;
+  FitAnalysis analysis;
+};
+
+const Fitted& LvFit() {
+  static const Fitted* fitted = [] {
+    LvPhantomOptions options;
+    options.num_frames = 2;
+    options.num_tags = 400;
+    options.seed = 7;
+    FitOptions fit_options;
+    fit_options.uncertainty = true;
+    auto* f = new Fitted;
+    f->fit = FitSequence(MakeLvPhantom(options).points, ModelConfig::Paper(9),
+                         fit_options);
+    f->analysis = AnalyzeFit(f->fit);
+    return f;
+  }();
+  return *fitted;
+}
+
+TEST(NumberUncertaintyTest, NudgedTurnsOnTheLeftAndMovesKnots) {
+  const Fitted& f = LvFit();
+  const Model model = f.analysis.models[1];
+  const std::vector<CovarianceEntry> entries = {
+      {CovarianceEntry::Kind::kRotation, -1, 2},
+      {CovarianceEntry::Kind::kKnot, 3, kA1}};
+  Eigen::Vector2d delta(0.01, 0.5);
+  const Model nudged = Nudged(model, entries, delta);
+  // The rotation about world z by 0.01 rad: R' = Rz R.
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.01, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  EXPECT_LT((nudged.Rotation() - turn * model.Rotation()).norm(), 1e-12);
+  EXPECT_NEAR(nudged.state.knots[3][kA1] - model.state.knots[3][kA1], 0.5,
+              1e-15);
+}
+
+TEST(NumberUncertaintyTest, MeasureFrameGivesTheAnalysisNumbers) {
+  const Fitted& f = LvFit();
+  const FitAnalysis& a = f.analysis;
+  const ReferenceSamples samples = SampleReference(a.models[0], a.layout);
+  const std::vector<double> measured = Flatten(
+      MeasureFrame(a.models[0], samples, a.regions, a.models[1], nullptr));
+  const std::vector<double> analysis =
+      Flatten({a.clinical[1], a.region_motion[1], a.strain[1]});
+  ASSERT_EQ(measured.size(), analysis.size());
+  for (size_t i = 0; i < measured.size(); ++i) {
+    if (!Measured(analysis[i])) continue;  // Left out by the analysis.
+    EXPECT_NEAR(measured[i], analysis[i], 1e-9 * (1.0 + std::abs(analysis[i])))
+        << i;
+  }
+}
+
+// Draws of a frame's parameters from N(x, C): V sqrt(lambda) z.
+class ParameterSampler {
+ public:
+  ParameterSampler(const Model& model, const FrameCovariance& covariance)
+      : model_(model), covariance_(covariance) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
+        covariance.covariance);
+    root_ = eigen.eigenvectors() *
+            eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+  }
+  Model Draw(std::mt19937* random) const {
+    std::normal_distribution<double> normal;
+    Eigen::VectorXd z(root_.cols());
+    for (int i = 0; i < z.size(); ++i) z[i] = normal(*random);
+    return Nudged(model_, covariance_.entries, root_ * z);
+  }
+
+ private:
+  const Model& model_;
+  const FrameCovariance& covariance_;
+  Eigen::MatrixXd root_;
+};
+
+double Sd(const std::vector<double>& values) {
+  double mean = 0.0, square = 0.0;
+  for (double v : values) mean += v / values.size();
+  for (double v : values) square += (v - mean) * (v - mean);
+  return std::sqrt(square / (values.size() - 1));
+}
+
+// The delta method's sds of the ejection fraction (of the mid-wall's
+// volume: its ratio) and of a mid segment's Ecc at ES against the sds of
+// the numbers recomputed on 400 draws of both frames' parameters, drawn
+// independently from their covariances (ES turned with ED's spin, as the
+// delta method does).  400 draws give a sample sd within
+// about 3.5 % (1 / sqrt(2 x 400)) of the true one; the delta method's
+// linearization adds a little: 12 % allowed.
+TEST(NumberUncertaintyTest, DeltaMethodMatchesSampling) {
+  const Fitted& f = LvFit();
+  const FitAnalysis& a = f.analysis;
+  ASSERT_TRUE(a.sd.computed);
+  ASSERT_EQ(a.ejection_fraction.es_frame, 1);
+  const int segment = 9;  // Mid 4 (0-based 9).
+  const ParameterSampler ed(a.models[0], f.fit.frames[0].covariance);
+  const ParameterSampler es(a.models[1], f.fit.frames[1].covariance);
+  std::mt19937 random(11);
+  std::vector<double> ef, ecc;
+  for (int draw = 0; draw < 400; ++draw) {
+    const Model ed_model = ed.Draw(&random);
+    const Model es_model = SpunWith(a.models[0], ed_model, es.Draw(&random));
+    const ReferenceSamples samples = SampleReference(ed_model, a.layout);
+    const FrameNumbers at_es =
+        MeasureFrame(ed_model, samples, a.regions, es_model, nullptr);
+    const double edv = SummarizeFrame(0, ed_model, ed_model).volume_ml;
+    ef.push_back((edv - at_es.clinical.volume_ml) / edv);
+    ecc.push_back(at_es.regions[segment].ecc_percent);
+  }
+  const double ef_sd = a.sd.ejection_fraction.ratio;
+  const double ecc_sd = a.sd.region_motion[1][segment].ecc_percent;
+  std::printf(
+      "EF %.4f sd delta %.5f sampled %.5f; Ecc %.3f %% sd delta %.4f "
+      "sampled %.4f\n",
+      a.ejection_fraction.ratio, ef_sd, Sd(ef),
+      a.region_motion[1][segment].ecc_percent, ecc_sd, Sd(ecc));
+  EXPECT_GT(ef_sd, 0.0);
+  EXPECT_GT(ecc_sd, 0.0);
+  EXPECT_NEAR(ef_sd / Sd(ef), 1.0, 0.12);
+  EXPECT_NEAR(ecc_sd / Sd(ecc), 1.0, 0.12);
+}
+
+// ED turned about its axis by 0.1 rad and ES with it: every number of ES
+// stays, to the sampling's round-off.
+TEST(NumberUncertaintyTest, SpinOfEdTurnsEveryFrameAlike) {
+  const FitAnalysis& a = LvFit().analysis;
+  const Model& ed = a.models[0];
+  Model turned = ed;
+  const Eigen::Vector3d axis = ed.Rotation().col(2);
+  const Eigen::Quaterniond q =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.1, axis)) *
+      Eigen::Quaterniond(ed.state.quaternion[0], ed.state.quaternion[1],
+                         ed.state.quaternion[2], ed.state.quaternion[3]);
+  turned.state.quaternion = {q.w(), q.x(), q.y(), q.z()};
+  const Model es = SpunWith(ed, turned, a.models[1]);
+  const Eigen::Vector3d moved =
+      es.WorldPoint(0.1, 0.2) - turned.WorldPoint(0.1, 0.2);
+  const Eigen::Vector3d before =
+      Eigen::AngleAxisd(0.1, axis) *
+      (a.models[1].WorldPoint(0.1, 0.2) - ed.WorldPoint(0.1, 0.2));
+  EXPECT_LT((moved - before).norm(), 1e-9);
+  const std::vector<double> original =
+      Flatten({a.clinical[1], a.region_motion[1], a.strain[1]});
+  const std::vector<double> spun = Flatten(MeasureFrame(
+      turned, SampleReference(turned, a.layout), a.regions, es, nullptr));
+  for (size_t i = 0; i < spun.size(); ++i) {
+    if (!Measured(original[i])) continue;
+    EXPECT_NEAR(spun[i], original[i], 1e-6 * (1.0 + std::abs(original[i])))
+        << i;
+  }
+}
+
+TEST(NumberUncertaintyTest, NotMeasuredNumbersHaveNoSd) {
+  const Fitted& f = LvFit();
+  const NumberSd& sd = f.analysis.sd;
+  ASSERT_TRUE(sd.computed);
+  for (size_t t = 0; t < sd.clinical.size(); ++t) {
+    ClinicalSummary values = f.analysis.clinical[t];
+    ClinicalSummary sds = sd.clinical[t];
+    const std::vector<double*> v = ClinicalFields(&values);
+    const std::vector<double*> s = ClinicalFields(&sds);
+    for (size_t i = 0; i < v.size(); ++i) {
+      EXPECT_EQ(Measured(*v[i]), Measured(*s[i])) << t << " " << i;
+    }
+  }
+  // At ED, against itself: no strain, so no spread.
+  EXPECT_NEAR(sd.strain[0].gcs_percent, 0.0, 1e-9);
+  // ES's GCS spreads.
+  EXPECT_GT(sd.strain[1].gcs_percent, 0.0);
+}
+
+TEST(NumberUncertaintyTest, WithoutCovariancesNothingIsComputed) {
+  SequenceFit fit = LvFit().fit;
+  fit.frames[1].covariance.computed = false;
+  EXPECT_FALSE(AnalyzeFit(fit).sd.computed);
+}
+
+}  // namespace
+}  // namespace pfdm
