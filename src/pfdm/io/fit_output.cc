@@ -286,7 +286,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
   plots->Render({ParameterPlots(analysis.models, analysis.rotation_measured),
                  CycleCurves(analysis.clinical, analysis.volume_surface,
                              analysis.ejection_fraction.ed_frame),
-                 StrainCurves(analysis.strain),
+                 StrainCurves(analysis.strain, analysis.clinical),
                  Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::string> frame_names;
   std::vector<std::pair<double, std::string>> timesteps;
