@@ -60,14 +60,15 @@ def _without_dashes(message, keywords):
 
 
 _INTS = ("knots", "ed_frame", "threads", "max_steps")
-_FLOATS = ("smoothness", "prior", "untracked_prior", "time_step",
+_FLOATS = ("smoothness", "prior", "untracked_prior", "temporal_prior",
+           "time_step",
            "rest_tolerance", "local_stiffness")
 
 
 def fit(points, *, format="auto", contours=("lv-cavity",), base_plane="auto",
         rv_insertion=None, model="paper", knots=17, wall="auto",
         surface="auto", ed_frame=0, smoothness=1.0, prior=0.001,
-        untracked_prior=0.01, loss="none", loss_scale="auto", threads=1,
+        untracked_prior=0.01, temporal_prior=0.0, loss="none", loss_scale="auto", threads=1,
         apex=None, base=None, solver="direct",
         linear_solver="SPARSE_NORMAL_CHOLESKY", time_step=0.0,
         rest_tolerance=1e-6, max_steps=20000, damping="jacobi",
@@ -112,6 +113,9 @@ def fit(points, *, format="auto", contours=("lv-cavity",), base_plane="auto",
         Pull toward the previous frame's functions.
     untracked_prior : float
         Frames without tracked points (contours): pull toward frame 0.
+    temporal_prior : float
+        Frames without tracked points: pull toward the previous frame (0.05
+        settles every frame of biv-me's patient 1; docs/contour_sequences.md).
     loss : {"none", "huber", "cauchy"}
         Robust loss on each point's distance.
     loss_scale : "auto" or float

@@ -39,6 +39,10 @@ DEFINE_double(prior, kDefaults.prior,
 DEFINE_double(untracked_prior, kDefaults.untracked_prior,
               "frames without tracked points (contours): pull toward frame "
               "0, same units, 0 to 1e6");
+DEFINE_double(temporal_prior, kDefaults.temporal_prior,
+              "frames without tracked points: pull toward the previous "
+              "frame too, same units, 0 (off) to 1e6; 0.05 settles biv-me's "
+              "contours");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
 DEFINE_string(loss_scale, kDefaults.loss_scale.c_str(),
               "--loss huber or cauchy: the loss's scale, auto (per frame, "
@@ -128,6 +132,7 @@ FitSettings FitSettingsFromFlags() {
   s.smoothness = FLAGS_smoothness;
   s.prior = FLAGS_prior;
   s.untracked_prior = FLAGS_untracked_prior;
+  s.temporal_prior = FLAGS_temporal_prior;
   s.loss = FLAGS_loss;
   s.loss_scale = FLAGS_loss_scale;
   s.threads = FLAGS_threads;

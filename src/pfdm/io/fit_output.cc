@@ -293,7 +293,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
       {ParameterPlots(analysis.models, analysis.rotation_measured, covariances),
        CycleCurves(analysis.clinical, analysis.volume_surface,
                    analysis.ejection_fraction.ed_frame, analysis.sd.clinical),
-       StrainCurves(analysis.strain, analysis.sd.strain),
+       StrainCurves(analysis.strain, analysis.clinical, analysis.sd.strain),
        Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::string> frame_names;
   std::vector<std::pair<double, std::string>> timesteps;

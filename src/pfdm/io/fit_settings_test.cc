@@ -28,6 +28,7 @@ TEST(FitSettingsTest, DefaultsAreTheLibrarys) {
   EXPECT_EQ(options.smoothness_weight, library.smoothness_weight);
   EXPECT_EQ(options.prior_weight, library.prior_weight);
   EXPECT_EQ(options.untracked_prior_weight, library.untracked_prior_weight);
+  EXPECT_EQ(options.temporal_prior_weight, library.temporal_prior_weight);
   EXPECT_EQ(options.local.enabled, library.local.enabled);
   EXPECT_EQ(options.local.rows, library.local.rows);
   EXPECT_EQ(options.local.cols, library.local.cols);
@@ -105,6 +106,9 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   s = FitSettings();
   s.untracked_prior = -1.0;
   EXPECT_EQ(ErrorOf(s), "--untracked_prior must be between 0 and 1e6, got -1");
+  s = FitSettings();
+  s.temporal_prior = -0.5;
+  EXPECT_EQ(ErrorOf(s), "--temporal_prior must be between 0 and 1e6, got -0.5");
   s = FitSettings();
   s.local = "yes";
   EXPECT_EQ(ErrorOf(s), "--local must be on or off, got 'yes'");

@@ -211,14 +211,20 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
 }
 
 SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,
+                     const std::vector<ClinicalSummary>& clinical,
                      const std::vector<GlobalStrain>& sd) {
   const bool bars = !sd.empty() && sd.size() == strain.size();
+  const bool timed =
+      !strain.empty() && clinical.size() == strain.size() &&
+      std::all_of(clinical.begin(), clinical.end(),
+                  [](const ClinicalSummary& s) { return Measured(s.time_ms); });
   PlotData block{"strain", {}};
   for (size_t t = 0; t < strain.size(); ++t) {
     const GlobalStrain& g = strain[t];
     block.rows.push_back(
-        {static_cast<double>(t), g.gcs_percent, g.level_ecc_percent[kBasal],
-         g.level_ecc_percent[kMid], g.level_ecc_percent[kApical], g.gls_percent,
+        {timed ? clinical[t].time_ms : static_cast<double>(t), g.gcs_percent,
+         g.level_ecc_percent[kBasal], g.level_ecc_percent[kMid],
+         g.level_ecc_percent[kApical], g.gls_percent,
          g.level_ell_percent[kBasal], g.level_ell_percent[kMid],
          g.level_ell_percent[kApical],
          bars ? HalfWidth95(sd[t].gcs_percent) : 0.0,
@@ -228,7 +234,8 @@ SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,
   script << "set multiplot layout 1,2 margins 0.06,0.98,0.14,0.82 "
             "spacing 0.08,0.1 title 'Lagrangian strain over the cycle "
             "(Green-Lagrange, against frame 0)' font 'sans,15'\n"
-         << "set grid lc rgb '#dddddd'\nset xlabel 'frame'\n"
+         << "set grid lc rgb '#dddddd'\nset xlabel '"
+         << (timed ? "time from the trigger (ms)" : "frame") << "'\n"
          << "set ylabel 'percent'\nset style data linespoints\n"
          << "set pointsize 0.6\n"
          << "set key bottom left opaque font 'sans,10' samplen 2\n";
@@ -253,8 +260,9 @@ SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,
 }
 
 std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain,
+                            const std::vector<ClinicalSummary>& clinical,
                             const std::vector<GlobalStrain>& sd) {
-  return RenderSvgString(StrainCurves(strain, sd));
+  return RenderSvgString(StrainCurves(strain, clinical, sd));
 }
 
 }  // namespace pfdm

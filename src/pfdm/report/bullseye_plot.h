@@ -70,11 +70,15 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
 std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis);
 
 // Over the frames: Ecc and Ell, the global means (GCS, GLS) and each
-// level's, one panel each.
+// level's, one panel each; against the time from the trigger (ms) when
+// every frame of `clinical` (one per frame of `strain`) has one, as the
+// cycle curves (fit_plots.h), else the frame number.
 // sd (NumberSd::strain), when given: 95 % error bars on GCS and GLS.
 std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain,
+                            const std::vector<ClinicalSummary>& clinical = {},
                             const std::vector<GlobalStrain>& sd = {});
 SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,
+                     const std::vector<ClinicalSummary>& clinical = {},
                      const std::vector<GlobalStrain>& sd = {});
 
 }  // namespace pfdm

@@ -7,6 +7,7 @@
 #include "pfdm/fit/stages/global_rounds.h"
 #include "pfdm/fit/stages/local_stage.h"
 #include "pfdm/fit/stages/loss_scale.h"
+#include "pfdm/fit/stages/temporal_prior.h"
 #include "pfdm/fit/stages/trajectory_recorder.h"
 #include "pfdm/util/stopwatch.h"
 
@@ -95,9 +96,9 @@ bool HasTrackedPoints(const FramePoints& points) {
 }  // namespace
 
 FrameFit FitFrame(const Frame& frame, bool reference,
-                  const FramesPerId& frames_per_id, const FitOptions& options,
-                  const std::string& source, WallDecision* wall,
-                  CarriedState* carried) {
+                  const FramesPerId& frames_per_id,
+                  const FitOptions& sequence_options, const std::string& source,
+                  WallDecision* wall, CarriedState* carried) {
   const auto start = Clock::now();
   Model& model = carried->model;
   // The global rounds fit the global model alone; the local field comes
@@ -110,9 +111,10 @@ FrameFit FitFrame(const Frame& frame, bool reference,
                       carried->tracked_material, &fit.material);
   fit.kind = points.kind;
   fit.tracked = HasTrackedPoints(points);
-  const ModelState& prior = points.kind == FrameKind::kUntracked
-                                ? carried->reference
-                                : carried->previous;
+  const FramePrior frame_prior = PriorOfFrame(
+      points.kind, carried->reference, carried->previous, sequence_options);
+  const ModelState& prior = frame_prior.state;
+  const FitOptions& options = frame_prior.options;
   CheckInterrupt(options.solver);
   FitGlobal(points, prior, options, source, wall, carried, &fit);
   RememberTags(frame, points, fit, &carried->tracked_material);

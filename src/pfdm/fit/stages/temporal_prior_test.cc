@@ -1,0 +1,71 @@
+#include "pfdm/fit/stages/temporal_prior.h"
+
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+ModelState StateOf(double value, int knots) {
+  ModelState state;
+  state.globals.fill(value);
+  state.knots.assign(knots, FunctionValues{});
+  for (auto& knot : state.knots) knot.fill(value);
+  return state;
+}
+
+// Frame 0's pull (0.01) and the previous frame's (0.03) are one pull of
+// 0.04 toward the point a quarter of the way from the previous state to
+// frame 0's.
+TEST(TemporalPriorTest, UntrackedFramesMixFrameZeroAndThePreviousFrame) {
+  FitOptions options;
+  options.untracked_prior_weight = 0.01;
+  options.temporal_prior_weight = 0.03;
+  const FramePrior prior = PriorOfFrame(FrameKind::kUntracked, StateOf(2.0, 3),
+                                        StateOf(6.0, 3), options);
+  EXPECT_DOUBLE_EQ(prior.options.untracked_prior_weight, 0.04);
+  for (double g : prior.state.globals) EXPECT_DOUBLE_EQ(g, 5.0);
+  ASSERT_EQ(prior.state.knots.size(), 3u);
+  for (const auto& knot : prior.state.knots) {
+    for (double f : knot) EXPECT_DOUBLE_EQ(f, 5.0);
+  }
+}
+
+// The sum of the two quadratics is the mixed one's plus a constant: the
+// gradients agree everywhere (checked at a few values of one function).
+TEST(TemporalPriorTest, OneMixedPullEqualsTheTwoPulls) {
+  const double w0 = 0.01, w1 = 0.05, a = 1.3, b = -0.4;
+  FitOptions options;
+  options.untracked_prior_weight = w0;
+  options.temporal_prior_weight = w1;
+  const FramePrior prior = PriorOfFrame(FrameKind::kUntracked, StateOf(a, 2),
+                                        StateOf(b, 2), options);
+  const double m = prior.state.knots[0][0];
+  const double w = prior.options.untracked_prior_weight;
+  for (double x : {-2.0, 0.0, 0.7, 5.0}) {
+    const double two = w0 * (x - a) * (x - a) + w1 * (x - b) * (x - b);
+    const double one = w * (x - m) * (x - m);
+    const double constant = w0 * (m - a) * (m - a) + w1 * (m - b) * (m - b);
+    EXPECT_NEAR(two, one + constant, 1e-12) << x;
+  }
+}
+
+TEST(TemporalPriorTest, OtherFramesAndNoWeightKeepTheirPriors) {
+  FitOptions options;
+  options.temporal_prior_weight = 0.05;
+  const ModelState reference = StateOf(1.0, 2), previous = StateOf(3.0, 2);
+  for (FrameKind kind : {FrameKind::kReference, FrameKind::kTracked}) {
+    const FramePrior prior = PriorOfFrame(kind, reference, previous, options);
+    EXPECT_DOUBLE_EQ(prior.state.knots[1][0], 3.0);
+    EXPECT_DOUBLE_EQ(prior.options.untracked_prior_weight,
+                     options.untracked_prior_weight);
+  }
+  options.temporal_prior_weight = 0.0;  // The default.
+  const FramePrior none =
+      PriorOfFrame(FrameKind::kUntracked, reference, previous, options);
+  EXPECT_DOUBLE_EQ(none.state.knots[1][0], 1.0);
+  EXPECT_DOUBLE_EQ(none.options.untracked_prior_weight,
+                   options.untracked_prior_weight);
+}
+
+}  // namespace
+}  // namespace pfdm
