@@ -35,7 +35,7 @@ const Command kCommands[] = {
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
      "out frames tags noise outliers seed phantom kinematics wall_tags "
-     "breathing lesion region sampling slices "},
+     "breathing lesion region sampling slices geometry thickening "},
     {"check-jacobians", RunCheckJacobians, "[--tolerance 1e-6]", "tolerance "},
     {"compare-solvers", RunCompareSolvers,
      "--points FILE --out DIR: direct, damped and integrator side by side",
