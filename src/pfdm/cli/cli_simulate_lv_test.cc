@@ -117,6 +117,27 @@ TEST(LvPhantomCliTest, WritesPartialData) {
   EXPECT_EQ(std::unique(ids.begin(), ids.end()), ids.end());
 }
 
+// The cylindrical segment (lv_cylinder.h), tags through its wall thickening
+// as an incompressible wall: its truth names both, and reads the cylinder's
+// own motion (CylinderDeformation: 12 % shortening by end-systole).
+TEST(LvPhantomCliTest, WritesTheCylinder) {
+  const std::string dir = ScratchDirectory("cylinder");
+  const CommandResult run = RunPfdm(
+      "simulate --phantom lv --geometry cylinder --thickening incompressible "
+      "--wall_tags wall --tags 40 --out " +
+      dir + "/c.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_EQ(CsvRows(dir + "/c.csv"), 5 * 40);
+  const nlohmann::json truth =
+      nlohmann::json::parse(ReadText(dir + "/c_truth.json"));
+  EXPECT_EQ(truth["shell"], "cylinder");
+  EXPECT_EQ(truth["thickening"], "incompressible");
+  EXPECT_EQ(truth["region"], "midventricular");
+  EXPECT_NEAR(
+      truth["frames"][4]["longitudinal_shortening_percent"].get<double>(), 12.0,
+      1e-9);
+}
+
 TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
   const std::string out = " --out " + ScratchDirectory("bad") + "/x.csv";
   struct Case {
@@ -138,6 +159,12 @@ TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
            Case{"--phantom lv --region apical", "unknown --region 'apical'"},
            Case{"--phantom lv --sampling lax", "unknown --sampling 'lax'"},
            Case{"--phantom lv --slices -1", "0 <= --slices <= 1000"},
+           Case{"--phantom lv --geometry cube", "unknown --geometry 'cube'"},
+           Case{"--phantom lv --thickening linear",
+                "unknown --thickening 'linear'"},
+           Case{"--geometry cylinder", "need --phantom lv"},
+           Case{"--phantom lv --geometry cylinder --lesion",
+                "cylinder: tags only"},
            Case{"--phantom lv --sampling sax-slices --slices 30 --tags 20",
                 "20 points for 30 contours"},
            Case{"--region midventricular", "need --phantom lv"},

@@ -60,7 +60,7 @@ const Command kCommands[] = {
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
      "out frames tags noise outliers seed phantom kinematics wall_tags "
-     "breathing lesion region sampling slices ",
+     "breathing lesion region sampling slices geometry thickening ",
      "writes a phantom's points and its truth (the model's own, or the "
      "independent LV)"},
     {"check-jacobians", RunCheckJacobians, "[--tolerance 1e-6]", "tolerance ",

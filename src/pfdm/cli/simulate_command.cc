@@ -40,6 +40,12 @@ DEFINE_string(sampling, "tags",
               "simulate --phantom lv: tags (tracked), or sax-slices "
               "(untracked contours on --slices fixed short-axis planes; "
               "--tags points a frame)");
+DEFINE_string(geometry, "prolate",
+              "simulate --phantom lv: prolate (the whole LV) or cylinder (a "
+              "mid-ventricular segment, wall 10 mm, no apex; analytic truth)");
+DEFINE_string(thickening, "designed",
+              "simulate --phantom lv: designed (contraction quadratic across "
+              "the wall) or incompressible (the endocardium moving farthest)");
 DEFINE_int32(slices, 0,
              "simulate --phantom lv --sampling sax-slices: planes (0: 3 "
              "midventricular, 9 full)");
@@ -107,6 +113,14 @@ int RunLvPhantom() {
     throw InputError("unknown --sampling '" + FLAGS_sampling +
                      "' (tags, sax-slices)");
   }
+  if (!ParseLvGeometry(FLAGS_geometry, &options.geometry)) {
+    throw InputError("unknown --geometry '" + FLAGS_geometry +
+                     "' (prolate, cylinder)");
+  }
+  if (!ParseLvThickeningLaw(FLAGS_thickening, &options.law)) {
+    throw InputError("unknown --thickening '" + FLAGS_thickening +
+                     "' (designed, incompressible)");
+  }
   if (!(FLAGS_slices >= 0 && FLAGS_slices <= 1000)) {
     throw InputError("simulate needs 0 <= --slices <= 1000");
   }
@@ -116,6 +130,9 @@ int RunLvPhantom() {
   options.noise_mm = FLAGS_noise;
   options.outlier_fraction = FLAGS_outliers;
   options.seed = FLAGS_seed;
+  if (options.geometry == LvGeometry::kCylinder) {
+    options.deformation = CylinderDeformation();
+  }
   options.deformation.lesion = FLAGS_lesion;
   options.breathing = FLAGS_breathing;
   const LvPhantom phantom = MakeLvPhantom(options);
@@ -147,10 +164,11 @@ int RunSimulate() {
   }
   if (!IsDefault("kinematics") || !IsDefault("wall_tags") ||
       !IsDefault("lesion") || !IsDefault("breathing") || !IsDefault("region") ||
-      !IsDefault("sampling") || !IsDefault("slices")) {
+      !IsDefault("sampling") || !IsDefault("slices") ||
+      !IsDefault("geometry") || !IsDefault("thickening")) {
     throw InputError(
         "--kinematics, --wall_tags, --lesion, --breathing, --region, "
-        "--sampling and --slices need --phantom lv");
+        "--sampling, --slices, --geometry and --thickening need --phantom lv");
   }
   return RunModelPhantom();
 }

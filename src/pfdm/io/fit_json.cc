@@ -249,6 +249,9 @@ json ModelSection(const SequenceFit& fit, const FitAnalysis& analysis) {
           {"apex_data_distance_fraction", fit.apex_data_distance},
           {"lowest_data_height_fraction", fit.lowest_data_height},
           {"lowest_data_u", fit.lowest_data_u},
+          {"highest_data_height_fraction", fit.highest_data_height},
+          {"ring_span_height_fraction",
+           {analysis.ring_span.low, analysis.ring_span.high}},
           {"volume_surface", analysis.volume_surface},
           {"functions", functions}};
 }

@@ -68,15 +68,51 @@ LvMaterialPoint MaterialPointAt(const LvShape& shape,
   return point;
 }
 
+bool ParseLvThickeningLaw(const std::string& name, LvThickeningLaw* law) {
+  if (name == "designed") {
+    *law = LvThickeningLaw::kDesigned;
+  } else if (name == "incompressible") {
+    *law = LvThickeningLaw::kIncompressible;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+std::string LvThickeningLawName(LvThickeningLaw law) {
+  return law == LvThickeningLaw::kIncompressible ? "incompressible"
+                                                 : "designed";
+}
+
+double RadialFactor(const LvDeformation& design, LvThickeningLaw law,
+                    const LvLawRadii& radii, double h, double w, double p) {
+  if (law == LvThickeningLaw::kDesigned) {
+    return 1.0 - DesignedRadialContraction(design, h, w) * p;
+  }
+  const double c_epi =
+      DesignedRadialContraction(design, h, 0.0) - design.radial_epi_less;
+  const double half = 0.5 * radii.wall_mm;
+  const double big_epi = radii.midwall_mm + half;
+  const double big = radii.midwall_mm + w * half;
+  const double epi = (1.0 - c_epi * p) * big_epi;
+  const double lambda = 1.0 - design.longitudinal_shortening * p;
+  const double square = epi * epi - (big_epi * big_epi - big * big) / lambda;
+  return std::sqrt(std::max(square, 0.0)) / big;
+}
+
 Eigen::Vector3d DeformedBodyPoint(const LvDeformation& design,
-                                  const LvMaterialPoint& point, double p) {
-  double c = DesignedRadialContraction(design, point.h, point.w);
+                                  const LvMaterialPoint& point, double p,
+                                  LvThickeningLaw law,
+                                  const LvLawRadii& radii) {
+  double contraction =
+      1.0 - RadialFactor(design, law, radii, point.h, point.w, p);
   if (design.lesion) {
     // Longitude from -x, counter-clockwise about +z.
     const double lambda_deg = (point.phi + kPi) / kRadians;
-    c *= 1.0 - design.lesion_loss * LesionWeight(design, point.h, lambda_deg);
+    contraction *=
+        1.0 - design.lesion_loss * LesionWeight(design, point.h, lambda_deg);
   }
-  const double radius = (1.0 - c * p) * point.radius;
+  const double radius = (1.0 - contraction) * point.radius;
   const double turned =
       point.phi + DesignedRotationDeg(design, point.h) * kRadians * p;
   return {radius * std::cos(turned), radius * std::sin(turned),

@@ -131,6 +131,10 @@ void CheckOptions(const LvPhantomOptions& options) {
     throw InputError(
         "lv phantom needs frames >= 1, tags >= 1, noise >= 0 and slices >= 0");
   }
+  if (options.sampling == LvSampling::kSaxSlices &&
+      options.law != LvThickeningLaw::kDesigned) {
+    throw InputError("lv phantom sax-slices: the designed thickening law only");
+  }
   if (!(options.outlier_fraction >= 0 && options.outlier_fraction <= 1 &&
         options.outlier_min_mm >= 0 &&
         options.outlier_max_mm >= options.outlier_min_mm &&
@@ -187,6 +191,86 @@ int ContourPoints(const LvPhantomOptions& options, size_t num_planes) {
                      std::to_string(contours) + " contours; at least one each");
   }
   return options.num_tags / contours;
+}
+
+LvLawRadii LawRadii(const LvShape& shape) {
+  return {shape.size().radius_mm, shape.size().wall_mm};
+}
+
+// ED body positions of tags in the cylinder: height, longitude and (through
+// the wall) w uniform.
+std::vector<Eigen::Vector3d> PlaceCylinderTags(
+    const LvCylinder& cylinder, const LvPhantomOptions& options) {
+  std::mt19937 random(options.seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<Eigen::Vector3d> tags;
+  for (int i = 0; i < options.num_tags; ++i) {
+    const double w =
+        options.tags == LvTagLayer::kWall ? -1.0 + 2.0 * uniform(random) : 0.0;
+    const double h =
+        cylinder.low + (cylinder.high - cylinder.low) * uniform(random);
+    tags.push_back(cylinder.Position(h, -kPi + 2.0 * kPi * uniform(random), w));
+  }
+  return tags;
+}
+
+// MakeLvPhantom of the cylinder: tags as the shell's (noise, outliers), the
+// truth analytic.
+LvPhantom MakeCylinderPhantom(const LvPhantomOptions& options,
+                              LvPhantom phantom) {
+  if (options.sampling != LvSampling::kTags || options.deformation.lesion) {
+    throw InputError(
+        "lv phantom cylinder: tags only (no --sampling sax-slices, no "
+        "--lesion)");
+  }
+  phantom.options.region = LvRegion::kMidventricular;
+  const LvHeights band = LvRegionHeights(LvRegion::kMidventricular);
+  const LvCylinder cylinder = CylinderOf(options.shape, band.low, band.high);
+  const LvShape shape(options.shape);  // Its base_z centres the rigid motion.
+  phantom.tag_material = PlaceCylinderTags(cylinder, options);
+  const int num_frames = phantom.options.num_frames;
+  const LvFrameMotion ed =
+      ScenarioMotion(options.kinematics, 0, num_frames, options.breathing);
+  auto world_from_body = [&](const LvFrameMotion& motion) {
+    return LvWorldPose() * RigidBodyMotion(shape, motion.rigid);
+  };
+  auto insertion = [&](double phi_deg) {
+    return world_from_body(ed) *
+           cylinder.Position(kLvInsertionHeight, phi_deg * kPi / 180, 0.0);
+  };
+  phantom.rv_anterior = insertion(kLvAnteriorInsertionDeg);
+  phantom.rv_inferior = insertion(kLvInferiorInsertionDeg);
+  std::seed_seq noise_seed{options.seed, 0x6e6f6973u};
+  std::mt19937 random(noise_seed);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  OutlierDraws outliers(options);
+  for (int t = 0; t < num_frames; ++t) {
+    const LvFrameMotion motion =
+        ScenarioMotion(options.kinematics, t, num_frames, options.breathing);
+    const Eigen::Isometry3d pose = world_from_body(motion);
+    Frame frame;
+    frame.index = t;
+    std::vector<int> outlier_ids;
+    for (int i = 0; i < options.num_tags; ++i) {
+      Eigen::Vector3d x =
+          pose *
+          DeformedBodyPoint(options.deformation,
+                            cylinder.MaterialPoint(phantom.tag_material[i]),
+                            motion.progress, options.law, cylinder.LawRadii());
+      for (int k = 0; k < 3; ++k) x[k] += options.noise_mm * noise(random);
+      if (outliers.Move(&x)) outlier_ids.push_back(i);
+      frame.points.push_back({i, x});
+    }
+    phantom.points.frames.push_back(std::move(frame));
+    LvFrameTruth truth = CylinderTruth(cylinder, options.deformation,
+                                       options.law, motion.progress);
+    truth.frame = t;
+    truth.rigid = motion.rigid;
+    truth.world_from_body = pose;
+    truth.outlier_ids = std::move(outlier_ids);
+    phantom.truth.push_back(std::move(truth));
+  }
+  return phantom;
 }
 
 }  // namespace
@@ -256,10 +340,11 @@ std::string LvTagLayerName(LvTagLayer layer) {
 Eigen::Vector3d LvWorldPoint(const LvShape& shape,
                              const LvDeformation& deformation,
                              const LvFrameMotion& motion,
-                             const Eigen::Vector3d& ed_body) {
+                             const Eigen::Vector3d& ed_body,
+                             LvThickeningLaw law) {
   return LvWorldPose() * RigidBodyMotion(shape, motion.rigid) *
          DeformedBodyPoint(deformation, MaterialPointAt(shape, ed_body),
-                           motion.progress);
+                           motion.progress, law, LawRadii(shape));
 }
 
 LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
@@ -270,11 +355,14 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
     phantom.options.num_frames = DefaultFrameCount(options.kinematics);
   }
   const int num_frames = phantom.options.num_frames;
+  phantom.points.source = "lv-phantom";
+  if (options.geometry == LvGeometry::kCylinder) {
+    return MakeCylinderPhantom(options, std::move(phantom));
+  }
   const LvShape shape = CheckedShape(options.shape);
   const LvTruthMeter meter(shape);
   const bool slices = options.sampling == LvSampling::kSaxSlices;
   if (!slices) phantom.tag_material = PlaceTags(shape, options);
-  phantom.points.source = "lv-phantom";
   const std::vector<LvImagePlane> planes =
       slices ? ImagePlanes(shape, options, num_frames)
              : std::vector<LvImagePlane>();
@@ -285,7 +373,8 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
       shape.NuAtHeight(kLvInsertionHeight * shape.base_z(), 0.0);
   auto insertion = [&](double phi_deg) {
     return LvWorldPoint(shape, options.deformation, ed,
-                        shape.Position(insertion_nu, phi_deg * kPi / 180, 0.0));
+                        shape.Position(insertion_nu, phi_deg * kPi / 180, 0.0),
+                        options.law);
   };
   phantom.rv_anterior = insertion(kLvAnteriorInsertionDeg);
   phantom.rv_inferior = insertion(kLvInferiorInsertionDeg);
@@ -310,8 +399,9 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
     const Eigen::Isometry3d world_from_body =
         LvWorldPose() * RigidBodyMotion(shape, motion.rigid);
     auto move = [&](const LvMaterialPoint& point) -> Eigen::Vector3d {
-      return world_from_body *
-             DeformedBodyPoint(options.deformation, point, motion.progress);
+      return world_from_body * DeformedBodyPoint(options.deformation, point,
+                                                 motion.progress, options.law,
+                                                 LawRadii(shape));
     };
 
     Frame frame;

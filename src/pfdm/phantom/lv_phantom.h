@@ -69,6 +69,7 @@
 #include <vector>
 
 #include "Eigen/Core"
+#include "pfdm/phantom/lv_cylinder.h"
 #include "pfdm/phantom/lv_motion.h"
 #include "pfdm/phantom/lv_shape.h"
 #include "pfdm/phantom/lv_truth.h"
@@ -104,6 +105,11 @@ struct LvPhantomOptions {
   bool breathing = true;  // Systole and cycle only.
   LvShapeSize shape;
   LvDeformation deformation;  // deformation.lesion: off by default.
+  // The shell's shape and how its wall thickens (lv_cylinder.h,
+  // lv_motion.h).  A cylinder is a mid-ventricular segment of tags (region
+  // and sampling stay at their defaults); its truth is analytic.
+  LvGeometry geometry = LvGeometry::kProlate;
+  LvThickeningLaw law = LvThickeningLaw::kDesigned;
   LvRegion region = LvRegion::kFull;
   LvSampling sampling = LvSampling::kTags;
   // sax-slices: planes per frame; 0: 3 for a mid-ventricular region, 9
@@ -151,11 +157,12 @@ struct LvPhantom {
 LvPhantom MakeLvPhantom(const LvPhantomOptions& options);
 
 // World position at frame `motion` of the material point at ED body
-// position X (noise-free).
+// position X (noise-free), on the prolate shell.
 Eigen::Vector3d LvWorldPoint(const LvShape& shape,
                              const LvDeformation& deformation,
                              const LvFrameMotion& motion,
-                             const Eigen::Vector3d& ed_body);
+                             const Eigen::Vector3d& ed_body,
+                             LvThickeningLaw law = LvThickeningLaw::kDesigned);
 
 }  // namespace pfdm
 

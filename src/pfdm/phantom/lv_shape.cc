@@ -13,7 +13,8 @@ constexpr int kArcSteps = 400;
 
 }  // namespace
 
-LvShape::LvShape(const LvShapeSize& size) : length_(size.length_mm) {
+LvShape::LvShape(const LvShapeSize& size)
+    : size_(size), length_(size.length_mm) {
   // The mid-wall's apex pole is at z = 0 and its base plane cuts it at
   // nu_base: length = a (1 - cos nu_base).
   a_ = length_ / (1.0 - std::cos(size.base_nu_deg * kPi / 180.0));

@@ -31,6 +31,7 @@ class LvShape {
  public:
   explicit LvShape(const LvShapeSize& size = LvShapeSize());
 
+  const LvShapeSize& size() const { return size_; }
   double focal_mm() const { return d_; }
   double mu_mid() const { return mu_mid_; }
   double dmu() const { return dmu_; }
@@ -53,6 +54,7 @@ class LvShape {
   double ClosedVolume(double w) const;
 
  private:
+  LvShapeSize size_;
   double length_, a_, d_, mu_mid_, dmu_;
 };
 

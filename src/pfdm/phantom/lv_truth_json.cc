@@ -75,6 +75,8 @@ std::string LvTruthJson(const LvPhantom& phantom) {
   json["region_heights"] = {LvRegionHeights(options.region).low,
                             LvRegionHeights(options.region).high};
   json["sampling"] = LvSamplingName(options.sampling);
+  json["shell"] = LvGeometryName(options.geometry);
+  json["thickening"] = LvThickeningLawName(options.law);
   if (options.sampling == LvSampling::kSaxSlices) {
     json["slice_heights"] = LvSliceHeights(options);
   }

@@ -9,7 +9,10 @@
 
 namespace pfdm {
 
-// {"phantom": "lv", the options, "geometry", "design", "ring_heights",
+// {"phantom": "lv", the options (among them "shell": "prolate" or
+//  "cylinder", and "thickening": the law), "geometry" (the prolate LV's
+//  sizes; a cylinder's heights are fractions of its length), "design",
+//  "ring_heights",
 //  "summary": {edv_ml, esv_ml, es_frame, ejection_fraction} (endocardial
 //  cavity; ES the frame of least cavity volume), and "frames": per frame
 //  the fields of LvFrameTruth (lv_truth.h): "progress", "rigid",

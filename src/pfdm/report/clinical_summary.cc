@@ -28,11 +28,10 @@ double RingRotationDeg(const Model& reference, const Model& current, double h,
 
 // Mean over the contraction rings of 1 - r / r0 on surface w, percent.
 double RadialContractionPercent(const Model& reference, const Model& current,
-                                double w) {
+                                double w, const RingSpan& span) {
   double percent = 0.0;
   for (int i = 0; i < kContractionRings; ++i) {
-    const double u =
-        RingAtHeightFraction(reference, (i + 0.5) / kContractionRings, w);
+    const double u = RingAtHeightFraction(reference, span.At(i), w);
     percent +=
         100.0 *
         (1.0 - MeanRadius(SampleRing(current, u, kRingSamples, w)) /
@@ -52,7 +51,7 @@ double RingThickness(const Model& model, double u) {
 }
 
 void SummarizeWall(const Model& reference, const Model& current,
-                   ClinicalSummary* summary) {
+                   const RingSpan& span, ClinicalSummary* summary) {
   summary->solid = true;
   summary->endo_apex_rotation_deg =
       RingRotationDeg(reference, current, kApicalRingFraction, -1.0);
@@ -67,13 +66,12 @@ void SummarizeWall(const Model& reference, const Model& current,
   summary->epi_net_twist_deg =
       summary->epi_base_rotation_deg - summary->epi_apex_rotation_deg;
   summary->endo_radial_contraction_percent =
-      RadialContractionPercent(reference, current, -1.0);
+      RadialContractionPercent(reference, current, -1.0, span);
   summary->epi_radial_contraction_percent =
-      RadialContractionPercent(reference, current, 1.0);
+      RadialContractionPercent(reference, current, 1.0, span);
   double thickness = 0.0, thickening = 0.0;
   for (int i = 0; i < kContractionRings; ++i) {
-    const double u =
-        RingAtHeightFraction(reference, (i + 0.5) / kContractionRings);
+    const double u = RingAtHeightFraction(reference, span.At(i));
     const double now = RingThickness(current, u);
     thickness += now / kContractionRings;
     thickening +=
@@ -90,7 +88,7 @@ void SummarizeWall(const Model& reference, const Model& current,
 }  // namespace
 
 ClinicalSummary SummarizeFrame(int frame, const Model& reference,
-                               const Model& current) {
+                               const Model& current, const RingSpan& span) {
   const KnotGrid grid = current.config.Grid();
   const Eigen::Vector3d axis = LongAxis(reference);
   ClinicalSummary summary;
@@ -124,11 +122,11 @@ ClinicalSummary SummarizeFrame(int frame, const Model& reference,
     summary.longitudinal_ratio.push_back(ratio(kA3));
   }
   summary.radial_contraction_percent =
-      RadialContractionPercent(reference, current, 0.0);
+      RadialContractionPercent(reference, current, 0.0, span);
   summary.longitudinal_shortening_percent =
       100.0 * (1.0 - ApexToBaseRim(current) / ApexToBaseRim(reference));
   if (current.config.Solid()) {
-    SummarizeWall(reference, current, &summary);
+    SummarizeWall(reference, current, span, &summary);
   } else {
     summary.volume_ml = CavityVolumeMl(current);
   }
@@ -158,11 +156,12 @@ void LeaveOutApexRing(ClinicalSummary* summary) {
 }
 
 std::vector<ClinicalSummary> SummarizeSequence(const std::vector<Model>& frames,
-                                               int reference) {
+                                               int reference,
+                                               const RingSpan& span) {
   std::vector<ClinicalSummary> summaries;
   for (size_t t = 0; t < frames.size(); ++t) {
-    summaries.push_back(
-        SummarizeFrame(static_cast<int>(t), frames.at(reference), frames[t]));
+    summaries.push_back(SummarizeFrame(static_cast<int>(t),
+                                       frames.at(reference), frames[t], span));
   }
   return summaries;
 }

@@ -1,5 +1,7 @@
 #include "pfdm/report/fit_analysis.h"
 
+#include <algorithm>
+
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/number_uncertainty.h"
 #include "pfdm/report/plausibility.h"
@@ -78,6 +80,15 @@ void LeaveOutExtrapolated(size_t t, FitAnalysis* analysis) {
 
 }  // namespace
 
+RingSpan ClinicalRingSpan(const SequenceFit& fit, bool show_extrapolated) {
+  RingSpan span;
+  if (fit.apex_in_data || show_extrapolated) return span;
+  span.low = std::clamp(fit.lowest_data_height, 0.0, 1.0);
+  span.high = std::clamp(fit.highest_data_height, span.low, 1.0);
+  if (span.high - span.low < 0.05) return RingSpan();  // Too few data.
+  return span;
+}
+
 FitAnalysis AnalyzeFit(const SequenceFit& fit,
                        const std::vector<BasePlane>& base_planes,
                        const RegionLayout& layout, bool show_extrapolated) {
@@ -86,7 +97,9 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
     analysis.models.push_back(fit.ModelAt(static_cast<int>(t)));
   }
   const int ed = fit.ed_frame;
-  analysis.clinical = SummarizeSequence(analysis.models, ed);
+  analysis.ring_span = ClinicalRingSpan(fit, show_extrapolated);
+  analysis.clinical =
+      SummarizeSequence(analysis.models, ed, analysis.ring_span);
   if (fit.time_ms.size() == fit.frames.size()) {
     for (size_t t = 0; t < fit.frames.size(); ++t) {
       analysis.clinical[t].time_ms = fit.time_ms[t];

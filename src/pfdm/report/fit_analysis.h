@@ -49,6 +49,8 @@ struct FitAnalysis {
   // area kept); the levels' and global strains still take the model's cap
   // in.
   bool apex_cap_measured = true;
+  // The heights clinical's ring means are taken over (ClinicalRingSpan).
+  RingSpan ring_span;
   // What clinical[t].volume_ml encloses: "cavity" (a solid's endocardium,
   // or a surface fitted to endocardial contours), "epicardial" or "midwall"
   // (VolumeSurfaceName).
@@ -72,6 +74,11 @@ std::string VolumeSurfaceName(const SequenceFit& fit);
 // Per frame: whether it and frame 0, the reference of every rotation, have
 // tracked points (FrameFit::tracked).
 std::vector<bool> RotationMeasured(const SequenceFit& fit);
+
+// Where clinical's ring means are taken: the whole length when frame 0's
+// data reach the apex (or show_extrapolated), else from the lowest data
+// point to the highest (clamped to the rim): the rings frame 0 has data in.
+RingSpan ClinicalRingSpan(const SequenceFit& fit, bool show_extrapolated);
 
 // base_planes: one per frame to close the cavity there (see
 // CavityVolumeMl), or empty for the flat lid at the base rim.

@@ -181,5 +181,29 @@ TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
   }
 }
 
+// The ring means go where frame 0 has data when it does not reach the apex,
+// over the whole length otherwise or when asked to show extrapolations.
+TEST(FitAnalysisTest, RingSpanFollowsTheData) {
+  SequenceFit fit;
+  fit.apex_in_data = true;
+  fit.lowest_data_height = 0.4;
+  fit.highest_data_height = 0.9;
+  RingSpan span = ClinicalRingSpan(fit, false);
+  EXPECT_EQ(span.low, 0.0);
+  EXPECT_EQ(span.high, 1.0);
+  EXPECT_NEAR(span.At(0), 0.05, 1e-12);
+  fit.apex_in_data = false;
+  span = ClinicalRingSpan(fit, false);
+  EXPECT_EQ(span.low, 0.4);
+  EXPECT_EQ(span.high, 0.9);
+  EXPECT_NEAR(span.At(0), 0.425, 1e-12);
+  EXPECT_NEAR(span.At(kContractionRings - 1), 0.875, 1e-12);
+  EXPECT_EQ(ClinicalRingSpan(fit, true).low, 0.0);
+  fit.highest_data_height = 1.3;  // Data past the rim: the rim.
+  EXPECT_EQ(ClinicalRingSpan(fit, false).high, 1.0);
+  fit.lowest_data_height = 0.98;  // Too thin a band: the whole length.
+  EXPECT_EQ(ClinicalRingSpan(fit, false).low, 0.0);
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -26,9 +26,11 @@ void MeasureApexCoverage(const std::vector<Eigen::Vector3d>& points,
   const double length = rim / kRimPoints;
   double lowest = std::numeric_limits<double>::infinity();
   double nearest = lowest;
+  double highest = -lowest;
   int near_apex = 0;
   for (const Eigen::Vector3d& p : points) {
     lowest = std::min(lowest, axis.dot(p - apex) / length);
+    highest = std::max(highest, axis.dot(p - apex) / length);
     const double distance = (p - apex).norm() / length;
     nearest = std::min(nearest, distance);
     near_apex += distance < kApexReach;
@@ -40,6 +42,7 @@ void MeasureApexCoverage(const std::vector<Eigen::Vector3d>& points,
   fit->apex_in_data =
       near_apex >= std::min(kApexPoints, static_cast<int>(points.size()));
   fit->lowest_data_height = lowest;
+  fit->highest_data_height = highest;
   fit->apex_data_distance = nearest;
   fit->lowest_data_u =
       fit->frames[0].material.empty() ? model.config.u_min : lowest_u;

@@ -22,8 +22,8 @@ namespace pfdm {
 constexpr double kApexReach = 0.15;
 constexpr int kApexPoints = 3;
 
-// Sets fit->apex_in_data, apex_data_distance, lowest_data_height and
-// lowest_data_u from frame
+// Sets fit->apex_in_data, apex_data_distance, lowest_data_height,
+// highest_data_height and lowest_data_u from frame
 // 0's points (`points`, in the order of fit->frames[0].material) and its
 // fitted model; heights along the model's axis, which frame 0 does not bend.
 void MeasureApexCoverage(const std::vector<Eigen::Vector3d>& points,

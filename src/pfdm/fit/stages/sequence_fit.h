@@ -111,6 +111,8 @@ struct SequenceFit {
   // material points.
   double apex_data_distance = 0.0;
   double lowest_data_height = 0.0;
+  // The highest point's height likewise (above 1 where data pass the rim).
+  double highest_data_height = 1.0;
   double lowest_data_u = 0.0;
   // End-diastole (FitOptions::ed_frame), and each frame's time from the
   // trigger (ms) when the input gave them (PointSequence::time_ms), else
