@@ -28,9 +28,10 @@ const std::string kFitFlags =
 
 const Command kCommands[] = {
     {"fit", RunFit,
-     "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
-     "[--solver direct|damped|integrator]",
-     "points out solver vtk_format base_plane extrapolated rv_insertion " +
+     "--points FILE|--segmentation NIFTI [--labels acdc] --out DIR [--model "
+     "paper|superellipsoid] [--knots 17] [--solver direct|damped|integrator]",
+     "points segmentation labels out solver vtk_format base_plane extrapolated "
+     "rv_insertion " +
          kFitFlags},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
