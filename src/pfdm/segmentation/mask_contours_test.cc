@@ -47,6 +47,24 @@ TEST(MaskContoursTest, PhantomStackWalls) {
   EXPECT_GT(epi, endo);
   EXPECT_DOUBLE_EQ(c.slice_thickness_mm, 8.0);
   EXPECT_TRUE(c.misaligned.empty()) << c.warnings.front();
+  // The cavity centres of the unshifted stack lie on a line: each within
+  // 0.5 mm of its neighbours' (kMisalignedMm's margin).
+  const int nz = mask.volume.nz;
+  const Eigen::Vector3d normal =
+      mask.volume.world_from_voxel.col(2).head<3>().normalized();
+  double worst = 0.0;
+  for (int t = 0; t < 3; ++t) {
+    for (int k = 2; k < c.base_slice[t]; ++k) {
+      const Eigen::Vector3d& a = c.rings[t * nz + k - 1].cavity_centroid;
+      const Eigen::Vector3d& b = c.rings[t * nz + k + 1].cavity_centroid;
+      Eigen::Vector3d off = c.rings[t * nz + k].cavity_centroid - 0.5 * (a + b);
+      off -= normal * normal.dot(off);
+      worst = std::max(worst, off.norm());
+    }
+  }
+  std::printf("cavity centres off their neighbours' line: %.2f mm at most\n",
+              worst);
+  EXPECT_LT(worst, 0.5);
 }
 
 // The contact arc's ends are the phantom's insertions, at body longitude
