@@ -7,6 +7,7 @@
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/io/rv_insertion_source.h"
+#include "pfdm/io/segmentation_overlay.h"
 #include "pfdm/io/segmentation_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
@@ -142,8 +143,14 @@ int RunFit() {
   std::printf("segments: %s (%s)\n",
               analysis.layout.anatomical ? "AHA, anatomical" : "not anatomical",
               analysis.layout.anchor.c_str());
-  WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format,
-                  &plots);
+  const std::string slices_svg =
+      segmentation
+          ? SegmentationOverlaySvg(segmentation->volume, segmentation->labels,
+                                   segmentation->contours, analysis.models,
+                                   analysis.ejection_fraction.es_frame)
+          : "";
+  WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format, &plots,
+                  slices_svg);
   const int exit_code = ReportQuality(fit, analysis);
   ReportVolumes(analysis);
   std::printf(

@@ -88,6 +88,14 @@ TEST(SegmentationFitTest, CliFitsAFileAndNamesAShiftedSlice) {
   EXPECT_NE(r.output.find("segments: AHA, anatomical"), std::string::npos);
   EXPECT_NE(ReadText(dir + "/fit/fit.json").find("SAX_LV_EPICARDIAL"),
             std::string::npos);
+  // The mask's slices with the fitted walls: 3 slices at ED and ES, in
+  // slices.svg and the report.
+  const std::string slices = ReadText(dir + "/fit/slices.svg");
+  EXPECT_EQ(CountOf(slices, "<text"), 6);
+  EXPECT_GT(CountOf(slices, "fill=\"yellow\""), 300);
+  EXPECT_NE(ReadText(dir + "/fit/report.html")
+                .find("<h2>The segmentation and the fit</h2>"),
+            std::string::npos);
 }
 
 TEST(SegmentationFitTest, CliBadInputOneLine) {
