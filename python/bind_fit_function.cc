@@ -1,5 +1,6 @@
 // The module function fit: `pfdm fit` from Python, the flags as keywords.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "binding_helpers.h"
@@ -12,6 +13,7 @@
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/io/rv_insertion_source.h"
+#include "pfdm/io/segmentation_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/version.h"
@@ -67,30 +69,59 @@ PointSequence SequenceFrom(const py::object& points,
   return SequenceFromArrays(points, py::none(), "arrays");
 }
 
+// The points, or a segmentation's contours (then *segmentation set and its
+// misaligned slices raised as Python warnings).
+PointSequence InputPoints(const py::object& points,
+                          const py::object& segmentation,
+                          const FitSettings& settings,
+                          const std::string& labels,
+                          std::optional<Segmentation>* read) {
+  if (segmentation.is_none()) {
+    if (points.is_none()) throw InputError("fit needs points or segmentation");
+    return SequenceFrom(points, settings);
+  }
+  if (!points.is_none()) {
+    throw InputError("give points or segmentation, not both");
+  }
+  *read = ReadSegmentation(PathString(segmentation), labels);
+  const py::object warn = py::module_::import("warnings").attr("warn");
+  for (const std::string& warning : (*read)->contours.warnings) {
+    warn((*read)->volume.source + ": " + warning);
+  }
+  return (*read)->contours.points;
+}
+
 // Fits the points with everything the outputs are made of.  The settings
 // are checked before the points are read, and the solve runs without the
 // GIL.
 std::shared_ptr<FitResult> FitPoints(const py::object& points,
+                                     const py::object& segmentation,
+                                     const std::string& labels,
                                      const FitSettings& settings) {
   auto result = std::make_shared<FitResult>();
   const ModelConfig config = ModelConfigFrom(settings);
   result->options = FitOptionsFrom(settings);
   BasePlanesFrom(settings, "");             // Checks base_plane before the fit.
   ParseRvInsertion(settings.rv_insertion);  // Likewise.
-  result->points = SequenceFrom(points, settings);
+  std::optional<Segmentation> read;
+  result->points = InputPoints(points, segmentation, settings, labels, &read);
+  // Guide points' planes, landmarks and RV_INSERT: none in a label map.
+  const std::string guides = read ? "" : result->points.source;
   CheckOptionsAgainstPoints(result->options, result->points);
-  result->base_planes = BasePlanesFrom(settings, result->points.source);
+  result->base_planes = BasePlanesFrom(settings, guides);
   FitOptions options = result->options;
   options.solver.interrupt = CheckSignals;
-  AddLandmarkAxis(result->points.source, &options);
+  AddLandmarkAxis(guides, &options);
   py::gil_scoped_release release;
   result->fit = FitSequence(result->points, config, options);
-  CheckPlanesBelowApex(result->points.source, result->base_planes, result->fit);
-  result->analysis = AnalyzeFit(
-      result->fit, result->base_planes,
-      AnatomicalLayout(
-          result->fit.ModelAt(0),
-          RvInsertionFrom(settings.rv_insertion, result->points.source)));
+  CheckPlanesBelowApex(guides, result->base_planes, result->fit);
+  const std::optional<RvInsertion> insertion =
+      read && settings.rv_insertion.empty()
+          ? read->rv_insertion
+          : RvInsertionFrom(settings.rv_insertion, guides);
+  result->analysis =
+      AnalyzeFit(result->fit, result->base_planes,
+                 AnatomicalLayout(result->fit.ModelAt(0), insertion));
   result->analysis.made_by = "pfdm.fit (Python)";
   result->analysis.made_utc = UtcMinuteNow();
   result->json =
@@ -101,7 +132,8 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
 // fit(points, **flags): one parameter per `pfdm fit` flag, in the order
 // BindFitFunction names them.
 std::shared_ptr<FitResult> FitWithFlags(
-    const py::object& points, const std::string& format,
+    const py::object& points, const py::object& segmentation,
+    const std::string& labels, const std::string& format,
     const std::string& contours, const std::string& base_plane,
     const py::object& rv_insertion, const std::string& model, int knots,
     const std::string& wall, const std::string& surface, int ed_frame,
@@ -145,14 +177,15 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.local_grid = local_grid;
   s.local_stiffness = local_stiffness;
   s.uncertainty = uncertainty;
-  return FitPoints(points, s);
+  return FitPoints(points, segmentation, labels, s);
 }
 
 }  // namespace
 
 void BindFitFunction(py::module_& m) {
   const FitSettings fit_defaults;
-  m.def("_fit", &FitWithFlags, py::arg("points"), py::kw_only(),
+  m.def("_fit", &FitWithFlags, py::arg("points") = py::none(), py::kw_only(),
+        py::arg("segmentation") = py::none(), py::arg("labels") = "acdc",
         py::arg("format") = fit_defaults.format,
         py::arg("contours") = fit_defaults.contours,
         py::arg("base_plane") = fit_defaults.base_plane,
@@ -186,7 +219,12 @@ void BindFitFunction(py::module_& m) {
         "with the flags of the same names and defaults.  points: a "
         "PointSequence, a path (read as read_points with format and "
         "contours), or a list of (N, 3) arrays (point i of every frame the "
-        "same material point).  apex and base: (x, y, z) in mm or 'x,y,z', "
+        "same material point).  segmentation: instead of points, a NIfTI "
+        "label map (a 4D file, or a folder of 3D files one per frame) whose "
+        "LV walls are fitted as contours, labels its values ('acdc', "
+        "'mnms' or 'lv=3,myo=2,rv=1'), its misaligned slices raised as "
+        "warnings (docs/segmentation.md).  apex and base: (x, y, z) in mm or "
+        "'x,y,z', "
         "together.  base_plane 'auto' closes the cavity at the mitral valve "
         "planes of guide points read from a path, 'rim' at the base rim.  "
         "loss_scale: 'auto' or a number of mm.  "

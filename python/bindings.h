@@ -22,6 +22,8 @@ void BindFitFrame(py::module_& m);
 void BindFitResult(py::module_& m);
 // read_points, read_mesh_points and simulate (bind_point_sources.cc).
 void BindPointSources(py::module_& m);
+// contours_from_segmentation (bind_segmentation.cc).
+void BindSegmentation(py::module_& m);
 // fit (bind_fit_function.cc).
 void BindFitFunction(py::module_& m);
 

@@ -27,6 +27,7 @@ void BindModule(py::module_& m) {
   BindFitFrame(m);
   BindFitResult(m);
   BindPointSources(m);
+  BindSegmentation(m);
   BindFitFunction(m);
 }
 

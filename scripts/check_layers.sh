@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Fails when library code includes a part above its own (docs/architecture.md):
-# the parts, lowest first, are util model phantom solvers fit report io batch
-# cli.  Inside fit/ the sub-parts are ordered the same way: residuals,
+# the parts, lowest first, are util segmentation model phantom solvers fit
+# report io batch cli.  Inside fit/ the sub-parts are ordered the same way: residuals,
 # correspondence, fit/ itself (fit_options.h), problem, stages.  Tests
 # (*_test.cc) and src/pfdm/testing may include anything.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-parts=(util model phantom solvers fit report io batch cli)
+parts=(util segmentation model phantom solvers fit report io batch cli)
 fit_parts=(residuals correspondence . problem stages)
 declare -A rank fit_rank
 for i in "${!parts[@]}"; do rank[${parts[$i]}]=$i; done

@@ -135,7 +135,8 @@ def stubs():
     for cls in (pfdm.PointSequence, pfdm.Model, pfdm.FitFrame, pfdm.Fit):
         text += "\n" + class_stub(cls)
     text += "\n"
-    for name in ("read_points", "read_mesh_points"):
+    for name in ("read_points", "read_mesh_points",
+                 "contours_from_segmentation"):
         text += pybind_signature(name, getattr(_pfdm, name).__doc__) + "\n"
     text += python_signature("fit", pfdm.fit, "Fit") + "\n"
     text += python_signature("simulate", pfdm.simulate,

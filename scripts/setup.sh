@@ -4,7 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 packages=(cmake g++ make libceres-dev liblapack-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libfccp-dev libnanoflann-dev
-  libjemalloc-dev gnuplot-nox pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
+  libjemalloc-dev libnifti2-dev gnuplot-nox pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
   python3-pandas)
 missing=()
 for p in "${packages[@]}"; do

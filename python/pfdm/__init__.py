@@ -12,7 +12,7 @@ pandas DataFrame (``Fit.to_dataframe``).
 """
 from ._pfdm import (FUNCTION_NAMES, FUNCTION_UNITS, Fit, FitFrame,
                     InputError, Model, PointSequence, __version__,
-                    read_mesh_points, read_points)
+                    contours_from_segmentation, read_mesh_points, read_points)
 from ._fit import fit
 from ._simulate import simulate
 from . import _frames
@@ -24,6 +24,7 @@ del _named
 
 __all__ = [
     "FUNCTION_NAMES", "FUNCTION_UNITS", "Fit", "FitFrame", "InputError",
-    "Model", "PointSequence", "fit", "read_mesh_points", "read_points",
+    "Model", "PointSequence", "contours_from_segmentation", "fit",
+    "read_mesh_points", "read_points",
     "simulate", "__version__",
 ]

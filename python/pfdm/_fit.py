@@ -65,7 +65,7 @@ _FLOATS = ("smoothness", "prior", "untracked_prior", "temporal_prior",
            "rest_tolerance", "local_stiffness")
 
 
-def fit(points, *, format="auto", contours=("lv-cavity",), base_plane="auto",
+def fit(points=None, *, segmentation=None, labels="acdc", format="auto", contours=("lv-cavity",), base_plane="auto",
         rv_insertion=None, model="paper", knots=17, wall="auto",
         surface="auto", ed_frame=0, smoothness=1.0, prior=0.001,
         untracked_prior=0.01, temporal_prior=0.0, loss="none", loss_scale="auto", threads=1,
@@ -82,7 +82,13 @@ def fit(points, *, format="auto", contours=("lv-cavity",), base_plane="auto",
         The data: a PointSequence, a path (a frame,id,x,y,z CSV, a biv-me
         GPFile or a folder of them, read as `read_points` with `format` and
         `contours`), or one (N, 3) array per frame whose row i is the same
-        material point in every frame (tracked tags).
+        material point in every frame (tracked tags). Or None, with:
+    segmentation : str, optional
+        A NIfTI label map (4D, or a folder of 3D files, one per frame): the
+        walls' contours, base and RV insertion are taken from it
+        (`contours_from_segmentation`; docs/segmentation.md).
+    labels : str
+        The label values: "acdc", "mnms", or "lv=3,myo=2,rv=1".
     format : {"auto", "csv", "gpfile"}
         How a path is read; "auto" by its name.
     contours : str or list of str
@@ -172,6 +178,8 @@ def fit(points, *, format="auto", contours=("lv-cavity",), base_plane="auto",
         arguments["damping_scale"] = ",".join(
             f"{group}={scale}" for group, scale in damping_scale.items())
     del arguments["points"]
+    if segmentation is not None:
+        arguments["segmentation"] = str(segmentation)
     try:
         return _pfdm._fit(points, **arguments)
     except _pfdm.InputError as error:

@@ -11,6 +11,8 @@
 #include "pfdm/util/point_data.h"
 
 DECLARE_string(points);
+DECLARE_string(segmentation);
+DECLARE_string(labels);
 DECLARE_string(out);
 DECLARE_int32(threads);
 

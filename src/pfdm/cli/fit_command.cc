@@ -7,6 +7,8 @@
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/io/rv_insertion_source.h"
+#include "pfdm/io/segmentation_overlay.h"
+#include "pfdm/io/segmentation_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/error.h"
@@ -71,6 +73,43 @@ void ReportVolumes(const FitAnalysis& analysis) {
   }
 }
 
+// What was read from the label map, and its misaligned slices as warnings.
+void ReportSegmentation(const Segmentation& s) {
+  const LabelVolume& v = s.volume;
+  const MaskContours& c = s.contours;
+  std::printf(
+      "segmentation: %d slices x %d frames, %.2f x %.2f x %.2f mm (%s); "
+      "apex at slice %d, frame 0's base at slice %d; RV insertion on %zu "
+      "slices\n",
+      v.nz, v.nt, v.Spacing(0), v.Spacing(1), v.Spacing(2), v.geometry.c_str(),
+      c.apex_slice, c.base_slice.front(), c.rv_insertion.size() / 2);
+  for (const std::string& warning : c.warnings) {
+    std::fprintf(stderr, "pfdm: warning: %s: %s\n", v.source.c_str(),
+                 warning.c_str());
+  }
+}
+
+// The points of --points, or the contours of --segmentation (its RV
+// insertion then in *segmentation).
+PointSequence InputPoints(std::optional<Segmentation>* segmentation) {
+  if (FLAGS_segmentation.empty()) return PointsFromFlags();
+  if (!FLAGS_points.empty()) {
+    throw InputError("give --points or --segmentation, not both");
+  }
+  *segmentation = ReadSegmentation(FLAGS_segmentation, FLAGS_labels);
+  ReportSegmentation(**segmentation);
+  return (*segmentation)->contours.points;
+}
+
+std::optional<RvInsertion> InputRvInsertion(
+    const std::optional<Segmentation>& segmentation) {
+  const std::string flag = FitSettingsFromFlags().rv_insertion;
+  if (!segmentation || !flag.empty()) {
+    return RvInsertionFrom(flag, FLAGS_points);
+  }
+  return segmentation->rv_insertion;
+}
+
 }  // namespace
 
 int RunFit() {
@@ -81,8 +120,11 @@ int RunFit() {
   ParseRvInsertion(FitSettingsFromFlags().rv_insertion);  // Likewise.
   const VtkOutput vtk_output = VtkOutputFromFlags();
   // Before the minutes of work, not after them.
-  CheckFitOutputFolder(FLAGS_out, FLAGS_points);
-  const PointSequence points = PointsFromFlags();
+  CheckFitOutputFolder(FLAGS_out, FLAGS_segmentation.empty()
+                                      ? FLAGS_points
+                                      : FLAGS_segmentation);
+  std::optional<Segmentation> segmentation;
+  const PointSequence points = InputPoints(&segmentation);
   CheckOptionsAgainstPoints(options, points);
   const std::vector<BasePlane> planes = BasePlanesFromFlags(FLAGS_points);
   // The settings (fit.json) stay the user's; fit.json's model says where
@@ -97,17 +139,21 @@ int RunFit() {
               fit.wall_reason.c_str());
   FitAnalysis analysis = AnalyzeFit(
       fit, planes,
-      AnatomicalLayout(
-          fit.ModelAt(0),
-          RvInsertionFrom(FitSettingsFromFlags().rv_insertion, FLAGS_points)),
+      AnatomicalLayout(fit.ModelAt(0), InputRvInsertion(segmentation)),
       ShowExtrapolatedFromFlags());
   analysis.made_by = CommandLine();
   analysis.made_utc = UtcMinuteNow();
   std::printf("segments: %s (%s)\n",
               analysis.layout.anatomical ? "AHA, anatomical" : "not anatomical",
               analysis.layout.anchor.c_str());
+  const std::string slices_svg =
+      segmentation
+          ? SegmentationOverlaySvg(segmentation->volume, segmentation->labels,
+                                   segmentation->contours, analysis.models,
+                                   analysis.ejection_fraction.es_frame)
+          : "";
   WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_output,
-                  &plots);
+                  &plots, slices_svg);
   const int exit_code = ReportQuality(fit, analysis);
   ReportVolumes(analysis);
   std::printf(

@@ -12,6 +12,14 @@ const pfdm::FitSettings kDefaults;
 DEFINE_string(points, "",
               "input points: a frame,id,x,y,z CSV, or a biv-me "
               "GPFile_*.txt or a folder of them");
+DEFINE_string(segmentation, "",
+              "fit: input label map instead of --points: a 4D NIfTI (x, y, "
+              "slice, time), a 3D one, or a folder of 3D files, one per "
+              "frame in name order (only *_gt* files where there are some, "
+              "as ACDC's); docs/segmentation.md");
+DEFINE_string(labels, "acdc",
+              "fit --segmentation: the label values, acdc (lv=3,myo=2,rv=1), "
+              "mnms (lv=1,myo=2,rv=3) or lv=N,myo=N[,rv=N|none]");
 DEFINE_string(format, kDefaults.format.c_str(),
               "csv, gpfile or auto (by name)");
 DEFINE_string(contours, kDefaults.contours.c_str(),

@@ -50,13 +50,13 @@ const std::string kFitFlags =
 
 const Command kCommands[] = {
     {"fit", RunFit,
-     "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
-     "[--solver direct|damped|integrator]",
-     "points out solver vtk_format vtk_precision base_plane extrapolated "
-     "rv_insertion " +
+     "--points FILE|--segmentation NIFTI [--labels acdc] --out DIR [--model "
+     "paper|superellipsoid] [--knots 17] [--solver direct|damped|integrator]",
+     "points segmentation labels out solver vtk_format vtk_precision "
+     "base_plane extrapolated rv_insertion " +
          kFitFlags,
-     "fits the model to tags or contours over the cycle: functions, clinical "
-     "numbers, report"},
+     "fits the model to tags, contours or segmentation masks over the cycle: "
+     "functions, clinical numbers, report"},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
      "out frames tags noise outliers seed phantom kinematics wall_tags "

@@ -38,6 +38,7 @@ double KnotRingZ(const Model& model, double u) {
 const std::regex& OutputNamePattern() {
   static const std::regex pattern(
       "(fit\\.json|parameters\\.csv|parameters\\.svg|report\\.html|"
+      "slices\\.svg|"
       "fit\\.pvd|frame_[0-9]+\\.vtk|frame_[0-9]+\\.vtp)(\\.tmp\\.[A-Za-z0-9.-]+"
       ")?");
   return pattern;
@@ -281,7 +282,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitAnalysis& analysis,
                      const FitOptions& options, const VtkOutput& vtk_output,
-                     SvgRendering* plots) {
+                     SvgRendering* plots, const std::string& slices_svg) {
   // The frames' meshes are formatted and written while gnuplot renders the
   // plots (one gnuplot for the four: its start-up, not the plotting, was
   // most of their time).
@@ -313,6 +314,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     if (vtk_output.Vtk()) names.push_back(name + ".vtk");
     if (vtk_output.Vtp()) names.push_back(name + ".vtp");
   }
+  if (!slices_svg.empty()) names.push_back("slices.svg");
 
   EnsureDirectory(dir);
   RefuseFoldersInTheWay(dir, names);
@@ -349,8 +351,9 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     const std::string json = FitJson(points, fit, options, analysis);
     const std::vector<std::string> svgs = plots->Finish();
     write("parameters.svg", svgs[0]);
+    if (!slices_svg.empty()) write("slices.svg", slices_svg);
     write("report.html", FitReportHtml(points, fit, analysis, svgs[0], svgs[1],
-                                       svgs[2], svgs[3]));
+                                       svgs[2], svgs[3], slices_svg));
     write("fit.json", json);  // Last: marks the set.
   } catch (const InputError&) {
     for (const std::string& name : written) {

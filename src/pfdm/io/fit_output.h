@@ -91,7 +91,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
 void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const SequenceFit& fit, const FitAnalysis& analysis,
                      const FitOptions& options, const VtkOutput& vtk_output,
-                     SvgRendering* plots);
+                     SvgRendering* plots, const std::string& slices_svg = "");
 
 }  // namespace pfdm
 

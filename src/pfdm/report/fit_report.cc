@@ -470,12 +470,21 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const std::string& parameters_svg,
                           const std::string& cycle_svg,
                           const std::string& strain_svg,
-                          const std::string& bullseye_svg) {
+                          const std::string& bullseye_svg,
+                          const std::string& slices_svg) {
   std::ostringstream h;
   h << PageHead(points, fit, analysis) << VerdictBoxHtml(fit, analysis)
     << KeyNumbers(fit, analysis) << IntervalNoteHtml(analysis)
     << MeasurementNote(fit, analysis);
   h << UntrackedNote(analysis);
+  if (!slices_svg.empty()) {
+    h << "<h2>The segmentation and the fit</h2>\n"
+      << InlineSvg(slices_svg) << "\n"
+      << "<p class=\"note\">Short-axis slices of the mask (cavity red, "
+         "myocardium green, RV blue) at ED and ES, with the fitted "
+         "endocardium (yellow) and epicardium (white) where they cut each "
+         "slice's plane.</p>\n";
+  }
   h << PlotSections(parameters_svg, cycle_svg, strain_svg)
     << FrameTable(fit, analysis) << RegionalSection(fit, analysis, bullseye_svg)
     << Footer(analysis) << "</body></html>\n";

@@ -13,14 +13,17 @@ namespace pfdm {
 // The key numbers (EF, twist and contraction at end-systole), the plots
 // (SVG documents, inlined), the per-frame error and clinical table and the
 // regional wall motion at end-systole, with the strain curves and the
-// bull's-eye maps where given (report/bullseye_plot.h).  No external
+// bull's-eye maps where given (report/bullseye_plot.h), and a
+// segmentation's slices with the fitted walls' cuts where given
+// (io/segmentation_overlay.h).  No external
 // resources.
 std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const FitAnalysis& analysis,
                           const std::string& parameters_svg,
                           const std::string& cycle_svg,
                           const std::string& strain_svg = "",
-                          const std::string& bullseye_svg = "");
+                          const std::string& bullseye_svg = "",
+                          const std::string& slices_svg = "");
 
 // An SVG document's <svg> element, without the XML prolog and doctype that
 // may not stand inside HTML.

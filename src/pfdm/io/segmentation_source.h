@@ -1,0 +1,30 @@
+// pfdm fit --segmentation: a label map's LV contours and RV insertion, as
+// the fit and the report take guide points'.
+#ifndef PFDM_IO_SEGMENTATION_SOURCE_H_
+#define PFDM_IO_SEGMENTATION_SOURCE_H_
+
+#include <optional>
+#include <string>
+
+#include "pfdm/report/rv_insertion.h"
+#include "pfdm/segmentation/mask_contours.h"
+
+namespace pfdm {
+
+struct Segmentation {
+  LabelVolume volume;
+  LabelMap labels;
+  MaskContours contours;
+  // From the contours' RV contact (nullopt where the RV never touches the
+  // myocardium, or without an RV label).
+  std::optional<RvInsertion> rv_insertion;
+};
+
+// ReadLabelVolume(path), ParseLabelMap(labels), ExtractMaskContours.
+// Throws InputError.
+Segmentation ReadSegmentation(const std::string& path,
+                              const std::string& labels);
+
+}  // namespace pfdm
+
+#endif  // PFDM_IO_SEGMENTATION_SOURCE_H_

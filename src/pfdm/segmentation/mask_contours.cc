@@ -1,0 +1,206 @@
+#include "pfdm/segmentation/mask_contours.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+
+#include "pfdm/segmentation/boundary_points.h"
+#include "pfdm/segmentation/rv_contact.h"
+#include "pfdm/segmentation/slice_alignment.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+
+namespace {
+
+SliceMask MaskOf(const LabelVolume& volume, int k, int t,
+                 const std::function<bool(std::int32_t)>& in) {
+  SliceMask mask;
+  mask.nx = volume.nx;
+  mask.ny = volume.ny;
+  mask.inside.resize(static_cast<size_t>(volume.nx) * volume.ny);
+  for (int j = 0; j < volume.ny; ++j) {
+    for (int i = 0; i < volume.nx; ++i) {
+      mask.inside[j * volume.nx + i] = in(volume.At(i, j, k, t)) ? 1 : 0;
+    }
+  }
+  return mask;
+}
+
+struct Masks {
+  SliceMask cavity, myocardium, lv;  // lv: cavity and myocardium.
+};
+
+Masks MasksOf(const LabelVolume& volume, const LabelMap& labels, int k, int t) {
+  return {MaskOf(volume, k, t, [&](std::int32_t v) { return v == labels.lv; }),
+          MaskOf(volume, k, t, [&](std::int32_t v) { return v == labels.myo; }),
+          MaskOf(volume, k, t, [&](std::int32_t v) {
+            return v == labels.lv || v == labels.myo;
+          })};
+}
+
+void CheckHasLv(const LabelVolume& volume, const LabelMap& labels) {
+  for (std::int32_t v : volume.labels) {
+    if (v == labels.lv) return;
+  }
+  throw InputError(volume.source +
+                   ": no voxel labelled lv=" + std::to_string(labels.lv) +
+                   " (the LV cavity); --labels says which value is which "
+                   "(e.g. --labels acdc, mnms or lv=3,myo=2,rv=1)");
+}
+
+SliceRing MeasureRing(const LabelVolume& volume, const Masks& masks, int k,
+                      int t) {
+  SliceRing ring;
+  ring.slice = k;
+  ring.frame = t;
+  const RegionMoments cavity = Moments(masks.cavity);
+  ring.cavity_voxels = cavity.count;
+  ring.myocardium_voxels = Moments(masks.myocardium).count;
+  ring.has_cavity = cavity.count > 0;
+  if (ring.has_cavity) {
+    ring.cavity_centroid =
+        volume.World(cavity.centroid.x(), cavity.centroid.y(), k);
+    ring.closed = ring.myocardium_voxels > 0 &&
+                  !ReachableFromBorder(masks.myocardium, masks.cavity);
+  } else {
+    ring.closed = ring.myocardium_voxels > 0;
+  }
+  return ring;
+}
+
+// The end of the stack the apex is at: the one farther from the
+// cavity-weighted mean slice of frame 0 (the cavity is widest toward the
+// base).
+int ApexSlice(const std::vector<SliceRing>& rings, int nz) {
+  int first = -1, last = -1;
+  double weight = 0.0, sum = 0.0;
+  for (int k = 0; k < nz; ++k) {
+    const SliceRing& ring = rings[k];
+    if (ring.cavity_voxels + ring.myocardium_voxels == 0) continue;
+    if (first < 0) first = k;
+    last = k;
+    weight += ring.cavity_voxels;
+    sum += ring.cavity_voxels * static_cast<double>(k);
+  }
+  if (first < 0 || weight == 0.0) return 0;
+  const double mean = sum / weight;
+  return mean - first > last - mean ? 0 : nz - 1;
+}
+
+// Marks the frame's slices from the apex to its base kept; returns the
+// base, -1 when no slice holds a closed ring around a cavity.
+int KeepApexToBase(std::vector<SliceRing>* rings, int nz, int t,
+                   int apex_slice) {
+  const int step = apex_slice == 0 ? 1 : -1;
+  int base = -1;
+  for (int k = apex_slice; k >= 0 && k < nz; k += step) {
+    const SliceRing& ring = (*rings)[t * nz + k];
+    if (ring.closed && ring.has_cavity) base = k;
+  }
+  if (base < 0) return -1;
+  for (int k = apex_slice; k != base + step; k += step) {
+    SliceRing& ring = (*rings)[t * nz + k];
+    ring.kept = ring.cavity_voxels + ring.myocardium_voxels > 0;
+  }
+  return base;
+}
+
+// The mask's boundary at slice position k (fractional: a slab's face).
+void AddPoints(const LabelVolume& volume, const SliceMask& mask, double k,
+               WallLayer layer, Frame* frame, std::int64_t* next_id) {
+  for (const Eigen::Vector2d& p : BoundaryPoints(mask)) {
+    frame->points.push_back(
+        {(*next_id)++, volume.World(p.x(), p.y(), k), layer});
+  }
+}
+
+// A slice's walls; the base's also at its slab's basal face, half a slice
+// toward the base: its labels say the whole slab is LV, as the voxel count
+// takes it, and without them the fitted cavity would end at the slice's
+// centre, half a slab short (4 ml of the phantom's 106 at ED).
+void AddWalls(const LabelVolume& volume, const Masks& masks, int k,
+              double basal_face, Frame* frame, std::int64_t* next_id) {
+  for (double at : {static_cast<double>(k), basal_face}) {
+    if (std::isnan(at)) continue;
+    AddPoints(volume, masks.cavity, at, WallLayer::kEndocardium, frame,
+              next_id);
+    AddPoints(volume, masks.lv, at, WallLayer::kEpicardium, frame, next_id);
+  }
+}
+
+void AddRvInsertion(const LabelVolume& volume, const LabelMap& labels,
+                    const Masks& masks, int k, MaskContours* out) {
+  if (labels.rv < 0) return;
+  const SliceMask rv =
+      MaskOf(volume, k, 0, [&](std::int32_t v) { return v == labels.rv; });
+  const auto ends =
+      RvContactEnds(masks.myocardium, rv, Moments(masks.cavity).centroid,
+                    volume.Spacing(0), volume.Spacing(1));
+  if (!ends) return;
+  out->rv_insertion.push_back(
+      volume.World(ends->first.x(), ends->first.y(), k));
+  out->rv_insertion.push_back(
+      volume.World(ends->second.x(), ends->second.y(), k));
+}
+
+void Warn(const MisalignedSlice& slice, int num_frames, MaskContours* out) {
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                "slice %d: the LV cavity's centre lies up to %.1f mm off the "
+                "line of its neighbours' in %zu of %d frames (a breath-hold "
+                "shift?)",
+                slice.slice, slice.max_offset_mm, slice.frames.size(),
+                num_frames);
+  out->warnings.push_back(line);
+}
+
+}  // namespace
+
+MaskContours ExtractMaskContours(const LabelVolume& volume,
+                                 const LabelMap& labels) {
+  CheckHasLv(volume, labels);
+  const int nz = volume.nz, nt = volume.nt;
+  MaskContours out;
+  out.slice_thickness_mm = volume.Spacing(2);
+  out.points.source = volume.source;
+  out.points.contour_types = {"SAX_LV_ENDOCARDIAL", "SAX_LV_EPICARDIAL"};
+  for (int t = 0; t < nt; ++t) {
+    for (int k = 0; k < nz; ++k) {
+      out.rings.push_back(
+          MeasureRing(volume, MasksOf(volume, labels, k, t), k, t));
+    }
+  }
+  out.apex_slice = ApexSlice(out.rings, nz);
+  std::int64_t next_id = 0;
+  for (int t = 0; t < nt; ++t) {
+    const int base = KeepApexToBase(&out.rings, nz, t, out.apex_slice);
+    if (base < 0) {
+      throw InputError(
+          volume.source + ": frame " + std::to_string(t) +
+          ": no slice where the myocardium (myo=" + std::to_string(labels.myo) +
+          ") closes around the LV cavity (lv=" + std::to_string(labels.lv) +
+          ")");
+    }
+    out.base_slice.push_back(base);
+    Frame frame;
+    frame.index = t;
+    for (int k = 0; k < nz; ++k) {
+      if (!out.rings[t * nz + k].kept) continue;
+      const Masks masks = MasksOf(volume, labels, k, t);
+      const double toward_base = out.apex_slice == 0 ? 0.5 : -0.5;
+      AddWalls(volume, masks, k, k == base ? k + toward_base : std::nan(""),
+               &frame, &next_id);
+      if (t == 0 && out.rings[k].closed) {
+        AddRvInsertion(volume, labels, masks, k, &out);
+      }
+    }
+    out.points.frames.push_back(std::move(frame));
+  }
+  const Eigen::Vector3d normal = volume.world_from_voxel.col(2).head<3>();
+  out.misaligned = FindMisalignedSlices(out.rings, nz, nt, normal);
+  for (const MisalignedSlice& slice : out.misaligned) Warn(slice, nt, &out);
+  return out;
+}
+
+}  // namespace pfdm

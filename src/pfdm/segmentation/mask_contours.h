@@ -1,0 +1,65 @@
+// The LV's contours, base and RV insertion from a stack of label maps: what
+// pfdm fit reads from a segmentation (docs/segmentation.md).
+#ifndef PFDM_SEGMENTATION_MASK_CONTOURS_H_
+#define PFDM_SEGMENTATION_MASK_CONTOURS_H_
+
+#include <string>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/segmentation/label_volume.h"
+#include "pfdm/util/point_data.h"
+
+namespace pfdm {
+
+// One slice of one frame, as far as the LV goes.
+struct SliceRing {
+  int slice = 0, frame = 0;
+  int cavity_voxels = 0, myocardium_voxels = 0;
+  // The cavity's voxel centroid, world (has_cavity only).
+  bool has_cavity = false;
+  Eigen::Vector3d cavity_centroid = Eigen::Vector3d::Zero();
+  // The myocardium encloses the cavity (or the slice is an apical cap of
+  // myocardium alone).
+  bool closed = false;
+  bool kept = false;  // Between the apex and the base: its contours fitted.
+};
+
+// A slice whose LV cavity centre lies off the line of its neighbours'
+// (slice_alignment.h).
+struct MisalignedSlice {
+  int slice = 0;
+  std::vector<int> frames;   // Where it is off.
+  double max_offset_mm = 0;  // The largest, over those frames.
+};
+
+struct MaskContours {
+  // Per frame: the endocardium (boundary of the cavity label) and the
+  // epicardium (outer boundary of cavity and myocardium) of the kept
+  // slices, the base's also at its slab's basal face (half a slice toward
+  // the base), world mm, layer set, ids unique; contour_types
+  // SAX_LV_ENDOCARDIAL and SAX_LV_EPICARDIAL.
+  PointSequence points;
+  std::vector<SliceRing> rings;  // Per frame, per slice: rings[t * nz + k].
+  // The slice at the apex's end (0 or nz - 1), and per frame the most
+  // basal slice with a closed myocardial ring.
+  int apex_slice = 0;
+  std::vector<int> base_slice;
+  // Frame 0's RV insertion: per kept slice where the RV touches the
+  // myocardium, the two ends of the contact arc (unlabelled, world; which
+  // is anterior is rv_insertion.h's business).
+  std::vector<Eigen::Vector3d> rv_insertion;
+  double slice_thickness_mm = 0.0;
+  std::vector<MisalignedSlice> misaligned;
+  // One line each: what the user should know (misaligned slices).
+  std::vector<std::string> warnings;
+};
+
+// Throws InputError naming the source when no voxel carries the LV cavity
+// label, or a frame has no closed myocardial ring.
+MaskContours ExtractMaskContours(const LabelVolume& volume,
+                                 const LabelMap& labels);
+
+}  // namespace pfdm
+
+#endif  // PFDM_SEGMENTATION_MASK_CONTOURS_H_

@@ -1,0 +1,139 @@
+#include "pfdm/segmentation/mask_contours.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "pfdm/testing/mask_phantom.h"
+#include "pfdm/util/error.h"
+
+namespace pfdm {
+namespace {
+
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+
+const MaskPhantom& Phantom() {
+  static const MaskPhantom* phantom =
+      new MaskPhantom(MakeMaskPhantom(MaskPhantomOptions()));
+  return *phantom;
+}
+
+// Body longitude (degrees) of a world point at frame 0.
+double Longitude(const MaskPhantom& mask, const Eigen::Vector3d& world) {
+  const Eigen::Vector3d body = mask.world_from_body0.inverse() * world;
+  return std::atan2(body.y(), body.x()) * kDeg;
+}
+
+// The phantom's stack: apex at slice 0, the base where the ring last
+// closes, both walls' points on their surfaces' cuts.
+TEST(MaskContoursTest, PhantomStackWalls) {
+  const MaskPhantom& mask = Phantom();
+  const MaskContours c = ExtractMaskContours(mask.volume, LabelMap());
+  EXPECT_EQ(c.apex_slice, 0);
+  ASSERT_EQ(c.base_slice.size(), 3u);
+  // Systole moves the base toward the apex by 17 % of 95 mm: about two
+  // slices of 8 mm lose their ring.
+  EXPECT_GT(c.base_slice[0], c.base_slice[2]);
+  EXPECT_LE(c.base_slice[0], mask.volume.nz - 1);
+  ASSERT_EQ(c.points.frames.size(), 3u);
+  int endo = 0, epi = 0;
+  for (const DataPoint& p : c.points.frames[0].points) {
+    endo += p.layer == WallLayer::kEndocardium;
+    epi += p.layer == WallLayer::kEpicardium;
+  }
+  std::printf("slices %d, base %d %d %d, endo %d epi %d points\n",
+              mask.volume.nz, c.base_slice[0], c.base_slice[1], c.base_slice[2],
+              endo, epi);
+  EXPECT_GT(endo, 500);
+  EXPECT_GT(epi, endo);
+  EXPECT_DOUBLE_EQ(c.slice_thickness_mm, 8.0);
+  EXPECT_TRUE(c.misaligned.empty()) << c.warnings.front();
+  // The cavity centres of the unshifted stack lie on a line: each within
+  // 0.5 mm of its neighbours' (kMisalignedMm's margin).
+  const int nz = mask.volume.nz;
+  const Eigen::Vector3d normal =
+      mask.volume.world_from_voxel.col(2).head<3>().normalized();
+  double worst = 0.0;
+  for (int t = 0; t < 3; ++t) {
+    for (int k = 2; k < c.base_slice[t]; ++k) {
+      const Eigen::Vector3d& a = c.rings[t * nz + k - 1].cavity_centroid;
+      const Eigen::Vector3d& b = c.rings[t * nz + k + 1].cavity_centroid;
+      Eigen::Vector3d off = c.rings[t * nz + k].cavity_centroid - 0.5 * (a + b);
+      off -= normal * normal.dot(off);
+      worst = std::max(worst, off.norm());
+    }
+  }
+  std::printf("cavity centres off their neighbours' line: %.2f mm at most\n",
+              worst);
+  EXPECT_LT(worst, 0.5);
+}
+
+// The contact arc's ends are the phantom's insertions, at body longitude
+// -60 and -180 degrees, within 8 degrees.
+TEST(MaskContoursTest, RvInsertionAtThePhantomsLongitudes) {
+  const MaskPhantom& mask = Phantom();
+  const MaskContours c = ExtractMaskContours(mask.volume, LabelMap());
+  ASSERT_GE(c.rv_insertion.size(), 10u);
+  ASSERT_EQ(c.rv_insertion.size() % 2, 0u);
+  for (size_t n = 0; n < c.rv_insertion.size(); n += 2) {
+    double a = Longitude(mask, c.rv_insertion[n]);
+    double b = Longitude(mask, c.rv_insertion[n + 1]);
+    if (std::abs(a + 60.0) > std::abs(b + 60.0)) std::swap(a, b);
+    EXPECT_NEAR(a, -60.0, 8.0) << "slice pair " << n / 2;
+    EXPECT_GT(std::abs(b), 172.0) << "slice pair " << n / 2;
+  }
+}
+
+// A slice moved 6 mm in-plane (4 voxels) is named in every frame.
+TEST(MaskContoursTest, ShiftedSliceIsNamed) {
+  MaskPhantomOptions options;
+  options.shifted_slice = 6;
+  options.shift_voxels = 4;
+  const MaskPhantom mask = MakeMaskPhantom(options);
+  const MaskContours c = ExtractMaskContours(mask.volume, LabelMap());
+  ASSERT_EQ(c.misaligned.size(), 1u);
+  EXPECT_EQ(c.misaligned[0].slice, 6);
+  EXPECT_EQ(c.misaligned[0].frames.size(), 3u);
+  EXPECT_NEAR(c.misaligned[0].max_offset_mm, 6.0, 1.0);
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("slice 6:"), std::string::npos);
+}
+
+TEST(MaskContoursTest, NoLvLabelIsAnError) {
+  LabelMap labels;
+  labels.lv = 7;
+  try {
+    ExtractMaskContours(Phantom().volume, labels);
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(),
+                 "mask phantom: no voxel labelled lv=7 (the LV cavity); "
+                 "--labels says which value is which (e.g. --labels acdc, "
+                 "mnms or lv=3,myo=2,rv=1)");
+  }
+}
+
+// The stack upside down (apex at the last slice) reads the same.
+TEST(MaskContoursTest, StackEitherWayUp) {
+  LabelVolume flipped = Phantom().volume;
+  const LabelVolume& v = Phantom().volume;
+  for (int t = 0; t < v.nt; ++t) {
+    for (int k = 0; k < v.nz; ++k) {
+      for (int j = 0; j < v.ny; ++j) {
+        for (int i = 0; i < v.nx; ++i) {
+          flipped.labels[flipped.Index(i, j, v.nz - 1 - k, t)] =
+              v.At(i, j, k, t);
+        }
+      }
+    }
+  }
+  flipped.world_from_voxel.col(3) += v.world_from_voxel.col(2) * (v.nz - 1);
+  flipped.world_from_voxel.col(2) *= -1.0;
+  const MaskContours a = ExtractMaskContours(v, LabelMap());
+  const MaskContours b = ExtractMaskContours(flipped, LabelMap());
+  EXPECT_EQ(b.apex_slice, v.nz - 1);
+  EXPECT_EQ(b.base_slice[0], v.nz - 1 - a.base_slice[0]);
+  EXPECT_EQ(a.points.frames[0].points.size(), b.points.frames[0].points.size());
+}
+
+}  // namespace
+}  // namespace pfdm
