@@ -22,25 +22,41 @@ def _iter(self):
     return (_compiled_getitem(self, t) for t in range(len(self)))
 
 
+def _interval(container, key, index=None):
+    """The (low, high) fit.json gives beside `key` (--uncertainty on)."""
+    interval = container.get(key + "_ci95")
+    if interval is not None and index is not None:
+        interval = interval[index]
+    return tuple(interval) if interval else (None, None)
+
+
 def _rows(document):
-    """(frame, time_ms, quantity, segment, value) of every number fit.json
-    holds per frame: its scalar clinical numbers, RMS and volumes, and each
-    segment's numbers. Lists per knot are left out (see Fit.functions)."""
+    """(frame, time_ms, quantity, segment, value, low, high) of every number
+    fit.json holds per frame: its scalar clinical numbers, RMS and volumes,
+    and each segment's numbers, with their 95 % interval where computed.
+    Lists per knot are left out (see Fit.functions)."""
     frames = document["frames"]
     times = [frame.get("time_ms", math.nan) for frame in frames]
     for t, frame in enumerate(frames):
         for key, value in frame.items():
             if key in ("rms_mm", "n_points") or key.endswith("_volume_ml"):
-                yield t, times[t], key, None, value
-        for key, value in frame.get("clinical", {}).items():
+                yield (t, times[t], key, None, value) + _interval(frame, key)
+        clinical = frame.get("clinical", {})
+        for key, value in clinical.items():
             if not isinstance(value, (list, dict)):
-                yield t, times[t], key, None, value
-    regions = document.get("regions") or []
-    for region in regions:
+                yield (t, times[t], key, None, value) + _interval(clinical, key)
+    for region in document.get("regions") or []:
         for key, values in region.items():
-            if isinstance(values, list) and len(values) == len(frames):
-                for t, value in enumerate(values):
-                    yield t, times[t], key, region["name"], value
+            if (key.endswith("_ci95") or not isinstance(values, list) or
+                    len(values) != len(frames)):
+                continue
+            for t, value in enumerate(values):
+                yield ((t, times[t], key, region["name"], value) +
+                       _interval(region, key, t))
+
+
+def _number(value):
+    return math.nan if value is None else float(value)
 
 
 def _to_dataframe(self):
@@ -51,17 +67,20 @@ def _to_dataframe(self):
     pandas.DataFrame
         Columns frame, time_ms (NaN where the data carry no times),
         quantity (fit.json's name, e.g. ``net_twist_deg``, ``ecc_percent``),
-        segment (the AHA segment's name, None for global numbers) and value
-        (NaN where fit.json has null: not measured). One row per frame,
-        quantity and segment.
+        segment (the AHA segment's name, None for global numbers), value
+        (NaN where fit.json has null: not measured), and ci95_low and
+        ci95_high (the 95 % interval with ``uncertainty=True``, else NaN).
+        One row per frame, quantity and segment.
     """
     import pandas  # Only where wanted: Debian's python3-pandas.
 
-    rows = [(t, time, quantity, segment,
-             math.nan if value is None else float(value))
-            for t, time, quantity, segment, value in _rows(self.to_dict())]
-    return pandas.DataFrame(
-        rows, columns=["frame", "time_ms", "quantity", "segment", "value"])
+    rows = [(t, time, quantity, segment, _number(value), _number(low),
+             _number(high))
+            for t, time, quantity, segment, value, low, high
+            in _rows(self.to_dict())]
+    return pandas.DataFrame(rows, columns=[
+        "frame", "time_ms", "quantity", "segment", "value", "ci95_low",
+        "ci95_high"])
 
 
 def extend_fit_class(fit_class):

@@ -44,7 +44,8 @@ def test_to_dataframe_holds_fit_json_numbers(lv_fit):
     _, _, fit = lv_fit
     table = fit.to_dataframe()
     assert list(table.columns) == ["frame", "time_ms", "quantity", "segment",
-                                   "value"]
+                                   "value", "ci95_low", "ci95_high"]
+    assert table.ci95_low.isna().all()  # uncertainty off
     document = fit.to_dict()
     twist = table[(table.quantity == "net_twist_deg") & table.segment.isna()]
     assert list(twist.frame) == [0, 1, 2]
@@ -83,4 +84,10 @@ def test_readme_python_quick_start_runs():
     assert isinstance(namespace["table"], pandas.DataFrame)
     assert namespace["tau"].shape == (5, 17)
     assert fit.ejection_fraction is None and fit.volume_surface == "midwall"
+    # uncertainty=True: every number with its interval around it.
+    table = namespace["table"]
+    twist = table[(table.quantity == "net_twist_deg") & (table.frame == 4)]
+    assert len(twist) == 1
+    low, value, high = twist[["ci95_low", "value", "ci95_high"]].iloc[0]
+    assert low < value < high
     assert math.isfinite(fit[-1].clinical["net_twist_deg"])
