@@ -65,10 +65,11 @@ _FLOATS = ("smoothness", "prior", "untracked_prior", "temporal_prior",
            "rest_tolerance", "local_stiffness")
 
 
-def fit(points=None, *, segmentation=None, labels="acdc", format="auto", contours=("lv-cavity",), base_plane="auto",
-        rv_insertion=None, model="paper", knots=17, wall="auto",
-        surface="auto", ed_frame=0, smoothness=1.0, prior=0.001,
-        untracked_prior=0.01, temporal_prior=0.0, loss="none", loss_scale="auto", threads=1,
+def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
+        contours=("lv-cavity",), base_plane="auto", rv_insertion=None,
+        model="paper", knots=17, wall="auto", surface="auto", ed_frame=0,
+        smoothness=1.0, prior=0.001, untracked_prior=0.01,
+        temporal_prior=0.0, loss="none", loss_scale="auto", threads=1,
         apex=None, base=None, solver="direct",
         linear_solver="SPARSE_NORMAL_CHOLESKY", time_step=0.0,
         rest_tolerance=1e-6, max_steps=20000, damping="jacobi",
