@@ -10,6 +10,7 @@
 #include "pfdm/io/fit_settings.h"
 #include "pfdm/io/mesh_source.h"
 #include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/phantom/lv_phantom_names.h"
 #include "pfdm/phantom/lv_truth_json.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/util/error.h"
@@ -92,25 +93,10 @@ py::tuple Simulate(std::int64_t frames, std::int64_t tags, double noise,
 // its truth as the CLI's lv truth JSON, parsed.
 py::tuple SimulateLv(std::int64_t frames, std::int64_t tags, double noise,
                      double outliers, unsigned seed,
-                     const std::string& kinematics,
-                     const std::string& wall_tags, bool lesion, bool breathing,
-                     const std::string& region, const std::string& sampling,
+                     const LvPhantomNames& names, bool lesion, bool breathing,
                      std::int64_t slices) {
   LvPhantomOptions options;
-  if (!ParseLvKinematics(kinematics, &options.kinematics)) {
-    throw InputError("unknown kinematics '" + kinematics +
-                     "' (systole, cycle, rigid-axial, rigid-lateral, "
-                     "rigid-tilt, rigid-spin, static)");
-  }
-  if (!ParseLvTagLayer(wall_tags, &options.tags)) {
-    throw InputError("unknown wall_tags '" + wall_tags + "' (midwall, wall)");
-  }
-  if (!ParseLvRegion(region, &options.region)) {
-    throw InputError("unknown region '" + region + "' (full, midventricular)");
-  }
-  if (!ParseLvSampling(sampling, &options.sampling)) {
-    throw InputError("unknown sampling '" + sampling + "' (tags, sax-slices)");
-  }
+  SetLvPhantomNames(names, "", &options);
   options.num_frames = frames == 0 ? 0 : PhantomCount("frames", frames, 1000);
   options.num_tags = PhantomCount("tags", tags, 1e6);
   options.num_slices = slices == 0 ? 0 : PhantomCount("slices", slices, 1000);
@@ -129,11 +115,25 @@ py::tuple SimulateLv(std::int64_t frames, std::int64_t tags, double noise,
 
 void BindSimulate(py::module_& m) {
   const PhantomOptions phantom_defaults;
-  m.def("_simulate_lv", &SimulateLv, py::kw_only(), py::arg("frames"),
-        py::arg("tags"), py::arg("noise"), py::arg("outliers"), py::arg("seed"),
-        py::arg("kinematics"), py::arg("wall_tags"), py::arg("lesion"),
-        py::arg("breathing"), py::arg("region"), py::arg("sampling"),
-        py::arg("slices"), "pfdm.simulate(phantom='lv')'s compiled part.");
+  m.def(
+      "_simulate_lv",
+      [](std::int64_t frames, std::int64_t tags, double noise, double outliers,
+         unsigned seed, const std::string& kinematics,
+         const std::string& wall_tags, bool lesion, bool breathing,
+         const std::string& region, const std::string& sampling,
+         std::int64_t slices, const std::string& geometry,
+         const std::string& thickening) {
+        const LvPhantomNames names{kinematics, wall_tags, region,
+                                   sampling,   geometry,  thickening};
+        return SimulateLv(frames, tags, noise, outliers, seed, names, lesion,
+                          breathing, slices);
+      },
+      py::kw_only(), py::arg("frames"), py::arg("tags"), py::arg("noise"),
+      py::arg("outliers"), py::arg("seed"), py::arg("kinematics"),
+      py::arg("wall_tags"), py::arg("lesion"), py::arg("breathing"),
+      py::arg("region"), py::arg("sampling"), py::arg("slices"),
+      py::arg("geometry"), py::arg("thickening"),
+      "pfdm.simulate(phantom='lv')'s compiled part.");
   m.def("_simulate_model", &Simulate, py::kw_only(),
         py::arg("frames") = phantom_defaults.num_frames,
         py::arg("tags") = phantom_defaults.num_points,

@@ -5,7 +5,7 @@ from . import _pfdm
 def simulate(phantom="model", *, frames=None, tags=2000, noise=0.5,
              outliers=0.0, seed=1, kinematics="systole", wall_tags="midwall",
              lesion=False, breathing=True, region="full", sampling="tags",
-             slices=0):
+             slices=0, geometry="prolate", thickening="designed"):
     """Makes a phantom's points and its truth, as ``pfdm simulate`` does.
 
     Parameters
@@ -28,13 +28,16 @@ def simulate(phantom="model", *, frames=None, tags=2000, noise=0.5,
         Fraction of points per frame moved 5-10 mm (listed in the truth).
     seed : int
         Random seed.
-    kinematics, wall_tags, lesion, breathing, region, sampling, slices
+    kinematics, wall_tags, lesion, breathing, region, sampling, slices,
+    geometry, thickening
         "lv" only, as the CLI's flags of the same names: kinematics
         "systole", "cycle", "rigid-axial", "rigid-lateral", "rigid-tilt",
         "rigid-spin" or "static"; wall_tags "midwall" or "wall" (through
         the wall); lesion a hypokinetic mid anteroseptal sector; breathing
         a rigid drift; region "full" or "midventricular"; sampling "tags"
-        or "sax-slices" with `slices` planes (0: the default).
+        or "sax-slices" with `slices` planes (0: the default); geometry
+        "prolate" or "cylinder" (a mid-ventricular segment without apex);
+        thickening "designed" or "incompressible".
 
     Returns
     -------
@@ -46,7 +49,8 @@ def simulate(phantom="model", *, frames=None, tags=2000, noise=0.5,
                        wall_tags=("midwall", wall_tags),
                        lesion=(False, lesion), breathing=(True, breathing),
                        region=("full", region), sampling=("tags", sampling),
-                       slices=(0, slices))
+                       slices=(0, slices), geometry=("prolate", geometry),
+                       thickening=("designed", thickening))
         given = [name for name, (default, value) in lv_only.items()
                  if value != default]
         if given:
@@ -62,6 +66,6 @@ def simulate(phantom="model", *, frames=None, tags=2000, noise=0.5,
             outliers=outliers, seed=seed, kinematics=kinematics,
             wall_tags=wall_tags, lesion=bool(lesion),
             breathing=bool(breathing), region=region, sampling=sampling,
-            slices=slices)
+            slices=slices, geometry=geometry, thickening=thickening)
     raise ValueError(f"simulate(): phantom must be 'model' or 'lv', "
                      f"not {phantom!r}")

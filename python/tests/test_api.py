@@ -97,7 +97,7 @@ def test_simulate_and_read_mesh_points_take_the_clis_flags():
     simulate = cli_defaults("simulate")
     ours = {name: p.default
             for name, p in inspect.signature(pfdm.simulate).parameters.items()}
-    assert len(ours) == 13
+    assert len(ours) == 15
     assert ours.pop("frames") is None  # The phantom's own: 5, or the cycle's.
     for name, value in ours.items():
         assert name in simulate, name

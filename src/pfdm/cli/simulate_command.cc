@@ -7,6 +7,7 @@
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/point_writer.h"
 #include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/phantom/lv_phantom_names.h"
 #include "pfdm/phantom/lv_truth_json.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/util/atomic_file.h"
@@ -96,31 +97,14 @@ int RunModelPhantom() {
 
 int RunLvPhantom() {
   LvPhantomOptions options;
-  if (!ParseLvKinematics(FLAGS_kinematics, &options.kinematics)) {
-    throw InputError("unknown --kinematics '" + FLAGS_kinematics +
-                     "' (systole, cycle, rigid-axial, rigid-lateral, "
-                     "rigid-tilt, rigid-spin, static)");
-  }
-  if (!ParseLvTagLayer(FLAGS_wall_tags, &options.tags)) {
-    throw InputError("unknown --wall_tags '" + FLAGS_wall_tags +
-                     "' (midwall, wall)");
-  }
-  if (!ParseLvRegion(FLAGS_region, &options.region)) {
-    throw InputError("unknown --region '" + FLAGS_region +
-                     "' (full, midventricular)");
-  }
-  if (!ParseLvSampling(FLAGS_sampling, &options.sampling)) {
-    throw InputError("unknown --sampling '" + FLAGS_sampling +
-                     "' (tags, sax-slices)");
-  }
-  if (!ParseLvGeometry(FLAGS_geometry, &options.geometry)) {
-    throw InputError("unknown --geometry '" + FLAGS_geometry +
-                     "' (prolate, cylinder)");
-  }
-  if (!ParseLvThickeningLaw(FLAGS_thickening, &options.law)) {
-    throw InputError("unknown --thickening '" + FLAGS_thickening +
-                     "' (designed, incompressible)");
-  }
+  LvPhantomNames names;
+  names.kinematics = FLAGS_kinematics;
+  names.wall_tags = FLAGS_wall_tags;
+  names.region = FLAGS_region;
+  names.sampling = FLAGS_sampling;
+  names.geometry = FLAGS_geometry;
+  names.thickening = FLAGS_thickening;
+  SetLvPhantomNames(names, "--", &options);
   if (!(FLAGS_slices >= 0 && FLAGS_slices <= 1000)) {
     throw InputError("simulate needs 0 <= --slices <= 1000");
   }
