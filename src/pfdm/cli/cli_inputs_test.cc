@@ -11,11 +11,10 @@
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
 #include "pfdm/testing/test_util.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Half a spheroid, apex at z = 0 and rim at z = c, radius a at the rim, as
 // OBJ text: the apex vertex and 12 rings of 24 (the same vertices in every

@@ -204,6 +204,9 @@ HelpRequest ReadHelpRequest(int argc, const char* const* argv,
     } else if (arg.size() > 1 && arg[0] == '-') {
       const FlagArgument flag = ReadFlagArgument(arg);
       if (!flag.known) unknown.push_back(flag.name);
+      if (flag.takes_next && i + 1 == argc) {
+        return UsageError("--" + flag.name + " needs a value");
+      }
       if (flag.takes_next) ++i;
     } else {
       positionals.push_back(arg);

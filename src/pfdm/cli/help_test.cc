@@ -71,6 +71,12 @@ TEST(HelpTest, UnknownFlagGetsOneLineWithTheNearestName) {
             "simulate --help'\n");
 }
 
+TEST(HelpTest, AFlagWithoutItsValueIsOneLine) {
+  const CommandResult run = RunPfdm("fit --out x --points");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.error, "pfdm: error: --points needs a value\n");
+}
+
 TEST(HelpTest, UnknownCommandGetsTheNearestName) {
   const CommandResult run = RunPfdm("fitt --points x.csv");
   EXPECT_EQ(run.exit_code, 2);

@@ -12,6 +12,7 @@
 #include "pfdm/io/segments_json.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
+#include "pfdm/util/angles.h"
 #include "pfdm/util/verdict.h"
 #include "pfdm/util/version.h"
 
@@ -21,9 +22,6 @@ namespace {
 // Keys stay in the order they are inserted: fit.json reads top-down, from
 // the settings to the frames.
 using json = nlohmann::ordered_json;
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 // A number, or null where it is kNotMeasured.
 json Value(double value) { return Measured(value) ? json(value) : json(); }

@@ -16,14 +16,12 @@
 #include "pfdm/report/bullseye_plot.h"
 #include "pfdm/report/fit_plots.h"
 #include "pfdm/report/fit_report.h"
+#include "pfdm/util/angles.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 bool IsLength(int f) {
   return f == kA0 || f == kA1 || f == kA2 || f == kA3 || f == kB0 || f == kB2 ||

@@ -5,12 +5,12 @@
 #include <sstream>
 
 #include "Eigen/LU"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kSteps = 400;
 constexpr double kPixel = 3.0;  // SVG units per voxel.
 

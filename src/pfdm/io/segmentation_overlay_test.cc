@@ -5,11 +5,10 @@
 #include "gtest/gtest.h"
 #include "pfdm/testing/mask_phantom.h"
 #include "pfdm/testing/test_util.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The default model's epicardium cut by a slice half-way up: every cut
 // point lies in the slice's plane and on the surface, within 0.3 % of the

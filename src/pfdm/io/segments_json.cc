@@ -2,13 +2,12 @@
 
 #include <cmath>
 
+#include "pfdm/util/angles.h"
+
 namespace pfdm {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 constexpr const char* kAnatomicalDefinition =
     "the AHA 17-segment model (Cerqueira et al. 2002): thirds of frame 0's "

@@ -3,14 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "pfdm/util/angles.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
 
 double LocalGrid::ColV(int col) const { return -kPi + 2.0 * kPi * col / cols; }
 

@@ -7,12 +7,11 @@
 #include "gtest/gtest.h"
 #include "pfdm/model/model.h"
 #include "pfdm/testing/test_models.h"
+#include "pfdm/util/angles.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 LocalGrid Grid(int rows, int cols) {
   LocalGrid grid;

@@ -4,10 +4,11 @@
 #include <cmath>
 #include <utility>
 
+#include "pfdm/util/angles.h"
+
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Ring and meridian counts for volumes: chord errors shrink as the square
 // of the step, 0.07 % of a sphere's volume at this resolution.
 constexpr int kVolumeRings = 97;

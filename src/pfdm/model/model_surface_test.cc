@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // a0 = 50 mm with radii 30 and 25 mm and half-length 40 mm: an ellipsoid cut
 // at the base rim, z = 40 sin(pi/6) = 20 mm.

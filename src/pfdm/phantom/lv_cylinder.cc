@@ -3,10 +3,11 @@
 #include <cmath>
 #include <string>
 
+#include "pfdm/util/angles.h"
+
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Midpoint-rule slices of the segment's height for its volumes: exact for
 // the designed law's radii, which are linear in h (areas quadratic: the
 // midpoint rule's error 1e-5 relative).

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pfdm/util/angles.h"
+
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadians = kPi / 180.0;
 
 struct NamedKinematics {

@@ -3,11 +3,11 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadians = kPi / 180.0;
 
 TEST(LvPhantomMotionTest, DesignedValues) {

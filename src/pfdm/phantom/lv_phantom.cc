@@ -9,12 +9,11 @@
 #include <vector>
 
 #include "pfdm/phantom/lv_slices.h"
+#include "pfdm/util/angles.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The mid-ventricular segment: 40 mm of the 95 mm mid-wall, from 28 mm
 // above its apex pole (22.6 mm radius) to past the equator (26.9 mm).

@@ -4,12 +4,11 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/angles.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 LvPhantom Make(LvKinematics kinematics, double noise_mm = 0.0,
                int num_tags = 400) {

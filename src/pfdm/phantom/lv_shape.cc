@@ -4,10 +4,11 @@
 #include <cmath>
 #include <vector>
 
+#include "pfdm/util/angles.h"
+
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Trapezoid steps along a meridian: arc fractions good to ~1e-5.
 constexpr int kArcSteps = 400;
 

@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(LvPhantomShapeTest, HasTheRequestedSize) {
   const LvShape shape;

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pfdm/util/angles.h"
+
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 constexpr int kRings = 20;
 constexpr int kRingPoints = 360;
 // Triangulation of each closed surface: volumes within ~0.02 % (chords).

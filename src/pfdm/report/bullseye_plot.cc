@@ -7,12 +7,11 @@
 
 #include "pfdm/report/fit_plots.h"
 #include "pfdm/report/interval_text.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 // Ring radii on the page: the apex cap inside 1, then one unit per level.
 constexpr double kCapRadius = 1.0;
 // Arc points every this many degrees.  On the outer ring (4 units, about

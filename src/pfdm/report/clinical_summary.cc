@@ -4,12 +4,10 @@
 
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/material_rings.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 double ApexToBaseRim(const Model& model) {
   const Eigen::Vector3d apex = model.WorldPoint(model.config.u_min, 0.0);

@@ -7,12 +7,11 @@
 
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/report/number_sd.h"
+#include "pfdm/util/angles.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
 // Frame t of n on a dark-blue to orange ramp, so systole reads as a
 // progression without a legend lookup; "#rrggbb".

@@ -3,13 +3,9 @@
 #include <cmath>
 
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
 
 MaterialRing SampleRing(const Model& model, double u, int samples, double w) {
   MaterialRing ring;

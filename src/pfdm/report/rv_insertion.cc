@@ -5,11 +5,11 @@
 #include <complex>
 
 #include "pfdm/report/material_rings.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The coarse search's grid: rings equally spaced in sin u, meridians in v.
 constexpr int kSearchRings = 40;
 constexpr int kSearchMeridians = 72;

@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A sphere of radius 40 mm about the origin, turned 30 degrees about +z
 // and moved: the model's v = 0 lies at world angle 30 degrees.

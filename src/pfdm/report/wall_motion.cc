@@ -4,12 +4,11 @@
 
 #include "pfdm/report/material_rings.h"
 #include "pfdm/report/surface_strain.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 // Samples per axis of the whole surface: a few hundred per segment.
 constexpr int kLatitudeSamples = 60;
 constexpr int kLongitudeSamples = 120;

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <vector>
 
+#include "pfdm/util/angles.h"
+
 namespace pfdm {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::vector<Eigen::Vector2d> ContactPoints(const SliceMask& myocardium,
                                            const SliceMask& rv) {

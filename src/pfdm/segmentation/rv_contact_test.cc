@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A ring of myocardium and an RV crescent outside it from 30 to 150
 // degrees: the contact's ends at those angles.

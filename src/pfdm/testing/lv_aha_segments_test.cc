@@ -16,11 +16,11 @@
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/rv_insertion.h"
 #include "pfdm/testing/test_util.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegrees = 180.0 / kPi;
 
 // The mid segment of least radial contraction at ES: the lesion's.

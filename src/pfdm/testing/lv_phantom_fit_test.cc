@@ -11,11 +11,10 @@
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/clinical_summary.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
 
 struct PhantomFit {
   LvPhantom phantom;

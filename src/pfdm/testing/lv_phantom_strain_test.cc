@@ -14,11 +14,10 @@
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/surface_strain.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct PhantomStrain {
   double gcs_percent = 0.0;

@@ -4,12 +4,12 @@
 #include <optional>
 
 #include "pfdm/phantom/lv_slices.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMeridians = 360;
 
 using Polygon = std::vector<Eigen::Vector2d>;

@@ -13,6 +13,7 @@
 #include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/model/shape_angle_derivative.h"
 #include "pfdm/model/world_points.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 
@@ -29,7 +30,6 @@ std::vector<Eigen::Vector3d> WorldPoints(
 }
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kRefinementSteps = 10;
 
 double WrapLongitude(double v) {

@@ -1,10 +1,8 @@
 #include "pfdm/fit/correspondence/surface_grid.h"
 
-namespace pfdm {
+#include "pfdm/util/angles.h"
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
+namespace pfdm {
 
 SurfaceGrid::SurfaceGrid(const Model& model) {
   samples_.reserve(kGridU * kGridV);

@@ -8,11 +8,10 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/testing/test_models.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A field that no ring mean carries (radial cos 3v, axial sin 2v, zero at
 // the pole), up to 2 mm, on the spheroid posed obliquely.

@@ -10,11 +10,10 @@
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/model/model.h"
 #include "pfdm/testing/test_models.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A posed spheroid with a field on a 5 x 8 grid whose nodes all differ.
 Model PosedModelWithField() {

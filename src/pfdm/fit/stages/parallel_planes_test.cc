@@ -5,11 +5,10 @@
 
 #include "Eigen/Geometry"
 #include "gtest/gtest.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 const Eigen::Matrix3d& Tilt() {
   static const Eigen::Matrix3d tilt =
