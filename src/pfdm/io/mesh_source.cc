@@ -105,10 +105,14 @@ void CheckOneSurface(const VtkMesh& vtk, const std::string& path) {
   constexpr size_t kMostLabels = 16;
   for (const auto& [name, values] : vtk.point_scalars) {
     if (values.size() != vtk.mesh.points.size()) continue;
+    const bool integral =
+        std::all_of(values.begin(), values.end(),
+                    [](double value) { return value == std::round(value); });
+    if (!integral) continue;
     std::set<double> labels;
     for (double value : values) {
-      if (value != std::round(value) || labels.size() > kMostLabels) break;
       labels.insert(value);
+      if (labels.size() > kMostLabels) break;
     }
     if (labels.size() < 2 || labels.size() > kMostLabels) continue;
     const bool joined = std::any_of(

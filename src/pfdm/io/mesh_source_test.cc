@@ -121,6 +121,9 @@ TEST(MeshSourceTest, TwoSurfacesNeedALabel) {
   // A field that varies within a surface (a thickness, say) is no label.
   WriteText(path, points + "0 0 1 1 1 2\n");
   EXPECT_EQ(ReadMeshFrames(path, MeshSettings())[0].points.size(), 6u);
+  // Nor is a non-integral field, even one constant on each surface.
+  WriteText(path, points + "0 0 0 1.5 1.5 1.5\n");
+  EXPECT_EQ(ReadMeshFrames(path, MeshSettings())[0].points.size(), 6u);
 }
 
 }  // namespace
