@@ -13,6 +13,7 @@
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/io/rv_insertion_source.h"
+#include "pfdm/io/segmentation_overlay.h"
 #include "pfdm/io/segmentation_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/error.h"
@@ -122,6 +123,12 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   result->analysis =
       AnalyzeFit(result->fit, result->base_planes,
                  AnatomicalLayout(result->fit.ModelAt(0), insertion));
+  if (read) {
+    AttachSegmentation(*read, &result->analysis);
+    result->slices_svg = SegmentationOverlaySvg(
+        read->volume, read->labels, read->contours, result->analysis.models,
+        result->analysis.ejection_fraction.es_frame);
+  }
   result->analysis.made_by = "pfdm.fit (Python)";
   result->analysis.made_utc = UtcMinuteNow();
   result->json =

@@ -64,7 +64,7 @@ void WriteFitFiles(const FitResult& result, const py::object& out,
   CheckFitOutputFolder(dir, result.points.source);
   SvgRendering plots;
   WriteFitOutputs(dir, result.points, result.fit, result.analysis,
-                  result.options, format, &plots);
+                  result.options, format, &plots, result.slices_svg);
 }
 
 std::string FitRepr(const FitResult& result) {

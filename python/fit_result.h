@@ -28,6 +28,9 @@ struct FitResult {
   std::vector<BasePlane> base_planes;
   FitAnalysis analysis;
   std::string json;  // fit.json.
+  // A segmentation's slices with the fitted walls (fit(segmentation=)),
+  // else empty.
+  std::string slices_svg;
 };
 using FitPtr = std::shared_ptr<const FitResult>;
 

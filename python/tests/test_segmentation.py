@@ -106,6 +106,16 @@ def test_fit_segmentation_volumes(mask_file):
             cavity_ml[t], rel=0.05)
     assert fit.settings["contour_types"] == ["SAX_LV_ENDOCARDIAL",
                                              "SAX_LV_EPICARDIAL"]
+    record = fit.to_dict()["segmentation"]
+    assert record["labels"] == {"lv": 3, "myo": 2, "rv": 1}
+    assert record["slices"] == 12 and record["frames"] == 2
+    assert record["misaligned"] == []
+    # write() writes what the CLI writes, the slices with the walls too:
+    # three slices at ED and ES, each titled.
+    out = scratch("segmentation_write") / "fit"
+    fit.write(out)
+    assert (out / "slices.svg").read_text().count("<text") == 6
+    assert "The segmentation and the fit" in (out / "report.html").read_text()
 
 
 def test_segmentation_errors(mask_file):

@@ -141,6 +141,7 @@ int RunFit() {
       fit, planes,
       AnatomicalLayout(fit.ModelAt(0), InputRvInsertion(segmentation)),
       ShowExtrapolatedFromFlags());
+  if (segmentation) AttachSegmentation(*segmentation, &analysis);
   analysis.made_by = CommandLine();
   analysis.made_utc = UtcMinuteNow();
   std::printf("segments: %s (%s)\n",
@@ -152,8 +153,8 @@ int RunFit() {
                                    segmentation->contours, analysis.models,
                                    analysis.ejection_fraction.es_frame)
           : "";
-  WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_output,
-                  &plots, slices_svg);
+  WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_output, &plots,
+                  slices_svg);
   const int exit_code = ReportQuality(fit, analysis);
   ReportVolumes(analysis);
   std::printf(

@@ -9,6 +9,7 @@
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/intervals_json.h"
 #include "pfdm/io/not_measured_json.h"
+#include "pfdm/io/segmentation_json.h"
 #include "pfdm/io/segments_json.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
@@ -398,6 +399,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   if (solid) document["wall_definition"] = fit_json_text::kWallDefinition;
   const json not_measured = NotMeasured(analysis);
   if (!not_measured.is_null()) document["not_measured"] = not_measured;
+  if (analysis.segmentation) {
+    document["segmentation"] = SegmentationJson(*analysis.segmentation);
+  }
   document[cavity ? "ejection_fraction"
                   : analysis.volume_surface + "_volume_fraction"] =
       EjectionSection(analysis);

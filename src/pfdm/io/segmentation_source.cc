@@ -22,4 +22,13 @@ Segmentation ReadSegmentation(const std::string& path,
   return s;
 }
 
+void AttachSegmentation(const Segmentation& s, FitAnalysis* analysis) {
+  analysis->segmentation = RecordSegmentation(s.volume, s.labels, s.contours);
+  const std::vector<Verdict> alignment = SliceAlignmentVerdicts(
+      s.contours.misaligned, static_cast<int>(analysis->verdicts.size()));
+  for (size_t t = 0; t < alignment.size(); ++t) {
+    analysis->verdicts[t].Add(alignment[t]);
+  }
+}
+
 }  // namespace pfdm

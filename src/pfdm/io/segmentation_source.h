@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/rv_insertion.h"
 #include "pfdm/segmentation/mask_contours.h"
 
@@ -24,6 +25,11 @@ struct Segmentation {
 // Throws InputError.
 Segmentation ReadSegmentation(const std::string& path,
                               const std::string& labels);
+
+// What the analysis of a fit of s's contours keeps of s: its record
+// (fit.json's "segmentation") and its misaligned slices as warnings in
+// the frames' verdicts.
+void AttachSegmentation(const Segmentation& s, FitAnalysis* analysis);
 
 }  // namespace pfdm
 

@@ -36,5 +36,32 @@ TEST(SegmentationSourceTest, FileGivesTheContours) {
             std::string::npos);
 }
 
+// The analysis keeps the labels, and a shifted slice warns in the frames
+// where it is off, beside the fit's own reasons.
+TEST(SegmentationSourceTest, AttachKeepsTheLabelsAndWarnsOfAShiftedSlice) {
+  MaskPhantomOptions options;
+  options.num_frames = 2;
+  options.shifted_slice = 5;
+  options.shift_voxels = 4;
+  const MaskPhantom mask = MakeMaskPhantom(options);
+  const std::string file = ScratchDirectory("attach") + "/mask.nii.gz";
+  WriteLabelVolume(mask.volume, file);
+  const Segmentation s = ReadSegmentation(file, "lv=3,myo=2,rv=1");
+  FitAnalysis analysis;
+  analysis.verdicts.resize(2);
+  analysis.verdicts[1].Warn("rms_size", "kept");
+  AttachSegmentation(s, &analysis);
+  ASSERT_TRUE(analysis.segmentation.has_value());
+  EXPECT_EQ(analysis.segmentation->source, file);
+  EXPECT_EQ(analysis.segmentation->labels.rv, 1);
+  EXPECT_EQ(analysis.segmentation->frames, 2);
+  for (int t = 0; t < 2; ++t) {
+    EXPECT_TRUE(analysis.verdicts[t].Has("misaligned_slice")) << t;
+  }
+  EXPECT_TRUE(analysis.verdicts[1].Has("rms_size"));
+  EXPECT_NE(analysis.verdicts[0].Summary().find("slice 5"), std::string::npos)
+      << analysis.verdicts[0].Summary();
+}
+
 }  // namespace
 }  // namespace pfdm

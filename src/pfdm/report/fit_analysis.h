@@ -3,6 +3,7 @@
 #define PFDM_REPORT_FIT_ANALYSIS_H_
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "pfdm/report/global_strain.h"
 #include "pfdm/report/number_sd.h"
 #include "pfdm/report/wall_motion.h"
+#include "pfdm/segmentation/segmentation_record.h"
 #include "pfdm/util/verdict.h"
 
 namespace pfdm {
@@ -66,6 +68,9 @@ struct FitAnalysis {
   // frames' covariances (report/number_uncertainty.h); computed false
   // without them (--uncertainty off).
   NumberSd sd;
+  // The label map the points came from (pfdm fit --segmentation), else
+  // nullopt.  Set by the caller (AttachSegmentation).
+  std::optional<SegmentationRecord> segmentation;
 };
 
 // "cavity", "epicardial" or "midwall": see FitAnalysis::volume_surface.

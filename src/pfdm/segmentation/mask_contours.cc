@@ -49,6 +49,25 @@ void CheckHasLv(const LabelVolume& volume, const LabelMap& labels) {
                    "(e.g. --labels acdc, mnms or lv=3,myo=2,rv=1)");
 }
 
+// Whether a myocardium voxel is one of the four around the fractional
+// point p: a cavity boundary point between the cavity and the myocardium.
+bool BordersMyocardium(const SliceMask& myocardium, const Eigen::Vector2d& p) {
+  const int i = static_cast<int>(std::floor(p.x()));
+  const int j = static_cast<int>(std::floor(p.y()));
+  return myocardium.At(i, j) || myocardium.At(i + 1, j) ||
+         myocardium.At(i, j + 1) || myocardium.At(i + 1, j + 1);
+}
+
+double MyocardialCover(const Masks& masks) {
+  const std::vector<Eigen::Vector2d> boundary = BoundaryPoints(masks.cavity);
+  if (boundary.empty()) return 0.0;
+  int covered = 0;
+  for (const Eigen::Vector2d& p : boundary) {
+    covered += BordersMyocardium(masks.myocardium, p);
+  }
+  return static_cast<double>(covered) / boundary.size();
+}
+
 SliceRing MeasureRing(const LabelVolume& volume, const Masks& masks, int k,
                       int t) {
   SliceRing ring;
@@ -63,6 +82,7 @@ SliceRing MeasureRing(const LabelVolume& volume, const Masks& masks, int k,
         volume.World(cavity.centroid.x(), cavity.centroid.y(), k);
     ring.closed = ring.myocardium_voxels > 0 &&
                   !ReachableFromBorder(masks.myocardium, masks.cavity);
+    ring.myocardial_cover = MyocardialCover(masks);
   } else {
     ring.closed = ring.myocardium_voxels > 0;
   }
@@ -103,13 +123,26 @@ int KeepApexToBase(std::vector<SliceRing>* rings, int nz, int t,
     SliceRing& ring = (*rings)[t * nz + k];
     ring.kept = ring.cavity_voxels + ring.myocardium_voxels > 0;
   }
+  const int closed_cavity = (*rings)[t * nz + base].cavity_voxels;
+  for (int k = base + step; k >= 0 && k < nz; k += step) {
+    SliceRing& ring = (*rings)[t * nz + k];
+    if (ring.myocardial_cover < kPartialRingCover ||
+        ring.cavity_voxels < kPartialRingArea * closed_cavity) {
+      break;
+    }
+    ring.kept = ring.partial = true;
+    base = k;
+  }
   return base;
 }
 
-// The mask's boundary at slice position k (fractional: a slab's face).
+// The mask's boundary at slice position k (fractional: a slab's face);
+// with `bordering`, only where it borders that mask's voxels.
 void AddPoints(const LabelVolume& volume, const SliceMask& mask, double k,
-               WallLayer layer, Frame* frame, std::int64_t* next_id) {
+               WallLayer layer, const SliceMask* bordering, Frame* frame,
+               std::int64_t* next_id) {
   for (const Eigen::Vector2d& p : BoundaryPoints(mask)) {
+    if (bordering && !BordersMyocardium(*bordering, p)) continue;
     frame->points.push_back(
         {(*next_id)++, volume.World(p.x(), p.y(), k), layer});
   }
@@ -120,12 +153,15 @@ void AddPoints(const LabelVolume& volume, const SliceMask& mask, double k,
 // takes it, and without them the fitted cavity would end at the slice's
 // centre, half a slab short (4 ml of the phantom's 106 at ED).
 void AddWalls(const LabelVolume& volume, const Masks& masks, int k,
-              double basal_face, Frame* frame, std::int64_t* next_id) {
+              double basal_face, bool partial, Frame* frame,
+              std::int64_t* next_id) {
+  const SliceMask* bordering = partial ? &masks.myocardium : nullptr;
   for (double at : {static_cast<double>(k), basal_face}) {
     if (std::isnan(at)) continue;
-    AddPoints(volume, masks.cavity, at, WallLayer::kEndocardium, frame,
+    AddPoints(volume, masks.cavity, at, WallLayer::kEndocardium, bordering,
+              frame, next_id);
+    AddPoints(volume, masks.lv, at, WallLayer::kEpicardium, bordering, frame,
               next_id);
-    AddPoints(volume, masks.lv, at, WallLayer::kEpicardium, frame, next_id);
   }
 }
 
@@ -189,8 +225,10 @@ MaskContours ExtractMaskContours(const LabelVolume& volume,
       if (!out.rings[t * nz + k].kept) continue;
       const Masks masks = MasksOf(volume, labels, k, t);
       const double toward_base = out.apex_slice == 0 ? 0.5 : -0.5;
-      AddWalls(volume, masks, k, k == base ? k + toward_base : std::nan(""),
-               &frame, &next_id);
+      const bool partial = out.rings[t * nz + k].partial;
+      const bool closed_base = k == base && !partial;
+      AddWalls(volume, masks, k, closed_base ? k + toward_base : std::nan(""),
+               partial, &frame, &next_id);
       if (t == 0 && out.rings[k].closed) {
         AddRvInsertion(volume, labels, masks, k, &out);
       }

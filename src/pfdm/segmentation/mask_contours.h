@@ -22,7 +22,14 @@ struct SliceRing {
   // The myocardium encloses the cavity (or the slice is an apical cap of
   // myocardium alone).
   bool closed = false;
+  // The share of the cavity's boundary that borders the myocardium (1 for
+  // a closed ring; a basal slice through the outflow tract has less).
+  double myocardial_cover = 0.0;
   bool kept = false;  // Between the apex and the base: its contours fitted.
+  // Kept above the frame's most basal closed ring (kPartialRingCover): only
+  // its walls that border the myocardium are fitted, none across the
+  // opening (the outflow tract).
+  bool partial = false;
 };
 
 // A slice whose LV cavity centre lies off the line of its neighbours'
@@ -42,7 +49,8 @@ struct MaskContours {
   PointSequence points;
   std::vector<SliceRing> rings;  // Per frame, per slice: rings[t * nz + k].
   // The slice at the apex's end (0 or nz - 1), and per frame the most
-  // basal slice with a closed myocardial ring.
+  // basal slice kept: with a closed myocardial ring, or a partial one
+  // above it (SliceRing::partial).
   int apex_slice = 0;
   std::vector<int> base_slice;
   // Frame 0's RV insertion: per kept slice where the RV touches the
@@ -54,6 +62,14 @@ struct MaskContours {
   // One line each: what the user should know (misaligned slices).
   std::vector<std::string> warnings;
 };
+
+// A slice above the most basal closed ring is still the LV's, as the
+// clinical (Simpson's) convention counts it, while the myocardium borders
+// at least half its cavity; kept while its cavity is also at least a third
+// of the closed base's (a smaller one is the tilted rim's tip, which a
+// model whose rim is one ring cannot follow).
+inline constexpr double kPartialRingCover = 0.5;
+inline constexpr double kPartialRingArea = 0.5;
 
 // Throws InputError naming the source when no voxel carries the LV cavity
 // label, or a frame has no closed myocardial ring.

@@ -135,5 +135,67 @@ TEST(MaskContoursTest, StackEitherWayUp) {
   EXPECT_EQ(a.points.frames[0].points.size(), b.points.frames[0].points.size());
 }
 
+// Slice k of a 48 x 48 stack (2 mm voxels, 8 mm slices): a cavity disk of
+// `cavity` voxels' radius, the myocardium out to 10 voxels except over
+// longitudes from `open_from` to 180 degrees (none: -180).
+void Ring(double cavity, double open_from, int k, LabelVolume* volume) {
+  for (int j = 0; j < volume->ny; ++j) {
+    for (int i = 0; i < volume->nx; ++i) {
+      const double x = i - 23.5, y = j - 23.5, r = std::hypot(x, y);
+      const double longitude = std::atan2(y, x) * kDeg;
+      std::int32_t label = 0;
+      if (r <= cavity) {
+        label = 3;
+      } else if (r <= 10.0 && longitude < open_from) {
+        label = 2;
+      }
+      volume->labels[volume->Index(i, j, k, 0)] = label;
+    }
+  }
+}
+
+// Above the last closed ring, a slice whose myocardium borders three
+// quarters of its cavity is kept as a partial ring, its walls only where
+// they border the myocardium; one bordered over a third is not.
+TEST(MaskContoursTest, PartialBasalRingKeepsItsBorderedWalls) {
+  LabelVolume volume;
+  volume.source = "rings";
+  volume.nx = volume.ny = 48;
+  volume.nz = 6;
+  volume.nt = 1;
+  volume.labels.assign(48 * 48 * 6, 0);
+  volume.world_from_voxel.diagonal() << 2.0, 2.0, 8.0, 1.0;
+  Ring(3.0, 180.0, 0, &volume);  // The apex: a small cavity.
+  for (int k = 1; k <= 3; ++k) Ring(7.0, 180.0, k, &volume);
+  Ring(7.0, 90.0, 4, &volume);   // Open over 90 degrees: 3/4 bordered.
+  Ring(7.0, -60.0, 5, &volume);  // Open over 240 degrees.
+  const MaskContours c = ExtractMaskContours(volume, LabelMap());
+  EXPECT_EQ(c.apex_slice, 0);
+  EXPECT_FALSE(c.rings[4].closed);
+  EXPECT_NEAR(c.rings[4].myocardial_cover, 0.75, 0.06);
+  EXPECT_TRUE(c.rings[4].kept && c.rings[4].partial);
+  EXPECT_FALSE(c.rings[5].kept);
+  ASSERT_EQ(c.base_slice, (std::vector<int>{4}));
+  int endo = 0, epi = 0, opening_middle = 0;
+  for (const DataPoint& p : c.points.frames[0].points) {
+    if (std::abs(p.position.z() - 32.0) > 1e-9) continue;  // Slice 4.
+    const double x = p.position.x() / 2.0 - 23.5;
+    const double y = p.position.y() / 2.0 - 23.5;
+    const double longitude = std::atan2(y, x) * kDeg;
+    // None inside the opening (90 to 180 degrees), but at its edges.
+    EXPECT_TRUE(longitude < 90.0 + 12.0 || longitude > 180.0 - 12.0)
+        << longitude;
+    opening_middle += std::abs(longitude - 135.0) < 30.0;
+    (p.layer == WallLayer::kEndocardium ? endo : epi) += 1;
+  }
+  EXPECT_EQ(opening_middle, 0);
+  EXPECT_GT(endo, 20);
+  EXPECT_GT(epi, 30);
+  // The partial base has no basal face: nothing above slice 4's plane.
+  for (const DataPoint& p : c.points.frames[0].points) {
+    EXPECT_LE(p.position.z(), 32.0 + 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace pfdm

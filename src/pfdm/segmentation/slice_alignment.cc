@@ -15,7 +15,8 @@ std::vector<double> FrameOffsets(const std::vector<SliceRing>& rings,
   std::vector<int> slices;
   for (int k = 0; k < num_slices; ++k) {
     const SliceRing& ring = rings[frame * num_slices + k];
-    if (ring.kept && ring.has_cavity) slices.push_back(k);
+    // A partial ring's cavity centre lies toward its opening.
+    if (ring.kept && !ring.partial && ring.has_cavity) slices.push_back(k);
   }
   std::vector<double> offsets(num_slices, -1.0);
   for (size_t n = 1; n + 1 < slices.size(); ++n) {

@@ -16,7 +16,8 @@ namespace pfdm {
 // of it, a segmentation's noise within about 1.5 mm.
 inline constexpr double kMisalignedMm = 3.0;
 
-// Per frame, each kept slice with a cavity between two others: the
+// Per frame, each kept slice with a closed ring (not partial) and a cavity
+// between two others: the
 // distance across the slices' normal of its cavity centroid from the line
 // through its neighbours' centroids.  A slice is named where that distance
 // exceeds kMisalignedMm and its neighbours' (a shifted slice also moves

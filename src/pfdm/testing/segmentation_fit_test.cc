@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "gtest/gtest.h"
+#include "nlohmann/json.hpp"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/nifti_writer.h"
 #include "pfdm/report/fit_analysis.h"
@@ -86,8 +87,20 @@ TEST(SegmentationFitTest, CliFitsAFileAndNamesAShiftedSlice) {
             std::string::npos)
       << r.error;
   EXPECT_NE(r.output.find("segments: AHA, anatomical"), std::string::npos);
-  EXPECT_NE(ReadText(dir + "/fit/fit.json").find("SAX_LV_EPICARDIAL"),
-            std::string::npos);
+  const nlohmann::json json =
+      nlohmann::json::parse(ReadText(dir + "/fit/fit.json"));
+  EXPECT_EQ(json["settings"]["contour_types"][1], "SAX_LV_EPICARDIAL");
+  // The labels read, and the shifted slice in the record and in both
+  // frames' verdicts.
+  EXPECT_EQ(json["segmentation"]["labels"]["lv"], 3);
+  EXPECT_EQ(json["segmentation"]["labels"]["rv"], 1);
+  ASSERT_EQ(json["segmentation"]["misaligned"].size(), 1u);
+  EXPECT_EQ(json["segmentation"]["misaligned"][0]["slice"], 5);
+  EXPECT_NEAR(json["segmentation"]["misaligned"][0]["max_offset_mm"], 6.0, 1.0);
+  for (int t = 0; t < 2; ++t) {
+    const std::string reasons = json["frames"][t]["quality_reasons"].dump();
+    EXPECT_NE(reasons.find("misaligned_slice"), std::string::npos) << reasons;
+  }
   // The mask's slices with the fitted walls: 3 slices at ED and ES, in
   // slices.svg and the report.
   const std::string slices = ReadText(dir + "/fit/slices.svg");
