@@ -4,6 +4,7 @@
 
 #include "binding_helpers.h"
 #include "bindings.h"
+#include "class_docs.h"
 #include "fit_result.h"
 #include "pfdm/io/fit_output.h"
 #include "pybind11/stl.h"
@@ -115,10 +116,7 @@ void DefDataPointArrays(FitFrameClass& fit_frame) {
 }  // namespace
 
 void BindFitFrame(py::module_& m) {
-  FitFrameClass fit_frame(m, "FitFrame",
-                          "One fitted frame: the model, its numbers as dicts "
-                          "(fit.json's frame entry) and per data point "
-                          "arrays.");
+  FitFrameClass fit_frame(m, "FitFrame", kFitFrameClassDoc);
   fit_frame
       .def_property_readonly(
           "frame", [](const FitFrame& f) { return f.frame_fit().frame; },

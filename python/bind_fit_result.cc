@@ -7,6 +7,7 @@
 
 #include "binding_helpers.h"
 #include "bindings.h"
+#include "class_docs.h"
 #include "fit_intervals.h"
 #include "fit_result.h"
 #include "pfdm/io/fit_output.h"
@@ -153,21 +154,13 @@ void DefFitJson(FitClass& fit) {
 }  // namespace
 
 void BindFitResult(py::module_& m) {
-  FitClass fit(m, "Fit",
-               "A fitted sequence: per frame a FitFrame; the whole fit.json "
-               "as dicts; write() for the CLI's output files.");
+  FitClass fit(m, "Fit", kFitClassDoc);
   DefFrames(fit);
   DefFunctions(fit);
   DefFitJson(fit);
   fit.def("write", &WriteFitFiles, py::arg("out"), py::kw_only(),
           py::arg("vtk_format") = FitSettings().vtk_format,
-          py::arg("vtk_precision") = FitSettings().vtk_precision,
-          "Writes the files `pfdm fit --out` writes into folder out "
-          "(fit.json, parameters.csv, parameters.svg, report.html, "
-          "frame_NNN.vtp and fit.pvd by default), each whole or not at all, "
-          "fit.json last; vtk_format as `--vtk_format` (vtp, vtk or both; "
-          "binary or ascii: 'both,ascii'), vtk_precision as "
-          "`--vtk_precision` (float or double).")
+          py::arg("vtk_precision") = FitSettings().vtk_precision, kWriteDoc)
       .def("__repr__", &FitRepr);
 }
 

@@ -4,6 +4,7 @@
 
 #include "binding_helpers.h"
 #include "bindings.h"
+#include "class_docs.h"
 #include "pfdm/io/fit_output.h"
 #include "pfdm/model/model.h"
 #include "pfdm/model/model_surface.h"
@@ -58,9 +59,7 @@ std::string ModelRepr(const Model& model) {
 }  // namespace
 
 void BindModel(py::module_& m) {
-  py::class_<Model>(m, "Model",
-                    "One state of the deformable model: its parameter "
-                    "functions over the knots and its pose.")
+  py::class_<Model>(m, "Model", kModelClassDoc)
       .def_property_readonly(
           "name", [](const Model& model) { return model.config.name; },
           "The preset: 'paper' or 'superellipsoid'.")
@@ -80,9 +79,7 @@ void BindModel(py::module_& m) {
       .def_property_readonly(
           "functions", [](const Model& model) { return FunctionsArray(model); },
           kFunctionsDoc)
-      .def("function", &KnotValues, py::arg("name"),
-           "(K,) array: one column of `functions`, e.g. "
-           "'tau' (radians) or 'a3' (mm).")
+      .def("function", &KnotValues, py::arg("name"), kFunctionDoc)
       .def_property_readonly(
           "center",
           [](const Model& model) {
@@ -98,10 +95,7 @@ void BindModel(py::module_& m) {
       .def("evaluate", &EvaluateModel, py::arg("u"), py::arg("v"), kEvaluateDoc)
       .def("surface", &SurfaceArrays, py::arg("rings") = kSurfaceRings,
            py::arg("meridians") = kSurfaceMeridians, kSurfaceDoc)
-      .def("volume_ml", &VolumeMl, py::arg("w") = py::none(),
-           "The volume (ml) inside the model's surface w closed by a flat lid "
-           "at the base rim: by default a solid's endocardium (w = -1, the "
-           "cavity), or a single surface's own.")
+      .def("volume_ml", &VolumeMl, py::arg("w") = py::none(), kVolumeDoc)
       .def("__repr__", &ModelRepr);
 }
 

@@ -4,6 +4,7 @@
 
 #include "binding_helpers.h"
 #include "bindings.h"
+#include "class_docs.h"
 #include "pfdm/io/point_writer.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/point_data.h"
@@ -39,11 +40,7 @@ std::string SequenceRepr(const PointSequence& sequence) {
 }  // namespace
 
 void BindPointSequence(py::module_& m) {
-  py::class_<PointSequence>(
-      m, "PointSequence",
-      "Frames of 3D points (mm) with integer ids: the same id in several "
-      "frames is the same material point (a tracked tag), an id seen once "
-      "an untracked surface sample (a contour point).")
+  py::class_<PointSequence>(m, "PointSequence", kPointSequenceClassDoc)
       .def(py::init([](const py::object& frames, const py::object& ids,
                        const std::string& source) {
              return SequenceFromArrays(frames, ids, source);
@@ -74,14 +71,22 @@ void BindPointSequence(py::module_& m) {
           [](const PointSequence& s, int t) {
             return PositionsArray(FrameAt(s, t));
           },
-          py::arg("frame"), "(N, 3) array: the frame's positions (mm), a copy.")
+          py::arg("frame"),
+          "The frame's positions.\n\nParameters\n----------\nframe : int\n"
+          "    The frame's index.\n\nReturns\n-------\nnumpy.ndarray, shape "
+          "(N, 3)\n    mm, a copy.\n")
       .def(
           "ids",
           [](const PointSequence& s, int t) { return IdsArray(FrameAt(s, t)); },
-          py::arg("frame"), "(N,) int64 array: the frame's point ids.")
+          py::arg("frame"),
+          "The frame's point ids.\n\nParameters\n----------\nframe : int\n"
+          "    The frame's index.\n\nReturns\n-------\nnumpy.ndarray, shape "
+          "(N,), int64\n")
       .def("to_arrays", &SequenceArrays,
-           "(positions, ids): lists with one array per frame, "
-           "what PointSequence(positions, ids) takes.")
+           "The frames as arrays, what PointSequence(positions, ids) "
+           "takes.\n\nReturns\n-------\npositions : list of numpy.ndarray\n"
+           "    One (N_t, 3) array per frame (mm).\nids : list of "
+           "numpy.ndarray\n    One (N_t,) int64 array per frame.\n")
       .def(
           "write_csv",
           [](const PointSequence& s, const py::object& path) {
@@ -89,7 +94,8 @@ void BindPointSequence(py::module_& m) {
           },
           py::arg("path"),
           "Writes the frame,id,x,y,z CSV that read_points and "
-          "`pfdm fit --points` read, written whole or not at all.")
+          "``pfdm fit --points`` read, whole or not at all.\n\nParameters\n"
+          "----------\npath : str or os.PathLike\n")
       .def("__repr__", &SequenceRepr);
 }
 

@@ -38,21 +38,6 @@ inline constexpr const char* kFunctionsDoc =
     "a0, a1..a3 as a0*a_i, b0, b2 and the offsets in mm, tau in radians, "
     "eps1, eps2, b1, b3 unitless).";
 
-inline constexpr const char* kEvaluateDoc =
-    "The model's surface point x(u, v) in world "
-    "coordinates (mm), for array-likes u (latitude, apex u_min to base "
-    "u_max) and v (longitude, -pi to pi) that broadcast together; shape "
-    "theirs + (3,).  Beyond [u_min, u_max] the functions hold their end "
-    "values.";
-
-inline constexpr const char* kSurfaceDoc =
-    "(vertices, faces): the model surface "
-    "as a (V, 3) float array (mm) and an (F, 3) int array of outward-facing "
-    "triangles, rings equally spaced in u from apex to base, open at the "
-    "base rim; the defaults are the VTK files'.  For PyVista: "
-    "pv.PolyData(vertices, np.hstack([np.full((len(faces), 1), 3), faces])); "
-    "for trimesh: trimesh.Trimesh(vertices, faces).";
-
 }  // namespace pfdm::python
 
 #endif  // PFDM_PYTHON_BINDING_HELPERS_H_
