@@ -186,13 +186,18 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
   const int es = analysis.ejection_fraction.es_frame;
   BullseyeMap ecc{"peak Ecc, %", PeakRegionEcc(analysis.region_motion),
                   BullseyePalette::kShorteningRed};
+  BullseyeMap ell{"peak Ell, %", PeakRegionEll(analysis.region_motion),
+                  BullseyePalette::kShorteningRed};
   BullseyeMap radial{
       "radial contraction at ES, %", {}, BullseyePalette::kContractionRed};
+  BullseyeMap thickening{
+      "wall thickening at ES, %", {}, BullseyePalette::kContractionRed};
   BullseyeMap rotation{
       "rotation at ES, degrees", {}, BullseyePalette::kPurpleGreen};
   if (es < static_cast<int>(analysis.region_motion.size())) {
     for (const RegionMotion& m : analysis.region_motion[es]) {
       radial.values.push_back(m.radial_contraction_percent);
+      thickening.values.push_back(m.thickening_percent);
       rotation.values.push_back(m.rotation_deg);
     }
   }
@@ -205,8 +210,13 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
         r < analysis.regions.size() && analysis.regions[r].level == kApex;
     if (!cap && !Measured(rotation.values[r])) measured = false;
   }
-  if (!measured) return {ecc, radial};
-  return {ecc, radial, rotation};
+  std::vector<BullseyeMap> maps = {ecc, ell, radial};
+  // A solid's walls have a thickness; one surface none.
+  if (!analysis.models.empty() && analysis.models.front().config.Solid()) {
+    maps.push_back(thickening);
+  }
+  if (measured) maps.push_back(rotation);
+  return maps;
 }
 
 SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,

@@ -64,9 +64,10 @@ std::string BullseyeSvg(const std::vector<WallRegion>& regions,
 SvgPlot Bullseye(const std::vector<WallRegion>& regions,
                  const std::vector<BullseyeMap>& maps);
 
-// The report's three maps: peak Ecc over the frames, and radial
-// contraction and rotation at end-systole; no rotation map where it is not
-// measured (FitAnalysis::rotation_measured).
+// The report's maps: peak Ecc and peak Ell over the frames, radial
+// contraction at end-systole, a solid's wall thickening and rotation at
+// end-systole; no thickening map for one surface, no rotation map where
+// it is not measured (FitAnalysis::rotation_measured).
 std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis);
 
 // Over the frames: Ecc and Ell, the global means (GCS, GLS) and each

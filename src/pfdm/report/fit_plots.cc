@@ -63,7 +63,8 @@ std::string UsingWithBars(int column, int half_width, bool bars) {
 
 SvgPlot ParameterPlots(const std::vector<Model>& frames,
                        const std::vector<bool>& rotation_measured,
-                       const std::vector<FrameCovariance>& covariances) {
+                       const std::vector<FrameCovariance>& covariances,
+                       int es_frame) {
   const int n = static_cast<int>(frames.size());
   const int knots = frames.front().config.num_knots;
   const KnotGrid grid = frames.front().config.Grid();
@@ -99,11 +100,21 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
   for (int t = 0; t < n; ++t) colors << (t ? " " : "") << FrameColor(t, n);
   const bool solid = ed.config.Solid();
   std::ostringstream script;
-  script << "colors = '" << colors.str() << "'\n"
+  // The lines coloured by frame on a colour bar, not a legend line each;
+  // ED (frame 0) and ES drawn thicker; each line's title, shown on hover.
+  script << "colors = '" << colors.str() << "'\nset palette defined (";
+  for (int i = 0; i < 4; ++i) {
+    script << (i ? ", " : "") << i * std::max(1, n - 1) / 3.0 << " '"
+           << FrameColor(i, 4) << "'";
+  }
+  script << ")\nset cbrange [0:" << std::max(1, n - 1) << "]\n"
+         << "set cblabel 'frame'\nunset key\n"
+         << "set colorbox user origin screen 0.925,0.35 size screen 0.012,0.5\n"
+         << "es = " << es_frame << "\n"
          << "set multiplot layout " << (solid ? 3 : 2)
          << ",3 margins 0.05,0.9,0.09,0.92 "
             "spacing 0.06,0.13 title 'Parameter functions, apex to base, "
-            "one line per frame' font 'sans,15'\n"
+            "coloured by frame' font 'sans,15'\n"
          << "set grid lc rgb '#dddddd'\n"
          << "set xrange [0:" << knots - 1 << "]\n"
          << "set xtics 0," << std::max(1, (knots - 1) / 4) << "\n"
@@ -137,14 +148,9 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
       script << "set label 1 'n/a: no tracked points' at graph 0.5,0.5 "
                 "center\n";
     }
-    if (first) {
-      script << "set key at screen 0.995,0.92 top right Left reverse "
-                "samplen 2 spacing 0.9 font 'sans,10' title 'frame'\n";
-    } else {
-      script << "unset key\n";
-    }
+    if (!first) script << "unset colorbox\n";
     script << "plot " << p.reference
-           << " notitle with lines dt 2 lc rgb '#888888', ";
+           << " title 'no change' with lines dt 2 lc rgb '#888888', ";
     if (bands) {  // The 95 % bands under the lines.
       const int c = p.column, w = p.column + 8;
       script << "for [t=0:" << n - 1 << "] $knots index t using 1:($" << c
@@ -153,7 +159,9 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
                 "fs transparent solid 0.18 noborder notitle, ";
     }
     script << "for [t=0:" << n - 1 << "] $knots index t using 1:" << p.column
-           << " lc rgb word(colors, t + 1) pt 7 title sprintf('%d', t)\n";
+           << " lc palette cb t lw (t == 0 || t == es ? 2.5 : 1) pt 7 "
+              "title sprintf('frame %d%s', t, t == 0 ? ' (ED)' : t == es ? "
+              "' (ES)' : '')\n";
     if (twist_panel && !any_twist) script << "unset label 1\n";
     first = false;
   }
@@ -163,9 +171,10 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
 
 std::string ParameterPlotsSvg(const std::vector<Model>& frames,
                               const std::vector<bool>& rotation_measured,
-                              const std::vector<FrameCovariance>& covariances) {
+                              const std::vector<FrameCovariance>& covariances,
+                              int es_frame) {
   return RenderSvgString(
-      ParameterPlots(frames, rotation_measured, covariances));
+      ParameterPlots(frames, rotation_measured, covariances, es_frame));
 }
 
 SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,

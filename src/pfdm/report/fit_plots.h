@@ -14,7 +14,9 @@ namespace pfdm {
 
 // The paper's Fig. 5 for every frame: a1, a2, a3 as ratios to frame 0, twist
 // tau in degrees, bending b0 and b2 in mm, each against the knot index from
-// apex to base, one line per frame (dark early, light late) with a legend.
+// apex to base, one line per frame coloured on a colour bar (dark early,
+// light late), ED (frame 0) and es_frame (-1: none) thicker; hovering over
+// a line shows its frame ("frame 4 (ES)").
 // rotation_measured (FitAnalysis::rotation_measured), when given: the twist
 // panels leave out the frames where it is false, whose tau the fit held.
 // covariances (FrameFit::covariance per frame), when given and computed:
@@ -23,10 +25,11 @@ namespace pfdm {
 std::string ParameterPlotsSvg(
     const std::vector<Model>& frames,
     const std::vector<bool>& rotation_measured = {},
-    const std::vector<FrameCovariance>& covariances = {});
+    const std::vector<FrameCovariance>& covariances = {}, int es_frame = -1);
 SvgPlot ParameterPlots(const std::vector<Model>& frames,
                        const std::vector<bool>& rotation_measured = {},
-                       const std::vector<FrameCovariance>& covariances = {});
+                       const std::vector<FrameCovariance>& covariances = {},
+                       int es_frame = -1);
 
 // Over the frames: cavity volume (ED and ES marked), apex and base rotation
 // with net twist, and radial and longitudinal contraction.  Rotations that

@@ -10,11 +10,11 @@
 namespace pfdm {
 namespace {
 
-TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
+TEST(FitPlotsTest, SixPanelsColouredByFrame) {
   PhantomOptions options;
   options.num_points = 1;
   const Phantom phantom = MakePhantom(options);
-  const std::string svg = ParameterPlotsSvg(phantom.truth);
+  const std::string svg = ParameterPlotsSvg(phantom.truth, {}, {}, 3);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   for (const char* title :
        {"radial: a1 / a1 at frame 0", "radial: a2 / a2 at frame 0",
@@ -22,9 +22,14 @@ TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
         "bending b0 (mm)", "bending b2 (mm)"}) {
     EXPECT_EQ(CountOf(svg, title), 1) << title;
   }
-  // gnuplot writes a key entry as <text><tspan ...>N</tspan>; five frames.
-  for (int t = 0; t < 5; ++t) {
-    EXPECT_GE(CountOf(svg, ">" + std::to_string(t) + "</tspan>"), 1) << t;
+  // No legend: a colour bar labelled 'frame' (on the first panel), and
+  // each frame's line titled for hover, in each of the six panels; ED and
+  // ES named.
+  EXPECT_EQ(CountOf(svg, ">frame</tspan>"), 1);
+  for (const char* title :
+       {"<title>frame 0 (ED)</title>", "<title>frame 1</title>",
+        "<title>frame 3 (ES)</title>", "<title>frame 4</title>"}) {
+    EXPECT_EQ(CountOf(svg, title), 6) << title;
   }
 }
 
