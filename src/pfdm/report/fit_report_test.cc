@@ -10,17 +10,6 @@
 namespace pfdm {
 namespace {
 
-// The page without its scripts' text (the 3D view's bundle, the scene's
-// JSON), where the report's own words are checked.
-std::string WithoutScripts(std::string html) {
-  for (size_t at = html.find("<script"); at != std::string::npos;
-       at = html.find("<script", at + 1)) {
-    const size_t end = html.find("</script>", at);
-    html.erase(at, end == std::string::npos ? end : end - at);
-  }
-  return html;
-}
-
 TEST(FitReportTest, InlinesSvg) {
   EXPECT_EQ(InlineSvg("<?xml version=\"1.0\"?>\n<!DOCTYPE svg>\n<svg a='1'/>"),
             "<svg a='1'/>");
