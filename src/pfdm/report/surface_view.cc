@@ -57,8 +57,16 @@ int FrameMs(const std::vector<double>& time_ms) {
   return static_cast<int>(std::lround(std::clamp(step, 40.0, 400.0)));
 }
 
+size_t MostPoints(const PointSequence& points) {
+  size_t most = 0;
+  for (const Frame& frame : points.frames) {
+    most = std::max(most, frame.points.size());
+  }
+  return most;
+}
+
 void AppendFrame(const Frame& frame, const Model& model,
-                 const std::string& label, const SceneGrid& grid,
+                 const std::string& label, const SceneGrid& grid, int stride,
                  std::ostringstream* out) {
   *out << "{\"label\":\"" << label << "\",\"surfaces\":[";
   const std::vector<Wall> walls = WallsOf(model);
@@ -74,13 +82,20 @@ void AppendFrame(const Frame& frame, const Model& model,
   }
   *out << "],\"points\":[";
   bool first = true;
-  for (const DataPoint& point : frame.points) {
-    AppendCoordinates(point.position, grid.step_mm, &first, out);
+  for (size_t i = 0; i < frame.points.size(); i += stride) {
+    AppendCoordinates(frame.points[i].position, grid.step_mm, &first, out);
   }
   *out << "]}";
 }
 
 }  // namespace
+
+int PointStride(size_t num_points, int max_points) {
+  if (max_points < 1 || num_points <= static_cast<size_t>(max_points)) {
+    return 1;
+  }
+  return static_cast<int>((num_points + max_points - 1) / max_points);
+}
 
 std::string SceneJson(const PointSequence& points,
                       const std::vector<Model>& models,
@@ -106,12 +121,13 @@ std::string SceneJson(const PointSequence& points,
         << "\",\"color\":\"" << walls[k].color
         << "\",\"opacity\":" << walls[k].opacity << '}';
   }
-  out << "],\"frames\":[";
+  const int stride = PointStride(MostPoints(points), grid.max_points);
+  out << "],\"point_stride\":" << stride << ",\"frames\":[";
   for (size_t t = 0; t < models.size(); ++t) {
     if (t) out << ',';
     AppendFrame(points.frames.at(t), models[t],
                 FrameLabel(static_cast<int>(t), time_ms, ed_frame, es_frame),
-                grid, &out);
+                grid, stride, &out);
   }
   out << "]}";
   return out.str();
@@ -120,6 +136,7 @@ std::string SceneJson(const PointSequence& points,
 std::string SurfaceViewHtml(const PointSequence& points, const SequenceFit& fit,
                             const FitAnalysis& analysis) {
   const EjectionFraction& ef = analysis.ejection_fraction;
+  const int stride = PointStride(MostPoints(points), SceneGrid().max_points);
   std::ostringstream h;
   h << "<h2>The fitted ventricle and its data</h2>\n"
     << "<div id=\"pfdm-view3d\"><canvas style=\"width:720px;height:540px;"
@@ -132,7 +149,9 @@ std::string SurfaceViewHtml(const PointSequence& points, const SequenceFit& fit,
     << (fit.config.Solid() ? "The endocardium (orange) inside the "
                              "epicardium (blue)"
                            : "The fitted surface (orange)")
-    << " of each frame with the frame's data points (red). Drag to turn, "
+    << " of each frame with the frame's data points (red"
+    << (stride > 1 ? ", 1 in " + std::to_string(stride) : std::string())
+    << "). Drag to turn, "
        "the wheel to zoom; the slider or Play goes through the cycle.</p>\n"
     << "<script type=\"application/json\" id=\"pfdm-scene\">"
     << SceneJson(points, analysis.models, fit.time_ms, ef.ed_frame, ef.es_frame)

@@ -21,14 +21,21 @@ struct SceneGrid {
   int rings = 24;
   int meridians = 36;
   double step_mm = 0.1;
+  // A frame of more points shows every k-th (PointStride): 50,000 tags
+  // would make a page of tens of MB.
+  int max_points = 4000;
 };
+
+// 1, or the k that leaves at most max_points of num_points.
+int PointStride(size_t num_points, int max_points);
 
 // {"scale": step_mm, "rings", "meridians", "frame_ms": the playing speed,
 //  "triangles": [i, j, k, ...] (one topology for every surface),
 //  "walls": [{"name", "color", "opacity"}] (a solid's endocardium and
 //  epicardium, else the one fitted surface, sampled by MakeModelSurface),
-//  "frames": [{"label", "surfaces": [[x, y, z, ...] per wall],
-//              "points": [x, y, z, ...]}]}
+//  "point_stride": the largest frame's PointStride, "frames": [{"label",
+//  "surfaces": [[x, y, z, ...] per wall], "points": [x, y, z, ...] (every
+//  point_stride-th)}]}
 // with every coordinate an integer count of step_mm.  ED and ES are named in
 // their frames' labels, with the time where time_ms gives one per frame.
 std::string SceneJson(const PointSequence& points,

@@ -39,6 +39,7 @@ TEST(SurfaceViewTest, SceneJsonRoundTrips) {
   const nlohmann::json scene = nlohmann::json::parse(
       SceneJson(phantom.points, phantom.truth, {0.0, 40.0, 80.0}, 0, 2));
   EXPECT_DOUBLE_EQ(scene["scale"].get<double>(), 0.1);
+  EXPECT_EQ(scene["point_stride"].get<int>(), 1);
   EXPECT_EQ(scene["frame_ms"].get<int>(), 40);
   ASSERT_EQ(scene["frames"].size(), 3u);
   ASSERT_EQ(scene["walls"].size(), 1u);
@@ -64,6 +65,25 @@ TEST(SurfaceViewTest, SceneJsonRoundTrips) {
       nlohmann::json::parse(SceneJson(phantom.points, phantom.truth, {}, 0, 1));
   EXPECT_EQ(untimed["frames"][1]["label"], "frame 1 (ES)");
   EXPECT_EQ(untimed["frame_ms"].get<int>(), 120);
+}
+
+// A frame of more than max_points shows every k-th point: 10,000 of at
+// most 4,000 every 3rd, 3,334 of them.
+TEST(SurfaceViewTest, ManyPointsAreThinned) {
+  EXPECT_EQ(PointStride(4000, 4000), 1);
+  EXPECT_EQ(PointStride(4001, 4000), 2);
+  EXPECT_EQ(PointStride(10000, 4000), 3);
+  PhantomOptions options;
+  options.num_frames = 2;
+  options.num_points = 10000;
+  const Phantom phantom = MakePhantom(options);
+  const nlohmann::json scene =
+      nlohmann::json::parse(SceneJson(phantom.points, phantom.truth, {}, 0, 1));
+  EXPECT_EQ(scene["point_stride"].get<int>(), 3);
+  ASSERT_EQ(scene["frames"][1]["points"].size(), 3u * 3334);
+  const Eigen::Vector3d& third = phantom.points.frames[1].points[3].position;
+  EXPECT_NEAR(scene["frames"][1]["points"][3].get<double>() * 0.1, third.x(),
+              0.05 + 1e-9);
 }
 
 // A solid's scene holds its endocardium (w = -1) and epicardium (w = 1).

@@ -176,7 +176,8 @@ std::string ChartSvg(const Chart& chart) {
   for (const ChartSeries& s : chart.series) {
     if (s.legend) listed.push_back(&s);
   }
-  const int per_row = 4;
+  // 100 px a legend entry ("10 mid 4", "GCS (global)").
+  const int per_row = std::max(1, static_cast<int>(chart.width - kLeft) / 100);
   const int rows = (static_cast<int>(listed.size()) + per_row - 1) / per_row;
   const PlotArea f = PlotFrame(chart, rows);
   std::ostringstream out;
@@ -188,7 +189,7 @@ std::string ChartSvg(const Chart& chart) {
   Axes(chart, f, &out);
   Markers(chart, f, &out);
   for (const ChartSeries& s : chart.series) Curve(chart, s, f, &out);
-  const double column = (chart.width - kLeft) / per_row;
+  const double column = 100;
   for (size_t k = 0; k < listed.size(); ++k) {
     const double x = kLeft + (k % per_row) * column;
     const double y = f.bottom + kBottom + (k / per_row) * kLegendRow + 2;
