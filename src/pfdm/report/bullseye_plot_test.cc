@@ -154,40 +154,5 @@ TEST(BullseyePlotTest, SolidHasAThickeningMap) {
   }
 }
 
-TEST(BullseyePlotTest, StrainCurvesHaveGlobalAndLevels) {
-  std::vector<GlobalStrain> strain(3);
-  strain[1].gcs_percent = -10.0;
-  strain[2].gcs_percent = -18.0;
-  strain[2].level_ecc_percent = {-15.0, -18.0, -21.0};
-  const std::string svg = StrainCurvesSvg(strain);
-  for (const char* text : {"circumferential Ecc", "longitudinal Ell",
-                           "GCS (global)", "GLS (global)", "basal", "apical"}) {
-    EXPECT_NE(svg.find(text), std::string::npos) << text;
-  }
-}
-
-// Issue 31: with every frame's trigger time the strain curves run against
-// it, as the cycle curves do; with one missing, against the frame number.
-TEST(BullseyePlotTest, StrainCurvesRunAgainstTimeWhereKnown) {
-  std::vector<GlobalStrain> strain(3);
-  strain[2].gcs_percent = -18.0;
-  std::vector<ClinicalSummary> clinical(3);
-  const double times[] = {0.0, 40.5, 81.0};
-  for (int t = 0; t < 3; ++t) clinical[t].time_ms = times[t];
-  const SvgPlot timed = StrainCurves(strain, clinical);
-  ASSERT_EQ(timed.data.size(), 1u);
-  ASSERT_EQ(timed.data[0].rows.size(), 3u);
-  for (int t = 0; t < 3; ++t) {
-    EXPECT_DOUBLE_EQ(timed.data[0].rows[t][0], times[t]) << t;
-  }
-  EXPECT_DOUBLE_EQ(timed.data[0].rows[2][1], -18.0);
-  EXPECT_NE(timed.script.find("time from the trigger (ms)"), std::string::npos);
-  clinical[1].time_ms = kNotMeasured;
-  const SvgPlot untimed = StrainCurves(strain, clinical);
-  EXPECT_DOUBLE_EQ(untimed.data[0].rows[2][0], 2.0);
-  EXPECT_NE(untimed.script.find("set xlabel 'frame'"), std::string::npos);
-  EXPECT_EQ(untimed.script.find("time from"), std::string::npos);
-}
-
 }  // namespace
 }  // namespace pfdm

@@ -58,7 +58,16 @@ std::string VolumeCharts(const FitAnalysis& analysis, const Axis& axis) {
   }
   const std::vector<double> rate = VolumeRate(volume, x_s);
   const char* unit = axis.timed ? "ml/s" : "ml/frame";
-  Chart v = ChartOf(axis, "volume", "ml", false);
+  // Only the cavity's volumes give an ejection fraction.
+  char title[96];
+  if (analysis.volume_surface == "cavity") {
+    std::snprintf(title, sizeof(title), "cavity volume, EF %.1f %%",
+                  100.0 * analysis.ejection_fraction.ratio);
+  } else {
+    std::snprintf(title, sizeof(title), "%s volume (not the cavity)",
+                  analysis.volume_surface.c_str());
+  }
+  Chart v = ChartOf(axis, title, "ml", false);
   v.series.push_back({"volume (ml)", volume, "#1f3f8f", 2.0});
   v.series.back().half_width = Bars(analysis, &ClinicalSummary::volume_ml);
   Chart dv = ChartOf(axis, "dV/dt", unit, true);

@@ -1,6 +1,7 @@
 #include "pfdm/report/cycle_charts.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
@@ -48,6 +49,25 @@ TEST(CycleChartsTest, ChartsAgainstTimeWhereKnown) {
   EXPECT_NE(untimed.find("ml/frame"), std::string::npos);
   EXPECT_EQ(untimed.find("Peak ejection rate"), std::string::npos);
   EXPECT_EQ(CountOf(untimed, "class='chart'"), 7);
+  // Tags on a mid-wall: no ejection fraction; the cavity's has one.
+  EXPECT_NE(untimed.find(">midwall volume (not the cavity)<"),
+            std::string::npos);
+  SequenceFit cavity = fit;
+  cavity.surface = WallLayer::kEndocardium;
+  const FitAnalysis cavity_analysis = AnalyzeFit(cavity);
+  char ef[64];
+  std::snprintf(ef, sizeof(ef), ">cavity volume, EF %.1f %%<",
+                100.0 * cavity_analysis.ejection_fraction.ratio);
+  EXPECT_NE(CycleChartsHtml(cavity_analysis).find(ef), std::string::npos) << ef;
+  // Rotation not measured in any frame (contours): no rotation or torsion
+  // chart; in some, gaps.
+  for (FrameFit& frame : fit.frames) frame.tracked = false;
+  const std::string contours = CycleChartsHtml(AnalyzeFit(fit));
+  EXPECT_EQ(contours.find("rotation about the LV axis"), std::string::npos);
+  EXPECT_EQ(contours.find(">torsion<"), std::string::npos);
+  EXPECT_EQ(CountOf(contours, "class='chart'"), 5);
+  EXPECT_NE(contours.find(">contraction<"), std::string::npos);
+  fit.frames = TruthAsFit(phantom).frames;
   fit.time_ms = {0, 50, 100, 150, 200};
   const std::string timed = CycleChartsHtml(AnalyzeFit(fit));
   EXPECT_NE(timed.find("time from the trigger (ms) 150: "), std::string::npos);
