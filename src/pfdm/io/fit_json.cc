@@ -410,6 +410,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
            {"segments", SegmentsSection(analysis)},
            {"regions_convention", fit_json_text::kRegionsConvention},
            {"regions", Regions(analysis, solid)},
+           {"dyssynchrony", DyssynchronySection(analysis)},
            {"strain", StrainSection(analysis)},
            {"frames", Frames(fit, analysis)}});
   AddIntervals(analysis, &document);

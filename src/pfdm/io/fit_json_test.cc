@@ -1,6 +1,7 @@
 #include "pfdm/io/fit_json.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -135,6 +136,35 @@ TEST(FitJsonTest, HasStrainPerFrameRegionAndPeaks) {
   EXPECT_LE(region["peak_ecc_percent"].get<double>(),
             region["ecc_percent"][2].get<double>());
   EXPECT_GT(region["area_mm2"].get<double>(), 100.0);
+}
+
+// Each segment's time to peak Ecc is its most negative Ecc's frame (no
+// times: in frames from ED), and the index their sample SD over 1-16.
+TEST(FitJsonTest, DyssynchronyFromTheSegmentsPeaks) {
+  const FittedPhantom& f = SmallPhantomFit();
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(f.phantom.points, f.fit, FitOptions()));
+  const auto& d = json["dyssynchrony"];
+  EXPECT_EQ(d["unit"], "frames");
+  ASSERT_EQ(d["time_to_peak"].size(), 17u);
+  std::vector<double> counted;
+  for (int r = 0; r < 17; ++r) {
+    const auto& ecc = json["regions"][r]["ecc_percent"];
+    if (d["time_to_peak"][r].is_null()) continue;
+    const auto least = std::min_element(ecc.begin(), ecc.end());
+    EXPECT_EQ(d["peak_frame"][r].get<int>(), least - ecc.begin()) << r;
+    EXPECT_EQ(d["time_to_peak"][r].get<double>(), least - ecc.begin()) << r;
+    if (r < 16) counted.push_back(d["time_to_peak"][r].get<double>());
+  }
+  ASSERT_EQ(d["segments"].get<int>(), static_cast<int>(counted.size()));
+  ASSERT_GE(counted.size(), 12u);
+  double mean = 0.0, squares = 0.0;
+  for (double t : counted) mean += t / counted.size();
+  for (double t : counted) squares += (t - mean) * (t - mean);
+  EXPECT_NEAR(d["index"].get<double>(),
+              std::sqrt(squares / (counted.size() - 1)), 1e-12);
+  // A uniform phantom's contraction: every segment peaks at ES, frame 2.
+  EXPECT_NEAR(mean, 2.0, 1e-12);
 }
 
 // What a frame without tracked points cannot show is null, and fit.json

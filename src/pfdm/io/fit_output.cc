@@ -282,17 +282,15 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
                      const FitOptions& options, const VtkOutput& vtk_output,
                      SvgRendering* plots, const std::string& slices_svg) {
   // The frames' meshes are formatted and written while gnuplot renders the
-  // plots (one gnuplot for the four: its start-up, not the plotting, was
+  // plots (one gnuplot for both: its start-up, not the plotting, was
   // most of their time).
   std::vector<FrameCovariance> covariances;
   for (const FrameFit& frame : fit.frames) {
     covariances.push_back(frame.covariance);
   }
   plots->Render(
-      {ParameterPlots(analysis.models, analysis.rotation_measured, covariances),
-       CycleCurves(analysis.clinical, analysis.volume_surface,
-                   analysis.ejection_fraction.ed_frame, analysis.sd.clinical),
-       StrainCurves(analysis.strain, analysis.clinical, analysis.sd.strain),
+      {ParameterPlots(analysis.models, analysis.rotation_measured, covariances,
+                      analysis.ejection_fraction.es_frame),
        Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::string> frame_names;
   std::vector<std::pair<double, std::string>> timesteps;
@@ -350,8 +348,8 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     const std::vector<std::string> svgs = plots->Finish();
     write("parameters.svg", svgs[0]);
     if (!slices_svg.empty()) write("slices.svg", slices_svg);
-    write("report.html", FitReportHtml(points, fit, analysis, svgs[0], svgs[1],
-                                       svgs[2], svgs[3], slices_svg));
+    write("report.html",
+          FitReportHtml(points, fit, analysis, svgs[0], svgs[1], slices_svg));
     write("fit.json", json);  // Last: marks the set.
   } catch (const InputError&) {
     for (const std::string& name : written) {

@@ -71,4 +71,24 @@ json SegmentsSection(const FitAnalysis& analysis) {
   return section;
 }
 
+json DyssynchronySection(const FitAnalysis& analysis) {
+  const Dyssynchrony& d = analysis.dyssynchrony;
+  const auto value = [](double v) { return std::isnan(v) ? json() : json(v); };
+  json times = json::array(), frames = json::array();
+  for (const SegmentPeak& peak : d.peaks) {
+    times.push_back(value(peak.time_to_peak));
+    frames.push_back(peak.frame < 0 ? json() : json(peak.frame));
+  }
+  return {{"index", value(d.index)},
+          {"unit", d.in_ms ? "ms" : "frames"},
+          {"segments", d.segments},
+          {"definition",
+           "the standard deviation (n - 1) of the segments' time from ED to "
+           "their most negative Ecc, over segments 1-16 with Ecc measured in "
+           "every frame (the apex cap's circumferential direction turns "
+           "about its pole)"},
+          {"time_to_peak", times},
+          {"peak_frame", frames}};
+}
+
 }  // namespace pfdm

@@ -15,6 +15,12 @@ namespace pfdm {
 //  "direction"}; "apex_cap": {"height_fraction", "measured", "reason"}}.
 nlohmann::ordered_json SegmentsSection(const FitAnalysis& analysis);
 
+// {"index": the dyssynchrony index (null with fewer than 2 segments),
+//  "unit": "ms" or "frames", "segments": how many it is over,
+//  "definition", "time_to_peak": per segment from ED (null where n/a),
+//  "peak_frame": per segment (null where n/a)}: FitAnalysis::dyssynchrony.
+nlohmann::ordered_json DyssynchronySection(const FitAnalysis& analysis);
+
 }  // namespace pfdm
 
 #endif  // PFDM_IO_SEGMENTS_JSON_H_

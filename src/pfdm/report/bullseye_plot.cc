@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <sstream>
 
-#include "pfdm/report/fit_plots.h"
 #include "pfdm/report/interval_text.h"
 #include "pfdm/util/angles.h"
 
@@ -186,13 +185,18 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
   const int es = analysis.ejection_fraction.es_frame;
   BullseyeMap ecc{"peak Ecc, %", PeakRegionEcc(analysis.region_motion),
                   BullseyePalette::kShorteningRed};
+  BullseyeMap ell{"peak Ell, %", PeakRegionEll(analysis.region_motion),
+                  BullseyePalette::kShorteningRed};
   BullseyeMap radial{
       "radial contraction at ES, %", {}, BullseyePalette::kContractionRed};
+  BullseyeMap thickening{
+      "wall thickening at ES, %", {}, BullseyePalette::kContractionRed};
   BullseyeMap rotation{
       "rotation at ES, degrees", {}, BullseyePalette::kPurpleGreen};
   if (es < static_cast<int>(analysis.region_motion.size())) {
     for (const RegionMotion& m : analysis.region_motion[es]) {
       radial.values.push_back(m.radial_contraction_percent);
+      thickening.values.push_back(m.thickening_percent);
       rotation.values.push_back(m.rotation_deg);
     }
   }
@@ -205,63 +209,13 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
         r < analysis.regions.size() && analysis.regions[r].level == kApex;
     if (!cap && !Measured(rotation.values[r])) measured = false;
   }
-  if (!measured) return {ecc, radial};
-  return {ecc, radial, rotation};
-}
-
-SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,
-                     const std::vector<ClinicalSummary>& clinical,
-                     const std::vector<GlobalStrain>& sd) {
-  const bool bars = !sd.empty() && sd.size() == strain.size();
-  const bool timed =
-      !strain.empty() && clinical.size() == strain.size() &&
-      std::all_of(clinical.begin(), clinical.end(),
-                  [](const ClinicalSummary& s) { return Measured(s.time_ms); });
-  PlotData block{"strain", {}};
-  for (size_t t = 0; t < strain.size(); ++t) {
-    const GlobalStrain& g = strain[t];
-    block.rows.push_back(
-        {timed ? clinical[t].time_ms : static_cast<double>(t), g.gcs_percent,
-         g.level_ecc_percent[kBasal], g.level_ecc_percent[kMid],
-         g.level_ecc_percent[kApical], g.gls_percent,
-         g.level_ell_percent[kBasal], g.level_ell_percent[kMid],
-         g.level_ell_percent[kApical],
-         bars ? HalfWidth95(sd[t].gcs_percent) : 0.0,
-         bars ? HalfWidth95(sd[t].gls_percent) : 0.0});
+  std::vector<BullseyeMap> maps = {ecc, ell, radial};
+  // A solid's walls have a thickness; one surface none.
+  if (!analysis.models.empty() && analysis.models.front().config.Solid()) {
+    maps.push_back(thickening);
   }
-  std::ostringstream script;
-  script << "set multiplot layout 1,2 margins 0.06,0.98,0.14,0.82 "
-            "spacing 0.08,0.1 title 'Lagrangian strain over the cycle "
-            "(Green-Lagrange, against frame 0)' font 'sans,15'\n"
-         << "set grid lc rgb '#dddddd'\nset xlabel '"
-         << (timed ? "time from the trigger (ms)" : "frame") << "'\n"
-         << "set ylabel 'percent'\nset style data linespoints\n"
-         << "set pointsize 0.6\n"
-         << "set key bottom left opaque font 'sans,10' samplen 2\n";
-  const char* panels[][2] = {{"circumferential Ecc", "GCS"},
-                             {"longitudinal Ell", "GLS"}};
-  for (int p = 0; p < 2; ++p) {
-    const int first = 2 + 4 * p;
-    script << "set title '" << panels[p][0] << "'\n"
-           << "plot 0 notitle with lines dt 2 lc rgb '#888888', "
-           << "$strain " << UsingWithBars(first, 10 + p, bars)
-           << " lc rgb '#222222' pt 5 lw 2 "
-           << "title '" << panels[p][1] << " (global)', "
-           << "'' using 1:" << first + 1
-           << " lc rgb '#2471a3' pt 7 title 'basal', "
-           << "'' using 1:" << first + 2
-           << " lc rgb '#27ae60' pt 7 title 'mid', "
-           << "'' using 1:" << first + 3
-           << " lc rgb '#c0392b' pt 7 title 'apical'\n";
-  }
-  script << "unset multiplot\n";
-  return {"strain.svg", {block}, script.str(), 1200, 380};
-}
-
-std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain,
-                            const std::vector<ClinicalSummary>& clinical,
-                            const std::vector<GlobalStrain>& sd) {
-  return RenderSvgString(StrainCurves(strain, clinical, sd));
+  if (measured) maps.push_back(rotation);
+  return maps;
 }
 
 }  // namespace pfdm

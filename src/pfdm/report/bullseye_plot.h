@@ -1,5 +1,5 @@
-// The AHA-style polar map ("bull's-eye") of regional numbers and the
-// strain curves over the cycle, rendered by gnuplot as SVG text.
+// The AHA-style polar map ("bull's-eye") of regional numbers, rendered by
+// gnuplot as SVG text.
 #ifndef PFDM_REPORT_BULLSEYE_PLOT_H_
 #define PFDM_REPORT_BULLSEYE_PLOT_H_
 
@@ -64,22 +64,11 @@ std::string BullseyeSvg(const std::vector<WallRegion>& regions,
 SvgPlot Bullseye(const std::vector<WallRegion>& regions,
                  const std::vector<BullseyeMap>& maps);
 
-// The report's three maps: peak Ecc over the frames, and radial
-// contraction and rotation at end-systole; no rotation map where it is not
-// measured (FitAnalysis::rotation_measured).
+// The report's maps: peak Ecc and peak Ell over the frames, radial
+// contraction at end-systole, a solid's wall thickening and rotation at
+// end-systole; no thickening map for one surface, no rotation map where
+// it is not measured (FitAnalysis::rotation_measured).
 std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis);
-
-// Over the frames: Ecc and Ell, the global means (GCS, GLS) and each
-// level's, one panel each; against the time from the trigger (ms) when
-// every frame of `clinical` (one per frame of `strain`) has one, as the
-// cycle curves (fit_plots.h), else the frame number.
-// sd (NumberSd::strain), when given: 95 % error bars on GCS and GLS.
-std::string StrainCurvesSvg(const std::vector<GlobalStrain>& strain,
-                            const std::vector<ClinicalSummary>& clinical = {},
-                            const std::vector<GlobalStrain>& sd = {});
-SvgPlot StrainCurves(const std::vector<GlobalStrain>& strain,
-                     const std::vector<ClinicalSummary>& clinical = {},
-                     const std::vector<GlobalStrain>& sd = {});
 
 }  // namespace pfdm
 

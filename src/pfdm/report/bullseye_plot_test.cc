@@ -99,65 +99,59 @@ TEST(BullseyePlotTest, NoRotationMapWhereRotationIsNotMeasured) {
   const Phantom phantom = MakePhantom(options);
   SequenceFit fit = TruthAsFit(phantom);
   const std::vector<BullseyeMap> tags = ClinicalBullseyeMaps(AnalyzeFit(fit));
-  ASSERT_EQ(tags.size(), 3u);
-  EXPECT_EQ(tags[2].title, "rotation at ES, degrees");
-  EXPECT_LT(tags[2].values[15], -1.0);  // An apical segment at ES.
+  ASSERT_EQ(tags.size(), 4u);  // Ecc, Ell, radial, rotation: no wall.
+  EXPECT_EQ(tags[1].title, "peak Ell, %");
+  EXPECT_EQ(tags[1].values, PeakRegionEll(AnalyzeFit(fit).region_motion));
+  EXPECT_LT(tags[1].values[7], -3.0);  // The phantom shortens 20 %.
+  EXPECT_EQ(tags[3].title, "rotation at ES, degrees");
+  EXPECT_LT(tags[3].values[15], -1.0);  // An apical segment at ES.
   fit.frames[4].tracked = false;        // ES.
   const FitAnalysis analysis = AnalyzeFit(fit);
   ASSERT_EQ(analysis.ejection_fraction.es_frame, 4);
   const std::vector<BullseyeMap> contours = ClinicalBullseyeMaps(analysis);
-  ASSERT_EQ(contours.size(), 2u);
+  ASSERT_EQ(contours.size(), 3u);
   EXPECT_EQ(contours[0].title, tags[0].title);
-  EXPECT_EQ(contours[1].title, tags[1].title);
+  EXPECT_EQ(contours[2].title, tags[2].title);
   const std::string svg = BullseyeSvg(analysis.regions, contours);
   EXPECT_EQ(svg.find("rotation"), std::string::npos);
   EXPECT_EQ(svg.find("nan"), std::string::npos);
-  EXPECT_EQ(CountOf(svg, ">17<"), 2);
+  EXPECT_EQ(CountOf(svg, ">17<"), 3);
   // Without data near the apex the cap is n/a, and the rotation map stays.
   fit.frames[4].tracked = true;
   fit.apex_in_data = false;
   const FitAnalysis no_apex = AnalyzeFit(fit);
   const std::vector<BullseyeMap> maps = ClinicalBullseyeMaps(no_apex);
-  ASSERT_EQ(maps.size(), 3u);
-  EXPECT_TRUE(std::isnan(maps[2].values[16]));
+  ASSERT_EQ(maps.size(), 4u);
+  EXPECT_TRUE(std::isnan(maps[3].values[16]));
   const std::string cap_svg = BullseyeSvg(no_apex.regions, maps);
-  EXPECT_EQ(CountOf(cap_svg, ">n/a<"), 3);
+  EXPECT_EQ(CountOf(cap_svg, ">n/a<"), 4);
   EXPECT_EQ(cap_svg.find("nan"), std::string::npos);
 }
 
-TEST(BullseyePlotTest, StrainCurvesHaveGlobalAndLevels) {
-  std::vector<GlobalStrain> strain(3);
-  strain[1].gcs_percent = -10.0;
-  strain[2].gcs_percent = -18.0;
-  strain[2].level_ecc_percent = {-15.0, -18.0, -21.0};
-  const std::string svg = StrainCurvesSvg(strain);
-  for (const char* text : {"circumferential Ecc", "longitudinal Ell",
-                           "GCS (global)", "GLS (global)", "basal", "apical"}) {
-    EXPECT_NE(svg.find(text), std::string::npos) << text;
+// A solid's thickening at ES has a map, between radial contraction and
+// rotation; positive where the wall thickens.
+TEST(BullseyePlotTest, SolidHasAThickeningMap) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  fit.config.MakeSolid();
+  for (FrameFit& frame : fit.frames) {
+    // 8 mm at ED, 20 % thicker by ES (frame 4).
+    const double h = 8.0 * (1.0 + 0.05 * frame.frame);
+    frame.state.globals[kH] = h;
+    for (FunctionValues& knot : frame.state.knots) knot[kH] = h;
   }
-}
-
-// Issue 31: with every frame's trigger time the strain curves run against
-// it, as the cycle curves do; with one missing, against the frame number.
-TEST(BullseyePlotTest, StrainCurvesRunAgainstTimeWhereKnown) {
-  std::vector<GlobalStrain> strain(3);
-  strain[2].gcs_percent = -18.0;
-  std::vector<ClinicalSummary> clinical(3);
-  const double times[] = {0.0, 40.5, 81.0};
-  for (int t = 0; t < 3; ++t) clinical[t].time_ms = times[t];
-  const SvgPlot timed = StrainCurves(strain, clinical);
-  ASSERT_EQ(timed.data.size(), 1u);
-  ASSERT_EQ(timed.data[0].rows.size(), 3u);
-  for (int t = 0; t < 3; ++t) {
-    EXPECT_DOUBLE_EQ(timed.data[0].rows[t][0], times[t]) << t;
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  const std::vector<BullseyeMap> maps = ClinicalBullseyeMaps(analysis);
+  ASSERT_EQ(maps.size(), 5u);
+  EXPECT_EQ(maps[3].title, "wall thickening at ES, %");
+  EXPECT_EQ(maps[4].title, "rotation at ES, degrees");
+  for (int r = 0; r < 16; ++r) {
+    EXPECT_EQ(maps[3].values[r],
+              analysis.region_motion[4][r].thickening_percent);
+    EXPECT_GT(maps[3].values[r], 5.0) << r;
   }
-  EXPECT_DOUBLE_EQ(timed.data[0].rows[2][1], -18.0);
-  EXPECT_NE(timed.script.find("time from the trigger (ms)"), std::string::npos);
-  clinical[1].time_ms = kNotMeasured;
-  const SvgPlot untimed = StrainCurves(strain, clinical);
-  EXPECT_DOUBLE_EQ(untimed.data[0].rows[2][0], 2.0);
-  EXPECT_NE(untimed.script.find("set xlabel 'frame'"), std::string::npos);
-  EXPECT_EQ(untimed.script.find("time from"), std::string::npos);
 }
 
 }  // namespace

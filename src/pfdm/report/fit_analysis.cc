@@ -147,6 +147,11 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   }
   // The levels' strain, above, keeps the cap as part of the apical third.
   analysis.apex_cap_measured = fit.apex_in_data || show_extrapolated;
+  analysis.dyssynchrony = MeasureDyssynchrony(
+      analysis.regions, analysis.region_motion,
+      fit.time_ms.size() == fit.frames.size() ? fit.time_ms
+                                              : std::vector<double>(),
+      ed);
   analysis.sd = PropagateUncertainty(fit, analysis);
   return analysis;
 }

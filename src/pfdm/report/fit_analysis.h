@@ -13,6 +13,7 @@
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
 #include "pfdm/report/number_sd.h"
+#include "pfdm/report/segment_timing.h"
 #include "pfdm/report/wall_motion.h"
 #include "pfdm/segmentation/segmentation_record.h"
 #include "pfdm/util/verdict.h"
@@ -60,6 +61,9 @@ struct FitAnalysis {
   // Per frame: the fit's verdict (FrameFit::verdict) and the clinical
   // numbers' (JudgeClinical).
   std::vector<Verdict> verdicts;
+  // Each segment's time to peak Ecc and their spread (segment_timing.h),
+  // over the segments measured after the above.
+  Dyssynchrony dyssynchrony;
   // The report's footer: what made the fit (the command line, or "Python")
   // and when (UtcMinuteNow); empty: no footer.  Set by the caller.
   std::string made_by;

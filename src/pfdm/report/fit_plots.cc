@@ -56,14 +56,10 @@ std::vector<double> KnotHalfWidths(const Model& model, const Model& ed,
 
 }  // namespace
 
-std::string UsingWithBars(int column, int half_width, bool bars) {
-  return "using 1:" + std::to_string(column) +
-         (bars ? ":" + std::to_string(half_width) + " with yerrorlines" : "");
-}
-
 SvgPlot ParameterPlots(const std::vector<Model>& frames,
                        const std::vector<bool>& rotation_measured,
-                       const std::vector<FrameCovariance>& covariances) {
+                       const std::vector<FrameCovariance>& covariances,
+                       int es_frame) {
   const int n = static_cast<int>(frames.size());
   const int knots = frames.front().config.num_knots;
   const KnotGrid grid = frames.front().config.Grid();
@@ -99,11 +95,21 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
   for (int t = 0; t < n; ++t) colors << (t ? " " : "") << FrameColor(t, n);
   const bool solid = ed.config.Solid();
   std::ostringstream script;
-  script << "colors = '" << colors.str() << "'\n"
+  // The lines coloured by frame on a colour bar, not a legend line each;
+  // ED (frame 0) and ES drawn thicker; each line's title, shown on hover.
+  script << "colors = '" << colors.str() << "'\nset palette defined (";
+  for (int i = 0; i < 4; ++i) {
+    script << (i ? ", " : "") << i * std::max(1, n - 1) / 3.0 << " '"
+           << FrameColor(i, 4) << "'";
+  }
+  script << ")\nset cbrange [0:" << std::max(1, n - 1) << "]\n"
+         << "set cblabel 'frame'\nunset key\n"
+         << "set colorbox user origin screen 0.925,0.35 size screen 0.012,0.5\n"
+         << "es = " << es_frame << "\n"
          << "set multiplot layout " << (solid ? 3 : 2)
          << ",3 margins 0.05,0.9,0.09,0.92 "
             "spacing 0.06,0.13 title 'Parameter functions, apex to base, "
-            "one line per frame' font 'sans,15'\n"
+            "coloured by frame' font 'sans,15'\n"
          << "set grid lc rgb '#dddddd'\n"
          << "set xrange [0:" << knots - 1 << "]\n"
          << "set xtics 0," << std::max(1, (knots - 1) / 4) << "\n"
@@ -137,14 +143,9 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
       script << "set label 1 'n/a: no tracked points' at graph 0.5,0.5 "
                 "center\n";
     }
-    if (first) {
-      script << "set key at screen 0.995,0.92 top right Left reverse "
-                "samplen 2 spacing 0.9 font 'sans,10' title 'frame'\n";
-    } else {
-      script << "unset key\n";
-    }
+    if (!first) script << "unset colorbox\n";
     script << "plot " << p.reference
-           << " notitle with lines dt 2 lc rgb '#888888', ";
+           << " title 'no change' with lines dt 2 lc rgb '#888888', ";
     if (bands) {  // The 95 % bands under the lines.
       const int c = p.column, w = p.column + 8;
       script << "for [t=0:" << n - 1 << "] $knots index t using 1:($" << c
@@ -153,7 +154,9 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
                 "fs transparent solid 0.18 noborder notitle, ";
     }
     script << "for [t=0:" << n - 1 << "] $knots index t using 1:" << p.column
-           << " lc rgb word(colors, t + 1) pt 7 title sprintf('%d', t)\n";
+           << " lc palette cb t lw (t == 0 || t == es ? 2.5 : 1) pt 7 "
+              "title sprintf('frame %d%s', t, t == 0 ? ' (ED)' : t == es ? "
+              "' (ES)' : '')\n";
     if (twist_panel && !any_twist) script << "unset label 1\n";
     first = false;
   }
@@ -163,93 +166,10 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
 
 std::string ParameterPlotsSvg(const std::vector<Model>& frames,
                               const std::vector<bool>& rotation_measured,
-                              const std::vector<FrameCovariance>& covariances) {
+                              const std::vector<FrameCovariance>& covariances,
+                              int es_frame) {
   return RenderSvgString(
-      ParameterPlots(frames, rotation_measured, covariances));
-}
-
-SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
-                    const std::string& volume_surface, int ed_frame,
-                    const std::vector<ClinicalSummary>& sd) {
-  // Against the time from the trigger where every frame has one, else the
-  // frame number.
-  const bool timed =
-      !summaries.empty() &&
-      std::all_of(summaries.begin(), summaries.end(),
-                  [](const ClinicalSummary& s) { return Measured(s.time_ms); });
-  auto x_of = [&](const ClinicalSummary& s) {
-    return timed ? s.time_ms : static_cast<double>(s.frame);
-  };
-  // Columns 2-7 the numbers, 8-13 their 95 % half-widths.
-  const bool bars = sd.size() == summaries.size() && !sd.empty();
-  PlotData block{"cycle", {}};
-  for (size_t t = 0; t < summaries.size(); ++t) {
-    const ClinicalSummary& s = summaries[t];
-    block.rows.push_back({x_of(s), s.volume_ml, s.apex_rotation_deg,
-                          s.base_rotation_deg, s.net_twist_deg,
-                          s.radial_contraction_percent,
-                          s.longitudinal_shortening_percent});
-    const ClinicalSummary* e = bars ? &sd[t] : &s;
-    for (double v : {e->volume_ml, e->apex_rotation_deg, e->base_rotation_deg,
-                     e->net_twist_deg, e->radial_contraction_percent,
-                     e->longitudinal_shortening_percent}) {
-      block.rows.back().push_back(bars ? HalfWidth95(v) : 0.0);
-    }
-  }
-  const EjectionFraction ef = EjectionFractionOf(summaries, ed_frame);
-  const double ed_x = summaries.empty() ? 0.0 : x_of(summaries[ef.ed_frame]);
-  const double es_x = summaries.empty() ? 0.0 : x_of(summaries[ef.es_frame]);
-  // Rows of unmeasured rotations hold NaN, which gnuplot skips; with none
-  // measured (contours) the panel would show nothing, and goes.
-  const bool any_rotation = std::any_of(
-      summaries.begin(), summaries.end(),
-      [](const ClinicalSummary& s) { return Measured(s.net_twist_deg); });
-  std::ostringstream script;
-  script.precision(4);
-  script << "set multiplot layout 1," << (any_rotation ? 3 : 2)
-         << " margins 0.06,0.98,0.14,0.8 "
-            "spacing 0.07,0.1 title 'Over the cycle' font 'sans,15'\n"
-         << "set grid lc rgb '#dddddd'\nset xlabel '"
-         << (timed ? "time from the trigger (ms)" : "frame") << "'\n"
-         << "set style data linespoints\nset pointsize 0.6\n"
-         << "unset key\n"
-         << (volume_surface == "cavity"
-                 ? "set title sprintf('cavity volume, EF %.1f %%', " +
-                       std::to_string(100.0 * ef.ratio) + ")"
-                 : "set title '" + volume_surface + " volume (not the cavity)'")
-         << "\nset ylabel 'ml'\n"
-         << "set label 1 'ED' at " << ed_x << ',' << ef.edv_ml
-         << " offset 0.5,0.8\n"
-         << "set label 2 'ES' at " << es_x << ',' << ef.esv_ml
-         << " offset 0,-1\n"
-         << "plot $cycle " << UsingWithBars(2, 8, bars)
-         << " lc rgb '#1f3f8f' pt 7 title 'volume'\n"
-         << "unset label 1\nunset label 2\n"
-         << "set key top right opaque font 'sans,10' samplen 2\n";
-  if (any_rotation) {
-    script << "set title 'rotation about the LV axis'\nset ylabel 'degrees'\n"
-           << "plot 0 notitle with lines dt 2 lc rgb '#888888', $cycle "
-           << UsingWithBars(3, 9, bars)
-           << " lc rgb '#c0392b' pt 7 title 'apex', '' "
-           << UsingWithBars(4, 10, bars)
-           << " lc rgb '#2471a3' pt 7 title 'base', '' "
-           << UsingWithBars(5, 11, bars)
-           << " lc rgb '#222222' pt 5 lw 2 title 'net twist'\n";
-  }
-  script << "set title 'contraction'\nset ylabel 'percent'\n"
-         << "plot 0 notitle with lines dt 2 lc rgb '#888888', $cycle "
-         << UsingWithBars(6, 12, bars)
-         << " lc rgb '#c0392b' pt 7 title 'radial', '' "
-         << UsingWithBars(7, 13, bars)
-         << " lc rgb '#2471a3' pt 5 title 'longitudinal'\n"
-         << "unset multiplot\n";
-  return {"cycle.svg", {block}, script.str(), 1200, 380};
-}
-
-std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
-                           const std::string& volume_surface, int ed_frame,
-                           const std::vector<ClinicalSummary>& sd) {
-  return RenderSvgString(CycleCurves(summaries, volume_surface, ed_frame, sd));
+      ParameterPlots(frames, rotation_measured, covariances, es_frame));
 }
 
 }  // namespace pfdm

@@ -1,4 +1,5 @@
-// The plots a physician reads a fit from, rendered by gnuplot as SVG text.
+// The parameter functions (the paper's Fig. 5), rendered by gnuplot as SVG
+// text; the curves over the cycle are report/cycle_charts.h's.
 #ifndef PFDM_REPORT_FIT_PLOTS_H_
 #define PFDM_REPORT_FIT_PLOTS_H_
 
@@ -14,7 +15,9 @@ namespace pfdm {
 
 // The paper's Fig. 5 for every frame: a1, a2, a3 as ratios to frame 0, twist
 // tau in degrees, bending b0 and b2 in mm, each against the knot index from
-// apex to base, one line per frame (dark early, light late) with a legend.
+// apex to base, one line per frame coloured on a colour bar (dark early,
+// light late), ED (frame 0) and es_frame (-1: none) thicker; hovering over
+// a line shows its frame ("frame 4 (ES)").
 // rotation_measured (FitAnalysis::rotation_measured), when given: the twist
 // panels leave out the frames where it is false, whose tau the fit held.
 // covariances (FrameFit::covariance per frame), when given and computed:
@@ -23,30 +26,11 @@ namespace pfdm {
 std::string ParameterPlotsSvg(
     const std::vector<Model>& frames,
     const std::vector<bool>& rotation_measured = {},
-    const std::vector<FrameCovariance>& covariances = {});
+    const std::vector<FrameCovariance>& covariances = {}, int es_frame = -1);
 SvgPlot ParameterPlots(const std::vector<Model>& frames,
                        const std::vector<bool>& rotation_measured = {},
-                       const std::vector<FrameCovariance>& covariances = {});
-
-// Over the frames: cavity volume (ED and ES marked), apex and base rotation
-// with net twist, and radial and longitudinal contraction.  Rotations that
-// are kNotMeasured are left out; where none is measured, so is their panel.
-// volume_surface: what the volumes enclose (FitAnalysis::volume_surface);
-// only the cavity's gives an ejection fraction, ED at ed_frame.  The x axis
-// is the time from the trigger (ms) when every summary has one, else the
-// frame number.  sd (NumberSd::clinical), when given: 95 % error bars.
-std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
-                           const std::string& volume_surface = "cavity",
-                           int ed_frame = 0,
-                           const std::vector<ClinicalSummary>& sd = {});
-SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
-                    const std::string& volume_surface = "cavity",
-                    int ed_frame = 0,
-                    const std::vector<ClinicalSummary>& sd = {});
-
-// gnuplot's "using" of column `column` against column 1, with "with
-// yerrorlines" and the half-width from column `half_width` when bars.
-std::string UsingWithBars(int column, int half_width, bool bars);
+                       const std::vector<FrameCovariance>& covariances = {},
+                       int es_frame = -1);
 
 }  // namespace pfdm
 

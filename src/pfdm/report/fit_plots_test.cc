@@ -10,11 +10,11 @@
 namespace pfdm {
 namespace {
 
-TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
+TEST(FitPlotsTest, SixPanelsColouredByFrame) {
   PhantomOptions options;
   options.num_points = 1;
   const Phantom phantom = MakePhantom(options);
-  const std::string svg = ParameterPlotsSvg(phantom.truth);
+  const std::string svg = ParameterPlotsSvg(phantom.truth, {}, {}, 3);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   for (const char* title :
        {"radial: a1 / a1 at frame 0", "radial: a2 / a2 at frame 0",
@@ -22,82 +22,20 @@ TEST(FitPlotsTest, SixPanelsWithOneLegendEntryPerFrame) {
         "bending b0 (mm)", "bending b2 (mm)"}) {
     EXPECT_EQ(CountOf(svg, title), 1) << title;
   }
-  // gnuplot writes a key entry as <text><tspan ...>N</tspan>; five frames.
-  for (int t = 0; t < 5; ++t) {
-    EXPECT_GE(CountOf(svg, ">" + std::to_string(t) + "</tspan>"), 1) << t;
+  // No legend: a colour bar labelled 'frame' (on the first panel), and
+  // each frame's line titled for hover, in each of the six panels; ED and
+  // ES named.
+  EXPECT_EQ(CountOf(svg, ">frame</tspan>"), 1);
+  for (const char* title :
+       {"<title>frame 0 (ED)</title>", "<title>frame 1</title>",
+        "<title>frame 3 (ES)</title>", "<title>frame 4</title>"}) {
+    EXPECT_EQ(CountOf(svg, title), 6) << title;
   }
 }
 
-TEST(FitPlotsTest, CycleCurvesNameTheEjectionFraction) {
-  std::vector<ClinicalSummary> summaries(3);
-  const double volumes[] = {150, 60, 120};
-  for (int t = 0; t < 3; ++t) {
-    summaries[t].frame = t;
-    summaries[t].volume_ml = volumes[t];
-  }
-  const std::string svg = CycleCurvesSvg(summaries);
-  EXPECT_NE(svg.find("EF 60.0 %"), std::string::npos);
-  EXPECT_NE(svg.find("net twist"), std::string::npos);
-}
-
-// With trigger times the curves run against them, ED and ES marked at
-// theirs; without, against the frame number.
-TEST(FitPlotsTest, CycleCurvesRunAgainstTheTriggerTimeWhereKnown) {
-  std::vector<ClinicalSummary> summaries(4);
-  const double volumes[] = {100, 150, 60, 120};
-  for (int t = 0; t < 4; ++t) {
-    summaries[t].frame = t;
-    summaries[t].volume_ml = volumes[t];
-  }
-  const SvgPlot by_frame = CycleCurves(summaries, "cavity", 1);
-  EXPECT_NE(by_frame.script.find("set xlabel 'frame'"), std::string::npos);
-  EXPECT_NE(by_frame.script.find("set label 1 'ED' at 1,150"),
-            std::string::npos)
-      << by_frame.script;
-  EXPECT_EQ(by_frame.data.front().rows[3][0], 3.0);
-  for (int t = 0; t < 4; ++t) summaries[t].time_ms = 40.0 * t + 12.5;
-  const SvgPlot timed = CycleCurves(summaries, "cavity", 1);
-  EXPECT_NE(timed.script.find("set xlabel 'time from the trigger (ms)'"),
-            std::string::npos);
-  EXPECT_NE(timed.script.find("set label 1 'ED' at 52.5,150"),
-            std::string::npos)
-      << timed.script;
-  EXPECT_NE(timed.script.find("set label 2 'ES' at 92.5,60"),
-            std::string::npos);
-  EXPECT_EQ(timed.data.front().rows[3][0], 132.5);
-  EXPECT_NE(RenderSvgString(timed).find("EF 60.0 %"), std::string::npos);
-}
-
-// Rotations not measured (contours) are left out: with none measured, the
-// rotation panel goes; with some, their frames' rows are NaN, which gnuplot
-// skips.  The twist panels of the parameter plots say why they are empty.
-TEST(FitPlotsTest, CurvesLeaveOutRotationsNotMeasured) {
-  std::vector<ClinicalSummary> summaries(3);
-  const double volumes[] = {150, 60, 120};
-  for (int t = 0; t < 3; ++t) {
-    summaries[t].frame = t;
-    summaries[t].volume_ml = volumes[t];
-    summaries[t].net_twist_deg = 4.0 * t;
-  }
-  LeaveOutRotation(&summaries[1]);
-  const SvgPlot some = CycleCurves(summaries);
-  EXPECT_NE(some.script.find("layout 1,3"), std::string::npos);
-  EXPECT_NE(some.script.find("net twist"), std::string::npos);
-  ASSERT_EQ(some.data.front().rows.size(), 3u);
-  EXPECT_EQ(some.data.front().rows[2][4], 8.0);
-  EXPECT_TRUE(std::isnan(some.data.front().rows[1][4]));
-  EXPECT_EQ(some.data.front().rows[1][5], 0.0);  // Contraction stays.
-  const std::string some_svg = RenderSvgString(some);
-  EXPECT_NE(some_svg.find("rotation about the LV axis"), std::string::npos);
-  for (ClinicalSummary& s : summaries) LeaveOutRotation(&s);
-  const SvgPlot none = CycleCurves(summaries);
-  EXPECT_NE(none.script.find("layout 1,2"), std::string::npos);
-  const std::string none_svg = RenderSvgString(none);
-  EXPECT_EQ(none_svg.find("rotation about the LV axis"), std::string::npos);
-  EXPECT_EQ(none_svg.find("net twist"), std::string::npos);
-  EXPECT_NE(none_svg.find("EF 60.0 %"), std::string::npos);
-  EXPECT_NE(none_svg.find("contraction"), std::string::npos);
-
+// The twist panels leave out the frames whose rotation is not measured
+// (contours), and say why they are empty where none is.
+TEST(FitPlotsTest, TwistPanelsLeaveOutRotationsNotMeasured) {
   PhantomOptions options;
   options.num_points = 1;
   const Phantom phantom = MakePhantom(options);

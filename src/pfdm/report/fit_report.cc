@@ -7,7 +7,10 @@
 
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/report/clinical_summary.h"
+#include "pfdm/report/cycle_charts.h"
 #include "pfdm/report/interval_text.h"
+#include "pfdm/report/segment_curves.h"
+#include "pfdm/report/surface_view.h"
 #include "pfdm/report/verdict_box.h"
 #include "pfdm/util/markup_escape.h"
 #include "pfdm/util/verdict.h"
@@ -98,7 +101,7 @@ constexpr const char* kStyle =
     ".key div{border:1px solid #ccc;border-radius:6px;padding:8px 14px}"
     ".key b{display:block;font-size:22px}"
     "p.note{font-size:13px;color:#555;max-width:1100px}"
-    "svg{max-width:100%;height:auto}";
+    "svg{max-width:100%;height:auto}.charts{display:flex;flex-wrap:wrap}";
 
 // What the volumes are of, as the page names them.
 std::string VolumeName(const FitAnalysis& analysis) {
@@ -267,8 +270,7 @@ std::string MeasurementNote(const SequenceFit& fit,
 // The parameter functions and the curves over the cycle, strain's where
 // given.
 std::string PlotSections(const std::string& parameters_svg,
-                         const std::string& cycle_svg,
-                         const std::string& strain_svg) {
+                         const FitAnalysis& analysis) {
   std::ostringstream h;
   h << "<h2>Parameter functions</h2>\n"
     << InlineSvg(parameters_svg) << "\n"
@@ -277,10 +279,11 @@ std::string PlotSections(const std::string& parameters_svg,
        "0.8 is 20 % contraction. Knot 0 is the apex pole, where the data "
        "cannot see a1, a2 or tau: its value is the smoothness "
        "prior's extrapolation.</p>\n";
-  h << "<h2>Over the cycle</h2>\n" << InlineSvg(cycle_svg) << "\n";
-  if (!strain_svg.empty()) {
-    h << InlineSvg(strain_svg) << "\n"
-      << "<p class=\"note\">Lagrangian (Green-Lagrange) strain of the "
+  h << "<h2>Over the cycle</h2>\n" << CycleChartsHtml(analysis);
+  if (!analysis.strain.empty()) {
+    h << "<p class=\"note\">Hover over a point for its value (and its 95 % "
+         "interval, where the bar shows one). Lagrangian (Green-Lagrange) "
+         "strain of the "
          "fitted surface against ED, E = (F<sup>T</sup>F &minus; I)/2 with F "
          "the deformation gradient of the surface's tangent plane at each "
          "material point: Ecc along the ED circle of latitude, Ell along the "
@@ -405,9 +408,9 @@ std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
                     "sectors run counter-clockwise about the long axis seen "
                     "from the base, so the map is the LV seen from its base "
                     "and its numbers depend on the case. ")
-      << "Peak Ecc: the most "
-         "negative over the frames (red is shortening); radial contraction "
-         "(red is inward) "
+      << "Peak Ecc and Ell: the most negative over the frames (red is "
+         "shortening); radial contraction and a solid's thickening (red is "
+         "inward, thicker) "
       << (Measured(analysis.clinical[ef.es_frame].net_twist_deg)
               ? "and rotation (green counter-clockwise seen from the base) "
                 "at ES"
@@ -468,8 +471,6 @@ std::string InlineSvg(const std::string& svg_document) {
 std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const FitAnalysis& analysis,
                           const std::string& parameters_svg,
-                          const std::string& cycle_svg,
-                          const std::string& strain_svg,
                           const std::string& bullseye_svg,
                           const std::string& slices_svg) {
   std::ostringstream h;
@@ -485,9 +486,10 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
          "endocardium (yellow) and epicardium (white) where they cut each "
          "slice's plane.</p>\n";
   }
-  h << PlotSections(parameters_svg, cycle_svg, strain_svg)
-    << FrameTable(fit, analysis) << RegionalSection(fit, analysis, bullseye_svg)
-    << Footer(analysis) << "</body></html>\n";
+  h << SurfaceViewHtml(points, fit, analysis)
+    << PlotSections(parameters_svg, analysis) << FrameTable(fit, analysis)
+    << RegionalSection(fit, analysis, bullseye_svg)
+    << SegmentCurvesHtml(analysis) << Footer(analysis) << "</body></html>\n";
   return h.str();
 }
 

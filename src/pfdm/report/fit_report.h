@@ -10,18 +10,18 @@
 
 namespace pfdm {
 
-// The key numbers (EF, twist and contraction at end-systole), the plots
-// (SVG documents, inlined), the per-frame error and clinical table and the
-// regional wall motion at end-systole, with the strain curves and the
-// bull's-eye maps where given (report/bullseye_plot.h), and a
-// segmentation's slices with the fitted walls' cuts where given
-// (io/segmentation_overlay.h).  No external
-// resources.
+// The key numbers (EF, twist and contraction at end-systole), the 3D view
+// of the fitted surfaces and data (report/surface_view.h), the parameter
+// functions (gnuplot's SVG document, inlined), the curves over the cycle
+// (report/cycle_charts.h), the per-frame error and clinical table, the
+// regional wall motion at end-systole with the bull's-eye maps where given
+// (report/bullseye_plot.h), the segments' strain curves and dyssynchrony
+// (report/segment_curves.h), and a segmentation's slices with the fitted
+// walls' cuts where given (io/segmentation_overlay.h).  No external
+// resources: the 3D view's script is inlined (report/viewer_script.h).
 std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const FitAnalysis& analysis,
                           const std::string& parameters_svg,
-                          const std::string& cycle_svg,
-                          const std::string& strain_svg = "",
                           const std::string& bullseye_svg = "",
                           const std::string& slices_svg = "");
 

@@ -26,8 +26,8 @@ TEST(FitReportTest, WhatIsNotMeasuredReadsNA) {
   SequenceFit fit = TruthAsFit(phantom);
   for (FrameFit& frame : fit.frames) frame.tracked = false;
   const FitAnalysis analysis = AnalyzeFit(fit);
-  const std::string html = FitReportHtml(phantom.points, fit, analysis, "", "",
-                                         "", "<svg id='b'></svg>");
+  const std::string html = WithoutScripts(
+      FitReportHtml(phantom.points, fit, analysis, "", "<svg id='b'></svg>"));
   EXPECT_NE(html.find("net twist at ES<b>n/a</b>no tracked points at ES"),
             std::string::npos);
   EXPECT_NE(html.find("torsion at ES<b>n/a</b>shear angle n/a</div>"),
@@ -46,7 +46,7 @@ TEST(FitReportTest, WhatIsNotMeasuredReadsNA) {
   fit = TruthAsFit(phantom);
   fit.frames[2].tracked = false;
   const std::string mixed =
-      FitReportHtml(phantom.points, fit, AnalyzeFit(fit), "", "");
+      WithoutScripts(FitReportHtml(phantom.points, fit, AnalyzeFit(fit), ""));
   EXPECT_EQ(mixed.find("No tracked points:"), std::string::npos);
   EXPECT_NE(mixed.find("Frames without tracked points:</b> frame 2, where"),
             std::string::npos);
@@ -64,12 +64,18 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   PointSequence points = phantom.points;
   points.source = "tags<1>.csv";
   const FitAnalysis analysis = AnalyzeFit(fit);
-  const std::string html = FitReportHtml(
-      points, fit, analysis, "<?xml?><svg id='p'></svg>", "<svg id='c'></svg>");
+  const std::string page =
+      FitReportHtml(points, fit, analysis, "<?xml?><svg id='p'></svg>");
+  const std::string html = WithoutScripts(page);
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("tags&lt;1&gt;.csv"), std::string::npos);
   EXPECT_NE(html.find("<svg id='p'></svg>"), std::string::npos);
-  EXPECT_NE(html.find("<svg id='c'></svg>"), std::string::npos);
+  // The curves over the cycle: volume, dV/dt, rotation, torsion,
+  // contraction, Ecc and Ell; the segments' three levels.
+  EXPECT_EQ(CountOf(html,
+                    "<svg xmlns='http://www.w3.org/2000/svg' "
+                    "class='chart'"),
+            7 + 3);
   EXPECT_EQ(html.find("<?xml"), std::string::npos);
   // Tags on a mid-wall: its volume is named as such, with no ejection
   // fraction; a surface fitted to endocardial contours encloses the cavity.
@@ -80,7 +86,7 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   endocardium.surface = WallLayer::kEndocardium;
   const FitAnalysis cavity = AnalyzeFit(endocardium);
   const std::string cavity_html =
-      FitReportHtml(points, endocardium, cavity, "", "");
+      FitReportHtml(points, endocardium, cavity, "");
   char ef[64];
   std::snprintf(ef, sizeof(ef), "ejection fraction<b>%.1f %%",
                 100 * cavity.ejection_fraction.ratio);
@@ -92,21 +98,21 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
                       "last search)"),
             std::string::npos);
   EXPECT_EQ(CountOf(html, "unsettled"), 1);
-  // 5 frame rows and 17 segment rows, each a <tr> after its table's head.
-  EXPECT_EQ(CountOf(html, "<tr>"), 2 + 5 + 17);
+  // 5 frame rows and 17 segment rows in the table at ES and in the
+  // segments' timing, each a <tr> after its table's head.
+  EXPECT_EQ(CountOf(html, "<tr>"), 3 + 5 + 17 + 17);
   EXPECT_NE(html.find("apical 4"), std::string::npos);
   EXPECT_EQ(html.find("No tracked points"), std::string::npos);  // Tags.
   EXPECT_EQ(html.find("n/a"), std::string::npos);
   for (const char* external : {"src=", "href=", "<link", "@import"}) {
-    EXPECT_EQ(html.find(external), std::string::npos) << external;
+    EXPECT_EQ(page.find(external), std::string::npos) << external;
   }
   // Without strain plots no caption of theirs; with them, inlined and
   // captioned; peak GCS among the key numbers, frame 0's strain unsigned.
   EXPECT_EQ(html.find("Bull's-eye"), std::string::npos);
-  const std::string with_maps = FitReportHtml(
-      points, fit, analysis, "<svg id='p'></svg>", "<svg id='c'></svg>",
-      "<svg id='s'></svg>", "<?xml?><svg id='b'></svg>");
-  EXPECT_NE(with_maps.find("<svg id='s'></svg>"), std::string::npos);
+  const std::string with_maps =
+      WithoutScripts(FitReportHtml(points, fit, analysis, "<svg id='p'></svg>",
+                                   "<?xml?><svg id='b'></svg>"));
   EXPECT_NE(with_maps.find("<svg id='b'></svg>"), std::string::npos);
   EXPECT_NE(with_maps.find("model's &minus;x axis"), std::string::npos);
   EXPECT_NE(with_maps.find("The segments are not anatomical</b> (no RV "

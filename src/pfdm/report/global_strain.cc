@@ -56,18 +56,33 @@ StrainPeak PeakGls(const std::vector<GlobalStrain>& frames) {
   return PeakOf(frames, &GlobalStrain::gls_percent);
 }
 
-std::vector<double> PeakRegionEcc(
-    const std::vector<std::vector<RegionMotion>>& motion) {
+namespace {
+
+std::vector<double> PeakRegion(
+    const std::vector<std::vector<RegionMotion>>& motion,
+    double RegionMotion::*strain) {
   std::vector<double> peak;
   for (size_t t = 0; t < motion.size(); ++t) {
     peak.resize(std::max(peak.size(), motion[t].size()), 0.0);
     for (size_t r = 0; r < motion[t].size(); ++r) {
-      if (t == 0 || motion[t][r].ecc_percent < peak[r]) {
-        peak[r] = motion[t][r].ecc_percent;
+      if (t == 0 || motion[t][r].*strain < peak[r]) {
+        peak[r] = motion[t][r].*strain;
       }
     }
   }
   return peak;
+}
+
+}  // namespace
+
+std::vector<double> PeakRegionEcc(
+    const std::vector<std::vector<RegionMotion>>& motion) {
+  return PeakRegion(motion, &RegionMotion::ecc_percent);
+}
+
+std::vector<double> PeakRegionEll(
+    const std::vector<std::vector<RegionMotion>>& motion) {
+  return PeakRegion(motion, &RegionMotion::ell_percent);
 }
 
 }  // namespace pfdm

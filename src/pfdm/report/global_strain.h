@@ -39,6 +39,9 @@ StrainPeak PeakGls(const std::vector<GlobalStrain>& frames);
 // Per region, the most negative Ecc over the frames ([frame][region]).
 std::vector<double> PeakRegionEcc(
     const std::vector<std::vector<RegionMotion>>& motion);
+// The same of Ell.
+std::vector<double> PeakRegionEll(
+    const std::vector<std::vector<RegionMotion>>& motion);
 
 }  // namespace pfdm
 

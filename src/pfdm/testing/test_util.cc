@@ -37,6 +37,15 @@ void WriteText(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+std::string WithoutScripts(std::string html) {
+  for (size_t at = html.find("<script"); at != std::string::npos;
+       at = html.find("<script", at + 1)) {
+    const size_t end = html.find("</script>", at);
+    html.erase(at, end == std::string::npos ? end : end - at);
+  }
+  return html;
+}
+
 int CountOf(const std::string& text, const std::string& what) {
   int n = 0;
   for (size_t at = text.find(what); at != std::string::npos;

@@ -18,6 +18,9 @@ std::string ScratchDirectory(const std::string& name);
 void WriteText(const std::string& path, const std::string& text);
 // How often `what` occurs in text (overlaps counted).
 int CountOf(const std::string& text, const std::string& what);
+// A page without its scripts' text (report.html's 3D view bundle and scene
+// JSON, where "nan" is a word of three.js), for checks of its own words.
+std::string WithoutScripts(std::string html);
 std::string ReadText(const std::string& path);
 // The message of the InputError that run throws, or "" if it throws none.
 std::string InputErrorOf(const std::function<void()>& run);
