@@ -144,6 +144,13 @@ void DefFitJson(FitClass& fit) {
           "frame, 'segments' the same per (frame, segment), "
           "'ejection_fraction' of (ratio, edv_ml, esv_ml); None without.")
       .def_property_readonly(
+          "dyssynchrony",
+          [](const FitResult& r) { return FitJsonMember(r, "dyssynchrony"); },
+          "dict: fit.json's dyssynchrony: index (the standard deviation of "
+          "the segments' time to peak Ecc), unit ('ms' or 'frames'), "
+          "time_to_peak and peak_frame per segment (None where not "
+          "measured).")
+      .def_property_readonly(
           "regions",
           [](const FitResult& r) { return FitJsonMember(r, "regions"); },
           "list of dict: the 16 AHA-style segments with rotation_deg and "

@@ -42,6 +42,10 @@ intervals : dict or None
     ``uncertainty='on'``; None without.
 regions : list of dict
     The 16 AHA segments' numbers per frame.
+dyssynchrony : dict
+    index: the standard deviation of the segments' time from ED to their
+    peak Ecc, in unit ('ms' where frame times are known, else 'frames');
+    time_to_peak and peak_frame per segment.
 )doc";
 
 inline constexpr const char* kFitFrameClassDoc =

@@ -40,6 +40,18 @@ def test_frames_index_slice_and_iterate(lv_fit):
         fit[3]
 
 
+def test_dyssynchrony_is_fit_jsons(lv_fit):
+    _, _, fit = lv_fit
+    d = fit.dyssynchrony
+    assert d == fit.to_dict()["dyssynchrony"]
+    assert d["unit"] == "frames" and len(d["time_to_peak"]) == 17
+    # The index is the sample standard deviation of the measured segments'
+    # times to peak, counted here a second way.
+    times = [t for t in d["time_to_peak"][:16] if t is not None]
+    assert len(times) == d["segments"]
+    assert d["index"] == pytest.approx(np.std(times, ddof=1), abs=1e-9)
+
+
 def test_to_dataframe_holds_fit_json_numbers(lv_fit):
     _, _, fit = lv_fit
     table = fit.to_dataframe()
