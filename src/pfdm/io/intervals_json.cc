@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pfdm/report/global_strain.h"
+#include "pfdm/report/interval_calibration.h"
 #include "pfdm/report/interval_text.h"
 
 namespace pfdm {
@@ -142,6 +143,8 @@ void AddStrain(const FitAnalysis& analysis, json* strain) {
 void AddIntervals(const FitAnalysis& analysis, json* document) {
   if (!analysis.sd.computed) return;
   (*document)["uncertainty_definition"] = kUncertaintyDefinition;
+  (*document)["uncertainty_calibrated"] = {{"keys", CalibratedIntervalKeys()},
+                                           {"note", kCalibrationNote}};
   for (const char* key : {"ejection_fraction", "midwall_volume_fraction",
                           "epicardial_volume_fraction"}) {
     if (document->contains(key)) AddEjection(analysis.sd, &(*document)[key]);

@@ -9,6 +9,8 @@
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/cycle_charts.h"
 #include "pfdm/report/interval_text.h"
+#include "pfdm/report/key_numbers.h"
+#include "pfdm/report/report_text.h"
 #include "pfdm/report/segment_curves.h"
 #include "pfdm/report/surface_view.h"
 #include "pfdm/report/verdict_box.h"
@@ -18,42 +20,6 @@
 
 namespace pfdm {
 namespace {
-
-// "n/a" for a number the data cannot determine (kNotMeasured).
-std::string Fixed(double value, int digits) {
-  if (!Measured(value)) return "n/a";
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  // "-0.0" from a value that rounds to zero reads as a sign that is not
-  // there (frame 0's strains, say).
-  const std::string out = text;
-  if (out[0] == '-' && out.find_first_not_of("-0.") == std::string::npos) {
-    return out.substr(1);
-  }
-  return out;
-}
-
-// A background tint for a value in [-scale, scale]: orange for positive,
-// blue for negative, white at zero, so a table reads like a map.
-std::string Tint(double value, double scale) {
-  if (!Measured(value)) return "";
-  const double x = std::clamp(value / scale, -1.0, 1.0);
-  const int fade = static_cast<int>(std::lround(255 - 110 * std::abs(x)));
-  char style[64];
-  if (x >= 0) {
-    std::snprintf(style, sizeof(style), " style=\"background:#ff%02x%02x\"",
-                  std::min(255, fade + 40), fade);
-  } else {
-    std::snprintf(style, sizeof(style), " style=\"background:#%02x%02xff\"",
-                  fade, std::min(255, fade + 40));
-  }
-  return style;
-}
-
-// A value and its unit ("&deg;", " %"), or "n/a" alone.
-std::string WithUnit(double value, int digits, const char* unit) {
-  return Measured(value) ? Fixed(value, digits) + unit : "n/a";
-}
 
 // For data whose frame 0 has no tracked points, where no turn about the
 // axis is seen.
@@ -103,14 +69,6 @@ constexpr const char* kStyle =
     "p.note{font-size:13px;color:#555;max-width:1100px}"
     "svg{max-width:100%;height:auto}.charts{display:flex;flex-wrap:wrap}";
 
-// What the volumes are of, as the page names them.
-std::string VolumeName(const FitAnalysis& analysis) {
-  return analysis.volume_surface == "cavity" ? "cavity volume"
-         : analysis.volume_surface == "epicardial"
-             ? "volume inside the epicardium"
-             : "mid-wall enclosed volume";
-}
-
 // The page's head and the paragraph that says what was fitted to what.
 std::string PageHead(const PointSequence& points, const SequenceFit& fit,
                      const FitAnalysis& analysis) {
@@ -130,102 +88,6 @@ std::string PageHead(const PointSequence& points, const SequenceFit& fit,
     << (fit.config.Solid() ? "a solid from endocardium to epicardium"
                            : "one surface")
     << " (" << EscapeMarkup(fit.wall_reason) << ").</p>\n";
-  return h.str();
-}
-
-// The ejection fraction where the volumes are the cavity's, else the
-// volumes under what they are of.
-std::string VolumeCard(const FitAnalysis& analysis) {
-  const EjectionFraction& ef = analysis.ejection_fraction;
-  const EjectionFraction& sd = analysis.sd.ejection_fraction;
-  const bool with_sd = analysis.sd.computed;
-  std::ostringstream h;
-  if (analysis.volume_surface == "cavity") {
-    h << "<div>ejection fraction<b>" << Fixed(100 * ef.ratio, 1)
-      << (with_sd ? PlusMinus(100 * sd.ratio, 1) : "") << " %</b>"
-      << "EDV " << Fixed(ef.edv_ml, 1)
-      << (with_sd ? PlusMinus(sd.edv_ml, 1) : "") << " ml, ESV "
-      << Fixed(ef.esv_ml, 1) << (with_sd ? PlusMinus(sd.esv_ml, 1) : "")
-      << " ml</div>";
-  } else {
-    h << "<div>" << VolumeName(analysis) << "<b>" << Fixed(ef.edv_ml, 1)
-      << (with_sd ? PlusMinus(sd.edv_ml, 1) : "") << " ml</b>"
-      << "at ED, " << Fixed(ef.esv_ml, 1)
-      << (with_sd ? PlusMinus(sd.esv_ml, 1) : "")
-      << " ml at ES: not the cavity, no ejection fraction</div>";
-  }
-  return h.str();
-}
-
-// A solid's mass, wall thickening and endocardial and epicardial motion.
-std::string SolidCards(const FitAnalysis& a) {
-  const size_t ed_frame = a.ejection_fraction.ed_frame;
-  const size_t es_frame = a.ejection_fraction.es_frame;
-  const ClinicalSummary& ed = a.clinical[ed_frame];
-  const ClinicalSummary& es = a.clinical[es_frame];
-  std::ostringstream h;
-  h << "<div>LV mass at ED<b>" << Fixed(ed.lv_mass_g, 0)
-    << PlusMinus(ClinicalSd(a, ed_frame, &ClinicalSummary::lv_mass_g), 0)
-    << " g</b>"
-    << "myocardium " << Fixed(ed.myocardial_volume_ml, 0)
-    << " ml at 1.05 g/ml</div>"
-    << "<div>wall thickening at ES<b>" << Fixed(es.wall_thickening_percent, 1)
-    << PlusMinus(
-           ClinicalSd(a, es_frame, &ClinicalSummary::wall_thickening_percent),
-           1)
-    << " %</b>" << Fixed(ed.wall_thickness_mm, 1) << " to "
-    << Fixed(es.wall_thickness_mm, 1) << " mm</div>"
-    << "<div>endo / epi net twist at ES<b>"
-    << (Measured(es.endo_net_twist_deg)
-            ? Fixed(es.endo_net_twist_deg, 1) + " / " +
-                  Fixed(es.epi_net_twist_deg, 1) + "&deg;"
-            : "n/a")
-    << "</b>radial contraction " << Fixed(es.endo_radial_contraction_percent, 1)
-    << " / " << Fixed(es.epi_radial_contraction_percent, 1) << " %</div>";
-  return h.str();
-}
-
-// The key numbers, a card each, at ES unless said otherwise.
-std::string KeyNumbers(const SequenceFit& fit, const FitAnalysis& analysis) {
-  const EjectionFraction& ef = analysis.ejection_fraction;
-  const StrainPeak gcs = PeakGcs(analysis.strain);
-  const StrainPeak gls = PeakGls(analysis.strain);
-  const ClinicalSummary& es = analysis.clinical[ef.es_frame];
-  const size_t e = ef.es_frame;
-  auto pm = [&](double ClinicalSummary::*field, int digits) {
-    return PlusMinus(ClinicalSd(analysis, e, field), digits);
-  };
-  std::ostringstream h;
-  h << "<div class=\"key\">" << VolumeCard(analysis);
-  if (fit.config.Solid()) h << SolidCards(analysis);
-  h << "<div>net twist at ES<b>"
-    << WithUnit(es.net_twist_deg, 1,
-                (pm(&ClinicalSummary::net_twist_deg, 1) + "&deg;").c_str())
-    << "</b>"
-    << (Measured(es.net_twist_deg)
-            ? "apex " + Fixed(es.apex_rotation_deg, 1) + "&deg;, base " +
-                  Fixed(es.base_rotation_deg, 1) + "&deg;"
-            : "no tracked points at ES")
-    << "</div><div>torsion at ES<b>"
-    << WithUnit(
-           es.torsion_deg_per_cm, 2,
-           (pm(&ClinicalSummary::torsion_deg_per_cm, 2) + "&deg;/cm").c_str())
-    << "</b>shear angle " << WithUnit(es.shear_angle_deg, 1, "&deg;")
-    << "</div>"
-    << "<div>radial contraction at ES<b>"
-    << Fixed(es.radial_contraction_percent, 1)
-    << pm(&ClinicalSummary::radial_contraction_percent, 1) << " %</b>"
-    << "mean over ten rings</div>"
-    << "<div>longitudinal shortening at ES<b>"
-    << Fixed(es.longitudinal_shortening_percent, 1)
-    << pm(&ClinicalSummary::longitudinal_shortening_percent, 1) << " %</b>"
-    << "apex to base-rim centroid</div>"
-    << "<div>peak GCS<b>" << Fixed(gcs.percent, 1)
-    << PlusMinus(StrainSd(analysis, gcs.frame, &GlobalStrain::gcs_percent), 1)
-    << " %</b>frame " << gcs.frame << ", circumferential</div>"
-    << "<div>peak GLS<b>" << Fixed(gls.percent, 1)
-    << PlusMinus(StrainSd(analysis, gls.frame, &GlobalStrain::gls_percent), 1)
-    << " %</b>frame " << gls.frame << ", longitudinal</div></div>\n";
   return h.str();
 }
 
@@ -312,14 +174,20 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& f = fit.frames[t];
     const ClinicalSummary& c = analysis.clinical[t];
-    auto pm = [&](double ClinicalSummary::*field, int digits) {
+    auto pm = [&](double ClinicalSummary::*field, int digits,
+                  Calibration calibration = Calibration::kCalibrated) {
       return Fixed(c.*field, digits) +
-             PlusMinus(ClinicalSd(analysis, t, field), digits);
+             PlusMinus(ClinicalSd(analysis, t, field), digits, calibration);
     };
+    // EDV's interval is too narrow (frame 0's scale is held); later
+    // volumes, at frame 0's rim, are calibrated as ESV is.
+    const Calibration volume =
+        t == 0 ? Calibration::kNotCalibrated : Calibration::kCalibrated;
     auto strain = [&](double GlobalStrain::*field) {
       return t < analysis.strain.size()
                  ? Fixed(analysis.strain[t].*field, 1) +
-                       PlusMinus(StrainSd(analysis, t, field), 1)
+                       PlusMinus(StrainSd(analysis, t, field), 1,
+                                 Calibration::kNotCalibrated)
                  : "";
     };
     h << "<tr><td>" << f.frame
@@ -329,14 +197,17 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
       << "</td><td>" << f.residuals.size() << "</td><td>" << Fixed(f.rms_mm, 2)
       << "</td><td>" << Fixed(f.mean_distance_mm, 2) << "</td><td>"
       << Fixed(f.max_distance_mm, 2) << "</td><td>"
-      << pm(&ClinicalSummary::volume_ml, 1) << "</td><td>"
+      << pm(&ClinicalSummary::volume_ml, 1, volume) << "</td><td>"
       << pm(&ClinicalSummary::net_twist_deg, 1) << "</td><td>"
-      << pm(&ClinicalSummary::apex_rotation_deg, 1) << "</td><td>"
-      << pm(&ClinicalSummary::base_rotation_deg, 1) << "</td><td>"
-      << pm(&ClinicalSummary::torsion_deg_per_cm, 2) << "</td><td>"
-      << pm(&ClinicalSummary::radial_contraction_percent, 1) << "</td><td>"
-      << pm(&ClinicalSummary::longitudinal_shortening_percent, 1) << "</td><td>"
-      << strain(&GlobalStrain::gcs_percent) << "</td><td>"
+      << pm(&ClinicalSummary::apex_rotation_deg, 1, Calibration::kNotCalibrated)
+      << "</td><td>"
+      << pm(&ClinicalSummary::base_rotation_deg, 1, Calibration::kNotCalibrated)
+      << "</td><td>"
+      << pm(&ClinicalSummary::torsion_deg_per_cm, 2,
+            Calibration::kNotCalibrated)
+      << "</td><td>" << pm(&ClinicalSummary::radial_contraction_percent, 1)
+      << "</td><td>" << pm(&ClinicalSummary::longitudinal_shortening_percent, 1)
+      << "</td><td>" << strain(&GlobalStrain::gcs_percent) << "</td><td>"
       << strain(&GlobalStrain::gls_percent) << "</td><td class=\"l\">"
       << EscapeMarkup(f.termination + UnsettledNote(f))
       << "</td><td class=\"l\">"
@@ -358,7 +229,8 @@ std::string RegionRow(const FitAnalysis& analysis, size_t r, bool solid) {
   const int peak = PeakEccFrame(analysis, r);
   const double peak_ecc = PeakRegionEcc(analysis.region_motion)[r];
   auto pm = [&](double RegionMotion::*field, size_t t = 0) {
-    return PlusMinus(RegionSd(analysis, t ? t : es, r, field), 1);
+    return PlusMinus(RegionSd(analysis, t ? t : es, r, field), 1,
+                     Calibration::kNotCalibrated);
   };
   std::ostringstream h;
   h << "<tr><td>" << region.segment << "</td><td class=\"l\">" << region.Name()
@@ -475,7 +347,7 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
                           const std::string& slices_svg) {
   std::ostringstream h;
   h << PageHead(points, fit, analysis) << VerdictBoxHtml(fit, analysis)
-    << KeyNumbers(fit, analysis) << IntervalNoteHtml(analysis)
+    << KeyNumbersHtml(fit, analysis) << IntervalNoteHtml(analysis)
     << MeasurementNote(fit, analysis);
   h << UntrackedNote(analysis);
   if (!slices_svg.empty()) {

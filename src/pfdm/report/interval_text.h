@@ -5,13 +5,16 @@
 #include <string>
 
 #include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/interval_calibration.h"
 
 namespace pfdm {
 
 // " &plusmn; 1.2", the 95 % half-width (HalfWidth95) of a number whose sd
-// is `sd`, with `digits` decimals; "" for a NaN sd (no covariance, or a
-// number not measured).
-std::string PlusMinus(double sd, int digits);
+// is `sd`, with `digits` decimals, starred where the interval is not
+// calibrated (interval_calibration.h); "" for a NaN sd (no covariance, or
+// a number not measured).
+std::string PlusMinus(double sd, int digits,
+                      Calibration calibration = Calibration::kCalibrated);
 
 // The sd of frame t's clinical number `field`, of its strain's, and of
 // segment r's; NaN when analysis.sd was not computed.
