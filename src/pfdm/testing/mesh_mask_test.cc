@@ -7,8 +7,10 @@
 
 #include "Eigen/Geometry"
 #include "gtest/gtest.h"
+#include "nlohmann/json.hpp"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/io/mesh_reader.h"
+#include "pfdm/io/nifti_writer.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/rv_insertion.h"
 #include "pfdm/segmentation/mask_contours.h"
@@ -123,6 +125,41 @@ TEST(MeshMaskTest, BivMeMeshesVoxelizedFitToTheirVolumes) {
   EXPECT_NEAR(ef, voxel_ef, 0.05 * voxel_ef);
   EXPECT_NEAR(ef, mesh_ef, 0.05 * mesh_ef);
   EXPECT_TRUE(analysis.layout.anatomical) << analysis.layout.anchor;
+}
+
+// The same mask as ACDC lays a patient out (one 3D file per frame,
+// patientNNN_frameMM_gt.nii.gz, ED and ES) through `pfdm fit
+// --segmentation DIR --labels acdc`: the fit, the labels in fit.json, the
+// report with its 3D view and slices.
+TEST(MeshMaskTest, CliFitsBivMeAsAnAcdcFolder) {
+  const std::string shared = SharedDataDirectory();
+  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
+  const std::string obj = shared + "/biv-me-patient1/obj";
+  const MeshMask mask =
+      MakeMeshMask({ReadFrame(obj, 0), ReadFrame(obj, 9)}, LabelMap());
+  const std::string dir = ScratchDirectory("out");
+  const std::string patient = ScratchDirectory("patient001");
+  WriteLabelVolume(mask.volume, patient + "/patient001_frame01_gt.nii.gz", 0,
+                   1);
+  WriteLabelVolume(mask.volume, patient + "/patient001_frame10_gt.nii.gz", 1,
+                   1);
+  const CommandResult r = RunPfdm("fit --segmentation " + patient +
+                                  " --labels acdc --out " + dir + "/fit");
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const nlohmann::json json =
+      nlohmann::json::parse(ReadText(dir + "/fit/fit.json"));
+  const double mesh_ef = Ef(mask.mesh_cavity_ml[0], mask.mesh_cavity_ml[1]);
+  EXPECT_NEAR(json["ejection_fraction"]["ratio"].get<double>(), mesh_ef,
+              0.05 * mesh_ef);
+  EXPECT_EQ(json["segmentation"]["source"], patient);
+  EXPECT_EQ(json["segmentation"]["labels"]["lv"], 3);
+  EXPECT_EQ(json["segmentation"]["frames"], 2);
+  EXPECT_TRUE(json["segmentation"]["misaligned"].empty());
+  EXPECT_EQ(json["segments_anatomical"], true);
+  const std::string report = ReadText(dir + "/fit/report.html");
+  EXPECT_NE(report.find("<h2>The segmentation and the fit</h2>"),
+            std::string::npos);
+  EXPECT_NE(report.find("pfdm-view3d"), std::string::npos);
 }
 
 }  // namespace
