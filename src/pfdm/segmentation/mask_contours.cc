@@ -185,10 +185,32 @@ void Warn(const MisalignedSlice& slice, int num_frames, MaskContours* out) {
   std::snprintf(line, sizeof(line),
                 "slice %d: the LV cavity's centre lies up to %.1f mm off the "
                 "line of its neighbours' in %zu of %d frames (a breath-hold "
-                "shift?)",
+                "shift?); its contours were moved back onto that line",
                 slice.slice, slice.max_offset_mm, slice.frames.size(),
                 num_frames);
   out->warnings.push_back(line);
+}
+
+// Moves each misaligned slice's contours in the frames it is off, and
+// frame 0's RV insertion on it, back onto its neighbours' line, as biv-me
+// corrects breath-hold shifts in-plane.  point_slice[t][i]: the slice of
+// frame t's point i; rv_slice[i]: that of rv_insertion[i].
+void MoveBack(const std::vector<std::vector<int>>& point_slice,
+              const std::vector<int>& rv_slice, MaskContours* out) {
+  for (const MisalignedSlice& slice : out->misaligned) {
+    for (size_t n = 0; n < slice.frames.size(); ++n) {
+      const int t = slice.frames[n];
+      std::vector<DataPoint>& points = out->points.frames[t].points;
+      for (size_t i = 0; i < points.size(); ++i) {
+        if (point_slice[t][i] == slice.slice) {
+          points[i].position -= slice.shifts[n];
+        }
+      }
+      for (size_t i = 0; t == 0 && i < rv_slice.size(); ++i) {
+        if (rv_slice[i] == slice.slice) out->rv_insertion[i] -= slice.shifts[n];
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -209,6 +231,8 @@ MaskContours ExtractMaskContours(const LabelVolume& volume,
   }
   out.apex_slice = ApexSlice(out.rings, nz);
   std::int64_t next_id = 0;
+  std::vector<std::vector<int>> point_slice(nt);
+  std::vector<int> rv_slice;
   for (int t = 0; t < nt; ++t) {
     const int base = KeepApexToBase(&out.rings, nz, t, out.apex_slice);
     if (base < 0) {
@@ -229,8 +253,10 @@ MaskContours ExtractMaskContours(const LabelVolume& volume,
       const bool closed_base = k == base && !partial;
       AddWalls(volume, masks, k, closed_base ? k + toward_base : std::nan(""),
                partial, &frame, &next_id);
+      point_slice[t].resize(frame.points.size(), k);
       if (t == 0 && out.rings[k].closed) {
         AddRvInsertion(volume, labels, masks, k, &out);
+        rv_slice.resize(out.rv_insertion.size(), k);
       }
     }
     out.points.frames.push_back(std::move(frame));
@@ -238,6 +264,7 @@ MaskContours ExtractMaskContours(const LabelVolume& volume,
   const Eigen::Vector3d normal = volume.world_from_voxel.col(2).head<3>();
   out.misaligned = FindMisalignedSlices(out.rings, nz, nt, normal);
   for (const MisalignedSlice& slice : out.misaligned) Warn(slice, nt, &out);
+  MoveBack(point_slice, rv_slice, &out);
   return out;
 }
 

@@ -36,8 +36,12 @@ struct SliceRing {
 // (slice_alignment.h).
 struct MisalignedSlice {
   int slice = 0;
-  std::vector<int> frames;   // Where it is off.
+  std::vector<int> frames;  // Where it is off.
   double max_offset_mm = 0;  // The largest, over those frames.
+  // Per frame of `frames`: its cavity centre minus the point of its
+  // neighbours' line, across the slices (world mm).  The slice's contours
+  // (and RV insertion) were moved back by it.
+  std::vector<Eigen::Vector3d> shifts;
 };
 
 struct MaskContours {

@@ -29,10 +29,11 @@ std::vector<Verdict> SliceAlignmentVerdicts(
     const std::vector<MisalignedSlice>& misaligned, int num_frames) {
   std::vector<Verdict> verdicts(num_frames);
   for (const MisalignedSlice& slice : misaligned) {
-    char text[160];
+    char text[200];
     std::snprintf(text, sizeof(text),
-                  "slice %d of the segmentation lies off its neighbours' line "
-                  "(up to %.1f mm; a breath-hold shift?)",
+                  "slice %d of the segmentation lay off its neighbours' line "
+                  "(up to %.1f mm; a breath-hold shift?) and was moved back "
+                  "onto it",
                   slice.slice, slice.max_offset_mm);
     for (int t : slice.frames) {
       if (t >= 0 && t < num_frames) verdicts[t].Warn("misaligned_slice", text);

@@ -36,7 +36,8 @@ SegmentationRecord RecordSegmentation(const LabelVolume& volume,
 
 // Per frame (num_frames of them): a warning "misaligned_slice" for each
 // slice that lies off its neighbours' line in that frame.  Its contours
-// were fitted as they are, so the walls near it are pulled sideways.
+// were moved back onto the line (MisalignedSlice::shifts), which assumes
+// the centre of a true LV follows its neighbours': the user should look.
 std::vector<Verdict> SliceAlignmentVerdicts(
     const std::vector<MisalignedSlice>& misaligned, int num_frames);
 

@@ -54,8 +54,8 @@ TEST(SegmentationRecordTest, AMisalignedSliceWarnsInTheFramesItIsOff) {
   EXPECT_EQ(verdicts[1].quality(), Quality::kWarning);
   EXPECT_EQ(verdicts[1].reasons()[0].code, "misaligned_slice");
   EXPECT_EQ(verdicts[1].reasons()[0].text,
-            "slice 5 of the segmentation lies off its neighbours' line (up "
-            "to 6.0 mm; a breath-hold shift?)");
+            "slice 5 of the segmentation lay off its neighbours' line (up "
+            "to 6.0 mm; a breath-hold shift?) and was moved back onto it");
   EXPECT_EQ(verdicts[3].reasons().size(), 2u);
   // A frame outside the sequence is ignored, not a crash.
   EXPECT_EQ(SliceAlignmentVerdicts({{2, {9}, 4.0}}, 4)[3].quality(),

@@ -27,6 +27,8 @@ TEST(SliceAlignmentTest, NamesTheShiftedSliceOnly) {
   EXPECT_EQ(found[0].slice, 3);
   EXPECT_EQ(found[0].frames, std::vector<int>{1});
   EXPECT_NEAR(found[0].max_offset_mm, 5.0, 1e-9);
+  ASSERT_EQ(found[0].shifts.size(), 1u);
+  EXPECT_LT((found[0].shifts[0] - Eigen::Vector3d(5, 0, 0)).norm(), 1e-9);
   // 2.9 mm is within the shape's own variation.
   rings[nz + 3].cavity_centroid.x() -= 2.1;
   EXPECT_TRUE(
