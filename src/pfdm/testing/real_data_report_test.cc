@@ -240,6 +240,11 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
                 analysis.clinical[0].myocardial_volume_ml,
                 0.10 * analysis.clinical[0].myocardial_volume_ml)
         << "frame " << t;
+    // The material myocardium (material_myocardium.h) drifts beyond issue
+    // 32's 5 %: +6.0 % at ES (frame 9), +11.1 % at frame 13, where the
+    // cavity reads 10 % under the meshes (docs/accuracy.md).  The bound is
+    // the measured worst, so that it cannot grow unseen.
+    EXPECT_NEAR(c.myocardial_volume_change_percent, 0.0, 12.0) << "frame " << t;
   }
   const double mass = analysis.clinical[0].lv_mass_g;
   std::printf(
