@@ -95,13 +95,13 @@ void DefFrames(FitClass& fit) {
 void DefFunctions(FitClass& fit) {
   fit.def_property_readonly(
          "functions", &StackedFunctions,
-         "(frames, knots, 17) array: every frame's `functions`.")
+         "(frames, knots, 18) array: every frame's `functions`.")
       .def_property_readonly(
           "knot_u", [](const FitResult& r) { return KnotUArray(r.fit.config); },
           "(K,) array: each knot's latitude u, apex to base.")
       .def_property_readonly(
           "function_names", [](const FitResult&) { return FunctionNames(); },
-          "The 17 functions' names, the columns of `functions`.")
+          "The 18 functions' names, the columns of `functions`.")
       .def_property_readonly(
           "function_units", [](const FitResult&) { return FunctionUnits(); },
           "Their units: 'mm', 'rad' or '1'.");

@@ -33,7 +33,7 @@ PointSequence ReadPointsFrom(const py::object& path, const std::string& format,
 py::object JsonMember(const py::object& document, const char* key);
 
 inline constexpr const char* kFunctionsDoc =
-    "(knots, 17) array: row k holds every function at knot k, columns in "
+    "(knots, 18) array: row k holds every function at knot k, columns in "
     "the order of function_names, in function_units (as parameters.csv: "
     "a0, a1..a3 as a0*a_i, b0, b2 and the offsets in mm, tau in radians, "
     "eps1, eps2, b1, b3 unitless).";

@@ -19,13 +19,13 @@ frames : list of FitFrame
     One per frame.
 points : PointSequence
     The data that was fitted.
-functions : numpy.ndarray, shape (frames, knots, 17)
+functions : numpy.ndarray, shape (frames, knots, 18)
     Every frame's parameter functions at the knots, columns in the order
     of ``function_names``.
 knot_u : numpy.ndarray, shape (knots,)
     Each knot's latitude u, apex to base.
 function_names : list of str
-    The 17 functions' names.
+    The 18 functions' names.
 function_units : list of str
     Their units: 'mm', 'rad' or '1'.
 settings : dict
@@ -57,7 +57,7 @@ frame : int
     The frame's index.
 model : Model
     The fitted model.
-functions : numpy.ndarray, shape (knots, 17)
+functions : numpy.ndarray, shape (knots, 18)
     The parameter functions at the knots (see ``Fit.function_names``).
 stats : dict
     Fit statistics: n_points, rms_mm, iterations, termination, quality...
@@ -91,7 +91,7 @@ u_range : tuple of float
     (u_min, u_max): latitude of the apex and of the base rim.
 knot_u : numpy.ndarray, shape (K,)
     Each knot's latitude u, apex to base.
-functions : numpy.ndarray, shape (K, 17)
+functions : numpy.ndarray, shape (K, 18)
     Every function at each knot.
 center : numpy.ndarray, shape (3,)
     The pose's translation (mm).

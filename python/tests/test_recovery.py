@@ -68,7 +68,7 @@ def test_functions_array_is_parameters_csv(cli_phantom):
     fit = pfdm.fit(points_csv)
     names = list(pfdm.FUNCTION_NAMES)
     assert fit.function_names == names and len(names) == 17
-    assert names[-3:] == ["h", "dtau", "shift"]
+    assert names[-4:] == ["h", "dtau", "shift", "squeeze"]
     assert fit.function_units[names.index("tau")] == "rad"
     assert fit.function_units[names.index("a3")] == "mm"
     assert fit.function_units[names.index("eps1")] == "1"

@@ -264,6 +264,9 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
   if (solid) {
     entry["myocardial_volume_ml"] = summary.myocardial_volume_ml;
     entry["lv_mass_g"] = summary.lv_mass_g;
+    entry["material_myocardium_ml"] = summary.material_myocardium_ml;
+    entry["myocardial_volume_change_percent"] =
+        summary.myocardial_volume_change_percent;
   }
   // Only when the input gave times: a frame number is no time.
   if (Measured(summary.time_ms)) entry["time_ms"] = summary.time_ms;

@@ -25,7 +25,8 @@ namespace {
 
 bool IsLength(int f) {
   return f == kA0 || f == kA1 || f == kA2 || f == kA3 || f == kB0 || f == kB2 ||
-         f == kE1o || f == kE2o || f == kE3o || f == kH || f == kWallShift;
+         f == kE1o || f == kE2o || f == kE3o || f == kH || f == kWallShift ||
+         f == kWallSqueeze;
 }
 
 double KnotRingZ(const Model& model, double u) {

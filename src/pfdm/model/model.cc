@@ -19,6 +19,7 @@ ModelConfig ModelConfig::Paper(int num_knots) {
   config.modes[kH] = FunctionMode::kFixed;
   config.modes[kDtau] = FunctionMode::kFixed;
   config.modes[kWallShift] = FunctionMode::kFixed;
+  config.modes[kWallSqueeze] = FunctionMode::kFixed;
   return config;
 }
 
@@ -46,7 +47,8 @@ ModelConfig ModelConfig::FromName(const std::string& name, int num_knots) {
 }
 
 void ModelConfig::MakeSolid() {
-  modes[kH] = modes[kDtau] = modes[kWallShift] = modes[kA1];
+  modes[kH] = modes[kDtau] = modes[kWallShift] = modes[kWallSqueeze] =
+      modes[kA1];
 }
 
 const KnotGrid& ModelConfig::Grid() const {

@@ -8,8 +8,8 @@
 namespace pfdm {
 namespace {
 constexpr const char* kNames[kNumFunctions] = {
-    "a0", "a1",  "a2",  "a3",  "eps1", "eps2", "b0",   "b1",   "b2",
-    "b3", "tau", "e1o", "e2o", "e3o",  "h",    "dtau", "shift"};
+    "a0", "a1",  "a2",  "a3",  "eps1", "eps2", "b0",   "b1",    "b2",
+    "b3", "tau", "e1o", "e2o", "e3o",  "h",    "dtau", "shift", "squeeze"};
 }  // namespace
 
 const char* FunctionName(int function) {

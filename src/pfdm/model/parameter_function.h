@@ -28,6 +28,7 @@ enum Function : int {
   kH,          // Wall thickness (mm): endocardium w = -1 to epicardium w = +1.
   kDtau,       // Epicardial minus endocardial twist (radians).
   kWallShift,  // The walls' middle, outward of the layer w = 0 (mm).
+  kWallSqueeze,  // Layers crowding toward w = 0, walls held (mm).
   kNumFunctions
 };
 

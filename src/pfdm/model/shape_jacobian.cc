@@ -74,8 +74,9 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const Angles<double>& angles,
 // a0, g(x, b, r) = cos(pi/2 (x - b)) - J0(pi/2 r) cos(pi/2 b), and the ring
 // half extents r1 = a1 Cu^e1, r2 = a2 Cu^e1 bring in
 // dg/dr = pi/2 J1(pi/2 r) cos(pi/2 b) (J0' = -J1).  Off the mid-wall the
-// primitive is e + k n with k = w h / 2 + w^2 s and n = m / |m|
-// (transmural.h), so de/dh = w n / 2, de/ds = w^2 n and de/da_i = k (I - n n^T)
+// primitive is e + k n with k = w h / 2 + w^2 s + (w^3 - w) q and n = m / |m|
+// (transmural.h), so de/dh = w n / 2, de/ds = w^2 n, de/dq = (w^3 - w) n and
+// de/da_i = k (I - n n^T)
 // dm/da_i / |m| with dm/da_i = -m_i / a_i along axis i; the twist angle is tau
 // + w dtau / 2.
 Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
@@ -130,8 +131,11 @@ Eigen::Vector3d ShapeAndJacobian(const double* f, const ShapePrelude& prelude,
     }
     const Eigen::Vector3d de_dh = 0.5 * prelude.w * n;
     const Eigen::Vector3d de_dshift = prelude.w * prelude.w * n;
+    const Eigen::Vector3d de_dsqueeze =
+        (prelude.w * prelude.w - 1.0) * prelude.w * n;
     through_e(kH, de_dh[0], de_dh[1], de_dh[2]);
     through_e(kWallShift, de_dshift[0], de_dshift[1], de_dshift[2]);
+    through_e(kWallSqueeze, de_dsqueeze[0], de_dsqueeze[1], de_dsqueeze[2]);
   }
   const Eigen::Vector3d de_da0 = primitive / a0;
   through_e(kA0, de_da0[0], de_da0[1], de_da0[2]);

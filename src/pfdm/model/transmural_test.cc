@@ -71,6 +71,28 @@ TEST(TransmuralTest, ShiftMovesTheWallsOffTheMiddleLayer) {
   EXPECT_NEAR(ReferenceShape(f.data(), angles, true, 1.0).norm(), 36.5, 1e-12);
 }
 
+// squeeze moves the layers inside the wall, k(w) = w h / 2 + (w^3 - w) q,
+// and leaves both walls and the middle layer where h and shift put them.
+TEST(TransmuralTest, SqueezeMovesTheLayersInsideTheWallOnly) {
+  FunctionValues f = Sphere(30.0, 10.0);
+  f[kWallSqueeze] = 2.0;
+  const Angles<double> angles = MakeAngles(0.3, -1.0);
+  EXPECT_NEAR(ReferenceShape(f.data(), angles, true, -1.0).norm(), 25.0, 1e-12);
+  EXPECT_NEAR(ReferenceShape(f.data(), angles, true, 0.0).norm(), 30.0, 1e-12);
+  EXPECT_NEAR(ReferenceShape(f.data(), angles, true, 1.0).norm(), 35.0, 1e-12);
+  // w = 0.5: 2.5 + (0.125 - 0.5) 2 = 1.75 mm out, nearer the middle.
+  EXPECT_NEAR(ReferenceShape(f.data(), angles, true, 0.5).norm(), 31.75, 1e-12);
+  EXPECT_NEAR(ReferenceShape(f.data(), angles, true, -0.5).norm(), 28.25,
+              1e-12);
+  // The spacing at the middle layer is h / 2 - q per unit of w.
+  const double step = 1e-6;
+  const double spacing =
+      (ReferenceShape(f.data(), angles, true, step).norm() -
+       ReferenceShape(f.data(), angles, true, -step).norm()) /
+      (2.0 * step);
+  EXPECT_NEAR(spacing, 3.0, 1e-6);
+}
+
 // tau is the mid-wall's twist; the endocardium turns dtau / 2 less and the
 // epicardium dtau / 2 more.
 TEST(TransmuralTest, TwistDifferenceSplitsAcrossTheWall) {
@@ -93,7 +115,8 @@ TEST(TransmuralTest, ShapeJacobianMatchesReferenceShapeOffTheMidwall) {
   f[kTau] = 0.4;
   f[kDtau] = 0.1;
   f[kWallShift] = -0.8;
-  for (double w : {-1.0, -0.3, 1.0}) {
+  f[kWallSqueeze] = 0.6;
+  for (double w : {-1.0, -0.3, 0.0, 0.55, 1.0}) {
     for (double u : {-kHalfPi, -0.5, 0.4}) {
       const Angles<double> angles = MakeAngles(u, 1.2);
       ShapeJacobian jacobian;

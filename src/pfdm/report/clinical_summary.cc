@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "pfdm/model/model_surface.h"
+#include "pfdm/report/material_myocardium.h"
 #include "pfdm/report/material_rings.h"
 #include "pfdm/util/angles.h"
 
@@ -81,6 +82,14 @@ void SummarizeWall(const Model& reference, const Model& current,
   summary->myocardial_volume_ml =
       CavityVolumeMl(current, nullptr, 1.0) - summary->volume_ml;
   summary->lv_mass_g = kMyocardialDensity * summary->myocardial_volume_ml;
+  const double u_low = RingAtHeightFraction(reference, span.low);
+  const double u_high = RingAtHeightFraction(reference, span.high);
+  summary->material_myocardium_ml =
+      MaterialMyocardiumMl(current, u_low, u_high);
+  summary->myocardial_volume_change_percent =
+      100.0 * (summary->material_myocardium_ml /
+                   MaterialMyocardiumMl(reference, u_low, u_high) -
+               1.0);
 }
 
 }  // namespace

@@ -98,6 +98,13 @@ struct ClinicalSummary {
   // rim; mass at kMyocardialDensity.
   double myocardial_volume_ml = 0.0;
   double lv_mass_g = 0.0;
+  // The myocardium as material (material_myocardium.h): the wall between
+  // the reference's mid-wall rings at the span's ends (the whole length,
+  // or where frame 0 has data), ml, and its change from the reference's
+  // (end-diastole), percent: what incompressibility keeps near zero, where
+  // myocardial_volume_ml takes in the rim's motion across the base plane.
+  double material_myocardium_ml = 0.0;
+  double myocardial_volume_change_percent = 0.0;
 };
 
 // (EDV - ESV) / EDV with end-diastole the frame given (--ed_frame, frame 0

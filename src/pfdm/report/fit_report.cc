@@ -163,6 +163,7 @@ std::string PlotSections(const std::string& parameters_svg,
 std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
   const EjectionFraction& ef = analysis.ejection_fraction;
   const std::string volume_name = VolumeName(analysis);
+  const bool solid = fit.config.Solid();
   std::ostringstream h;
   h << "<h2>Per frame</h2>\n<table><tr><th>frame</th><th>points</th>"
     << "<th>RMS mm</th><th>mean mm</th><th>max mm</th><th>" << volume_name
@@ -170,6 +171,7 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
     << "<th>net twist &deg;</th><th>apex &deg;</th><th>base &deg;</th>"
     << "<th>torsion &deg;/cm</th><th>radial %</th><th>longitudinal %</th>"
     << "<th>GCS %</th><th>GLS %</th>"
+    << (solid ? "<th>myocardium &Delta; %</th>" : "")
     << "<th class=\"l\">solver</th><th class=\"l\">quality</th></tr>\n";
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& f = fit.frames[t];
@@ -208,7 +210,10 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
       << "</td><td>" << pm(&ClinicalSummary::radial_contraction_percent, 1)
       << "</td><td>" << pm(&ClinicalSummary::longitudinal_shortening_percent, 1)
       << "</td><td>" << strain(&GlobalStrain::gcs_percent) << "</td><td>"
-      << strain(&GlobalStrain::gls_percent) << "</td><td class=\"l\">"
+      << strain(&GlobalStrain::gls_percent)
+      << (solid ? "</td><td>" + Fixed(c.myocardial_volume_change_percent, 1)
+                : "")
+      << "</td><td class=\"l\">"
       << EscapeMarkup(f.termination + UnsettledNote(f))
       << "</td><td class=\"l\">"
       << (t < analysis.verdicts.size()

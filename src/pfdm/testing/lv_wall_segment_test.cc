@@ -6,18 +6,24 @@
 // heights; thickening and each wall's radial contraction are checked at
 // every frame.
 //
-// Measured (1,500 tags, 3 frames; docs/gauge.md "Rings without data"):
-// each wall's contraction within 1.2 points but the prolate segment's
-// endocardium under the incompressible law (2.2 under at ES), thickening
-// 0.1-3.9 points under.  Issue 32 asks for 3 and 2: what is left is the
-// solid's quadratic depth across the wall against walls whose layers are
-// not quadratic in w (docs/gauge.md "What is left"), a cubic term's job;
-// the tolerances below are the measured worst cases rounded up, so that the
-// ring span's gain (whole-length means: 58 % against 34 % on the cylinder)
-// cannot come undone unseen.
-constexpr double kThickeningPoints = 4.0;
-constexpr double kEndoPoints = 2.5;
+// Issue 32's targets: thickening within 3 points at every frame, each
+// wall's radial contraction within 2.  Measured (1,500 tags, 3 frames;
+// docs/gauge.md "The profile across the wall"), with the squeeze (a cubic
+// depth) and its noise taken out: thickening 2.4 points off at worst
+// (prolate, designed law, noise-free, ES: 41.7 against 44.1), endocardium
+// 1.8 (prolate, incompressible: 27.0 against 28.8), epicardium 0.9; before,
+// with a quadratic depth, thickening read up to 3.9 points under and the
+// endocardium 2.2.
+//
+// The myocardium between the data's first and last material rings
+// (material_myocardium.h): on the cylinder within 5 points of the truth's
+// change (at worst +6.2 % against +2.0, designed law, noise-free: the
+// wall's top edge thickens 4-9 points too much), and under the
+// incompressible law within 5 % of ED on both geometries (at worst +2.2 %).
+constexpr double kThickeningPoints = 3.0;
+constexpr double kEndoPoints = 2.0;
 constexpr double kEpiPoints = 2.0;
+constexpr double kMyocardiumPercent = 5.0;
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -78,16 +84,32 @@ TEST_P(LvWallSegmentTest, ThickeningAndBothWallsWhereTheDataAre) {
     const double thickening = SegmentMean(truth.wall_thickening_percent);
     const double endo = SegmentMean(truth.endo.radial_contraction_percent);
     const double epi = SegmentMean(truth.epi.radial_contraction_percent);
+    const double myocardium_change =
+        100.0 *
+        (truth.myocardial_volume_ml / phantom.truth[0].myocardial_volume_ml -
+         1.0);
     std::printf(
         "%s %s noise %.1f frame %zu: thickening %.1f (%.1f) endo %.1f (%.1f) "
-        "epi %.1f (%.1f) myocardium %.1f ml\n",
+        "epi %.1f (%.1f) myocardium %.1f ml, material %.1f ml %+.2f %% "
+        "(%+.2f)\n",
         LvGeometryName(c.geometry).c_str(), LvThickeningLawName(c.law).c_str(),
         c.noise_mm, t, s.wall_thickening_percent, thickening,
         s.endo_radial_contraction_percent, endo,
-        s.epi_radial_contraction_percent, epi, s.myocardial_volume_ml);
+        s.epi_radial_contraction_percent, epi, s.myocardial_volume_ml,
+        s.material_myocardium_ml, s.myocardial_volume_change_percent,
+        myocardium_change);
     EXPECT_NEAR(s.wall_thickening_percent, thickening, kThickeningPoints) << t;
     EXPECT_NEAR(s.endo_radial_contraction_percent, endo, kEndoPoints) << t;
     EXPECT_NEAR(s.epi_radial_contraction_percent, epi, kEpiPoints) << t;
+    if (c.geometry == LvGeometry::kCylinder) {
+      EXPECT_NEAR(s.myocardial_volume_change_percent, myocardium_change,
+                  kMyocardiumPercent)
+          << t;
+    }
+    if (c.law == LvThickeningLaw::kIncompressible) {
+      EXPECT_NEAR(s.myocardial_volume_change_percent, 0.0, kMyocardiumPercent)
+          << t;
+    }
   }
   if (c.geometry == LvGeometry::kCylinder) {
     // Over the whole length, rings without data among them, the cylinder's

@@ -222,9 +222,14 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
     sum_deviation += std::abs(deviation);
     std::printf(
         "frame %2d  rms %.2f  cavity %6.1f (mesh %6.1f, %+5.1f %%)  "
-        "myocardium %6.1f ml  mass %6.1f g  wall %4.1f mm\n",
+        "myocardium %6.1f ml (%+5.1f %%, material %+5.1f %%)  mass %6.1f g  "
+        "wall %4.1f mm\n",
         t, fit.frames[t].rms_mm, c.volume_ml, mesh[t], 100 * deviation,
-        c.myocardial_volume_ml, c.lv_mass_g, c.wall_thickness_mm);
+        c.myocardial_volume_ml,
+        100.0 * (c.myocardial_volume_ml /
+                     analysis.clinical[0].myocardial_volume_ml -
+                 1.0),
+        c.myocardial_volume_change_percent, c.lv_mass_g, c.wall_thickness_mm);
     // End-systole's outflow tract is where the contours say least: frames
     // 10 and 11 read 11.5 and 10.3 % below the meshes, which lie 0.5 mm
     // outside the contours (the cavity-only fit: 11.4 and 10.7 %).
@@ -235,6 +240,11 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
                 analysis.clinical[0].myocardial_volume_ml,
                 0.10 * analysis.clinical[0].myocardial_volume_ml)
         << "frame " << t;
+    // The material myocardium (material_myocardium.h) drifts beyond issue
+    // 32's 5 %: +6.0 % at ES (frame 9), +11.1 % at frame 13, where the
+    // cavity reads 10 % under the meshes (docs/accuracy.md).  The bound is
+    // the measured worst, so that it cannot grow unseen.
+    EXPECT_NEAR(c.myocardial_volume_change_percent, 0.0, 12.0) << "frame " << t;
   }
   const double mass = analysis.clinical[0].lv_mass_g;
   std::printf(

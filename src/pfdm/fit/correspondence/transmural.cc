@@ -279,7 +279,16 @@ double TangentialNoiseMm(const Model& model,
   return std::sqrt(*middle / (4.0 * std::log(2.0)));
 }
 
-double DeconvolvedThickness(double h_obs, double sigma) {
+double DeconvolvedThickness(double h_obs, double sigma, bool squeezed) {
+  if (squeezed) {
+    if (!(h_obs > 0.0)) return h_obs;
+    double h = h_obs;
+    for (int i = 0; i < 50; ++i) {
+      const double x = std::min(sigma / h, 0.2);
+      h = h_obs / (1.0 + x * x * (19.77 - 62.11 * x + 85.48 * x * x));
+    }
+    return h;
+  }
   const double root = h_obs * h_obs - 24.0 * sigma * sigma;
   return 0.5 * (h_obs + std::sqrt(std::max(0.0, root)));
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <random>
 
+#include "Eigen/Dense"
 #include "gtest/gtest.h"
 #include "pfdm/testing/test_models.h"
 #include "pfdm/util/error.h"
@@ -39,6 +40,37 @@ TEST(TransmuralDepthTest, FewPointsMakeOneBand) {
   const std::vector<double> w =
       QuantileDepths({0.0, 0.1, 0.2, 0.3}, {3.0, -1.0, 2.0, 0.0});
   EXPECT_EQ(w, (std::vector<double>{0.75, -0.75, 0.25, -0.25}));
+}
+
+// With the cubic term free the fitted endpoints widen more, about 20
+// sigma^2 / h: a cubic fitted by least squares to ranked uniform plus
+// Gaussian distances, h back within 1 %.
+TEST(TransmuralDepthTest, SqueezedDeconvolutionUndoesTheCubicsWidening) {
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (double h : {6.0, 9.0, 14.0}) {
+    for (double sigma : {0.3, 0.7}) {
+      std::uniform_real_distribution<double> across(-0.5 * h, 0.5 * h);
+      std::vector<double> u(100000, 0.0), distances;
+      for (size_t i = 0; i < u.size(); ++i) {
+        distances.push_back(across(random) + sigma * noise(random));
+      }
+      const std::vector<double> w = QuantileDepths(u, distances);
+      // Least squares of distance on (1, w, w^2, w^3 - w): k(1) - k(-1).
+      Eigen::MatrixXd a(w.size(), 4);
+      Eigen::VectorXd b(w.size());
+      for (size_t i = 0; i < w.size(); ++i) {
+        a.row(i) << 1.0, w[i], w[i] * w[i], w[i] * w[i] * w[i] - w[i];
+        b[i] = distances[i];
+      }
+      const Eigen::Vector4d c = a.colPivHouseholderQr().solve(b);
+      const double h_obs = 2.0 * c[1];
+      EXPECT_GT(h_obs, h + 12.0 * sigma * sigma / h) << h << " " << sigma;
+      EXPECT_NEAR(DeconvolvedThickness(h_obs, sigma, true), h, 0.01 * h)
+          << h << " " << sigma;
+    }
+  }
+  EXPECT_EQ(DeconvolvedThickness(9.0, 0.0, true), 9.0);
 }
 
 // Noise sigma widens ranked distances to h + 6 sigma^2 / h; the

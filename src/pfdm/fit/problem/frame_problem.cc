@@ -48,9 +48,11 @@ FunctionValues FunctionScales(const Model& model,
   scales[kB0] = scales[kB2] = scales[kE1o] = scales[kE2o] = scales[kE3o] = 1.0;
   scales[kB1] = scales[kB3] = radius;
   // A unit of h moves a wall surface by half a millimetre, one of shift by a
-  // millimetre; dtau turns it by half as much as tau.
+  // millimetre, one of squeeze the layers w = +-1/sqrt(3) by 0.38 mm; dtau
+  // turns it by half as much as tau.
   scales[kH] = 0.5;
   scales[kWallShift] = 1.0;
+  scales[kWallSqueeze] = 0.385;
   scales[kDtau] = 0.5 * a0;
   for (int f : held) scales[f] = 0.0;
   return scales;

@@ -12,7 +12,7 @@
 namespace pfdm {
 namespace {
 
-constexpr int kReferenceHeld[] = {kA3, kTau, kDtau, kWallShift,
+constexpr int kReferenceHeld[] = {kA3, kTau, kDtau, kWallShift, kWallSqueeze,
                                   kB0, kB1,  kB2,   kB3};
 
 // With a robust loss, the rim is the highest point with kRimSupport
@@ -80,7 +80,8 @@ std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
     }
     hold = hold || ((f == kE1o || f == kE2o) && block == kGlobalsBlock);
     if (kind == FrameKind::kUntracked) {
-      hold = hold || f == kTau || f == kDtau || f == kWallShift;
+      hold = hold || f == kTau || f == kDtau || f == kWallShift ||
+             f == kWallSqueeze;
     }
     if (hold) held.push_back(f);
   }

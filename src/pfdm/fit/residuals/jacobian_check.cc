@@ -47,6 +47,7 @@ State General() {
   f[kH] = 9.0;
   f[kDtau] = 0.05;
   f[kWallShift] = 0.7;
+  f[kWallSqueeze] = -0.6;
   s.globals = s.knot0 = s.knot1 = f;
   for (int i = 1; i < kNumFunctions; ++i) s.knot1[i] *= 1.1;
   return s;
@@ -120,6 +121,20 @@ std::vector<std::pair<std::string, State>> States() {
   solid.unit_exponents = true;
   solid.free_mask = solid_config.FreeMask();
   solid.w = 0.4;
+  // The squeeze moves only the layers inside the wall: a state where its
+  // column is live, and the middle layer (w = 0) and zero transmural
+  // functions, where the wall's columns vanish.
+  add("inside the wall, squeezed", 0.2, 2.2).w = -0.6;
+  State& middle = add("middle layer, no wall functions", -0.6, -1.4);
+  ForEachBlock(&middle, [](FunctionValues* f) {
+    (*f)[kWallShift] = (*f)[kWallSqueeze] = (*f)[kDtau] = 0.0;
+  });
+  middle.free_mask = solid_config.FreeMask();
+  State& unshaped = add("inside the wall, no shift or squeeze", 0.1, 0.5);
+  ForEachBlock(&unshaped, [](FunctionValues* f) {
+    (*f)[kWallShift] = (*f)[kWallSqueeze] = 0.0;
+  });
+  unshaped.w = 0.7;
   return states;
 }
 

@@ -208,10 +208,14 @@ void TakeOutTagNoise(const PointSequence& sequence,
   for (size_t t = 0; t < result->frames.size(); ++t) {
     FrameFit& frame = result->frames[t];
     Model model{result->config, frame.state};
-    model.state.globals[kH] =
-        DeconvolvedThickness(model.state.globals[kH], result->tag_noise_mm);
+    // Frame 0 and frames without tracked points hold the squeeze at 0.
+    const bool squeezed =
+        frame.kind == FrameKind::kTracked &&
+        result->config.modes[kWallSqueeze] != FunctionMode::kFixed;
+    model.state.globals[kH] = DeconvolvedThickness(
+        model.state.globals[kH], result->tag_noise_mm, squeezed);
     for (FunctionValues& knot : model.state.knots) {
-      knot[kH] = DeconvolvedThickness(knot[kH], result->tag_noise_mm);
+      knot[kH] = DeconvolvedThickness(knot[kH], result->tag_noise_mm, squeezed);
     }
     Summarize(model, Positions(sequence.frames[t]), &frame);
   }
