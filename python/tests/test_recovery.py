@@ -67,13 +67,13 @@ def test_functions_array_is_parameters_csv(cli_phantom):
     folder, points_csv, _ = cli_phantom
     fit = pfdm.fit(points_csv)
     names = list(pfdm.FUNCTION_NAMES)
-    assert fit.function_names == names and len(names) == 17
+    assert fit.function_names == names and len(names) == 18
     assert names[-4:] == ["h", "dtau", "shift", "squeeze"]
     assert fit.function_units[names.index("tau")] == "rad"
     assert fit.function_units[names.index("a3")] == "mm"
     assert fit.function_units[names.index("eps1")] == "1"
     functions = fit.functions
-    assert functions.shape == (3, 17, 17)
+    assert functions.shape == (3, 17, 18)  # frames, knots, functions
     rows = 0
     with open(folder / "cli" / "parameters.csv") as f:
         for row in csv.DictReader(f):
@@ -83,7 +83,7 @@ def test_functions_array_is_parameters_csv(cli_phantom):
             assert "%.10g" % functions[t, k, f_index] == row["value"]
             assert "%.10g" % fit.knot_u[k] == row["u"]
             rows += 1
-    assert rows == 3 * 17 * 17
+    assert rows == 3 * 17 * 18
     np.testing.assert_array_equal(fit.frames[2].functions, functions[2])
     np.testing.assert_array_equal(fit.frames[2].model.function("tau"),
                                   functions[2, :, names.index("tau")])
