@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pfdm/report/fit_analysis.h"
+
 namespace pfdm {
 
 // "n/a" for a number the data cannot determine (kNotMeasured).

@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "pfdm/report/fit_analysis.h"
-
 namespace pfdm {
+
+struct FitAnalysis;
 
 // `digits` decimals; "n/a" for kNotMeasured, and never "-0.0".
 std::string Fixed(double value, int digits);

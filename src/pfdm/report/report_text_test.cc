@@ -1,6 +1,7 @@
 #include "pfdm/report/report_text.h"
 
 #include "gtest/gtest.h"
+#include "pfdm/report/fit_analysis.h"
 
 namespace pfdm {
 namespace {

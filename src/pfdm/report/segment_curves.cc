@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "pfdm/report/report_text.h"
 #include "pfdm/report/svg_chart.h"
 #include "pfdm/util/markup_escape.h"
 
@@ -13,13 +14,6 @@ namespace {
 
 const char* const kSectorColors[] = {"#1f77b4", "#d62728", "#2ca02c",
                                      "#9467bd", "#ff7f0e", "#17becf"};
-
-std::string Fixed(double value, int digits) {
-  if (!Measured(value)) return "n/a";
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  return std::string(text) == "-0.0" ? "0.0" : text;
-}
 
 Chart LevelChart(const FitAnalysis& analysis, RegionLevel level,
                  const std::vector<double>& x, bool timed) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "pfdm/report/report_text.h"
 #include "pfdm/util/markup_escape.h"
 
 namespace pfdm {
@@ -12,12 +13,6 @@ namespace {
 
 constexpr double kLeft = 52, kRight = 12, kTop = 34, kBottom = 40;
 constexpr double kLegendRow = 16;
-
-std::string Number(double value, int digits) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  return std::string(text) == "-0" ? "0" : text;
-}
 
 // Digits that tell ticks `step` apart.
 int DigitsFor(double step) {
@@ -73,12 +68,12 @@ void Axes(const Chart& chart, const PlotArea& f, std::ostringstream* out) {
         *out << "<line x1='" << f.X(t) << "' x2='" << f.X(t) << "' y1='"
              << f.top << "' y2='" << f.bottom << "' stroke='#e4e4e4'/>"
              << "<text x='" << f.X(t) << "' y='" << f.bottom + 14
-             << "' text-anchor='middle'>" << Number(t, digits) << "</text>";
+             << "' text-anchor='middle'>" << Fixed(t, digits) << "</text>";
       } else {
         *out << "<line x1='" << f.left << "' x2='" << f.right << "' y1='"
              << f.Y(t) << "' y2='" << f.Y(t) << "' stroke='#e4e4e4'/>"
              << "<text x='" << f.left - 4 << "' y='" << f.Y(t) + 4
-             << "' text-anchor='end'>" << Number(t, digits) << "</text>";
+             << "' text-anchor='end'>" << Fixed(t, digits) << "</text>";
       }
     }
   }
@@ -144,9 +139,9 @@ void Curve(const Chart& chart, const ChartSeries& s, const PlotArea& f,
     }
     *out << "<circle cx='" << f.X(chart.x[i]) << "' cy='" << f.Y(s.y[i])
          << "' r='2.6' fill='" << s.color << "'><title>" << EscapeMarkup(s.name)
-         << ", " << EscapeMarkup(chart.x_label) << ' ' << Number(chart.x[i], 0)
-         << ": " << Number(s.y[i], 2)
-         << (bar ? " &#177; " + Number(w, 2) + " (95 %)" : "")
+         << ", " << EscapeMarkup(chart.x_label) << ' ' << Fixed(chart.x[i], 0)
+         << ": " << Fixed(s.y[i], 2)
+         << (bar ? " &#177; " + Fixed(w, 2) + " (95 %)" : "")
          << "</title></circle>";
   }
   *out << "</g>";
