@@ -8,6 +8,7 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/io/vtk_writer.h"
+#include "pfdm/testing/small_poly_data.h"
 #include "pfdm/testing/test_util.h"
 
 namespace pfdm {
@@ -98,15 +99,7 @@ std::string Integers(const std::vector<std::int64_t>& values, int size) {
 // the scalars are found by name; the same file as text gives the same mesh
 // to its nine digits.
 TEST(LegacyVtkReaderTest, BinaryGivesBackWhatPfdmWrote) {
-  VtkPolyData data;
-  data.points = {
-      {0.1, -2.5, 3e-7}, {1.0 / 3, 4, 5}, {-6, 7.25, 8}, {9, 10, -11.125}};
-  data.vertices = {3};
-  data.triangles = {{0, 1, 2}, {0, 2, 3}};
-  data.point_scalars = {{"u", {0.5, -1, 1.0 / 7, 2}},
-                        {"is_data", {0, 0, 0, 1}}};
-  data.point_vectors = {
-      {"residual", {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}, {0, 0, 0}}}};
+  const VtkPolyData data = SmallPolyData();
   const std::string path = ScratchDirectory("vtk_binary") + "/m.vtk";
   WriteText(path, ToLegacyVtk(data, "pfdm frame 0", VtkFormat::kBinary));
   const VtkMesh vtk = ReadLegacyVtkPolyData(path);

@@ -8,25 +8,12 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/io/vtp_writer.h"
+#include "pfdm/testing/small_poly_data.h"
 #include "pfdm/testing/test_util.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
-
-VtkPolyData SmallPolyData() {
-  VtkPolyData data;
-  data.points = {
-      {0.1, -2.5, 3e-7}, {1.0 / 3, 4, 5}, {-6, 7.25, 8}, {9, 10, -11.125}};
-  data.vertices = {3};
-  data.triangles = {{0, 1, 2}, {0, 2, 3}};
-  data.point_scalars = {{"u", {0.5, -1, 1.0 / 7, 2}},
-                        {"is_data", {0, 0, 0, 1}}};
-  data.point_vectors = {
-      {"residual", {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}, {0, 0, 0}}}};
-  data.float32_scalars = {"is_data"};
-  return data;
-}
 
 // pfdm's own .vtp in each encoding and precision: binary doubles back
 // exactly, floats as the nearest float (in text, a decimal that rounds to

@@ -80,6 +80,13 @@ MeshMaskFrame ReadFrame(const std::string& folder, int frame) {
           ReadObj(folder + "/patient1_EPICARDIAL" + suffix)};
 }
 
+// biv-me patient 1's meshes at end-diastole (frame 0) and end-systole
+// (frame 9), voxelized with ACDC's labels.
+MeshMask BivMeMask() {
+  const std::string obj = SharedDataDirectory() + "/biv-me-patient1/obj";
+  return MakeMeshMask({ReadFrame(obj, 0), ReadFrame(obj, 9)}, LabelMap());
+}
+
 double Ef(double ed, double es) { return (ed - es) / ed; }
 
 // biv-me's meshes at end-diastole (frame 0) and end-systole (frame 9), as
@@ -88,11 +95,10 @@ double Ef(double ed, double es) { return (ed - es) / ed; }
 // the mass within 10 % of the voxels', the segments anchored by the RV, and
 // no slice taken for misaligned.
 TEST(MeshMaskTest, BivMeMeshesVoxelizedFitToTheirVolumes) {
-  const std::string shared = SharedDataDirectory();
-  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
-  const std::string obj = shared + "/biv-me-patient1/obj";
-  const MeshMask mask =
-      MakeMeshMask({ReadFrame(obj, 0), ReadFrame(obj, 9)}, LabelMap());
+  if (SharedDataDirectory().empty()) {
+    GTEST_SKIP() << "../shared/data is absent";
+  }
+  const MeshMask mask = BivMeMask();
   const MaskContours contours = ExtractMaskContours(mask.volume, LabelMap());
   EXPECT_TRUE(contours.misaligned.empty());
   const SequenceFit fit =
@@ -132,11 +138,10 @@ TEST(MeshMaskTest, BivMeMeshesVoxelizedFitToTheirVolumes) {
 // --segmentation DIR --labels acdc`: the fit, the labels in fit.json, the
 // report with its 3D view and slices.
 TEST(MeshMaskTest, CliFitsBivMeAsAnAcdcFolder) {
-  const std::string shared = SharedDataDirectory();
-  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
-  const std::string obj = shared + "/biv-me-patient1/obj";
-  const MeshMask mask =
-      MakeMeshMask({ReadFrame(obj, 0), ReadFrame(obj, 9)}, LabelMap());
+  if (SharedDataDirectory().empty()) {
+    GTEST_SKIP() << "../shared/data is absent";
+  }
+  const MeshMask mask = BivMeMask();
   const std::string dir = ScratchDirectory("out");
   const std::string patient = ScratchDirectory("patient001");
   WriteLabelVolume(mask.volume, patient + "/patient001_frame01_gt.nii.gz", 0,

@@ -43,6 +43,9 @@ inline Phantom MakeTestPhantom(int num_points, int num_frames) {
   return MakePhantom(options);
 }
 
+// The default phantom's frame 3: twisted, offset and contracted.
+inline Model TwistedTestModel() { return MakeTestPhantom(1, 5).truth[3]; }
+
 }  // namespace pfdm
 
 #endif  // PFDM_TESTING_TEST_MODELS_H_

@@ -10,16 +10,10 @@
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/initialization.h"
 #include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
-
-Model TruthModel() {
-  PhantomOptions options;
-  options.num_points = 1;
-  options.num_frames = 5;
-  return MakePhantom(options).truth[3];  // Twisted, offset, contracted.
-}
 
 // A phantom of num_points tags over 5 frames and frame t's positions.
 std::vector<Eigen::Vector3d> PhantomPositions(int num_points, int t,
@@ -36,7 +30,7 @@ std::vector<Eigen::Vector3d> PhantomPositions(int num_points, int t,
 }
 
 TEST(CorrespondenceTest, FindsTheMaterialPointOfPointsOffTheSurface) {
-  const Model model = TruthModel();
+  const Model model = TwistedTestModel();
   std::vector<Eigen::Vector3d> points;
   std::vector<MaterialPoint> expected;
   for (double u = -1.3; u < 0.5; u += 0.2) {
@@ -57,7 +51,7 @@ TEST(CorrespondenceTest, FindsTheMaterialPointOfPointsOffTheSurface) {
 }
 
 TEST(CorrespondenceTest, PointsNearTheApexFindTheirMeridian) {
-  const Model model = TruthModel();
+  const Model model = TwistedTestModel();
   for (double v : {-2.5, -0.4, 1.2, 2.9}) {
     const double u = -M_PI / 2 + 0.02;
     const Eigen::Vector3d point = model.WorldPoint(u, v);
@@ -71,7 +65,7 @@ TEST(CorrespondenceTest, PointsNearTheApexFindTheirMeridian) {
 }
 
 TEST(CorrespondenceTest, NormalIsUnitAndOrthogonalToTheSurface) {
-  const Model model = TruthModel();
+  const Model model = TwistedTestModel();
   for (double u : {-M_PI / 2, -1.0, 0.1, 0.5}) {  // Not at knots.
     const Eigen::Vector3d n = SurfaceNormal(model, u, 0.4);
     EXPECT_NEAR(n.norm(), 1.0, 1e-12);
@@ -90,7 +84,7 @@ TEST(CorrespondenceTest, NormalIsUnitAndOrthogonalToTheSurface) {
 
 // The batch gives SurfaceNormal and the model points, the pole included.
 TEST(CorrespondenceTest, SurfaceNormalsMatchTheOneAtATimeNormal) {
-  const Model model = TruthModel();
+  const Model model = TwistedTestModel();
   std::vector<MaterialPoint> material;
   for (double u : {-M_PI / 2, -1.0, 0.1, 0.5}) {
     for (double v : {-3.0, 0.4, 2.2}) material.push_back({u, v, 0.0});
@@ -111,7 +105,7 @@ TEST(CorrespondenceTest, SurfaceNormalsMatchTheOneAtATimeNormal) {
 // Sliding points below the rim get SurfaceNormal; the others, and a
 // sliding point on the rim, zero.
 TEST(CorrespondenceTest, SlidingNormalsAreThoseOfSlidingPointsBelowTheRim) {
-  const Model model = TruthModel();
+  const Model model = TwistedTestModel();
   const double u_max = model.config.u_max;
   const std::vector<MaterialPoint> material = {
       {-1.0, 0.4, 0.0}, {0.2, -2.0, 0.0}, {u_max, 1.0, 0.0}, {0.1, 3.0, 0.0}};

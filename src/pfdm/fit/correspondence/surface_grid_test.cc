@@ -4,22 +4,15 @@
 #include <random>
 
 #include "gtest/gtest.h"
-#include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
 
-Model TruthModel() {
-  PhantomOptions options;
-  options.num_points = 1;
-  options.num_frames = 5;
-  return MakePhantom(options).truth[3];  // Twisted, offset, contracted.
-}
-
 // The tree's nearest sample is the brute-force nearest of the grid's world
 // points, to the last bit of its distance.
 TEST(SurfaceGridTest, NearestSampleIsTheBruteForceNearest) {
-  const Model model = TruthModel();
+  const Model model = TwistedTestModel();
   const SurfaceGrid grid(model);
   const int samples = SurfaceGrid::kGridU * SurfaceGrid::kGridV;
   std::vector<MaterialPoint> all;
@@ -43,7 +36,7 @@ TEST(SurfaceGridTest, NearestSampleIsTheBruteForceNearest) {
 // A search from a grid shared between searches finds what a search that
 // builds its own finds, bit for bit, on the mid-wall and on a wall.
 TEST(SurfaceGridTest, SharedGridFindsTheSamePoints) {
-  Model model = TruthModel();
+  Model model = TwistedTestModel();
   const SurfaceGrid grid(model);
   std::mt19937 random(3);
   std::normal_distribution<double> noise(0.0, 1.5);
