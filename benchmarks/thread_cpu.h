@@ -30,9 +30,10 @@ constexpr double kIdleOthersCores = 0.1;
 struct CpuSnapshot {
   std::chrono::steady_clock::time_point when;
   std::map<int, double> thread_seconds;  // This process's threads, by tid.
-  // This process, its exited threads and its waited-for children (gnuplot)
-  // too.
-  double process_seconds = 0.0;
+  // This process, its exited threads included (/proc/self/stat).
+  double self_seconds = 0.0;
+  // Its waited-for children (gnuplot).
+  double children_seconds = 0.0;
   double machine_busy_seconds = 0.0;  // Every CPU, every process.
 };
 
@@ -71,9 +72,9 @@ inline CpuSnapshot TakeCpuSnapshot() {
   }
   rusage children{};
   getrusage(RUSAGE_CHILDREN, &children);
-  s.process_seconds = StatCpuSeconds(FirstLine("/proc/self/stat"));
+  s.self_seconds = StatCpuSeconds(FirstLine("/proc/self/stat"));
   for (const timeval& t : {children.ru_utime, children.ru_stime}) {
-    s.process_seconds += t.tv_sec + 1e-6 * t.tv_usec;
+    s.children_seconds += t.tv_sec + 1e-6 * t.tv_usec;
   }
   // "cpu  user nice system idle iowait irq softirq steal ...": busy is all
   // but idle and iowait.
@@ -88,10 +89,13 @@ inline CpuSnapshot TakeCpuSnapshot() {
   return s;
 }
 
-// Counters of the run since `start`: thread1_cpu_share and
-// thread2_cpu_share, the CPU the two busiest threads got over the wall
-// time (1: a whole core); process_cores, this process's CPU over the wall
-// time; others_cores, every other process's (the machine's busy time less
+// Counters of the run since `start`: thread1_cpu_share, the CPU the
+// busiest thread got over the wall time (1: a whole core);
+// thread2_cpu_share, what all of the process's other threads got, those
+// that exited before the run ended included (a solver's workers are
+// joined when its call returns, so they are gone from /proc/self/task by
+// then); process_cores, this process's CPU and its children's over the
+// wall time; others_cores, every other process's (the machine's busy time less
 // this process's); second_core_idle, 1 when others_cores was under
 // kIdleOthersCores.  Clock ticks are 10 ms: runs of a second or more.
 inline void CountThreadCpu(const CpuSnapshot& start, benchmark::State& state) {
@@ -107,11 +111,14 @@ inline void CountThreadCpu(const CpuSnapshot& start, benchmark::State& state) {
   }
   std::sort(threads.begin(), threads.end(), std::greater<double>());
   threads.resize(std::max<size_t>(threads.size(), 2), 0.0);
-  const double process = end.process_seconds - start.process_seconds;
+  const double self = end.self_seconds - start.self_seconds;
+  const double process =
+      self + end.children_seconds - start.children_seconds;
   const double others = std::max(
       0.0, end.machine_busy_seconds - start.machine_busy_seconds - process);
   state.counters["thread1_cpu_share"] = threads[0] / wall;
-  state.counters["thread2_cpu_share"] = threads[1] / wall;
+  state.counters["thread2_cpu_share"] =
+      std::max(threads[1], self - threads[0]) / wall;
   state.counters["process_cores"] = process / wall;
   state.counters["others_cores"] = others / wall;
   state.counters["second_core_idle"] = others / wall < kIdleOthersCores;

@@ -185,8 +185,9 @@ def speedup_table(document, prefix, time_counter):
                      verdict])
     if not rows:
         return ""
-    return ("\n\nTwo threads against one: the CPU the 2-thread run's two "
-            "busiest threads got (1 = a whole core), the cores' worth other "
+    return ("\n\nTwo threads against one: the CPU the 2-thread run's "
+            "busiest thread got and what its other threads got together, "
+            "exited ones included (1 = a whole core), the cores' worth other "
             "processes used during each run (from /proc/stat less the "
             "benchmark's own CPU), and the speed-up only where both runs "
             "had other processes under %.1f core:\n\n" % IDLE_OTHERS_CORES +
