@@ -69,7 +69,7 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         contours=("lv-cavity",), base_plane="auto", rv_insertion=None,
         model="paper", knots=17, wall="auto", surface="auto", ed_frame=0,
         smoothness=1.0, prior=0.001, untracked_prior=0.01,
-        temporal_prior=0.0, loss="none", loss_scale="auto", threads=1,
+        temporal_prior=0.05, loss="none", loss_scale="auto", threads=1,
         apex=None, base=None, solver="direct",
         linear_solver="SPARSE_NORMAL_CHOLESKY", time_step=0.0,
         rest_tolerance=1e-6, max_steps=20000, damping="jacobi",
@@ -121,8 +121,10 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
     untracked_prior : float
         Frames without tracked points (contours): pull toward frame 0.
     temporal_prior : float
-        Frames without tracked points: pull toward the previous frame (0.05
-        settles every frame of biv-me's patient 1; docs/contour_sequences.md).
+        Frames without tracked points, in sequences of 20 frames or more:
+        pull toward the previous frame (the default settles every frame of
+        biv-me's patient 1 and keeps its strain curves smooth; 0: off;
+        docs/contour_sequences.md).
     loss : {"none", "huber", "cauchy"}
         Robust loss on each point's distance.
     loss_scale : "auto" or float

@@ -89,6 +89,17 @@ void ReportSegmentation(const Segmentation& s) {
   }
 }
 
+// The contours the reader left out (io/partial_rings.h), one line each.
+void ReportLeftOut(const PointSequence& points) {
+  for (const LeftOutContour& c : points.left_out) {
+    std::printf(
+        "left out: frame %d: %s (%d points covering %.0f of 360 degrees "
+        "seen from the axis: a basal short-axis contour beside the axis, "
+        "not round it)\n",
+        c.frame, c.contour.c_str(), c.points, c.coverage_deg);
+  }
+}
+
 // The points of --points, or the contours of --segmentation (its RV
 // insertion then in *segmentation).
 PointSequence InputPoints(std::optional<Segmentation>* segmentation) {
@@ -125,6 +136,7 @@ int RunFit() {
                                       : FLAGS_segmentation);
   std::optional<Segmentation> segmentation;
   const PointSequence points = InputPoints(&segmentation);
+  ReportLeftOut(points);
   CheckOptionsAgainstPoints(options, points);
   const std::vector<BasePlane> planes = BasePlanesFromFlags(FLAGS_points);
   // The settings (fit.json) stay the user's; fit.json's model says where

@@ -48,9 +48,9 @@ DEFINE_double(untracked_prior, kDefaults.untracked_prior,
               "frames without tracked points (contours): pull toward frame "
               "0, same units, 0 to 1e6");
 DEFINE_double(temporal_prior, kDefaults.temporal_prior,
-              "frames without tracked points: pull toward the previous "
-              "frame too, same units, 0 (off) to 1e6; 0.05 settles biv-me's "
-              "contours");
+              "frames without tracked points, in sequences of 20 frames or "
+              "more: pull toward the previous frame too, same units, 0 (off) "
+              "to 1e6 (docs/contour_sequences.md)");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
 DEFINE_string(loss_scale, kDefaults.loss_scale.c_str(),
               "--loss huber or cauchy: the loss's scale, auto (per frame, "

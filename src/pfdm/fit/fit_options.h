@@ -71,8 +71,8 @@ struct FitOptions {
   // frame 0's at the end of the cycle; 0.001 leaves them 4-25 % off).
   double untracked_prior_weight = 0.01;
   // And toward the frame before, with this weight (fit/stages/
-  // temporal_prior.h says what 0.05 does); 0: off.
-  double temporal_prior_weight = 0.0;
+  // temporal_prior.h says what it does); 0: off.
+  double temporal_prior_weight = 0.05;
   // "none", "huber" or "cauchy" (fit/residuals/robust_loss.h).  Its scale
   // is measured by the fit (fit/stages/loss_scale.h, recorded in
   // SequenceFit::loss_scale_mm) unless loss_scale_auto is false; then it is

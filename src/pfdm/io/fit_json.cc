@@ -153,6 +153,7 @@ json ModelSection(const SequenceFit& fit, const FitAnalysis& analysis) {
           {"wall_reason", fit.wall_reason},
           {"tag_noise_mm", fit.tag_noise_mm},
           {"axis_source", fit.axis_source},
+          {"temporal_prior_weight_used", fit.temporal_prior_weight},
           {"apex_in_data", fit.apex_in_data},
           {"apex_data_distance_fraction", fit.apex_data_distance},
           {"lowest_data_height_fraction", fit.lowest_data_height},
@@ -404,6 +405,16 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   if (!not_measured.is_null()) document["not_measured"] = not_measured;
   if (analysis.segmentation) {
     document["segmentation"] = SegmentationJson(*analysis.segmentation);
+  }
+  for (const LeftOutContour& c : points.left_out) {
+    document["left_out_contours"].push_back(
+        {{"frame", c.frame},
+         {"contour", c.contour},
+         {"points", c.points},
+         {"coverage_deg", c.coverage_deg},
+         {"why",
+          "a basal short-axis contour beside the axis, not round it: the "
+          "outflow tract"}});
   }
   document[cavity ? "ejection_fraction"
                   : analysis.volume_surface + "_volume_fraction"] =

@@ -18,6 +18,7 @@
 #include "libfccp/csv.h"
 #include "pfdm/io/frame_times.h"
 #include "pfdm/io/gp_file_header.h"
+#include "pfdm/io/partial_rings.h"
 #include "pfdm/io/point_file_mistakes.h"
 #include "pfdm/io/point_spread.h"
 #include "pfdm/util/error.h"
@@ -336,6 +337,7 @@ void CheckWeight(const std::string& file, unsigned line, const char* text) {
 struct GpFilePoints {
   std::vector<DataPoint> points;  // The kept rows'.
   std::vector<unsigned> lines;
+  std::vector<std::string> contours;  // "TYPE SLICE", per kept point.
 };
 
 // One file's rows of the kept contour types, numbered from *next_id on;
@@ -376,6 +378,8 @@ GpFilePoints ReadGpFile(const std::string& file,
       if (!keep.empty() && keep.count(type) == 0) continue;
       kept.points.push_back({(*next_id)++, position, ContourLayer(type)});
       kept.lines.push_back(line);
+      kept.contours.push_back(std::string(type) + " " +
+                              (slice != nullptr ? slice : ""));
     }
   } catch (const io::error::base& error) {
     throw Restate(file, error);
@@ -410,10 +414,13 @@ PointSequence ReadGpFiles(const std::string& path,
   const std::set<std::string> keep(contour_types.begin(), contour_types.end());
   std::map<long long, std::vector<DataPoint>> frames;
   std::int64_t next_id = 0;
+  std::vector<LeftOutContour> left_out;
   for (size_t index = 0; index < files.size(); ++index) {
     GpFilePoints kept = ReadGpFile(files[index], keep, &next_id);
     CheckPointsLieTogether(files[index], static_cast<int>(index), kept.points,
                            kept.lines);
+    LeaveOutPartialRings(static_cast<int>(index), kept.contours, &kept.points,
+                         &left_out);
     frames[index] = std::move(kept.points);
   }
   // A filter that matches nothing anywhere is a wrong type name, not a
@@ -436,6 +443,7 @@ PointSequence ReadGpFiles(const std::string& path,
   }
   PointSequence sequence = Assemble(path, std::move(frames));
   sequence.contour_types = contour_types;
+  sequence.left_out = std::move(left_out);
   return sequence;
 }
 

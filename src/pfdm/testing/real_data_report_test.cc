@@ -87,12 +87,19 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
               last.radial_contraction_percent);
   EXPECT_NEAR(last.longitudinal_shortening_percent, 0.0, 3.0);
   EXPECT_NEAR(last.radial_contraction_percent, 0.0, 3.0);
+  // The top two knots, above the basal short-axis contours, are seen by
+  // three long-axis contours and two aortic valve points: with the pull
+  // toward the previous frame (the default) their cross-section closes
+  // within 11-14 % (0.885 and 1.144 at knot 16; 5-7 % without the pull),
+  // the bending b2 within 3.8.
   for (size_t k = 1; k < last.radial_ratio_x.size(); ++k) {
-    EXPECT_NEAR(last.radial_ratio_x[k], 1.0, 0.1) << "knot " << k;
-    EXPECT_NEAR(last.radial_ratio_y[k], 1.0, 0.1) << "knot " << k;
+    const bool top = k + 2 >= last.radial_ratio_x.size();
+    EXPECT_NEAR(last.radial_ratio_x[k], 1.0, top ? 0.15 : 0.1) << "knot " << k;
+    EXPECT_NEAR(last.radial_ratio_y[k], 1.0, top ? 0.15 : 0.1) << "knot " << k;
     EXPECT_NEAR(last.longitudinal_ratio[k], 1.0, 0.05) << "knot " << k;
     EXPECT_LT(std::abs(fit.frames[24].state.knots[k][kB0]), 3.0) << k;
-    EXPECT_LT(std::abs(fit.frames[24].state.knots[k][kB2]), 3.0) << k;
+    EXPECT_LT(std::abs(fit.frames[24].state.knots[k][kB2]), top ? 4.0 : 3.0)
+        << k;
   }
   // The surface is nearly unbiased against the points: the mean signed
   // distance of the data along the surface normal is within 0.25 mm on
@@ -124,15 +131,17 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
 // frames, points still moving 0.06-5.31 mm: two poses about 1.3 degrees
 // and 1.7 mm apart swapped round after round (frame 11).  Rounds past the
 // tenth now mix the last rounds' solutions (round_acceleration.h), and the
-// local field's rounds are mixed: 3 frames of the outflow tract's
-// end-systole (9-11) still run out, by 0.09-0.89 mm, and the fit is no
-// worse (pooled RMS 0.775 mm against 0.791).
+// local field's rounds are mixed.  The rounds alone (no pull toward the
+// previous frame) leave 4 frames of the outflow tract's end-systole (8,
+// 10-12) out of rounds, by 0.10-0.14 mm, and the fit is no worse (pooled
+// RMS 0.764 mm against 0.791).
 TEST(RealDataReportTest, BivMeContourRoundsSettle) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
   const std::string gp = shared + "/biv-me-patient1/guidepoints";
   FitOptions options;
   AddLandmarkAxis(gp, &options);
+  options.temporal_prior_weight = 0.0;
   const SequenceFit fit =
       FitSequence(ReadGpFiles(gp, ExpandContourAlias("lv-cavity")),
                   ModelConfig::Paper(17), options);
@@ -147,34 +156,38 @@ TEST(RealDataReportTest, BivMeContourRoundsSettle) {
         "frame %2d  rounds %2d  unsettled %.2f mm  rms %.3f  %+5.1f %%\n", t,
         frame.correspondence_rounds, frame.unsettled_mm, frame.rms_mm,
         100 * deviation);
-    if (t < 9 || t > 11) EXPECT_EQ(frame.unsettled_mm, 0.0) << "frame " << t;
-    EXPECT_LT(frame.unsettled_mm, 1.0) << "frame " << t;
+    if (t < 8 || t > 12) EXPECT_EQ(frame.unsettled_mm, 0.0) << "frame " << t;
+    EXPECT_LT(frame.unsettled_mm, 0.5) << "frame " << t;
     squares += frame.rms_mm * frame.rms_mm * frame.residuals.size();
     points += static_cast<int>(frame.residuals.size());
   }
   EXPECT_LT(std::sqrt(squares / points), 0.7908);
 }
 
-// The same fit with --temporal_prior 0.05 (fit/stages/temporal_prior.h):
-// every frame settles, in fewer rounds than before they were mixed (170
-// against 228; 287 mixed), pooled RMS 0.781 mm.  The strain spikes shrink
-// (the largest, basal Ell at frame 13, from +14.0 to +9.3 points) but not
-// under issue 31's 3 points: at frame 13 a basal short-axis contour (slice
-// 2, 10 mm above the next) comes back, partial (31 points; 46-54 from
-// frame 14), after frames 7-12 where the 27 mm between slice 3 and the
-// annulus had only the three long-axis contours; the basal third's shape
-// there is what the data change, not jitter a pull toward the previous
-// frame could take out.
+// The same fit as `pfdm fit` makes it by default (issue 31): the pull
+// toward the previous frame (fit/stages/temporal_prior.h) and the two
+// outflow-tract rings left out (io/partial_rings.h: slice 2 at frames 6
+// and 13, which had collapsed frame 13's base into a slit and made basal
+// Ell jump by 14 points).  Every frame settles, in 166 rounds (228 before
+// the rounds were mixed), pooled RMS 0.769 mm, and no level's Ecc or Ell
+// departs from its neighbours' mean by 3 points (the largest: 2.6, apical
+// Ecc at frame 14).
 TEST(RealDataReportTest, BivMeTemporalPriorSettlesEveryFrame) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
   const std::string gp = shared + "/biv-me-patient1/guidepoints";
   FitOptions options;
   AddLandmarkAxis(gp, &options);
-  options.temporal_prior_weight = kSuggestedTemporalPriorWeight;
+  const PointSequence contours =
+      ReadGpFiles(gp, ExpandContourAlias("lv-cavity"));
+  ASSERT_EQ(contours.left_out.size(), 2u);
+  EXPECT_EQ(contours.left_out[0].frame, 6);
+  EXPECT_EQ(contours.left_out[1].frame, 13);
+  EXPECT_EQ(contours.left_out[1].contour, "SAX_LV_ENDOCARDIAL 2");
+  EXPECT_EQ(contours.left_out[1].points, 31);
   const SequenceFit fit =
-      FitSequence(ReadGpFiles(gp, ExpandContourAlias("lv-cavity")),
-                  ModelConfig::Paper(17), options);
+      FitSequence(contours, ModelConfig::Paper(17), options);
+  EXPECT_DOUBLE_EQ(fit.temporal_prior_weight, kSuggestedTemporalPriorWeight);
   const FitAnalysis analysis = AnalyzeFit(fit, MitralValvePlanes(gp));
   double squares = 0.0;
   int points = 0, rounds = 0;
@@ -190,9 +203,9 @@ TEST(RealDataReportTest, BivMeTemporalPriorSettlesEveryFrame) {
       "points (frame %d, level %d, %s)\n",
       rounds, std::sqrt(squares / points), spike.points, spike.frame,
       spike.level, spike.longitudinal ? "Ell" : "Ecc");
-  EXPECT_LT(rounds, 228);
+  EXPECT_LT(rounds, 190);
   EXPECT_LT(std::sqrt(squares / points), 0.7908);
-  EXPECT_LT(std::abs(spike.points), 10.0);
+  EXPECT_LT(std::abs(spike.points), 3.0);
 }
 
 // The same contours of both walls (lv-cavity,lv-epi: lv-endo with the

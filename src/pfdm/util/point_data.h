@@ -27,6 +27,15 @@ struct Frame {
   std::vector<DataPoint> points;
 };
 
+// A contour the reader left out of the fit: a short-axis contour that does
+// not go round the cavity (io/partial_rings.h).
+struct LeftOutContour {
+  int frame = 0;
+  std::string contour;  // "SAX_LV_ENDOCARDIAL 2": the type and slice.
+  int points = 0;
+  double coverage_deg = 0.0;  // 360 less its widest gap about the axis.
+};
+
 struct PointSequence {
   std::string source;         // File or folder the points came from.
   std::vector<Frame> frames;  // frames[i].index == i.
@@ -36,6 +45,8 @@ struct PointSequence {
   // Per frame, its time from the trigger (ms) when the input gives one (a
   // time_ms column); empty otherwise.
   std::vector<double> time_ms;
+  // Guide points: the contours left out, in frame order.
+  std::vector<LeftOutContour> left_out;
 };
 
 }  // namespace pfdm

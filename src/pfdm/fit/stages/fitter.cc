@@ -7,12 +7,17 @@
 #include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/fit/stages/loss_scale.h"
 #include "pfdm/fit/stages/start.h"
+#include "pfdm/fit/stages/temporal_prior.h"
 #include "pfdm/fit/stages/wall_stage.h"
 
 namespace pfdm {
 
 SequenceFit FitSequence(const PointSequence& sequence,
-                        const ModelConfig& config, const FitOptions& options) {
+                        const ModelConfig& config,
+                        const FitOptions& given_options) {
+  FitOptions options = given_options;
+  options.temporal_prior_weight = TemporalPriorWeightFor(
+      static_cast<int>(sequence.frames.size()), given_options);
   SequenceStart start = StartSequence(sequence, config, options);
   CheckInterrupt(options.solver);
   CarriedState carried(start.model);
@@ -28,6 +33,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
   result.axis_source = start.axis_source;
   result.ed_frame = options.ed_frame;
   result.time_ms = sequence.time_ms;
+  result.left_out = sequence.left_out;
+  result.temporal_prior_weight = options.temporal_prior_weight;
   result.surface =
       result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;
   if (result.config.Solid() && start.has_tags) {

@@ -119,7 +119,8 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   fit.kind = points.kind;
   fit.tracked = HasTrackedPoints(points);
   const FramePrior frame_prior = PriorOfFrame(
-      points.kind, carried->reference, carried->previous, sequence_options);
+      points.kind, carried->reference, carried->previous,
+      /*previous_is_reference=*/carried->frames_fitted <= 1, sequence_options);
   const ModelState& prior = frame_prior.state;
   const FitOptions& options = frame_prior.options;
   CheckInterrupt(options.solver);
@@ -141,6 +142,7 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   fit.solve_seconds = SecondsSince(start);
   carried->previous = model.state;
   if (reference) carried->reference = model.state;
+  ++carried->frames_fitted;
   return fit;
 }
 

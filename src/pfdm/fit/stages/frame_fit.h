@@ -26,6 +26,7 @@ struct CarriedState {
   // pose.
   ModelState previous;
   ModelState reference;
+  int frames_fitted = 0;  // Before the frame being fitted.
   TrackedMaterial tracked_material;
   // Frame 0's robust loss scale (0 without a loss), for the band of a
   // solid's ranks in every frame (RankBandMm).

@@ -119,6 +119,12 @@ struct SequenceFit {
   // empty.
   int ed_frame = 0;
   std::vector<double> time_ms;
+  // The pull toward the previous frame the frames without tracked points
+  // were fitted with (fit/stages/temporal_prior.h: 0 for a sequence of
+  // fewer than kTemporalPriorMinFrames).
+  double temporal_prior_weight = 0.0;
+  // The contours the reader left out (PointSequence::left_out).
+  std::vector<LeftOutContour> left_out;
   std::vector<FrameFit> frames;
   Model ModelAt(int frame) const { return {config, frames[frame].state}; }
 };

@@ -4,12 +4,18 @@
 
 namespace pfdm {
 
+double TemporalPriorWeightFor(int num_frames, const FitOptions& options) {
+  return num_frames >= kTemporalPriorMinFrames ? options.temporal_prior_weight
+                                               : 0.0;
+}
+
 FramePrior PriorOfFrame(FrameKind kind, const ModelState& reference,
-                        const ModelState& previous, const FitOptions& options) {
+                        const ModelState& previous, bool previous_is_reference,
+                        const FitOptions& options) {
   if (kind != FrameKind::kUntracked) return {previous, options};
   const double w0 = options.untracked_prior_weight;
   const double w1 = options.temporal_prior_weight;
-  if (w1 <= 0.0) return {reference, options};
+  if (w1 <= 0.0 || previous_is_reference) return {reference, options};
   CHECK_EQ(reference.knots.size(), previous.knots.size());
   FramePrior prior{reference, options};
   prior.options.untracked_prior_weight = w0 + w1;

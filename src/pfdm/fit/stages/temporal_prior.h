@@ -22,24 +22,34 @@
 namespace pfdm {
 
 // A pull toward the previous frame (FitOptions::temporal_prior_weight,
-// --temporal_prior), relative to one knot's share of the data as the other
-// priors' weights (untracked_prior_weight, 0.01).  On biv-me patient 1's
-// contours (pfdm fit --contours lv-cavity, 25 frames) 0.05 ends the rounds
-// of every frame settled (3 frames ran out without it; 0.03 leaves one at
-// 0.10 mm) in 170 rounds and 574 solver iterations (287 and 1,194 without;
-// 228 and 924 before the rounds were mixed), pooled RMS 0.781 mm (0.775),
-// and the largest level strain spike is 9.3 points (14.0).  A stronger pull
-// lags the motion: on the LV phantom's 9-frame cycle seen as short-axis
-// contours (testing/lv_temporal_prior_test.cc) 0.05 moves end-systole's
-// radial contraction by -0.8 points and longitudinal shortening by -1.4;
-// 0.1 by -1.7 and -3.1, while biv-me's spike still read 8.5 (1.0: 8.5,
-// RMS 0.91 mm).  Off by default: at frame 1 the previous frame is frame 0,
-// so the pull only pulls harder toward frame 0, and a moving phantom's
-// contours (FitterTest) then took 15 rounds at 0.02 and 20 at 0.05 where
-// they settle in under 10; and without the landmarks' axis (the
-// library's default options) biv-me's frame 24 no longer came back to frame 0's
-// basal radii within 10 % (0.89 and 1.14 at the base knot).
+// --temporal_prior, 0.05 by default), relative to one knot's share of the
+// data as the other priors' weights (untracked_prior_weight, 0.01).  On
+// biv-me patient 1's contours (pfdm fit --contours lv-cavity, 25 frames,
+// the outflow-tract rings left out: io/partial_rings.h) it ends the rounds
+// of every frame settled (4 frames ran out by 0.10-0.14 mm without it) in
+// 163-166 rounds (274 without), pooled RMS 0.76-0.77 mm, and no level's
+// Ecc or Ell departs from its neighbours' mean by 3 points (4.9 without).
+// A stronger pull lags the motion: on the LV phantom's 9-frame cycle seen
+// as short-axis contours 0.05 moved end-systole's radial contraction by
+// -0.8 points and longitudinal shortening by -1.4, 0.1 by -1.7 and -3.1
+// (docs/contour_sequences.md).  Without the landmarks' axis (the library's
+// default options) biv-me's frame 24 comes back to frame 0's radii at the
+// top knot within 11-14 % (5-7 % without the pull).
 inline constexpr double kSuggestedTemporalPriorWeight = 0.05;
+
+// The pull assumes a frame lies close to the one before, as a cine's 20-30
+// frames a cycle do.  A sequence of fewer frames moves further between
+// them, and the pull lags: on the LV phantom's 9-frame cycle as contours
+// it read end-systole's longitudinal shortening 13.6 % against 17.0 true
+// (3.4 points under; 0.9 under without it), and a 10-frame mask phantom's
+// end-systolic cavity 5.7 % over its voxels.  Shorter sequences are
+// fitted without it (SequenceFit::temporal_prior_weight records what was
+// used).
+inline constexpr int kTemporalPriorMinFrames = 20;
+
+// options.temporal_prior_weight for a sequence of `num_frames`, 0 below
+// kTemporalPriorMinFrames.
+double TemporalPriorWeightFor(int num_frames, const FitOptions& options);
 
 struct FramePrior {
   ModelState state;  // The target; its pose is not pulled.
@@ -50,9 +60,15 @@ struct FramePrior {
 
 // Tracked and reference frames: `previous` with the options as they are.
 // Untracked frames: frame 0's state (`reference`), mixed with `previous`
-// by options.temporal_prior_weight (above; 0: frame 0's alone).
+// by options.temporal_prior_weight (above; 0: frame 0's alone).  The
+// frame after frame 0 (previous_is_reference) keeps frame 0's pull alone:
+// its previous frame is frame 0, so the temporal weight would only make
+// that pull stronger, and a moving phantom's contours then took 15-20
+// rounds at frame 1 where they settle in under 10
+// (FitterTest.FramesSayWhenTheirClosestPointsHaveNotSettled).
 FramePrior PriorOfFrame(FrameKind kind, const ModelState& reference,
-                        const ModelState& previous, const FitOptions& options);
+                        const ModelState& previous, bool previous_is_reference,
+                        const FitOptions& options);
 
 }  // namespace pfdm
 

@@ -21,7 +21,7 @@ TEST(TemporalPriorTest, UntrackedFramesMixFrameZeroAndThePreviousFrame) {
   options.untracked_prior_weight = 0.01;
   options.temporal_prior_weight = 0.03;
   const FramePrior prior = PriorOfFrame(FrameKind::kUntracked, StateOf(2.0, 3),
-                                        StateOf(6.0, 3), options);
+                                        StateOf(6.0, 3), false, options);
   EXPECT_DOUBLE_EQ(prior.options.untracked_prior_weight, 0.04);
   for (double g : prior.state.globals) EXPECT_DOUBLE_EQ(g, 5.0);
   ASSERT_EQ(prior.state.knots.size(), 3u);
@@ -38,7 +38,7 @@ TEST(TemporalPriorTest, OneMixedPullEqualsTheTwoPulls) {
   options.untracked_prior_weight = w0;
   options.temporal_prior_weight = w1;
   const FramePrior prior = PriorOfFrame(FrameKind::kUntracked, StateOf(a, 2),
-                                        StateOf(b, 2), options);
+                                        StateOf(b, 2), false, options);
   const double m = prior.state.knots[0][0];
   const double w = prior.options.untracked_prior_weight;
   for (double x : {-2.0, 0.0, 0.7, 5.0}) {
@@ -54,17 +54,35 @@ TEST(TemporalPriorTest, OtherFramesAndNoWeightKeepTheirPriors) {
   options.temporal_prior_weight = 0.05;
   const ModelState reference = StateOf(1.0, 2), previous = StateOf(3.0, 2);
   for (FrameKind kind : {FrameKind::kReference, FrameKind::kTracked}) {
-    const FramePrior prior = PriorOfFrame(kind, reference, previous, options);
+    const FramePrior prior =
+        PriorOfFrame(kind, reference, previous, false, options);
     EXPECT_DOUBLE_EQ(prior.state.knots[1][0], 3.0);
     EXPECT_DOUBLE_EQ(prior.options.untracked_prior_weight,
                      options.untracked_prior_weight);
   }
-  options.temporal_prior_weight = 0.0;  // The default.
+  // The frame after frame 0: its previous frame is frame 0.
+  const FramePrior second =
+      PriorOfFrame(FrameKind::kUntracked, reference, reference, true, options);
+  EXPECT_DOUBLE_EQ(second.state.knots[1][0], 1.0);
+  EXPECT_DOUBLE_EQ(second.options.untracked_prior_weight,
+                   options.untracked_prior_weight);
+  options.temporal_prior_weight = 0.0;  // Off.
   const FramePrior none =
-      PriorOfFrame(FrameKind::kUntracked, reference, previous, options);
+      PriorOfFrame(FrameKind::kUntracked, reference, previous, false, options);
   EXPECT_DOUBLE_EQ(none.state.knots[1][0], 1.0);
   EXPECT_DOUBLE_EQ(none.options.untracked_prior_weight,
                    options.untracked_prior_weight);
+}
+
+// By default, sequences of a cine's length; shorter ones not at all.
+TEST(TemporalPriorTest, CineLengthSequencesArePulledByDefault) {
+  const FitOptions options;
+  EXPECT_DOUBLE_EQ(options.temporal_prior_weight,
+                   kSuggestedTemporalPriorWeight);
+  EXPECT_DOUBLE_EQ(TemporalPriorWeightFor(25, options), 0.05);
+  EXPECT_DOUBLE_EQ(TemporalPriorWeightFor(20, options), 0.05);
+  EXPECT_DOUBLE_EQ(TemporalPriorWeightFor(19, options), 0.0);
+  EXPECT_DOUBLE_EQ(TemporalPriorWeightFor(9, options), 0.0);
 }
 
 }  // namespace
