@@ -94,8 +94,8 @@ void ReportLeftOut(const PointSequence& points) {
   for (const LeftOutContour& c : points.left_out) {
     std::printf(
         "left out: frame %d: %s (%d points covering %.0f of 360 degrees "
-        "seen from the axis: a basal short-axis contour beside the axis, "
-        "not round it)\n",
+        "seen from the axis: its slice holds the outflow tract, beside the "
+        "axis, not the ventricle round it)\n",
         c.frame, c.contour.c_str(), c.points, c.coverage_deg);
   }
 }

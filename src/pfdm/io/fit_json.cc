@@ -413,8 +413,8 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
          {"points", c.points},
          {"coverage_deg", c.coverage_deg},
          {"why",
-          "a basal short-axis contour beside the axis, not round it: the "
-          "outflow tract"}});
+          "its slice holds the outflow tract, beside the axis, not the "
+          "ventricle round it"}});
   }
   document[cavity ? "ejection_fraction"
                   : analysis.volume_surface + "_volume_fraction"] =

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "Eigen/Geometry"
 #include "Eigen/QR"
@@ -70,6 +71,38 @@ std::vector<RingCircle> RingsFromApex(
   return circles;
 }
 
+// A type's most basal ring, where the line through the other rings'
+// centres crosses its plane, and whether it lies beside that line.
+struct BasalRing {
+  std::string contour;
+  Eigen::Vector3d through = Eigen::Vector3d::Zero();
+  bool beside_axis = false;
+};
+BasalRing JudgeBasalRing(
+    const std::map<std::string, std::vector<Eigen::Vector3d>>& rings) {
+  const std::vector<RingCircle> stack = RingsFromApex(rings);
+  if (stack.empty()) return {};
+  const RingCircle& base = stack.back();
+  std::vector<Eigen::Vector3d> axis_centres;
+  for (size_t k = 0; k + 1 < stack.size(); ++k) {
+    axis_centres.push_back(stack[k].centre);
+  }
+  const Line axis = FitLine(axis_centres);
+  const Eigen::Vector3d normal = base.e1.cross(base.e2);
+  const double along =
+      (base.centre - axis.point).dot(normal) / axis.direction.dot(normal);
+  BasalRing basal{base.contour, axis.point + along * axis.direction, false};
+  const double gap = LargestGapDeg(rings.at(base.contour), base, basal.through);
+  const double off_axis = (basal.through - base.centre).norm() / base.radius;
+  basal.beside_axis = gap > kPartialRingGapDeg && off_axis > kBesideAxisRadii;
+  return basal;
+}
+
+std::string SliceOf(const std::string& contour) {
+  const size_t space = contour.find(' ');
+  return space == std::string::npos ? "" : contour.substr(space + 1);
+}
+
 }  // namespace
 
 RingCircle FitRingCircle(const std::vector<Eigen::Vector3d>& ring) {
@@ -120,35 +153,31 @@ void LeaveOutPartialRings(int frame, const std::vector<std::string>& contours,
           (*points)[i].position);
     }
   }
-  std::vector<std::string> dropped;
+  // The slices whose basal ring of some type lies beside the axis, and
+  // where the axis crosses them.
+  std::map<std::string, Eigen::Vector3d> slices;
   for (const auto& [type, rings] : rings_per_type) {
-    const std::vector<RingCircle> stack = RingsFromApex(rings);
-    if (stack.empty()) continue;
-    const RingCircle& base = stack.back();
-    std::vector<Eigen::Vector3d> axis_centres;
-    for (size_t k = 0; k + 1 < stack.size(); ++k) {
-      axis_centres.push_back(stack[k].centre);
-    }
-    const Line axis = FitLine(axis_centres);
-    const Eigen::Vector3d normal = base.e1.cross(base.e2);
-    const double along =
-        (base.centre - axis.point).dot(normal) / axis.direction.dot(normal);
-    const Eigen::Vector3d through = axis.point + along * axis.direction;
-    const std::vector<Eigen::Vector3d>& ring = rings.at(base.contour);
-    const double gap = LargestGapDeg(ring, base, through);
-    const double off_axis = (through - base.centre).norm() / base.radius;
-    if (!(gap > kPartialRingGapDeg && off_axis > kBesideAxisRadii)) continue;
-    dropped.push_back(base.contour);
-    left_out->push_back(
-        {frame, base.contour, static_cast<int>(ring.size()), 360.0 - gap});
+    const BasalRing basal = JudgeBasalRing(rings);
+    if (basal.beside_axis) slices[SliceOf(basal.contour)] = basal.through;
   }
-  if (dropped.empty()) return;
+  if (slices.empty()) return;
+  std::set<std::string> dropped;
+  for (const auto& [type, rings] : rings_per_type) {
+    for (const auto& [contour, ring] : rings) {
+      const auto slice = slices.find(SliceOf(contour));
+      if (slice == slices.end()) continue;
+      dropped.insert(contour);
+      const double gap =
+          ring.size() < 3
+              ? 360.0
+              : LargestGapDeg(ring, FitRingCircle(ring), slice->second);
+      left_out->push_back(
+          {frame, contour, static_cast<int>(ring.size()), 360.0 - gap});
+    }
+  }
   std::vector<DataPoint> kept;
   for (size_t i = 0; i < points->size(); ++i) {
-    if (std::find(dropped.begin(), dropped.end(), contours[i]) ==
-        dropped.end()) {
-      kept.push_back((*points)[i]);
-    }
+    if (dropped.count(contours[i]) == 0) kept.push_back((*points)[i]);
   }
   *points = std::move(kept);
 }

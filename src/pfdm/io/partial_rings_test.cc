@@ -81,6 +81,22 @@ TEST(PartialRingsTest, OutflowTractRingBesideTheAxisIsLeftOut) {
   EXPECT_EQ(stack.points.size(), before - 25);
 }
 
+// The slice's epicardial arc round the axis goes with it: the plane holds
+// the outflow tract.
+TEST(PartialRingsTest, TheSlicesOtherContoursGoWithIt) {
+  Stack stack = VentricleWithTop(20.0, 14.0, 2 * kPi * 0.97);
+  stack.Add("SAX_LV_EPICARDIAL 2", Arc(0, 0, 30, 32.0, 0, 4.0, 30));
+  stack.Add("SAX_LV_EPICARDIAL 3", Arc(0, 0, 20, 33.0, 0, 4.0, 30));
+  std::vector<LeftOutContour> left_out;
+  LeaveOutPartialRings(6, stack.contours, &stack.points, &left_out);
+  ASSERT_EQ(left_out.size(), 2u);
+  EXPECT_EQ(left_out[0].contour, "SAX_LV_ENDOCARDIAL 2");
+  EXPECT_EQ(left_out[1].contour, "SAX_LV_EPICARDIAL 2");
+  // The arc spans 4 radians about the axis.
+  EXPECT_NEAR(left_out[1].coverage_deg, 4.0 * 180.0 / kPi, 1.0);
+  EXPECT_EQ(stack.points.size(), 130u + 30u);
+}
+
 TEST(PartialRingsTest, RingsAndArcsRoundTheAxisAreKept) {
   std::vector<LeftOutContour> left_out;
   // A full basal ring a third of its radius off the axis (biv-me's basal

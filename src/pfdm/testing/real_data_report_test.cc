@@ -254,10 +254,11 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
                 0.10 * analysis.clinical[0].myocardial_volume_ml)
         << "frame " << t;
     // The material myocardium (material_myocardium.h) drifts beyond issue
-    // 32's 5 %: +6.0 % at ES (frame 9), +11.1 % at frame 13, where the
-    // cavity reads 10 % under the meshes (docs/accuracy.md).  The bound is
+    // 32's 5 %: +5.6 % at ES (frame 9), +7.5 % at frames 10-11, where the
+    // cavity reads 10 % under the meshes (docs/accuracy.md; +11.1 % at
+    // frame 13 before its outflow-tract slice was left out).  The bound is
     // the measured worst, so that it cannot grow unseen.
-    EXPECT_NEAR(c.myocardial_volume_change_percent, 0.0, 12.0) << "frame " << t;
+    EXPECT_NEAR(c.myocardial_volume_change_percent, 0.0, 8.0) << "frame " << t;
   }
   const double mass = analysis.clinical[0].lv_mass_g;
   std::printf(
@@ -269,6 +270,10 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
   EXPECT_LT(mass, 250.0);
   EXPECT_GT(analysis.clinical[0].wall_thickness_mm, 5.0);
   EXPECT_LT(analysis.clinical[0].wall_thickness_mm, 15.0);
+  // Issue 31 with both walls: the outflow-tract slices left out with their
+  // epicardial arcs (io/partial_rings.h), no level's Ecc or Ell departs
+  // from its neighbours' mean by 3 points (2.7, apical Ecc at frame 14).
+  EXPECT_LT(std::abs(LargestStrainSpike(analysis.strain).points), 3.0);
 }
 
 // The same patient's meshes as tracked material points (vertex index = id).
