@@ -1,0 +1,232 @@
+#include "pfdm/fit/problem/local_direct.h"
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "Eigen/Cholesky"
+#include "Eigen/SparseCholesky"
+#include "pfdm/util/stopwatch.h"
+
+namespace pfdm {
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+// Nodal values, a node's (x, y, z) per row, as LocalField keeps them.
+using NodeMatrix = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+// U's rows of one coordinate: a node per row, two columns per ring.
+using RingColumns = std::array<Eigen::MatrixXd, 3>;
+
+double Weight(const LocalDirectData& data, size_t i) {
+  return data.weights.empty() ? 1.0 : data.weights[i];
+}
+
+// Everything K is made of, in order: equal signatures, equal K.
+std::vector<double> Signature(const LocalDirectData& data,
+                              const LocalRegularizer& regularizer,
+                              int num_nodes) {
+  std::vector<double> signature = {static_cast<double>(num_nodes)};
+  auto put = [&signature](double weight, int count, const int* nodes,
+                          const double* coefficients) {
+    signature.push_back(weight);
+    signature.push_back(count);
+    signature.insert(signature.end(), nodes, nodes + count);
+    if (coefficients != nullptr) {
+      signature.insert(signature.end(), coefficients, coefficients + count);
+    }
+  };
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    put(Weight(data, i), shape.count, shape.node.data(), shape.weight.data());
+  }
+  for (const NodeDifference& term : regularizer.differences) {
+    put(term.sqrt_weight, static_cast<int>(term.nodes.size()),
+        term.nodes.data(), term.coefficients.data());
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    put(ring.scale, static_cast<int>(ring.nodes.size()), ring.nodes.data(),
+        nullptr);
+  }
+  return signature;
+}
+
+// K: each term's scalar rows' outer products, summed.
+SparseMatrix ScalarMatrix(const LocalDirectData& data,
+                          const LocalRegularizer& regularizer, int num_nodes) {
+  std::vector<Eigen::Triplet<double>> entries;
+  auto add = [&entries](double weight, int count, const int* nodes,
+                        const double* coefficients) {
+    for (int a = 0; a < count; ++a) {
+      for (int b = 0; b < count; ++b) {
+        const double ca = coefficients == nullptr ? 1.0 : coefficients[a];
+        const double cb = coefficients == nullptr ? 1.0 : coefficients[b];
+        entries.emplace_back(nodes[a], nodes[b], weight * ca * cb);
+      }
+    }
+  };
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    add(Weight(data, i), shape.count, shape.node.data(), shape.weight.data());
+  }
+  for (const NodeDifference& term : regularizer.differences) {
+    add(term.sqrt_weight * term.sqrt_weight,
+        static_cast<int>(term.nodes.size()), term.nodes.data(),
+        term.coefficients.data());
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    add(ring.scale * ring.scale, static_cast<int>(ring.nodes.size()),
+        ring.nodes.data(), nullptr);
+  }
+  SparseMatrix k(num_nodes, num_nodes);
+  k.setFromTriplets(entries.begin(), entries.end());
+  return k;
+}
+
+RingColumns MakeRingColumns(const LocalRegularizer& regularizer,
+                            int num_nodes) {
+  const int columns = 2 * static_cast<int>(regularizer.rings.size());
+  RingColumns u;
+  for (Eigen::MatrixXd& rows : u)
+    rows = Eigen::MatrixXd::Zero(num_nodes, columns);
+  for (size_t j = 0; j < regularizer.rings.size(); ++j) {
+    const RingMean& ring = regularizer.rings[j];
+    for (size_t k = 0; k < ring.nodes.size(); ++k) {
+      for (int c = 0; c < 3; ++c) {
+        u[c](ring.nodes[k], 2 * j) = ring.scale * ring.radial[k][c];
+        u[c](ring.nodes[k], 2 * j + 1) = ring.scale * ring.tangential[k][c];
+      }
+    }
+  }
+  return u;
+}
+
+// b = -sum_i w_i S_i^T e_i, a node per row.
+NodeMatrix RightHandSide(const LocalDirectData& data, int num_nodes) {
+  NodeMatrix b = NodeMatrix::Zero(num_nodes, 3);
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    const Eigen::RowVector3d pull =
+        Weight(data, i) * data.offsets[i].transpose();
+    for (int k = 0; k < shape.count; ++k) {
+      b.row(shape.node[k]) -= shape.weight[k] * pull;
+    }
+  }
+  return b;
+}
+
+// 1/2 the sum of squared residuals at q, as Ceres counts the cost.
+double Cost(const LocalDirectData& data, const LocalRegularizer& regularizer,
+            const NodeMatrix& q) {
+  double sum = 0.0;
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    Eigen::RowVector3d r = data.offsets[i].transpose();
+    for (int k = 0; k < shape.count; ++k) {
+      r += shape.weight[k] * q.row(shape.node[k]);
+    }
+    sum += Weight(data, i) * r.squaredNorm();
+  }
+  for (const NodeDifference& term : regularizer.differences) {
+    Eigen::RowVector3d r = Eigen::RowVector3d::Zero();
+    for (size_t k = 0; k < term.nodes.size(); ++k) {
+      r += term.coefficients[k] * q.row(term.nodes[k]);
+    }
+    sum += term.sqrt_weight * term.sqrt_weight * r.squaredNorm();
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+    double radial = 0.0, tangential = 0.0;
+    for (size_t k = 0; k < ring.nodes.size(); ++k) {
+      mean += q.row(ring.nodes[k]);
+      radial += q.row(ring.nodes[k]).dot(ring.radial[k]);
+      tangential += q.row(ring.nodes[k]).dot(ring.tangential[k]);
+    }
+    sum += ring.scale * ring.scale *
+           (mean.squaredNorm() + radial * radial + tangential * tangential);
+  }
+  return 0.5 * sum;
+}
+
+// |A q - b|, the cost's gradient.
+double GradientNorm(const SparseMatrix& k, const RingColumns& u,
+                    const NodeMatrix& b, const NodeMatrix& q) {
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(u[0].cols());
+  for (int c = 0; c < 3; ++c) along += u[c].transpose() * q.col(c);
+  double sum = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    sum += (k * q.col(c) + u[c] * along - b.col(c)).squaredNorm();
+  }
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
+struct LocalDirectSolver::Factor {
+  std::vector<double> signature;
+  SparseMatrix k;
+  Eigen::SimplicialLLT<SparseMatrix> llt;
+};
+
+LocalDirectSolver::LocalDirectSolver() = default;
+LocalDirectSolver::~LocalDirectSolver() = default;
+LocalDirectSolver::LocalDirectSolver(LocalDirectSolver&&) = default;
+LocalDirectSolver& LocalDirectSolver::operator=(LocalDirectSolver&&) = default;
+
+bool LocalDirectSolver::Solve(const LocalDirectData& data,
+                              const LocalRegularizer& regularizer,
+                              LocalField* field, SolverReport* report) {
+  const auto start = Clock::now();
+  const int num_nodes = field->grid.NumNodes();
+  std::vector<double> signature = Signature(data, regularizer, num_nodes);
+  if (factor_ == nullptr || factor_->signature != signature) {
+    auto factor = std::make_unique<Factor>();
+    factor->k = ScalarMatrix(data, regularizer, num_nodes);
+    factor->llt.compute(factor->k);
+    if (factor->llt.info() != Eigen::Success) return false;
+    factor->signature = std::move(signature);
+    factor_ = std::move(factor);
+    ++factorizations_;
+  }
+  const auto& llt = factor_->llt;
+  const RingColumns u = MakeRingColumns(regularizer, num_nodes);
+  const NodeMatrix b = RightHandSide(data, num_nodes);
+  Eigen::Map<NodeMatrix> q(field->values.data(), num_nodes, 3);
+  const double cost_before = Cost(data, regularizer, q);
+  const double gradient_before = GradientNorm(factor_->k, u, b, q);
+
+  // Woodbury: the rings' columns through K, the capacitance I + U^T Y.
+  const Eigen::MatrixXd z = llt.solve(Eigen::MatrixXd(b));
+  RingColumns y;
+  Eigen::MatrixXd capacitance =
+      Eigen::MatrixXd::Identity(u[0].cols(), u[0].cols());
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(u[0].cols());
+  for (int c = 0; c < 3; ++c) {
+    // The rings' directions lie in the model's xy plane: no z column.
+    if (u[c].isZero(0.0)) continue;
+    y[c] = llt.solve(u[c]);
+    capacitance.noalias() += u[c].transpose() * y[c];
+    along.noalias() += u[c].transpose() * z.col(c);
+  }
+  const Eigen::VectorXd s = capacitance.llt().solve(along);
+  for (int c = 0; c < 3; ++c) {
+    q.col(c) = z.col(c);
+    if (y[c].size() != 0) q.col(c).noalias() -= y[c] * s;
+  }
+
+  const double seconds = SecondsSince(start);
+  *report = SolverReport();
+  report->iterations = 1;
+  report->converged = true;
+  report->termination = "CONVERGENCE";
+  report->message = "local field: one direct solve (Woodbury on K)";
+  report->residual_evaluations = 2;
+  report->jacobian_evaluations = 1;
+  report->linear_solver_seconds = seconds;
+  report->minimizer_seconds = seconds;
+  report->trace.push_back({0, 0.0, 0.0, cost_before, gradient_before});
+  report->trace.push_back({1, 0.0, seconds, Cost(data, regularizer, q),
+                           GradientNorm(factor_->k, u, b, q)});
+  return true;
+}
+
+}  // namespace pfdm
