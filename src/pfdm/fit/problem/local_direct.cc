@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "Eigen/Cholesky"
-#include "Eigen/SparseCholesky"
+#include "pfdm/util/band_cholesky.h"
 #include "pfdm/util/stopwatch.h"
 
 namespace pfdm {
@@ -164,7 +164,8 @@ double GradientNorm(const SparseMatrix& k, const RingColumns& u,
 struct LocalDirectSolver::Factor {
   std::vector<double> signature;
   SparseMatrix k;
-  Eigen::SimplicialLLT<SparseMatrix> llt;
+  // In the grid's node order, two rings wide (band_cholesky.h).
+  BandCholesky cholesky;
 };
 
 LocalDirectSolver::LocalDirectSolver() = default;
@@ -181,36 +182,37 @@ bool LocalDirectSolver::Solve(const LocalDirectData& data,
   if (factor_ == nullptr || factor_->signature != signature) {
     auto factor = std::make_unique<Factor>();
     factor->k = ScalarMatrix(data, regularizer, num_nodes);
-    factor->llt.compute(factor->k);
-    if (factor->llt.info() != Eigen::Success) return false;
+    if (!factor->cholesky.Compute(factor->k)) return false;
     factor->signature = std::move(signature);
     factor_ = std::move(factor);
     ++factorizations_;
   }
-  const auto& llt = factor_->llt;
   const RingColumns u = MakeRingColumns(regularizer, num_nodes);
   const NodeMatrix b = RightHandSide(data, num_nodes);
   Eigen::Map<NodeMatrix> q(field->values.data(), num_nodes, 3);
   const double cost_before = Cost(data, regularizer, q);
   const double gradient_before = GradientNorm(factor_->k, u, b, q);
 
-  // Woodbury: the rings' columns through K, the capacitance I + U^T Y.
-  const Eigen::MatrixXd z = llt.solve(Eigen::MatrixXd(b));
-  RingColumns y;
-  Eigen::MatrixXd capacitance =
-      Eigen::MatrixXd::Identity(u[0].cols(), u[0].cols());
-  Eigen::VectorXd along = Eigen::VectorXd::Zero(u[0].cols());
-  for (int c = 0; c < 3; ++c) {
-    // The rings' directions lie in the model's xy plane: no z column.
-    if (u[c].isZero(0.0)) continue;
-    y[c] = llt.solve(u[c]);
-    capacitance.noalias() += u[c].transpose() * y[c];
-    along.noalias() += u[c].transpose() * z.col(c);
+  // Woodbury: b and the rings' columns through K in one solve (the rings'
+  // directions lie in the model's xy plane: no z columns), then the
+  // capacitance I + U^T Y.
+  const int m = static_cast<int>(u[0].cols());
+  const int coordinates = u[2].isZero(0.0) ? 2 : 3;
+  BandCholesky::RowMajorMatrix rhs(num_nodes, 3 + coordinates * m);
+  rhs.leftCols<3>() = b;
+  for (int c = 0; c < coordinates; ++c) rhs.middleCols(3 + c * m, m) = u[c];
+  const BandCholesky::RowMajorMatrix solved =
+      factor_->cholesky.Solve(std::move(rhs));
+  Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(m, m);
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(m);
+  for (int c = 0; c < coordinates; ++c) {
+    capacitance.noalias() += u[c].transpose() * solved.middleCols(3 + c * m, m);
+    along.noalias() += u[c].transpose() * solved.col(c);
   }
   const Eigen::VectorXd s = capacitance.llt().solve(along);
-  for (int c = 0; c < 3; ++c) {
-    q.col(c) = z.col(c);
-    if (y[c].size() != 0) q.col(c).noalias() -= y[c] * s;
+  q = solved.leftCols<3>();
+  for (int c = 0; c < coordinates; ++c) {
+    q.col(c).noalias() -= solved.middleCols(3 + c * m, m) * s;
   }
 
   const double seconds = SecondsSince(start);

@@ -10,7 +10,8 @@
 // K the nodes' scalar matrix (one third of the unknowns, a third of the
 // grid's bandwidth) and U two columns per ring, its mean radial and
 // tangential rows, which alone depend on the frame's global shape.  K is
-// factorized (sparse Cholesky) and A^{-1} b follows by Woodbury's identity:
+// factorized (a band Cholesky in the grid's node order, two rings wide:
+// util/band_cholesky.h) and A^{-1} b follows by Woodbury's identity:
 //
 //   A^{-1} b = Z - Y (I + U^T Y)^{-1} U^T Z,  Z = K^{-1} b, Y = K^{-1} U,
 //
