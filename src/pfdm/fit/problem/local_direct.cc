@@ -21,6 +21,17 @@ double Weight(const LocalDirectData& data, size_t i) {
   return data.weights.empty() ? 1.0 : data.weights[i];
 }
 
+Eigen::Vector3d Normal(const LocalDirectData& data, size_t i) {
+  return data.normals.empty() ? Eigen::Vector3d::Zero() : data.normals[i];
+}
+
+bool HasNormals(const LocalDirectData& data) {
+  for (const Eigen::Vector3d& normal : data.normals) {
+    if (!normal.isZero(0.0)) return true;
+  }
+  return false;
+}
+
 // Everything K is made of, in order: equal signatures, equal K.
 std::vector<double> Signature(const LocalDirectData& data,
                               const LocalRegularizer& regularizer,
@@ -124,7 +135,10 @@ double Cost(const LocalDirectData& data, const LocalRegularizer& regularizer,
     for (int k = 0; k < shape.count; ++k) {
       r += shape.weight[k] * q.row(shape.node[k]);
     }
-    sum += Weight(data, i) * r.squaredNorm();
+    const Eigen::Vector3d normal = Normal(data, i);
+    const double squared =
+        normal.isZero(0.0) ? r.squaredNorm() : std::pow(r.dot(normal), 2);
+    sum += Weight(data, i) * squared;
   }
   for (const NodeDifference& term : regularizer.differences) {
     Eigen::RowVector3d r = Eigen::RowVector3d::Zero();
@@ -159,6 +173,98 @@ double GradientNorm(const SparseMatrix& k, const RingColumns& u,
   return std::sqrt(sum);
 }
 
+// The whole A and b, 3 unknowns per node (index 3 node + coordinate).
+void WholeSystem(const LocalDirectData& data,
+                 const LocalRegularizer& regularizer, int num_nodes,
+                 SparseMatrix* a, Eigen::VectorXd* b) {
+  std::vector<Eigen::Triplet<double>> entries;
+  auto add = [&entries](int row_node, int col_node, const Eigen::Matrix3d& m) {
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        if (m(r, c) != 0.0) {
+          entries.emplace_back(3 * row_node + r, 3 * col_node + c, m(r, c));
+        }
+      }
+    }
+  };
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  *b = Eigen::VectorXd::Zero(3 * num_nodes);
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    const Eigen::Vector3d normal = Normal(data, i);
+    const Eigen::Matrix3d gram =
+        Weight(data, i) *
+        (normal.isZero(0.0) ? identity : normal * normal.transpose());
+    for (int p = 0; p < shape.count; ++p) {
+      for (int r = 0; r < shape.count; ++r) {
+        add(shape.node[p], shape.node[r],
+            shape.weight[p] * shape.weight[r] * gram);
+      }
+      b->segment<3>(3 * shape.node[p]) -=
+          shape.weight[p] * gram * data.offsets[i];
+    }
+  }
+  for (const NodeDifference& term : regularizer.differences) {
+    const double w2 = term.sqrt_weight * term.sqrt_weight;
+    for (size_t p = 0; p < term.nodes.size(); ++p) {
+      for (size_t r = 0; r < term.nodes.size(); ++r) {
+        add(term.nodes[p], term.nodes[r],
+            w2 * term.coefficients[p] * term.coefficients[r] * identity);
+      }
+    }
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    const double s2 = ring.scale * ring.scale;
+    for (size_t p = 0; p < ring.nodes.size(); ++p) {
+      for (size_t r = 0; r < ring.nodes.size(); ++r) {
+        add(ring.nodes[p], ring.nodes[r],
+            s2 * (identity + ring.radial[p] * ring.radial[r].transpose() +
+                  ring.tangential[p] * ring.tangential[r].transpose()));
+      }
+    }
+  }
+  *a = SparseMatrix(3 * num_nodes, 3 * num_nodes);
+  a->setFromTriplets(entries.begin(), entries.end());
+}
+
+void FillReport(double seconds, const SolverTracePoint& before,
+                const SolverTracePoint& after, SolverReport* report) {
+  *report = SolverReport();
+  report->iterations = 1;
+  report->converged = true;
+  report->termination = "CONVERGENCE";
+  report->message = "local field: one direct solve";
+  report->residual_evaluations = 2;
+  report->jacobian_evaluations = 1;
+  report->linear_solver_seconds = seconds;
+  report->minimizer_seconds = seconds;
+  report->trace = {before, after};
+  report->trace.back().iteration = 1;
+  report->trace.back().wall_seconds = seconds;
+}
+
+// Points with normals: A as a whole, factorized for this solve.
+bool SolveWhole(const LocalDirectData& data,
+                const LocalRegularizer& regularizer, LocalField* field,
+                SolverReport* report) {
+  const auto start = Clock::now();
+  const int num_nodes = field->grid.NumNodes();
+  SparseMatrix a;
+  Eigen::VectorXd b;
+  WholeSystem(data, regularizer, num_nodes, &a, &b);
+  BandCholesky cholesky;
+  if (!cholesky.Compute(a)) return false;
+  Eigen::Map<Eigen::VectorXd> values(field->values.data(), 3 * num_nodes);
+  const Eigen::Map<const NodeMatrix> q(field->values.data(), num_nodes, 3);
+  const SolverTracePoint before{0, 0.0, 0.0, Cost(data, regularizer, q),
+                                (a * values - b).norm()};
+  values = cholesky.Solve(b);
+  const SolverTracePoint after{1, 0.0, 0.0, Cost(data, regularizer, q),
+                               (a * values - b).norm()};
+  FillReport(SecondsSince(start), before, after, report);
+  return true;
+}
+
 }  // namespace
 
 struct LocalDirectSolver::Factor {
@@ -176,6 +282,7 @@ LocalDirectSolver& LocalDirectSolver::operator=(LocalDirectSolver&&) = default;
 bool LocalDirectSolver::Solve(const LocalDirectData& data,
                               const LocalRegularizer& regularizer,
                               LocalField* field, SolverReport* report) {
+  if (HasNormals(data)) return SolveWhole(data, regularizer, field, report);
   const auto start = Clock::now();
   const int num_nodes = field->grid.NumNodes();
   std::vector<double> signature = Signature(data, regularizer, num_nodes);
@@ -215,19 +322,10 @@ bool LocalDirectSolver::Solve(const LocalDirectData& data,
     q.col(c).noalias() -= solved.middleCols(3 + c * m, m) * s;
   }
 
-  const double seconds = SecondsSince(start);
-  *report = SolverReport();
-  report->iterations = 1;
-  report->converged = true;
-  report->termination = "CONVERGENCE";
-  report->message = "local field: one direct solve (Woodbury on K)";
-  report->residual_evaluations = 2;
-  report->jacobian_evaluations = 1;
-  report->linear_solver_seconds = seconds;
-  report->minimizer_seconds = seconds;
-  report->trace.push_back({0, 0.0, 0.0, cost_before, gradient_before});
-  report->trace.push_back({1, 0.0, seconds, Cost(data, regularizer, q),
-                           GradientNorm(factor_->k, u, b, q)});
+  const SolverTracePoint after{1, 0.0, 0.0, Cost(data, regularizer, q),
+                               GradientNorm(factor_->k, u, b, q)};
+  FillReport(SecondsSince(start), {0, 0.0, 0.0, cost_before, gradient_before},
+             after, report);
   return true;
 }
 

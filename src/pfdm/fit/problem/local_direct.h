@@ -20,6 +20,11 @@
 // and the stiffness terms, not on the frame: a solver kept across frames
 // factorizes it again only when one of those changed (tracked frames keep
 // frame 0's material points).
+//
+// Points with a normal make the data's Gram blocks w s_a s_b m m^T, no
+// multiple of the identity: then the whole A (3 unknowns per node, node by
+// node, three times K's bandwidth) is factorized for each solve, as the
+// contours' closest points change from one to the next.
 #ifndef PFDM_FIT_PROBLEM_LOCAL_DIRECT_H_
 #define PFDM_FIT_PROBLEM_LOCAL_DIRECT_H_
 
@@ -38,6 +43,10 @@ struct LocalDirectData {
   std::vector<ShapeWeights> shapes;
   std::vector<Eigen::Vector3d> offsets;  // e_i = R^T (x_g - data_i), mm.
   std::vector<double> weights;           // w_i^2; empty: all 1.
+  // Points on contours pull along a normal only, m_i = R^T n_i in the
+  // model frame: the row m_i . (S_i q + e_i).  Empty, or zero for a point:
+  // the whole vector.
+  std::vector<Eigen::Vector3d> normals;
 };
 
 class LocalDirectSolver {

@@ -23,10 +23,12 @@ struct Case {
   LocalGrid grid;
   Eigen::Matrix3d rotation;
   std::vector<Eigen::Vector3d> globals, points;
+  std::vector<Eigen::Vector3d> normals;  // World frame; zero: none.
   LocalDirectData data;
 };
 
-Case MakeCase(int num_points, bool weighted, unsigned seed) {
+Case MakeCase(int num_points, bool weighted, unsigned seed,
+              bool sliding = false) {
   Case c;
   c.grid.rows = 7;
   c.grid.cols = 12;
@@ -49,6 +51,15 @@ Case MakeCase(int num_points, bool weighted, unsigned seed) {
     c.data.offsets.push_back(c.rotation.transpose() *
                              (c.globals.back() - c.points.back()));
     if (weighted) c.data.weights.push_back(0.1 + 0.9 * unit(random));
+    // Every other point on a contour: a random normal.
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    if (sliding && i % 2 == 0) {
+      normal = Eigen::Vector3d(unit(random) - 0.5, unit(random) - 0.5,
+                               unit(random) - 0.5)
+                   .normalized();
+    }
+    c.normals.push_back(normal);
+    c.data.normals.push_back(c.rotation.transpose() * normal);
   }
   return c;
 }
@@ -61,8 +72,10 @@ LocalField CeresSolve(const Case& c, const LocalRegularizer& regularizer,
   ceres::Problem problem;
   for (size_t i = 0; i < c.points.size(); ++i) {
     const ShapeWeights& shape = c.data.shapes[i];
+    const bool plane = !c.normals[i].isZero(0.0);
     LocalRows rows =
-        LocalPointRows(c.globals[i], c.rotation, shape, c.points[i], nullptr);
+        LocalPointRows(c.globals[i], c.rotation, shape, c.points[i],
+                       plane ? &c.normals[i] : nullptr);
     if (!c.data.weights.empty()) rows *= std::sqrt(c.data.weights[i]);
     std::vector<double*> nodes;
     for (int k = 0; k < shape.count; ++k) {
@@ -86,10 +99,12 @@ double MaxDifference(const LocalField& a, const LocalField& b) {
 }
 
 // Without Ceres, the same field (1e-9 mm: round-off on displacements of
-// millimetres) and the same costs before and after, weighted or not.
+// millimetres) and the same costs before and after, weighted or not, with
+// points on contours (the whole A) or without (K and Woodbury).
 TEST(LocalDirectTest, SolvesAsCeresDoes) {
-  for (bool weighted : {false, true}) {
-    const Case c = MakeCase(600, weighted, 5);
+  for (int variant = 0; variant < 4; ++variant) {
+    const bool weighted = variant % 2 == 1;
+    const Case c = MakeCase(600, weighted, 5, /*sliding=*/variant >= 2);
     const LocalRegularizer regularizer =
         MakeLocalRegularizer(c.model, c.grid, 600, 0.05);
     SolverReport ceres_report;
@@ -99,7 +114,8 @@ TEST(LocalDirectTest, SolvesAsCeresDoes) {
     LocalDirectSolver solver;
     SolverReport report;
     ASSERT_TRUE(solver.Solve(c.data, regularizer, &field, &report));
-    EXPECT_LT(MaxDifference(field, expected), 1e-9) << weighted;
+    EXPECT_LT(MaxDifference(field, expected), 1e-9) << variant;
+    EXPECT_EQ(solver.factorizations(), variant >= 2 ? 0 : 1);
     // The field moves millimetres: the comparison is not between zeros.
     EXPECT_GT(*std::max_element(field.values.begin(), field.values.end()), 0.1);
     ASSERT_EQ(report.trace.size(), 2u);

@@ -52,14 +52,6 @@ class LocalData {
     if (!sqrt_weights_.empty()) rows *= sqrt_weights_[i];
     return rows;
   }
-  // Whether any point pulls along a normal only (then K (x) I_3 is not
-  // the data's Gram: local_direct.h).
-  bool AnySliding() const {
-    for (const Eigen::Vector3d& n : normals_) {
-      if (n != Eigen::Vector3d::Zero()) return true;
-    }
-    return false;
-  }
   // The points as the direct solve takes them, the weights included.
   LocalDirectData DirectData() const;
   // Each point's residual (its rows' size) under `field`, unweighted.
@@ -104,6 +96,7 @@ LocalDirectData LocalData::DirectData() const {
   for (size_t i = 0; i < size(); ++i) {
     data.shapes.push_back(Shape(i));
     data.offsets.push_back(rotation_.transpose() * (globals_[i] - points_[i]));
+    data.normals.push_back(rotation_.transpose() * normals_[i]);
   }
   for (double w : sqrt_weights_) data.weights.push_back(w * w);
   return data;
@@ -176,7 +169,7 @@ SolverReport SolveLocal(const LocalData& data, const Model& model,
   const LocalRegularizer regularizer =
       MakeLocalRegularizer(model, field->grid, static_cast<int>(data.size()),
                            options.local.stiffness);
-  if (options.solver.kind == SolverKind::kDirect && !data.AnySliding()) {
+  if (options.solver.kind == SolverKind::kDirect) {
     CheckInterrupt(options.solver);
     SolverReport report;
     if (direct->Solve(data.DirectData(), regularizer, field, &report)) {
