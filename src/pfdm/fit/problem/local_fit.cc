@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ceres/problem.h"
+#include "pfdm/fit/problem/local_regularizer.h"
 #include "pfdm/fit/residuals/linear_node_cost.h"
 #include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/fit/residuals/square_root_form.h"
@@ -13,102 +14,11 @@
 namespace pfdm {
 namespace {
 
-// The membrane term's weight against the thin plate's: one
-// --local_stiffness sets both (the ratio was not tuned; the stiffness was).
-constexpr double kMembraneShare = 1.0;
-// A ring's mean displacement costs like this many times the ring's points
-// all that far off: stiff, as the gauge terms are, without dwarfing the
-// data in the integrator's stability bound.
-constexpr double kRingMeanWeight = 10.0;
 // With a robust loss, the field is solved again with the weights at its
 // residuals until no point's weight changes by kReweightTolerance, or
 // kMaxReweightings solves.
 constexpr int kMaxReweightings = 10;
 constexpr double kReweightTolerance = 0.01;
-
-// The stiffness and ring-mean terms of the field's grid on its nodal
-// values (which stay where they are while the problem lives), for
-// `num_points` data points.
-void AddLocalRegularizer(const Model& global, int num_points, double stiffness,
-                         LocalField* field, ceres::Problem* problem) {
-  const LocalGrid& grid = field->grid;
-  auto block = [field, &grid](int row, int col) {
-    return &field->values[3 * grid.Node(row, col)];
-  };
-  const double per_node = static_cast<double>(num_points) / grid.NumNodes();
-  if (stiffness > 0.0) {
-    const double membrane = std::sqrt(kMembraneShare * stiffness * per_node);
-    const double plate = std::sqrt(stiffness * per_node);
-    auto add = [&](double weight, const std::vector<double>& coefficients,
-                   std::vector<double*> nodes) {
-      problem->AddResidualBlock(MakeNodeDifferenceCost(weight, coefficients),
-                                nullptr, nodes);
-    };
-    for (int row = 0; row + 1 < grid.rows; ++row) {
-      for (int col = 0; col < grid.cols; ++col) {
-        // Along the meridian, from the pole down each column.
-        add(membrane, {1.0, -1.0}, {block(row, col), block(row + 1, col)});
-        if (row > 0) {
-          add(plate, {1.0, -2.0, 1.0},
-              {block(row - 1, col), block(row, col), block(row + 1, col)});
-        }
-      }
-    }
-    for (int row = 1; row < grid.rows; ++row) {
-      for (int col = 0; col < grid.cols; ++col) {
-        add(membrane, {1.0, -1.0}, {block(row, col), block(row, col + 1)});
-        add(plate, {1.0, -2.0, 1.0},
-            {block(row, col - 1), block(row, col), block(row, col + 1)});
-        if (row + 1 < grid.rows) {
-          // The mixed term of the thin plate, |d_uv|^2 counted twice.
-          add(std::sqrt(2.0) * plate, {1.0, -1.0, -1.0, 1.0},
-              {block(row, col), block(row, col + 1), block(row + 1, col),
-               block(row + 1, col + 1)});
-        }
-      }
-    }
-    // Straight through the pole: the meridians v and v + pi are one curve.
-    if (grid.cols % 2 == 0) {
-      for (int col = 0; col < grid.cols / 2; ++col) {
-        add(plate, {1.0, -2.0, 1.0},
-            {block(1, col), block(0, 0), block(1, col + grid.cols / 2)});
-      }
-    }
-  }
-  // Ring means in the global model's own directions at each node.  The
-  // pole is a ring of one point: where the apex is, is the global
-  // functions' too.
-  const double sqrt_weight = std::sqrt(
-      kRingMeanWeight * static_cast<double>(num_points) / (grid.rows - 1));
-  problem->AddResidualBlock(MakeNodeDifferenceCost(sqrt_weight, {1.0}), nullptr,
-                            {block(0, 0)});
-  for (int row = 1; row < grid.rows; ++row) {
-    const double u = grid.RowU(row);
-    std::vector<Eigen::Vector3d> at(grid.cols);
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (int col = 0; col < grid.cols; ++col) {
-      at[col] = global.ModelPoint(u, grid.ColV(col));
-      centre += at[col] / grid.cols;
-    }
-    std::vector<Eigen::MatrixXd> blocks;
-    std::vector<double*> nodes;
-    for (int col = 0; col < grid.cols; ++col) {
-      Eigen::Vector3d radial = at[col] - centre;
-      radial.z() = 0.0;
-      radial.normalize();
-      const Eigen::Vector3d tangential = Eigen::Vector3d::UnitZ().cross(radial);
-      Eigen::MatrixXd rows(5, 3);
-      rows.topRows<3>() = Eigen::Matrix3d::Identity();
-      rows.row(3) = radial.transpose();
-      rows.row(4) = tangential.transpose();
-      blocks.push_back(sqrt_weight / grid.cols * rows);
-      nodes.push_back(block(row, col));
-    }
-    problem->AddResidualBlock(
-        new LinearNodeCost(Eigen::VectorXd::Zero(5), std::move(blocks)),
-        nullptr, nodes);
-  }
-}
 
 // The local field's data: each point's rows at its element
 // (LocalPointRows), scaled by the square root of its weight when the loss
@@ -142,6 +52,8 @@ class LocalData {
     if (!sqrt_weights_.empty()) rows *= sqrt_weights_[i];
     return rows;
   }
+  // The points as the direct solve takes them, the weights included.
+  LocalDirectData DirectData() const;
   // Each point's residual (its rows' size) under `field`, unweighted.
   std::vector<Eigen::Vector3d> Residuals(const LocalField& field) const;
   void set_sqrt_weights(std::vector<double> sqrt_weights) {
@@ -175,6 +87,19 @@ std::vector<Eigen::Vector3d> LocalData::Residuals(
     residuals[i].head(rows.rows()) = rows.leftCols(n) * q + rows.col(n);
   }
   return residuals;
+}
+
+LocalDirectData LocalData::DirectData() const {
+  LocalDirectData data;
+  data.shapes.reserve(size());
+  data.offsets.reserve(size());
+  for (size_t i = 0; i < size(); ++i) {
+    data.shapes.push_back(Shape(i));
+    data.offsets.push_back(rotation_.transpose() * (globals_[i] - points_[i]));
+    data.normals.push_back(rotation_.transpose() * normals_[i]);
+  }
+  for (double w : sqrt_weights_) data.weights.push_back(w * w);
+  return data;
 }
 
 // The points of each element are one residual block in square-root form
@@ -236,13 +161,24 @@ void AddLocalData(const LocalData& data, LocalField* field,
 }
 
 // One linear solve of the field for the data's current weights, from
-// *field's values.
+// *field's values: the direct solver's without Ceres where it can
+// (local_direct.h), the same minimum to round-off.
 SolverReport SolveLocal(const LocalData& data, const Model& model,
-                        const FitOptions& options, LocalField* field) {
+                        const FitOptions& options, LocalDirectSolver* direct,
+                        LocalField* field) {
+  const LocalRegularizer regularizer =
+      MakeLocalRegularizer(model, field->grid, static_cast<int>(data.size()),
+                           options.local.stiffness);
+  if (options.solver.kind == SolverKind::kDirect) {
+    CheckInterrupt(options.solver);
+    SolverReport report;
+    if (direct->Solve(data.DirectData(), regularizer, field, &report)) {
+      return report;
+    }
+  }
   ceres::Problem problem;
   AddLocalData(data, field, &problem);
-  AddLocalRegularizer(model, static_cast<int>(data.size()),
-                      options.local.stiffness, field, &problem);
+  AddLocalRegularizer(regularizer, field, &problem);
   SolverOptions solver = options.solver;
   solver.on_step = nullptr;
   solver.damping_scale.clear();
@@ -269,7 +205,10 @@ std::vector<double> SqrtLossWeights(const LocalData& data,
 SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
                            const std::vector<MaterialPoint>& material,
                            const std::vector<bool>& sliding,
-                           const FitOptions& options, Model* model) {
+                           const FitOptions& options, Model* model,
+                           LocalDirectSolver* direct) {
+  LocalDirectSolver own;
+  if (direct == nullptr) direct = &own;
   const ModelConfig& config = model->config;
   model->state.local = LocalField();
   LocalGrid grid;
@@ -287,7 +226,7 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   std::vector<double> sqrt_weights;
   if (robust) sqrt_weights = SqrtLossWeights(data, options, field);
   data.set_sqrt_weights(sqrt_weights);
-  SolverReport report = SolveLocal(data, *model, options, &field);
+  SolverReport report = SolveLocal(data, *model, options, direct, &field);
   for (int pass = 1; robust && pass < kMaxReweightings && report.usable;
        ++pass) {
     const std::vector<double> next = SqrtLossWeights(data, options, field);
@@ -300,7 +239,7 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
     sqrt_weights = next;
     data.set_sqrt_weights(sqrt_weights);
     const int iterations = report.iterations;
-    report = SolveLocal(data, *model, options, &field);
+    report = SolveLocal(data, *model, options, direct, &field);
     report.iterations += iterations;
   }
   model->state.local = std::move(field);

@@ -20,6 +20,7 @@
 #include "Eigen/Core"
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/problem/local_direct.h"
 #include "pfdm/model/local_field.h"
 #include "pfdm/model/model.h"
 #include "pfdm/solvers/solver.h"
@@ -29,11 +30,15 @@ namespace pfdm {
 // Replaces model->state.local by the field fitted with `options.solver`
 // (any of the three solvers) on `options.local`'s grid, everything else of
 // the model held.  Points listed in `sliding` pull along the global
-// surface's normal (but past the base rim), as in SolveFrame.
+// surface's normal (but past the base rim), as in SolveFrame.  The direct
+// solver solves without Ceres when no point slides (local_direct.h), with
+// `direct`'s factorization when its matrix is the same (pass one solver
+// over a sequence's tracked frames; nullptr: a fresh one).
 SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
                            const std::vector<MaterialPoint>& material,
                            const std::vector<bool>& sliding,
-                           const FitOptions& options, Model* model);
+                           const FitOptions& options, Model* model,
+                           LocalDirectSolver* direct = nullptr);
 
 }  // namespace pfdm
 

@@ -135,7 +135,7 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   CheckInterrupt(options.solver);
   if (options.local.enabled) {
     FitLocalStage(points, WithLossScale(options, fit.loss_scale_mm), source,
-                  &model, &fit);
+                  &model, &fit, &carried->local_solver);
   }
   Summarize(model, points.positions, &fit);
   CheckFinite(source, fit);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/problem/local_direct.h"
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/fit/stages/wall_stage.h"
@@ -31,6 +32,9 @@ struct CarriedState {
   // Frame 0's robust loss scale (0 without a loss), for the band of a
   // solid's ranks in every frame (RankBandMm).
   double reference_loss_scale_mm = 0.0;
+  // The local field's direct solver, kept for its factorization: tracked
+  // frames' fields share one matrix (local_direct.h).
+  LocalDirectSolver local_solver;
 };
 
 // Fits `frame` (`reference`: frame 0) from carried->model and updates

@@ -1,5 +1,6 @@
 #include "pfdm/fit/stages/frame_fit.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gtest/gtest.h"
@@ -45,6 +46,38 @@ TEST(FrameFitTest, CarriesFrameZeroToTheFramesAfterIt) {
   EXPECT_LT(second.rms_mm, std::sqrt(5.0) * 0.5);
   EXPECT_GT(second.solve_seconds, 0.0);
   EXPECT_TRUE(second.tracked);
+}
+
+// Tracked frames share frame 0's material points, so the local field's
+// matrix is factorized once for the sequence; each frame's field is the one
+// a solver factorizing afresh finds, to round-off (1e-9 mm).
+TEST(FrameFitTest, TrackedFramesReuseTheLocalFieldsFactorization) {
+  const PointSequence sequence = MakeTestPhantom(1000, 3).points;
+  const FitOptions options;
+  ASSERT_TRUE(options.local.enabled);
+  SequenceStart start =
+      StartSequence(sequence, ModelConfig::Paper(17), options);
+  CarriedState kept(start.model);
+  CarriedState fresh(start.model);
+  WallDecision fresh_wall = start.wall;
+  for (int t = 0; t < 3; ++t) {
+    const FrameFit a = FitFrame(sequence.frames[t], t == 0, start.frames_per_id,
+                                options, sequence.source, &start.wall, &kept);
+    fresh.local_solver = LocalDirectSolver();
+    const FrameFit b = FitFrame(sequence.frames[t], t == 0, start.frames_per_id,
+                                options, sequence.source, &fresh_wall, &fresh);
+    ASSERT_EQ(a.state.local.values.size(), b.state.local.values.size());
+    double worst = 0.0, largest = 0.0;
+    for (size_t i = 0; i < a.state.local.values.size(); ++i) {
+      worst = std::max(
+          worst, std::abs(a.state.local.values[i] - b.state.local.values[i]));
+      largest = std::max(largest, std::abs(a.state.local.values[i]));
+    }
+    EXPECT_LT(worst, 1e-9) << t;
+    EXPECT_GT(largest, 0.01) << t;  // A field, not zeros.
+  }
+  EXPECT_EQ(kept.local_solver.factorizations(), 1);
+  EXPECT_EQ(fresh.local_solver.factorizations(), 1);  // Its last frame's.
 }
 
 // The same points with ids unique per frame (contours): no frame is

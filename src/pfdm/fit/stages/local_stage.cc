@@ -58,7 +58,8 @@ bool MixField(Eigen::VectorXd change, RoundAcceleration* acceleration,
 }  // namespace
 
 void FitLocalStage(const FramePoints& frame, const FitOptions& options,
-                   const std::string& source, Model* model, FrameFit* fit) {
+                   const std::string& source, Model* model, FrameFit* fit,
+                   LocalDirectSolver* direct) {
   std::vector<size_t> contours;
   std::vector<bool> sliding(frame.positions.size(), false);
   for (size_t i : frame.untracked) {
@@ -72,8 +73,8 @@ void FitLocalStage(const FramePoints& frame, const FitOptions& options,
   double last_cost = std::numeric_limits<double>::infinity();
   for (int round = 0; round < options.max_correspondence_rounds; ++round) {
     const Eigen::VectorXd before = ProbePoints(*model, probes);
-    const SolverReport local =
-        FitLocalField(frame.positions, fit->material, sliding, options, model);
+    const SolverReport local = FitLocalField(frame.positions, fit->material,
+                                             sliding, options, model, direct);
     fit->local_iterations += local.iterations;
     if (!local.usable) {
       throw InputError(source + ": frame " + std::to_string(frame.index) +

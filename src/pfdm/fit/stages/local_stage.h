@@ -8,6 +8,7 @@
 #include <string>
 
 #include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/problem/local_direct.h"
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/model/model.h"
@@ -21,9 +22,11 @@ namespace pfdm {
 // frame, frame 0 included.  The rounds end when the contours' closest
 // points settle or a round gains little.  Sets model->state.local, the
 // contours' material points in *fit and its local account; throws
-// InputError naming the frame when a solve is unusable.
+// InputError naming the frame when a solve is unusable.  `direct` (may be
+// null) keeps the direct solver's factorization from frame to frame.
 void FitLocalStage(const FramePoints& frame, const FitOptions& options,
-                   const std::string& source, Model* model, FrameFit* fit);
+                   const std::string& source, Model* model, FrameFit* fit,
+                   LocalDirectSolver* direct = nullptr);
 
 }  // namespace pfdm
 

@@ -1,0 +1,345 @@
+#include "pfdm/fit/problem/local_direct.h"
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "Eigen/Cholesky"
+#include "pfdm/util/band_cholesky.h"
+#include "pfdm/util/stopwatch.h"
+
+namespace pfdm {
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+// Nodal values, a node's (x, y, z) per row, as LocalField keeps them.
+using NodeMatrix = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+// U's rows of one coordinate: a node per row, two columns per ring.
+using RingColumns = std::array<Eigen::MatrixXd, 3>;
+
+double Weight(const LocalDirectData& data, size_t i) {
+  return data.weights.empty() ? 1.0 : data.weights[i];
+}
+
+Eigen::Vector3d Normal(const LocalDirectData& data, size_t i) {
+  return data.normals.empty() ? Eigen::Vector3d::Zero() : data.normals[i];
+}
+
+bool HasNormals(const LocalDirectData& data) {
+  for (const Eigen::Vector3d& normal : data.normals) {
+    if (!normal.isZero(0.0)) return true;
+  }
+  return false;
+}
+
+// Everything K is made of, in order: equal signatures, equal K.
+std::vector<double> Signature(const LocalDirectData& data,
+                              const LocalRegularizer& regularizer,
+                              int num_nodes) {
+  std::vector<double> signature = {static_cast<double>(num_nodes)};
+  auto put = [&signature](double weight, int count, const int* nodes,
+                          const double* coefficients) {
+    signature.push_back(weight);
+    signature.push_back(count);
+    signature.insert(signature.end(), nodes, nodes + count);
+    if (coefficients != nullptr) {
+      signature.insert(signature.end(), coefficients, coefficients + count);
+    }
+  };
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    put(Weight(data, i), shape.count, shape.node.data(), shape.weight.data());
+  }
+  for (const NodeDifference& term : regularizer.differences) {
+    put(term.sqrt_weight, static_cast<int>(term.nodes.size()),
+        term.nodes.data(), term.coefficients.data());
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    put(ring.scale, static_cast<int>(ring.nodes.size()), ring.nodes.data(),
+        nullptr);
+  }
+  return signature;
+}
+
+// K: each term's scalar rows' outer products, summed.
+SparseMatrix ScalarMatrix(const LocalDirectData& data,
+                          const LocalRegularizer& regularizer, int num_nodes) {
+  // Reserved: at 50,000 points the growing vector's copies and fresh
+  // pages were half the factorization's time.
+  size_t size = 0;
+  for (const ShapeWeights& shape : data.shapes)
+    size += shape.count * shape.count;
+  for (const NodeDifference& term : regularizer.differences) {
+    size += term.nodes.size() * term.nodes.size();
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    size += ring.nodes.size() * ring.nodes.size();
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(size);
+  auto add = [&entries](double weight, int count, const int* nodes,
+                        const double* coefficients) {
+    for (int a = 0; a < count; ++a) {
+      for (int b = 0; b < count; ++b) {
+        const double ca = coefficients == nullptr ? 1.0 : coefficients[a];
+        const double cb = coefficients == nullptr ? 1.0 : coefficients[b];
+        entries.emplace_back(nodes[a], nodes[b], weight * ca * cb);
+      }
+    }
+  };
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    add(Weight(data, i), shape.count, shape.node.data(), shape.weight.data());
+  }
+  for (const NodeDifference& term : regularizer.differences) {
+    add(term.sqrt_weight * term.sqrt_weight,
+        static_cast<int>(term.nodes.size()), term.nodes.data(),
+        term.coefficients.data());
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    add(ring.scale * ring.scale, static_cast<int>(ring.nodes.size()),
+        ring.nodes.data(), nullptr);
+  }
+  SparseMatrix k(num_nodes, num_nodes);
+  k.setFromTriplets(entries.begin(), entries.end());
+  return k;
+}
+
+RingColumns MakeRingColumns(const LocalRegularizer& regularizer,
+                            int num_nodes) {
+  const int columns = 2 * static_cast<int>(regularizer.rings.size());
+  RingColumns u;
+  for (Eigen::MatrixXd& rows : u)
+    rows = Eigen::MatrixXd::Zero(num_nodes, columns);
+  for (size_t j = 0; j < regularizer.rings.size(); ++j) {
+    const RingMean& ring = regularizer.rings[j];
+    for (size_t k = 0; k < ring.nodes.size(); ++k) {
+      for (int c = 0; c < 3; ++c) {
+        u[c](ring.nodes[k], 2 * j) = ring.scale * ring.radial[k][c];
+        u[c](ring.nodes[k], 2 * j + 1) = ring.scale * ring.tangential[k][c];
+      }
+    }
+  }
+  return u;
+}
+
+// b = -sum_i w_i S_i^T e_i, a node per row.
+NodeMatrix RightHandSide(const LocalDirectData& data, int num_nodes) {
+  NodeMatrix b = NodeMatrix::Zero(num_nodes, 3);
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    const Eigen::RowVector3d pull =
+        Weight(data, i) * data.offsets[i].transpose();
+    for (int k = 0; k < shape.count; ++k) {
+      b.row(shape.node[k]) -= shape.weight[k] * pull;
+    }
+  }
+  return b;
+}
+
+// 1/2 the sum of squared residuals at q, as Ceres counts the cost.
+double Cost(const LocalDirectData& data, const LocalRegularizer& regularizer,
+            const NodeMatrix& q) {
+  double sum = 0.0;
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    Eigen::RowVector3d r = data.offsets[i].transpose();
+    for (int k = 0; k < shape.count; ++k) {
+      r += shape.weight[k] * q.row(shape.node[k]);
+    }
+    const Eigen::Vector3d normal = Normal(data, i);
+    const double squared =
+        normal.isZero(0.0) ? r.squaredNorm() : std::pow(r.dot(normal), 2);
+    sum += Weight(data, i) * squared;
+  }
+  for (const NodeDifference& term : regularizer.differences) {
+    Eigen::RowVector3d r = Eigen::RowVector3d::Zero();
+    for (size_t k = 0; k < term.nodes.size(); ++k) {
+      r += term.coefficients[k] * q.row(term.nodes[k]);
+    }
+    sum += term.sqrt_weight * term.sqrt_weight * r.squaredNorm();
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+    double radial = 0.0, tangential = 0.0;
+    for (size_t k = 0; k < ring.nodes.size(); ++k) {
+      mean += q.row(ring.nodes[k]);
+      radial += q.row(ring.nodes[k]).dot(ring.radial[k]);
+      tangential += q.row(ring.nodes[k]).dot(ring.tangential[k]);
+    }
+    sum += ring.scale * ring.scale *
+           (mean.squaredNorm() + radial * radial + tangential * tangential);
+  }
+  return 0.5 * sum;
+}
+
+// |A q - b|, the cost's gradient.
+double GradientNorm(const SparseMatrix& k, const RingColumns& u,
+                    const NodeMatrix& b, const NodeMatrix& q) {
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(u[0].cols());
+  for (int c = 0; c < 3; ++c) along += u[c].transpose() * q.col(c);
+  double sum = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    sum += (k * q.col(c) + u[c] * along - b.col(c)).squaredNorm();
+  }
+  return std::sqrt(sum);
+}
+
+// The whole A and b, 3 unknowns per node (index 3 node + coordinate).
+void WholeSystem(const LocalDirectData& data,
+                 const LocalRegularizer& regularizer, int num_nodes,
+                 SparseMatrix* a, Eigen::VectorXd* b) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(9 * 16 * data.shapes.size());
+  auto add = [&entries](int row_node, int col_node, const Eigen::Matrix3d& m) {
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        if (m(r, c) != 0.0) {
+          entries.emplace_back(3 * row_node + r, 3 * col_node + c, m(r, c));
+        }
+      }
+    }
+  };
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  *b = Eigen::VectorXd::Zero(3 * num_nodes);
+  for (size_t i = 0; i < data.shapes.size(); ++i) {
+    const ShapeWeights& shape = data.shapes[i];
+    const Eigen::Vector3d normal = Normal(data, i);
+    const Eigen::Matrix3d gram =
+        Weight(data, i) *
+        (normal.isZero(0.0) ? identity : normal * normal.transpose());
+    for (int p = 0; p < shape.count; ++p) {
+      for (int r = 0; r < shape.count; ++r) {
+        add(shape.node[p], shape.node[r],
+            shape.weight[p] * shape.weight[r] * gram);
+      }
+      b->segment<3>(3 * shape.node[p]) -=
+          shape.weight[p] * gram * data.offsets[i];
+    }
+  }
+  for (const NodeDifference& term : regularizer.differences) {
+    const double w2 = term.sqrt_weight * term.sqrt_weight;
+    for (size_t p = 0; p < term.nodes.size(); ++p) {
+      for (size_t r = 0; r < term.nodes.size(); ++r) {
+        add(term.nodes[p], term.nodes[r],
+            w2 * term.coefficients[p] * term.coefficients[r] * identity);
+      }
+    }
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    const double s2 = ring.scale * ring.scale;
+    for (size_t p = 0; p < ring.nodes.size(); ++p) {
+      for (size_t r = 0; r < ring.nodes.size(); ++r) {
+        add(ring.nodes[p], ring.nodes[r],
+            s2 * (identity + ring.radial[p] * ring.radial[r].transpose() +
+                  ring.tangential[p] * ring.tangential[r].transpose()));
+      }
+    }
+  }
+  *a = SparseMatrix(3 * num_nodes, 3 * num_nodes);
+  a->setFromTriplets(entries.begin(), entries.end());
+}
+
+void FillReport(double seconds, const SolverTracePoint& before,
+                const SolverTracePoint& after, SolverReport* report) {
+  *report = SolverReport();
+  report->iterations = 1;
+  report->converged = true;
+  report->termination = "CONVERGENCE";
+  report->message = "local field: one direct solve";
+  report->residual_evaluations = 2;
+  report->jacobian_evaluations = 1;
+  report->linear_solver_seconds = seconds;
+  report->minimizer_seconds = seconds;
+  report->trace = {before, after};
+  report->trace.back().iteration = 1;
+  report->trace.back().wall_seconds = seconds;
+}
+
+// Points with normals: A as a whole, factorized for this solve.
+bool SolveWhole(const LocalDirectData& data,
+                const LocalRegularizer& regularizer, LocalField* field,
+                SolverReport* report) {
+  const auto start = Clock::now();
+  const int num_nodes = field->grid.NumNodes();
+  SparseMatrix a;
+  Eigen::VectorXd b;
+  WholeSystem(data, regularizer, num_nodes, &a, &b);
+  BandCholesky cholesky;
+  if (!cholesky.Compute(a)) return false;
+  Eigen::Map<Eigen::VectorXd> values(field->values.data(), 3 * num_nodes);
+  const Eigen::Map<const NodeMatrix> q(field->values.data(), num_nodes, 3);
+  const SolverTracePoint before{0, 0.0, 0.0, Cost(data, regularizer, q),
+                                (a * values - b).norm()};
+  values = cholesky.Solve(b);
+  const SolverTracePoint after{1, 0.0, 0.0, Cost(data, regularizer, q),
+                               (a * values - b).norm()};
+  FillReport(SecondsSince(start), before, after, report);
+  return true;
+}
+
+}  // namespace
+
+struct LocalDirectSolver::Factor {
+  std::vector<double> signature;
+  SparseMatrix k;
+  // In the grid's node order, two rings wide (band_cholesky.h).
+  BandCholesky cholesky;
+};
+
+LocalDirectSolver::LocalDirectSolver() = default;
+LocalDirectSolver::~LocalDirectSolver() = default;
+LocalDirectSolver::LocalDirectSolver(LocalDirectSolver&&) = default;
+LocalDirectSolver& LocalDirectSolver::operator=(LocalDirectSolver&&) = default;
+
+bool LocalDirectSolver::Solve(const LocalDirectData& data,
+                              const LocalRegularizer& regularizer,
+                              LocalField* field, SolverReport* report) {
+  if (HasNormals(data)) return SolveWhole(data, regularizer, field, report);
+  const auto start = Clock::now();
+  const int num_nodes = field->grid.NumNodes();
+  std::vector<double> signature = Signature(data, regularizer, num_nodes);
+  if (factor_ == nullptr || factor_->signature != signature) {
+    auto factor = std::make_unique<Factor>();
+    factor->k = ScalarMatrix(data, regularizer, num_nodes);
+    if (!factor->cholesky.Compute(factor->k)) return false;
+    factor->signature = std::move(signature);
+    factor_ = std::move(factor);
+    ++factorizations_;
+  }
+  const RingColumns u = MakeRingColumns(regularizer, num_nodes);
+  const NodeMatrix b = RightHandSide(data, num_nodes);
+  Eigen::Map<NodeMatrix> q(field->values.data(), num_nodes, 3);
+  const double cost_before = Cost(data, regularizer, q);
+  const double gradient_before = GradientNorm(factor_->k, u, b, q);
+
+  // Woodbury: b and the rings' columns through K in one solve (the rings'
+  // directions lie in the model's xy plane: no z columns), then the
+  // capacitance I + U^T Y.
+  const int m = static_cast<int>(u[0].cols());
+  const int coordinates = u[2].isZero(0.0) ? 2 : 3;
+  BandCholesky::RowMajorMatrix rhs(num_nodes, 3 + coordinates * m);
+  rhs.leftCols<3>() = b;
+  for (int c = 0; c < coordinates; ++c) rhs.middleCols(3 + c * m, m) = u[c];
+  const BandCholesky::RowMajorMatrix solved =
+      factor_->cholesky.Solve(std::move(rhs));
+  Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(m, m);
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(m);
+  for (int c = 0; c < coordinates; ++c) {
+    capacitance.noalias() += u[c].transpose() * solved.middleCols(3 + c * m, m);
+    along.noalias() += u[c].transpose() * solved.col(c);
+  }
+  const Eigen::VectorXd s = capacitance.llt().solve(along);
+  q = solved.leftCols<3>();
+  for (int c = 0; c < coordinates; ++c) {
+    q.col(c).noalias() -= solved.middleCols(3 + c * m, m) * s;
+  }
+
+  const SolverTracePoint after{1, 0.0, 0.0, Cost(data, regularizer, q),
+                               GradientNorm(factor_->k, u, b, q)};
+  FillReport(SecondsSince(start), {0, 0.0, 0.0, cost_before, gradient_before},
+             after, report);
+  return true;
+}
+
+}  // namespace pfdm
