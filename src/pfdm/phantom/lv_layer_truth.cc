@@ -13,16 +13,12 @@ namespace {
 constexpr int kRows = 60;   // Of h.
 constexpr int kCols = 120;  // Of longitude: 3 degrees, on sector edges.
 constexpr int kSegments = 17;
-constexpr int kDepths = 5;
-constexpr double kDepthW[kDepths] = {-1.0, -0.5, 0.0, 0.5, 1.0};
-constexpr double kSimpson[kDepths] = {1.0 / 12, 4.0 / 12, 2.0 / 12, 4.0 / 12,
-                                      1.0 / 12};
-constexpr int kLayerOfDepth[3] = {0, 2, 4};
+constexpr double kLayerW[3] = {-1.0, 0.0, 1.0};
 constexpr double kThirdBounds[4] = {-1.0, -1.0 / 3, 1.0 / 3, 1.0};
-constexpr double kStep = 1e-5;  // Of h, phi (radians) and w.
-// Per cell: per depth the six neighbours (h +-, phi +-, w +-), then the
-// four bounds of the thirds.
-constexpr int kStride = 6 * kDepths + 4;
+constexpr double kStep = 1e-5;  // Of h and phi (radians).
+// Per cell: per layer its four neighbours (h +-, phi +-), then the four
+// bounds of the thirds.
+constexpr int kStride = 4 * 3 + 4;
 
 using Body = std::function<Eigen::Vector3d(double h, double phi, double w)>;
 using Points = std::vector<Eigen::Vector3d>;
@@ -36,37 +32,39 @@ int SegmentOf(double h, double lambda_deg, double cap) {
 }
 
 void AddCell(const Body& body, double h, double phi, Points* material) {
-  for (double w : kDepthW) {
+  for (double w : kLayerW) {
     material->push_back(body(h + kStep, phi, w));
     material->push_back(body(h - kStep, phi, w));
     material->push_back(body(h, phi + kStep, w));
     material->push_back(body(h, phi - kStep, w));
-    material->push_back(body(h, phi, w + kStep));
-    material->push_back(body(h, phi, w - kStep));
   }
   for (double w : kThirdBounds) material->push_back(body(h, phi, w));
 }
 
-// d/dh, d/dphi, d/dw at depth d of the cell at `i` (times 2 kStep).
+// d/dh and d/dphi on layer k of the cell at `i` (times 2 kStep).
 struct Derivatives {
-  Eigen::Vector3d h, phi, w;
+  Eigen::Vector3d h, phi;
 };
-Derivatives At(const Points& x, int i, int d) {
-  const int k = i + 6 * d;
-  return {x[k] - x[k + 1], x[k + 2] - x[k + 3], x[k + 4] - x[k + 5]};
+Derivatives At(const Points& x, int i, int k) {
+  const int j = i + 4 * k;
+  return {x[j] - x[j + 1], x[j + 2] - x[j + 3]};
 }
+
+double Green(double stretch) { return 100.0 * 0.5 * (stretch * stretch - 1); }
 
 double Green(const Eigen::Vector3d& now, const Eigen::Vector3d& before) {
-  return 100.0 * 0.5 * (now.squaredNorm() / before.squaredNorm() - 1.0);
+  return Green(now.norm() / before.norm());
 }
 
+const Eigen::Vector3d* Bounds(const Points& x, int i) { return &x[i + 4 * 3]; }
+
 std::array<double, 3> Thirds(const Points& x, int i) {
-  const Derivatives mid = At(x, i, 2);
+  const Derivatives mid = At(x, i, 1);
   const Eigen::Vector3d normal = mid.h.cross(mid.phi).normalized();
-  const int b = i + 6 * kDepths;
+  const Eigen::Vector3d* b = Bounds(x, i);
   std::array<double, 3> thickness;
   for (int k = 0; k < 3; ++k) {
-    thickness[k] = std::abs((x[b + k + 1] - x[b + k]).dot(normal));
+    thickness[k] = std::abs((b[k + 1] - b[k]).dot(normal));
   }
   return thickness;
 }
@@ -74,19 +72,14 @@ std::array<double, 3> Thirds(const Points& x, int i) {
 // Adds cell i's strains to `sum`, weighted by `weight`.
 void AddStrains(const Points& x0, const Points& x, int i, double weight,
                 LvSegmentLayers* sum) {
-  double err[kDepths];
-  for (int d = 0; d < kDepths; ++d) {
-    err[d] = Green(At(x, i, d).w, At(x0, i, d).w);
-    sum->err_percent += weight * kSimpson[d] * err[d];
-  }
+  const Eigen::Vector3d *b0 = Bounds(x0, i), *b = Bounds(x, i);
+  sum->err_percent += weight * Green(b[3] - b[0], b0[3] - b0[0]);
   const std::array<double, 3> t0 = Thirds(x0, i), t = Thirds(x, i);
   for (int k = 0; k < 3; ++k) {
-    const int d = kLayerOfDepth[k];
-    const Derivatives before = At(x0, i, d), now = At(x, i, d);
+    const Derivatives before = At(x0, i, k), now = At(x, i, k);
     LvLayerValues& layer = sum->layers[k];
     layer.ecc_percent += weight * Green(now.phi, before.phi);
     layer.ell_percent += weight * Green(now.h, before.h);
-    layer.err_percent += weight * err[d];
     layer.thickening_percent += weight * 100.0 * (t[k] / t0[k] - 1.0);
   }
 }
@@ -96,8 +89,8 @@ void Divide(double weight, LvSegmentLayers* segment) {
       weight > 0.0 ? 1.0 / weight : std::numeric_limits<double>::quiet_NaN();
   segment->err_percent *= scale;
   for (LvLayerValues& layer : segment->layers) {
-    for (double* value : {&layer.ecc_percent, &layer.ell_percent,
-                          &layer.err_percent, &layer.thickening_percent}) {
+    for (double* value :
+         {&layer.ecc_percent, &layer.ell_percent, &layer.thickening_percent}) {
       *value *= scale;
     }
   }
@@ -118,7 +111,7 @@ Cells LayOut(const Body& body, double low, double high, double cap) {
       const double phi = lambda_deg / kDegreesPerRadian - kPi;
       const int i = static_cast<int>(cells.material.size());
       AddCell(body, h, phi, &cells.material);
-      const Derivatives mid = At(cells.material, i, 2);
+      const Derivatives mid = At(cells.material, i, 1);
       cells.weight.push_back(mid.h.cross(mid.phi).norm());
       cells.segment.push_back(SegmentOf(h, lambda_deg, cap));
     }

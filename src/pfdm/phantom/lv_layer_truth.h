@@ -1,8 +1,8 @@
 // The LV phantom's strain per layer (issue 32), measured on its own
 // material points from its analytic motion, never from pfdm's model: per
-// segment, Ecc, Ell and Err at the endocardium (w = -1), the mid-wall and
-// the epicardium (w = +1), each third of the wall's thickening and Err
-// across the wall, defined as report/layer_strain.h defines the fit's.
+// segment, Ecc and Ell at the endocardium (w = -1), the mid-wall and the
+// epicardium (w = +1), each third of the wall's thickening and Err across
+// the wall, defined as report/layer_strain.h defines the fit's.
 //
 // Material: cells of the mid-wall, equal steps of its ED height fraction h
 // (the prolate shell 0 to 1, the cylinder its segment's heights) and of
@@ -14,10 +14,11 @@
 // apex_cap_fraction, as segment 17.
 // Strains from central differences of the moved points along h, phi and w:
 // the phantom's coordinates are orthogonal at ED (prolate spheroidal, or
-// cylindrical), so e_c = X_phi / |X_phi|, e_l = X_h / |X_h| and the
-// reference normal n = X_w / |X_w|, and Ecc = (|x_phi|^2 / |X_phi|^2 - 1) /
-// 2, Ell and Err likewise.  A third's thickness is along the mid-wall's
-// current normal at the cell, as lv_truth.h's wall thickness.
+// cylindrical), so e_c = X_phi / |X_phi| and e_l = X_h / |X_h|, and Ecc =
+// (|x_phi|^2 / |X_phi|^2 - 1) / 2, Ell likewise.  A third's thickness is
+// along the mid-wall's current normal at the cell, as lv_truth.h's wall
+// thickness; Err across the wall is the Green-Lagrange strain of the chord
+// from the cell's endocardial to its epicardial material point.
 #ifndef PFDM_PHANTOM_LV_LAYER_TRUTH_H_
 #define PFDM_PHANTOM_LV_LAYER_TRUTH_H_
 
@@ -31,7 +32,6 @@ namespace pfdm {
 struct LvLayerValues {  // Percent.
   double ecc_percent = 0.0;
   double ell_percent = 0.0;
-  double err_percent = 0.0;
   double thickening_percent = 0.0;  // Of the layer's third of the wall.
 };
 
@@ -40,7 +40,7 @@ struct LvSegmentLayers {
   // Endocardium, mid-wall, epicardium; NaN in a segment without material
   // (the cylinder's apical and basal segments outside its heights).
   std::array<LvLayerValues, 3> layers;
-  // Mean of Err over w in [-1, 1] (Simpson's rule on 5 depths).
+  // Of the chord across the wall.
   double err_percent = 0.0;
 };
 

@@ -52,6 +52,14 @@ void FindExtrapolated(const SequenceFit& fit, const RegionLayout& layout,
       fit.lowest_data_height > kApicalRingFraction;
 }
 
+void LeaveOutLayers(RegionLayers* region) {
+  region->err_percent = kNotMeasured;
+  for (LayerStrain& layer : region->layers) {
+    layer.ecc_percent = layer.ell_percent = layer.thickening_percent =
+        kNotMeasured;
+  }
+}
+
 void LeaveOutRegion(RegionMotion* motion) {
   for (double* value :
        {&motion->rotation_deg, &motion->radial_contraction_percent,
@@ -69,6 +77,9 @@ void LeaveOutExtrapolated(size_t t, FitAnalysis* analysis) {
   for (size_t r = 0; r < analysis->regions.size(); ++r) {
     if (analysis->level_extrapolated[analysis->regions[r].level]) {
       LeaveOutRegion(&analysis->region_motion[t][r]);
+      if (!analysis->region_layers.empty()) {
+        LeaveOutLayers(&analysis->region_layers[t][r]);
+      }
     }
   }
   for (int level : {kBasal, kMid, kApical}) {
@@ -131,10 +142,14 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   analysis.regions = Regions(layout);
   const ReferenceSamples reference =
       SampleReference(analysis.models.at(ed), layout);
+  const LayerSamples layers = SampleLayers(analysis.models.at(ed), layout);
   for (const Model& model : analysis.models) {
     analysis.region_motion.push_back(SummarizeRegions(reference, model));
     analysis.strain.push_back(
         SummarizeStrain(analysis.regions, analysis.region_motion.back()));
+    if (!layers.samples.empty()) {
+      analysis.region_layers.push_back(SummarizeLayers(layers, model));
+    }
   }
   analysis.rotation_measured = RotationMeasured(fit);
   for (size_t t = 0; t < fit.frames.size(); ++t) {

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "Eigen/Dense"
 #include "pfdm/report/surface_strain.h"
 #include "pfdm/util/angles.h"
 
@@ -17,15 +16,10 @@ constexpr int kLongitudes = 72;
 // Central differences of the world point: the tangents within 1e-9 of
 // their size, and no Jets through the local field.
 constexpr double kStep = 1e-5;
-constexpr double kDepthW[LayerSamples::kDepths] = {-1.0, -0.5, 0.0, 0.5, 1.0};
-// Simpson's rule for the mean over [-1, 1] on those depths.
-constexpr double kSimpson[LayerSamples::kDepths] = {
-    1.0 / 12, 4.0 / 12, 2.0 / 12, 4.0 / 12, 1.0 / 12};
-constexpr int kLayerOfDepth[kWallLayers] = {0, 2, 4};  // kLayerDepth's.
 constexpr double kThirdBounds[kWallLayers + 1] = {-1.0, -1.0 / 3, 1.0 / 3, 1.0};
 
 struct Tangents {
-  Eigen::Vector3d xu, xv, xw;
+  Eigen::Vector3d xu, xv;
 };
 
 Tangents TangentsAt(const Model& model, double u, double v, double w) {
@@ -34,18 +28,22 @@ Tangents TangentsAt(const Model& model, double u, double v, double w) {
       (model.WorldPoint(u + kStep, v, w) - model.WorldPoint(u - kStep, v, w)) *
           scale,
       (model.WorldPoint(u, v + kStep, w) - model.WorldPoint(u, v - kStep, w)) *
-          scale,
-      (model.WorldPoint(u, v, w + kStep) - model.WorldPoint(u, v, w - kStep)) *
           scale};
+}
+
+// The thirds' bounds across the wall at (u, v), endocardium first.
+using Bounds = std::array<Eigen::Vector3d, kWallLayers + 1>;
+Bounds ThirdBounds(const Model& model, double u, double v) {
+  Bounds bounds;
+  for (int k = 0; k <= kWallLayers; ++k) {
+    bounds[k] = model.WorldPoint(u, v, kThirdBounds[k]);
+  }
+  return bounds;
 }
 
 // Each third's thickness along `normal` (unit).
 std::array<double, kWallLayers> ThirdThicknesses(
-    const Model& model, double u, double v, const Eigen::Vector3d& normal) {
-  std::array<Eigen::Vector3d, kWallLayers + 1> bounds;
-  for (int k = 0; k <= kWallLayers; ++k) {
-    bounds[k] = model.WorldPoint(u, v, kThirdBounds[k]);
-  }
+    const Bounds& bounds, const Eigen::Vector3d& normal) {
   std::array<double, kWallLayers> thickness;
   for (int k = 0; k < kWallLayers; ++k) {
     thickness[k] = std::abs((bounds[k + 1] - bounds[k]).dot(normal));
@@ -54,29 +52,23 @@ std::array<double, kWallLayers> ThirdThicknesses(
 }
 
 // The reference's share of sample (u, v): region, area weight (per unit of
-// sin u and v, the mid-wall's), tangents, normal coefficients, thirds.
+// sin u and v, the mid-wall's), tangents, chord, thirds.
 LayerSamples::Sample ReferenceSample(const Model& reference, double u, double v,
                                      const RegionLayout& layout) {
   LayerSamples::Sample sample;
   sample.u = u;
   sample.v = v;
   sample.region = AssignRegion(reference, u, v, layout);
-  std::array<Tangents, LayerSamples::kDepths> at;
-  for (int d = 0; d < LayerSamples::kDepths; ++d) {
-    at[d] = TangentsAt(reference, u, v, kDepthW[d]);
-    Eigen::Matrix3d basis;
-    basis << at[d].xu, at[d].xv, at[d].xw;
-    const Eigen::Vector3d normal = at[d].xu.cross(at[d].xv).normalized();
-    sample.normal_coefficients[d] = basis.partialPivLu().solve(normal);
-  }
   for (int k = 0; k < kWallLayers; ++k) {
-    sample.xu[k] = at[kLayerOfDepth[k]].xu;
-    sample.xv[k] = at[kLayerOfDepth[k]].xv;
+    const Tangents at = TangentsAt(reference, u, v, kLayerDepth[k]);
+    sample.xu[k] = at.xu;
+    sample.xv[k] = at.xv;
   }
-  const Tangents& mid = at[2];
-  const Eigen::Vector3d area = mid.xu.cross(mid.xv);
+  const Eigen::Vector3d area = sample.xu[1].cross(sample.xv[1]);
   sample.weight = area.norm() / std::cos(u);
-  sample.third_thickness = ThirdThicknesses(reference, u, v, area.normalized());
+  const Bounds bounds = ThirdBounds(reference, u, v);
+  sample.chord = (bounds[kWallLayers] - bounds[0]).norm();
+  sample.third_thickness = ThirdThicknesses(bounds, area.normalized());
   return sample;
 }
 
@@ -84,25 +76,21 @@ LayerSamples::Sample ReferenceSample(const Model& reference, double u, double v,
 void AddSample(const LayerSamples::Sample& sample, const Model& current,
                RegionLayers* sum) {
   const double w = sample.weight;
-  std::array<Tangents, LayerSamples::kDepths> at;
-  for (int d = 0; d < LayerSamples::kDepths; ++d) {
-    at[d] = TangentsAt(current, sample.u, sample.v, kDepthW[d]);
-    const Eigen::Vector3d& c = sample.normal_coefficients[d];
-    const Eigen::Vector3d fn =
-        c[0] * at[d].xu + c[1] * at[d].xv + c[2] * at[d].xw;
-    const double err = 100.0 * 0.5 * (fn.squaredNorm() - 1.0);
-    sum->err_percent += w * kSimpson[d] * err;
-    for (int k = 0; k < kWallLayers; ++k) {
-      if (kLayerOfDepth[k] == d) sum->layers[k].err_percent += w * err;
-    }
-  }
-  const Eigen::Vector3d normal = at[2].xu.cross(at[2].xv).normalized();
-  const std::array<double, kWallLayers> thickness =
-      ThirdThicknesses(current, sample.u, sample.v, normal);
+  std::array<Tangents, kWallLayers> at;
   for (int k = 0; k < kWallLayers; ++k) {
-    const Tangents& t = at[kLayerOfDepth[k]];
-    const SurfaceStrain strain = PlaneStrain(sample.xu[k], sample.xv[k], t.xu,
-                                             t.xv, sample.xv[k], sample.xu[k]);
+    at[k] = TangentsAt(current, sample.u, sample.v, kLayerDepth[k]);
+  }
+  const Bounds bounds = ThirdBounds(current, sample.u, sample.v);
+  const double stretch =
+      (bounds[kWallLayers] - bounds[0]).norm() / sample.chord;
+  sum->err_percent += w * 100.0 * 0.5 * (stretch * stretch - 1.0);
+  const Eigen::Vector3d normal = at[1].xu.cross(at[1].xv).normalized();
+  const std::array<double, kWallLayers> thickness =
+      ThirdThicknesses(bounds, normal);
+  for (int k = 0; k < kWallLayers; ++k) {
+    const SurfaceStrain strain =
+        PlaneStrain(sample.xu[k], sample.xv[k], at[k].xu, at[k].xv,
+                    sample.xv[k], sample.xu[k]);
     LayerStrain& layer = sum->layers[k];
     layer.ecc_percent += w * 100.0 * strain.ecc;
     layer.ell_percent += w * 100.0 * strain.ell;
@@ -116,8 +104,8 @@ void Divide(double weight, RegionLayers* region) {
       weight > 0.0 ? 1.0 / weight : std::numeric_limits<double>::quiet_NaN();
   region->err_percent *= scale;
   for (LayerStrain& layer : region->layers) {
-    for (double* value : {&layer.ecc_percent, &layer.ell_percent,
-                          &layer.err_percent, &layer.thickening_percent}) {
+    for (double* value :
+         {&layer.ecc_percent, &layer.ell_percent, &layer.thickening_percent}) {
       *value *= scale;
     }
   }
