@@ -19,7 +19,9 @@
 #include <cstdio>
 
 #include "gtest/gtest.h"
+#include "nlohmann/json.hpp"
 #include "pfdm/fit/stages/fitter.h"
+#include "pfdm/io/fit_json.h"
 #include "pfdm/phantom/lv_cylinder.h"
 #include "pfdm/phantom/lv_layer_truth.h"
 #include "pfdm/report/fit_analysis.h"
@@ -134,6 +136,17 @@ TEST_P(LvLayerStrainTest, EachLayerOfEachSegmentAgainstThePhantoms) {
     }
     EXPECT_LT(worst.err, c.err);
   }
+  // fit.json holds them: mid 2's endocardial Ecc at ES, its Err.
+  const auto json = nlohmann::json::parse(
+      FitJson(phantom.points, fit, FitOptions(), analysis));
+  const size_t es = fit.frames.size() - 1;
+  const RegionLayers& mid2 = analysis.region_layers[es][7];
+  EXPECT_EQ(json["regions"][7]["layers"]["endocardium"]["ecc_percent"][es]
+                .get<double>(),
+            mid2.layers[0].ecc_percent);
+  EXPECT_EQ(json["regions"][7]["err_percent"][es].get<double>(),
+            mid2.err_percent);
+  EXPECT_TRUE(json.contains("layers_definition"));
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -164,7 +177,13 @@ TEST(LvLayerStrainTest, AMidWallFitHasNoLayers) {
   const SequenceFit fit =
       FitSequence(phantom.points, ModelConfig::Paper(17), FitOptions());
   ASSERT_FALSE(fit.config.Solid());
-  EXPECT_TRUE(AnalyzeFit(fit).region_layers.empty());
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  EXPECT_TRUE(analysis.region_layers.empty());
+  const auto json = nlohmann::json::parse(
+      FitJson(phantom.points, fit, FitOptions(), analysis));
+  EXPECT_FALSE(json["regions"][7].contains("layers"));
+  EXPECT_FALSE(json["regions"][7].contains("err_percent"));
+  EXPECT_FALSE(json.contains("layers_definition"));
 }
 
 }  // namespace
