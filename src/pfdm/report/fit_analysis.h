@@ -32,7 +32,8 @@ struct FitAnalysis {
   std::vector<GlobalStrain> strain;                      // Per frame.
   // A solid's strain per layer (layer_strain.h), [frame][region] against
   // the ED frame; empty without a wall.  Where a region's numbers are left
-  // out (below), so are its layers'.
+  // out (below), so are its layers'; where a frame's rotation is, the
+  // thirds' thickening (contours place no layer inside the wall).
   std::vector<std::vector<RegionLayers>> region_layers;
   // Per frame, whether its turn about the long axis is measured
   // (RotationMeasured).  Where it is not, clinical's rotations, twists,

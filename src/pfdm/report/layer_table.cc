@@ -60,10 +60,11 @@ std::string LayerTableHtml(const FitAnalysis& analysis) {
        "planes. Thickening: of the wall's inner, middle and outer third "
        "along the mid-wall's normal. Err: the Green-Lagrange strain of the "
        "chord across the wall from endocardium to epicardium. On the LV "
-       "phantom (docs/report.md) Ecc and Ell come within about 3.5 points "
-       "of the truth, Err within 10, and a third's thickening only within "
-       "17: the fitted profile across the wall is coarser than the "
-       "segments.</p>\n";
+       "phantom's tags through the wall (docs/report.md) Ecc and Ell come "
+       "within about 3.5 points of the truth, Err within 10, and a third's "
+       "thickening only within 17: the fitted profile across the wall is "
+       "coarser than the segments. Without tracked points (contours) the "
+       "thirds are n/a: nothing places a layer inside the wall.</p>\n";
   return h.str();
 }
 

@@ -36,6 +36,7 @@ struct Case {
   LvThickeningLaw law;
   double noise_mm;
   double ecc, ell, thickening, err;
+  LvSampling sampling = LvSampling::kTags;
 };
 
 // Worst |fit - truth| over the frames and measured segments, per quantity.
@@ -104,6 +105,7 @@ TEST_P(LvLayerStrainTest, EachLayerOfEachSegmentAgainstThePhantoms) {
   options.geometry = c.geometry;
   options.law = c.law;
   options.noise_mm = c.noise_mm;
+  options.sampling = c.sampling;
   if (c.geometry == LvGeometry::kCylinder) {
     options.deformation = CylinderDeformation();
     options.num_tags = 1500;
@@ -132,9 +134,14 @@ TEST_P(LvLayerStrainTest, EachLayerOfEachSegmentAgainstThePhantoms) {
     for (int k = 0; k < kWallLayers; ++k) {
       EXPECT_LT(worst.ecc[k], c.ecc) << kLayerNames[k];
       EXPECT_LT(worst.ell[k], c.ell) << kLayerNames[k];
-      EXPECT_LT(worst.thickening[k], c.thickening) << kLayerNames[k];
+      EXPECT_LE(worst.thickening[k], c.thickening) << kLayerNames[k];
     }
     EXPECT_LT(worst.err, c.err);
+  }
+  if (c.sampling == LvSampling::kSaxSlices) {
+    // The layers inside the wall are not seen: no third's thickening.
+    EXPECT_TRUE(
+        std::isnan(analysis.region_layers[1][7].layers[1].thickening_percent));
   }
   // fit.json holds them: mid 2's endocardial Ecc at ES, its Err.
   const auto json = nlohmann::json::parse(
@@ -166,7 +173,12 @@ INSTANTIATE_TEST_SUITE_P(
              18.0, 6.5},
         // Ecc 3.54, Ell 5.53, thirds 17.1, Err 5.5.
         Case{LvGeometry::kCylinder, LvThickeningLaw::kIncompressible, 0.5, 4.0,
-             6.5, 18.5, 6.5}));
+             6.5, 18.5, 6.5},
+        // Both walls' contours on 9 short-axis slices, untracked: Ecc 4.9 /
+        // 7.7 / 4.8, Ell 13.1 (the slices see no material move along the
+        // axis), Err 11.3; the thirds n/a.
+        Case{LvGeometry::kProlate, LvThickeningLaw::kDesigned, 0.5, 8.5, 14.0,
+             0.0, 12.5, LvSampling::kSaxSlices}));
 
 // A mid-wall surface has no wall: no layers at all, not zeros.
 TEST(LvLayerStrainTest, AMidWallFitHasNoLayers) {
