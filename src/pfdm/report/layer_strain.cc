@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "pfdm/report/surface_strain.h"
 #include "pfdm/util/angles.h"
@@ -22,21 +23,36 @@ struct Tangents {
   Eigen::Vector3d xu, xv;
 };
 
-Tangents TangentsAt(const Model& model, double u, double v, double w) {
-  const double scale = 0.5 / kStep;
-  return {
-      (model.WorldPoint(u + kStep, v, w) - model.WorldPoint(u - kStep, v, w)) *
-          scale,
-      (model.WorldPoint(u, v + kStep, w) - model.WorldPoint(u, v - kStep, w)) *
-          scale};
-}
+// The functions at a sample's ring and its two neighbours in u, which the
+// ring's samples share (FunctionsAt costs more than the point).
+struct Ring {
+  Ring(const Model& model, double u)
+      : model(model),
+        u(u),
+        at(model.FunctionsAt(u)),
+        above(model.FunctionsAt(u + kStep)),
+        below(model.FunctionsAt(u - kStep)) {}
+  Eigen::Vector3d Point(double v, double w) const {
+    return model.WorldPointWith(at, u, v, w);
+  }
+  Tangents TangentsAt(double v, double w) const {
+    const double scale = 0.5 / kStep;
+    return {(model.WorldPointWith(above, u + kStep, v, w) -
+             model.WorldPointWith(below, u - kStep, v, w)) *
+                scale,
+            (Point(v + kStep, w) - Point(v - kStep, w)) * scale};
+  }
+  const Model& model;
+  double u;
+  FunctionValues at, above, below;
+};
 
 // The thirds' bounds across the wall at (u, v), endocardium first.
 using Bounds = std::array<Eigen::Vector3d, kWallLayers + 1>;
-Bounds ThirdBounds(const Model& model, double u, double v) {
+Bounds ThirdBounds(const Ring& ring, double v) {
   Bounds bounds;
   for (int k = 0; k <= kWallLayers; ++k) {
-    bounds[k] = model.WorldPoint(u, v, kThirdBounds[k]);
+    bounds[k] = ring.Point(v, kThirdBounds[k]);
   }
   return bounds;
 }
@@ -53,34 +69,34 @@ std::array<double, kWallLayers> ThirdThicknesses(
 
 // The reference's share of sample (u, v): region, area weight (per unit of
 // sin u and v, the mid-wall's), tangents, chord, thirds.
-LayerSamples::Sample ReferenceSample(const Model& reference, double u, double v,
+LayerSamples::Sample ReferenceSample(const Ring& ring, double v,
                                      const RegionLayout& layout) {
   LayerSamples::Sample sample;
-  sample.u = u;
+  sample.u = ring.u;
   sample.v = v;
-  sample.region = AssignRegion(reference, u, v, layout);
+  sample.region = AssignRegion(ring.model, ring.u, v, layout);
   for (int k = 0; k < kWallLayers; ++k) {
-    const Tangents at = TangentsAt(reference, u, v, kLayerDepth[k]);
+    const Tangents at = ring.TangentsAt(v, kLayerDepth[k]);
     sample.xu[k] = at.xu;
     sample.xv[k] = at.xv;
   }
   const Eigen::Vector3d area = sample.xu[1].cross(sample.xv[1]);
-  sample.weight = area.norm() / std::cos(u);
-  const Bounds bounds = ThirdBounds(reference, u, v);
+  sample.weight = area.norm() / std::cos(ring.u);
+  const Bounds bounds = ThirdBounds(ring, v);
   sample.chord = (bounds[kWallLayers] - bounds[0]).norm();
   sample.third_thickness = ThirdThicknesses(bounds, area.normalized());
   return sample;
 }
 
 // Adds sample's strains in `current` to its region's sums, weighted.
-void AddSample(const LayerSamples::Sample& sample, const Model& current,
+void AddSample(const LayerSamples::Sample& sample, const Ring& ring,
                RegionLayers* sum) {
   const double w = sample.weight;
   std::array<Tangents, kWallLayers> at;
   for (int k = 0; k < kWallLayers; ++k) {
-    at[k] = TangentsAt(current, sample.u, sample.v, kLayerDepth[k]);
+    at[k] = ring.TangentsAt(sample.v, kLayerDepth[k]);
   }
-  const Bounds bounds = ThirdBounds(current, sample.u, sample.v);
+  const Bounds bounds = ThirdBounds(ring, sample.v);
   const double stretch =
       (bounds[kWallLayers] - bounds[0]).norm() / sample.chord;
   sum->err_percent += w * 100.0 * 0.5 * (stretch * stretch - 1.0);
@@ -121,11 +137,11 @@ LayerSamples SampleLayers(const Model& reference, const RegionLayout& layout) {
   const double s_max = std::sin(reference.config.u_max);
   out.samples.reserve(kLatitudes * kLongitudes);
   for (int i = 0; i < kLatitudes; ++i) {
-    const double u =
-        std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudes);
+    const Ring ring(
+        reference, std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudes));
     for (int j = 0; j < kLongitudes; ++j) {
       const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudes;
-      out.samples.push_back(ReferenceSample(reference, u, v, layout));
+      out.samples.push_back(ReferenceSample(ring, v, layout));
     }
   }
   return out;
@@ -136,8 +152,10 @@ std::vector<RegionLayers> SummarizeLayers(const LayerSamples& reference,
   if (reference.samples.empty()) return {};
   std::vector<RegionLayers> regions(reference.num_regions);
   std::vector<double> weight(reference.num_regions, 0.0);
+  std::optional<Ring> ring;
   for (const LayerSamples::Sample& sample : reference.samples) {
-    AddSample(sample, current, &regions[sample.region]);
+    if (!ring || ring->u != sample.u) ring.emplace(current, sample.u);
+    AddSample(sample, *ring, &regions[sample.region]);
     weight[sample.region] += sample.weight;
   }
   for (size_t r = 0; r < regions.size(); ++r) Divide(weight[r], &regions[r]);
