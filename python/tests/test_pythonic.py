@@ -56,7 +56,9 @@ def test_to_dataframe_holds_fit_json_numbers(lv_fit):
     _, _, fit = lv_fit
     table = fit.to_dataframe()
     assert list(table.columns) == ["frame", "time_ms", "quantity", "segment",
-                                   "value", "ci95_low", "ci95_high"]
+                                   "layer", "value", "ci95_low", "ci95_high"]
+    # A mid-wall fit has no wall: no row of a layer.
+    assert table.layer.isna().all()
     assert table.ci95_low.isna().all()  # uncertainty off
     document = fit.to_dict()
     twist = table[(table.quantity == "net_twist_deg") & table.segment.isna()]

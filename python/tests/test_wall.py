@@ -50,6 +50,30 @@ def test_tags_through_the_wall_fit_a_solid(wall_tags):
     assert ours == cli
 
 
+def test_strain_per_layer_in_the_long_table(wall_tags):
+    _, csv = wall_tags
+    fit = pfdm.fit(str(csv), local=False)
+    table = fit.to_dataframe()
+    layers = table[table.layer.notna()]
+    # 3 frames x 17 segments x 3 layers of Ecc, Ell and a third's thickening.
+    assert len(layers) == 3 * 17 * 3 * 3
+    assert set(layers.layer) == {"endocardium", "midwall", "epicardium"}
+    region = fit.to_dict()["regions"][7]
+    endo = layers[(layers.segment == region["name"]) &
+                  (layers.layer == "endocardium") &
+                  (layers.quantity == "ecc_percent")].sort_values("frame")
+    assert list(endo.value) == pytest.approx(
+        region["layers"]["endocardium"]["ecc_percent"])
+    # The endocardium shortens more than the epicardium at ES (the phantom:
+    # -25.5 % against -6.3 % in the mid segments).
+    epi = region["layers"]["epicardium"]["ecc_percent"][2]
+    assert endo.value.iloc[2] < epi - 10.0
+    # Err across the wall, one per segment and frame, no layer.
+    err = table[(table.quantity == "err_percent") & table.layer.isna()]
+    assert len(err) == 3 * 17
+    assert err[err.frame == 2].value.min() > 10.0
+
+
 def test_midwall_keeps_one_surface(wall_tags):
     _, csv = wall_tags
     fit = pfdm.fit(str(csv), wall="midwall", local=False)
@@ -58,6 +82,9 @@ def test_midwall_keeps_one_surface(wall_tags):
     assert "midwall_volume_ml" in fit[0].clinical
     names = list(fit.function_names)
     np.testing.assert_array_equal(fit.functions[:, :, names.index("h")], 0.0)
+    # No wall, no layers: absent, not zeros.
+    assert "layers" not in fit.to_dict()["regions"][7]
+    assert fit.to_dataframe().layer.isna().all()
 
 
 def test_surface_ed_frame_and_trigger_times_reach_the_fit(wall_tags):

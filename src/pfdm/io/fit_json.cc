@@ -345,6 +345,10 @@ json RegionEntry(const FitAnalysis& analysis, size_t r, double peak_ecc,
                        ? 0.0
                        : analysis.region_motion[0][r].area_mm2}};
   if (solid) entry["thickening_percent"] = Values(thickening);
+  if (!analysis.region_layers.empty()) {
+    entry["err_percent"] = RegionErrJson(analysis, r);
+    entry["layers"] = RegionLayersJson(analysis, r);
+  }
   return entry;
 }
 
@@ -401,6 +405,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                    {"gauge_convention", fit_json_text::kGaugeConvention},
                    {"clinical_definition", fit_json_text::kClinicalDefinition}};
   if (solid) document["wall_definition"] = fit_json_text::kWallDefinition;
+  if (!analysis.region_layers.empty()) {
+    document["layers_definition"] = fit_json_text::kLayersDefinition;
+  }
   const json not_measured = NotMeasured(analysis);
   if (!not_measured.is_null()) document["not_measured"] = not_measured;
   if (analysis.segmentation) {

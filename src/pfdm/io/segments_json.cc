@@ -30,6 +30,8 @@ constexpr const char* kPlainDefinition =
 
 double Degrees(double radians) { return radians * kDegreesPerRadian; }
 
+json Number(double value) { return std::isnan(value) ? json() : json(value); }
+
 json Insertion(const RegionLayout& layout) {
   const bool inferior = !std::isnan(layout.inferior_v);
   json arc = json();
@@ -89,6 +91,33 @@ json DyssynchronySection(const FitAnalysis& analysis) {
            "about its pole)"},
           {"time_to_peak", times},
           {"peak_frame", frames}};
+}
+
+json RegionLayersJson(const FitAnalysis& analysis, size_t r) {
+  if (analysis.region_layers.empty()) return json();
+  json layers = json::object();
+  for (int k = 0; k < kWallLayers; ++k) {
+    json ecc = json::array(), ell = json::array(), thickening = json::array();
+    for (const std::vector<RegionLayers>& frame : analysis.region_layers) {
+      const LayerStrain& layer = frame[r].layers[k];
+      ecc.push_back(Number(layer.ecc_percent));
+      ell.push_back(Number(layer.ell_percent));
+      thickening.push_back(Number(layer.thickening_percent));
+    }
+    layers[kLayerNames[k]] = {{"ecc_percent", ecc},
+                              {"ell_percent", ell},
+                              {"thickening_percent", thickening}};
+  }
+  return layers;
+}
+
+json RegionErrJson(const FitAnalysis& analysis, size_t r) {
+  if (analysis.region_layers.empty()) return json();
+  json err = json::array();
+  for (const std::vector<RegionLayers>& frame : analysis.region_layers) {
+    err.push_back(Number(frame[r].err_percent));
+  }
+  return err;
 }
 
 }  // namespace pfdm

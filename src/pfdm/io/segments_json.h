@@ -1,5 +1,6 @@
 // fit.json's account of where the segments are: whether they are the AHA's,
-// anchored to the RV insertion, and why not; the apex cap's coverage.
+// anchored to the RV insertion, and why not; the apex cap's coverage; a
+// solid's strain per layer of each segment.
 #ifndef PFDM_IO_SEGMENTS_JSON_H_
 #define PFDM_IO_SEGMENTS_JSON_H_
 
@@ -20,6 +21,17 @@ nlohmann::ordered_json SegmentsSection(const FitAnalysis& analysis);
 //  "definition", "time_to_peak": per segment from ED (null where n/a),
 //  "peak_frame": per segment (null where n/a)}: FitAnalysis::dyssynchrony.
 nlohmann::ordered_json DyssynchronySection(const FitAnalysis& analysis);
+
+// A solid's strain per layer of region r over the frames
+// (FitAnalysis::region_layers, report/layer_strain.h): {"endocardium":
+// {"ecc_percent", "ell_percent", "thickening_percent"}, "midwall": ...,
+// "epicardium": ...}, each a list per frame, null where not measured.  Null
+// without a wall.
+nlohmann::ordered_json RegionLayersJson(const FitAnalysis& analysis, size_t r);
+
+// Region r's Err across the wall per frame (null where not measured); null
+// without a wall.
+nlohmann::ordered_json RegionErrJson(const FitAnalysis& analysis, size_t r);
 
 }  // namespace pfdm
 

@@ -12,6 +12,7 @@
 #include "pfdm/model/model.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
+#include "pfdm/report/layer_strain.h"
 #include "pfdm/report/number_sd.h"
 #include "pfdm/report/segment_timing.h"
 #include "pfdm/report/wall_motion.h"
@@ -29,6 +30,11 @@ struct FitAnalysis {
   std::vector<WallRegion> regions;
   std::vector<std::vector<RegionMotion>> region_motion;  // [frame][region]
   std::vector<GlobalStrain> strain;                      // Per frame.
+  // A solid's strain per layer (layer_strain.h), [frame][region] against
+  // the ED frame; empty without a wall.  Where a region's numbers are left
+  // out (below), so are its layers'; where a frame's rotation is, the
+  // thirds' thickening (contours place no layer inside the wall).
+  std::vector<std::vector<RegionLayers>> region_layers;
   // Per frame, whether its turn about the long axis is measured
   // (RotationMeasured).  Where it is not, clinical's rotations, twists,
   // torsion and shear angle, the regions' rotation and Ecl and strain's

@@ -10,6 +10,7 @@
 #include "pfdm/report/cycle_charts.h"
 #include "pfdm/report/interval_text.h"
 #include "pfdm/report/key_numbers.h"
+#include "pfdm/report/layer_table.h"
 #include "pfdm/report/report_text.h"
 #include "pfdm/report/segment_curves.h"
 #include "pfdm/report/surface_view.h"
@@ -365,7 +366,7 @@ std::string FitReportHtml(const PointSequence& points, const SequenceFit& fit,
   }
   h << SurfaceViewHtml(points, fit, analysis)
     << PlotSections(parameters_svg, analysis) << FrameTable(fit, analysis)
-    << RegionalSection(fit, analysis, bullseye_svg)
+    << RegionalSection(fit, analysis, bullseye_svg) << LayerTableHtml(analysis)
     << SegmentCurvesHtml(analysis) << Footer(analysis) << "</body></html>\n";
   return h.str();
 }
