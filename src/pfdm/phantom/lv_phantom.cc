@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "pfdm/phantom/lv_contours.h"
 #include "pfdm/phantom/lv_slices.h"
 #include "pfdm/util/angles.h"
 #include "pfdm/util/error.h"
@@ -52,44 +53,6 @@ std::vector<Eigen::Vector3d> PlaceTags(const LvShape& shape,
     tags.push_back(shape.Position(nu, phi, w));
   }
   return tags;
-}
-
-// Frame `motion`'s contour points where the image planes cut the wall,
-// `per_contour` a plane and surface at uniformly random ED longitudes; ids
-// from first_id on.
-std::vector<DataPoint> SliceContours(const LvShape& shape,
-                                     const LvPhantomOptions& options,
-                                     const LvFrameMotion& motion,
-                                     const std::vector<LvImagePlane>& planes,
-                                     int per_contour, std::int64_t first_id,
-                                     std::mt19937* placement,
-                                     std::mt19937* noise_random) {
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  std::normal_distribution<double> noise(0.0, 1.0);
-  std::vector<std::pair<double, WallLayer>> surfaces{
-      {0.0, WallLayer::kAnywhere}};
-  if (options.tags == LvTagLayer::kWall) {
-    surfaces = {{-1.0, WallLayer::kEndocardium}, {1.0, WallLayer::kEpicardium}};
-  }
-  std::vector<DataPoint> points;
-  for (const LvImagePlane& plane : planes) {
-    for (const auto& [w, layer] : surfaces) {
-      for (int j = 0; j < per_contour; ++j) {
-        const double phi = -kPi + 2.0 * kPi * uniform(*placement);
-        const std::optional<Eigen::Vector3d> cut =
-            SliceCut(shape, options.deformation, motion, plane, phi, w);
-        Eigen::Vector3d error(noise(*noise_random), noise(*noise_random),
-                              noise(*noise_random));
-        // Contours are drawn in the image: no error across the plane.
-        error -= plane.normal * plane.normal.dot(error);
-        if (!cut) continue;
-        const std::int64_t id =
-            first_id + static_cast<std::int64_t>(points.size());
-        points.push_back({id, *cut + options.noise_mm * error, layer});
-      }
-    }
-  }
-  return points;
 }
 
 // Moves each point of each frame, with probability outlier_fraction, by a
@@ -165,14 +128,20 @@ LvShape CheckedShape(const LvShapeSize& size) {
 }
 
 // The short-axis image planes, fixed where frame 0 puts them.
+Eigen::Isometry3d EdWorldFromBody(const LvShape& shape,
+                                  const LvPhantomOptions& options,
+                                  int num_frames) {
+  return LvWorldPose() *
+         RigidBodyMotion(shape, ScenarioMotion(options.kinematics, 0,
+                                               num_frames, options.breathing)
+                                    .rigid);
+}
+
 std::vector<LvImagePlane> ImagePlanes(const LvShape& shape,
                                       const LvPhantomOptions& options,
                                       int num_frames) {
   const Eigen::Isometry3d world_from_body =
-      LvWorldPose() *
-      RigidBodyMotion(shape, ScenarioMotion(options.kinematics, 0, num_frames,
-                                            options.breathing)
-                                 .rigid);
+      EdWorldFromBody(shape, options, num_frames);
   std::vector<LvImagePlane> planes;
   for (double h : LvSliceHeights(options)) {
     planes.push_back(ShortAxisPlane(world_from_body, h * shape.base_z()));
@@ -365,7 +334,10 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
   const std::vector<LvImagePlane> planes =
       slices ? ImagePlanes(shape, options, num_frames)
              : std::vector<LvImagePlane>();
-  const int per_contour = slices ? ContourPoints(options, planes.size()) : 0;
+  const int per_contour =
+      slices
+          ? ContourPoints(options, planes.size() + options.num_long_axis_planes)
+          : 0;
   const LvFrameMotion ed =
       ScenarioMotion(options.kinematics, 0, num_frames, options.breathing);
   const double insertion_nu =
@@ -413,9 +385,17 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
       frame.points.push_back({i, x});
     }
     if (slices) {
-      frame.points = SliceContours(
-          shape, options, motion, planes, per_contour,
-          static_cast<std::int64_t>(t) * options.num_tags, &placement, &random);
+      const std::int64_t first_id =
+          static_cast<std::int64_t>(t) * options.num_tags;
+      frame.points = SliceContours(shape, options, motion, planes, per_contour,
+                                   first_id, &placement, &random);
+      const std::vector<DataPoint> long_axis = LongAxisContours(
+          shape, options, motion, EdWorldFromBody(shape, options, num_frames),
+          per_contour,
+          first_id + static_cast<std::int64_t>(frame.points.size()), &placement,
+          &random);
+      frame.points.insert(frame.points.end(), long_axis.begin(),
+                          long_axis.end());
     }
     phantom.points.frames.push_back(std::move(frame));
 

@@ -115,6 +115,9 @@ struct LvPhantomOptions {
   // sax-slices: planes per frame; 0: 3 for a mid-ventricular region, 9
   // for the full LV.
   int num_slices = 0;
+  // sax-slices: long-axis planes too, through frame 0's long axis, 180 / n
+  // degrees apart (biv-me's views: 3), each one contour of both sides.
+  int num_long_axis_planes = 0;
 };
 
 // The region's ED heights, fractions of the mid-wall's length from its apex

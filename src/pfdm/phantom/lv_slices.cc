@@ -1,5 +1,7 @@
 #include "pfdm/phantom/lv_slices.h"
 
+#include <cmath>
+
 namespace pfdm {
 namespace {
 
@@ -41,6 +43,41 @@ std::optional<Eigen::Vector3d> SliceCut(const LvShape& shape,
   for (int i = 0; i < kBisections; ++i) {
     const double middle = 0.5 * (low + high);
     (above(middle) < 0.0 ? low : high) = middle;
+  }
+  return moved(0.5 * (low + high));
+}
+
+LvImagePlane LongAxisPlane(const Eigen::Isometry3d& world_from_body,
+                           double angle) {
+  LvImagePlane plane;
+  plane.normal = world_from_body.linear() *
+                 Eigen::Vector3d(-std::sin(angle), std::cos(angle), 0.0);
+  plane.offset = plane.normal.dot(world_from_body * Eigen::Vector3d::Zero());
+  return plane;
+}
+
+std::optional<Eigen::Vector3d> LongAxisCut(const LvShape& shape,
+                                           const LvDeformation& deformation,
+                                           const LvFrameMotion& motion,
+                                           const LvImagePlane& plane, double nu,
+                                           double phi0, double w) {
+  const Eigen::Isometry3d world_from_body =
+      LvWorldPose() * RigidBodyMotion(shape, motion.rigid);
+  auto moved = [&](double phi) -> Eigen::Vector3d {
+    return world_from_body *
+           DeformedBodyPoint(deformation,
+                             MaterialPointAt(shape, shape.Position(nu, phi, w)),
+                             motion.progress);
+  };
+  auto side = [&](double phi) {
+    return plane.normal.dot(moved(phi)) - plane.offset;
+  };
+  double low = phi0 - kLongAxisBracket, high = phi0 + kLongAxisBracket;
+  const double at_low = side(low);
+  if (!(at_low * side(high) < 0.0)) return std::nullopt;
+  for (int i = 0; i < kBisections; ++i) {
+    const double middle = 0.5 * (low + high);
+    (side(middle) * at_low > 0.0 ? low : high) = middle;
   }
   return moved(0.5 * (low + high));
 }

@@ -37,6 +37,23 @@ std::optional<Eigen::Vector3d> SliceCut(const LvShape& shape,
                                         const LvImagePlane& plane, double phi,
                                         double w);
 
+// The plane containing the body's z axis at angle `angle` (radians) from
+// its x axis, in the world of `world_from_body`.
+LvImagePlane LongAxisPlane(const Eigen::Isometry3d& world_from_body,
+                           double angle);
+
+// Where a long-axis plane cuts surface w's ring of ED height parameter nu
+// at frame `motion`: the material point (nu, phi, w), phi within
+// kLongAxisBracket of `phi0` (the plane's longitude at ED, or the
+// opposite side's), whose moved position lies on the plane.  nullopt when
+// the ring does not cross the plane there.
+inline constexpr double kLongAxisBracket = 0.6;  // rad: twist stays below.
+std::optional<Eigen::Vector3d> LongAxisCut(const LvShape& shape,
+                                           const LvDeformation& deformation,
+                                           const LvFrameMotion& motion,
+                                           const LvImagePlane& plane, double nu,
+                                           double phi0, double w);
+
 }  // namespace pfdm
 
 #endif  // PFDM_PHANTOM_LV_SLICES_H_

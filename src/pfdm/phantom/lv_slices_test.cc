@@ -40,6 +40,39 @@ TEST(LvSlicesTest, CutsTheMovedWallWhereThePlaneIs) {
                    .has_value());
 }
 
+// A long-axis plane through the ED axis: at ED it cuts ring nu at the
+// plane's longitude (or the opposite one), on surface w; at end-systole,
+// twisted, at another longitude but on the plane still.
+TEST(LvSlicesTest, LongAxisPlaneCutsEachRingOnItsTwoSides) {
+  const LvShape shape;
+  const LvDeformation design;
+  const Eigen::Isometry3d pose = LvWorldPose();
+  const double angle = 0.9;
+  const LvImagePlane plane = LongAxisPlane(pose, angle);
+  EXPECT_NEAR(plane.normal.norm(), 1.0, 1e-12);
+  const LvFrameMotion ed = ScenarioMotion(LvKinematics::kSystole, 0, 5, true);
+  const LvFrameMotion es = ScenarioMotion(LvKinematics::kSystole, 4, 5, true);
+  for (double side : {0.0, 3.14159265358979}) {
+    const auto at_ed =
+        LongAxisCut(shape, design, ed, plane, 1.2, angle + side, -1.0);
+    ASSERT_TRUE(at_ed.has_value());
+    const Eigen::Vector3d body = pose.inverse() * *at_ed;
+    EXPECT_NEAR(shape.Transmural(body), -1.0, 1e-9);
+    EXPECT_NEAR(std::remainder(std::atan2(body.y(), body.x()) - angle - side,
+                               2 * 3.14159265358979),
+                0.0, 1e-9);
+    const auto at_es =
+        LongAxisCut(shape, design, es, plane, 1.2, angle + side, -1.0);
+    ASSERT_TRUE(at_es.has_value());
+    EXPECT_NEAR(plane.normal.dot(*at_es) - plane.offset, 0.0, 1e-9);
+    EXPECT_GT((*at_es - *at_ed).norm(), 1.0);
+  }
+  // A quarter turn away the ring does not cross the plane within the
+  // bracket.
+  EXPECT_FALSE(LongAxisCut(shape, design, ed, plane, 1.2, angle + 1.57, 0.0)
+                   .has_value());
+}
+
 // The phantom's short-axis slices: untracked contours (an id per point and
 // frame) on fixed planes, in-plane noise only; the endocardium and the
 // epicardium named with wall tags.
