@@ -32,6 +32,11 @@ def test_guide_points_fit_and_mitral_valve_volumes_equal_the_clis():
     assert cli["segments"]["anchor"] == "10 RV_INSERT points of GPFile_000.txt"
     assert cli["regions"][1]["name"] == "basal anteroseptal"
     assert len(fit) == 25
+    # Slice 2 holds the outflow tract alone at frames 6 and 13: left out,
+    # as in the CLI, and said so; the pull toward the previous frame is on.
+    assert [(c["frame"], c["contour"]) for c in ours["left_out_contours"]] == [
+        (6, "SAX_LV_ENDOCARDIAL 2"), (13, "SAX_LV_ENDOCARDIAL 2")]
+    assert ours["model"]["temporal_prior_weight_used"] == 0.05
     assert fit.volume_surface == "cavity"  # Endocardial contours.
     # Contours: no turn about the axis is seen, so none is reported.
     assert all(frame.clinical["net_twist_deg"] is None for frame in fit.frames)

@@ -89,6 +89,16 @@ std::string PageHead(const PointSequence& points, const SequenceFit& fit,
     << (fit.config.Solid() ? "a solid from endocardium to epicardium"
                            : "one surface")
     << " (" << EscapeMarkup(fit.wall_reason) << ").</p>\n";
+  if (!fit.left_out.empty()) {
+    h << "<p class=\"note\">Left out of the fit, their slice holding the "
+         "outflow tract beside the long axis, not the ventricle round it "
+         "(docs/contour_sequences.md):";
+    for (const LeftOutContour& c : fit.left_out) {
+      h << " frame " << c.frame << " " << EscapeMarkup(c.contour) << " ("
+        << c.points << " points);";
+    }
+    h << "</p>\n";
+  }
   return h.str();
 }
 

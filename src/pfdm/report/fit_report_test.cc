@@ -54,6 +54,23 @@ TEST(FitReportTest, WhatIsNotMeasuredReadsNA) {
   EXPECT_EQ(CountOf(mixed, "<td>n/a</td>"), 4);
 }
 
+// Contours the reader left out (io/partial_rings.h) are named on the page;
+// without any, nothing is said.
+TEST(FitReportTest, NamesTheContoursLeftOut) {
+  PhantomOptions options;
+  options.num_points = 50;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  const std::string none =
+      WithoutScripts(FitReportHtml(phantom.points, fit, AnalyzeFit(fit), ""));
+  EXPECT_EQ(none.find("Left out of the fit"), std::string::npos);
+  fit.left_out.push_back({3, "SAX_LV_ENDOCARDIAL 2", 31, 149.0});
+  const std::string html =
+      WithoutScripts(FitReportHtml(phantom.points, fit, AnalyzeFit(fit), ""));
+  EXPECT_NE(html.find("frame 3 SAX_LV_ENDOCARDIAL 2 (31 points);"),
+            std::string::npos);
+}
+
 TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   PhantomOptions options;
   options.num_points = 50;
