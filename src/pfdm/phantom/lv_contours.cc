@@ -29,6 +29,13 @@ Eigen::Vector3d InPlaneError(const LvImagePlane& plane, double noise_mm,
   return noise_mm * error;
 }
 
+// The next contour point, its id first_id on.
+void AddPoint(const Eigen::Vector3d& x, WallLayer layer, std::int64_t first_id,
+              std::vector<DataPoint>* points) {
+  points->push_back(
+      {first_id + static_cast<std::int64_t>(points->size()), x, layer});
+}
+
 }  // namespace
 
 std::vector<DataPoint> LongAxisContours(
@@ -50,10 +57,7 @@ std::vector<DataPoint> LongAxisContours(
                         angle + (j % 2) * kPi, w);
         const Eigen::Vector3d error =
             InPlaneError(plane, options.noise_mm, &noise, noise_random);
-        if (!cut) continue;
-        const std::int64_t id =
-            first_id + static_cast<std::int64_t>(points.size());
-        points.push_back({id, *cut + error, layer});
+        if (cut) AddPoint(*cut + error, layer, first_id, &points);
       }
     }
   }
@@ -79,10 +83,7 @@ std::vector<DataPoint> SliceContours(const LvShape& shape,
             SliceCut(shape, options.deformation, motion, plane, phi, w);
         const Eigen::Vector3d error =
             InPlaneError(plane, options.noise_mm, &noise, noise_random);
-        if (!cut) continue;
-        const std::int64_t id =
-            first_id + static_cast<std::int64_t>(points.size());
-        points.push_back({id, *cut + error, layer});
+        if (cut) AddPoint(*cut + error, layer, first_id, &points);
       }
     }
   }
