@@ -22,19 +22,34 @@ std::string TypeOf(const std::string& contour) {
   return contour.substr(0, contour.find(' '));
 }
 
+// Points less their mean, as rows, and their principal directions
+// (svd.matrixV()'s columns, the largest spread first).
+struct Centred {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  Eigen::MatrixXd rows;
+  Eigen::Matrix3d directions;
+};
+Centred CentredPoints(const std::vector<Eigen::Vector3d>& points) {
+  Centred c;
+  for (const Eigen::Vector3d& p : points) c.mean += p;
+  c.mean /= static_cast<double>(points.size());
+  c.rows.resize(points.size(), 3);
+  for (size_t i = 0; i < points.size(); ++i) {
+    c.rows.row(i) = points[i] - c.mean;
+  }
+  c.directions =
+      Eigen::JacobiSVD<Eigen::MatrixXd>(c.rows, Eigen::ComputeFullV).matrixV();
+  return c;
+}
+
 // The least-squares line through `points`: a point on it and its direction.
 struct Line {
   Eigen::Vector3d point;
   Eigen::Vector3d direction;
 };
 Line FitLine(const std::vector<Eigen::Vector3d>& points) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  Eigen::MatrixXd centred(points.size(), 3);
-  for (size_t i = 0; i < points.size(); ++i) centred.row(i) = points[i] - mean;
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(centred, Eigen::ComputeFullV);
-  return {mean, svd.matrixV().col(0)};
+  const Centred c = CentredPoints(points);
+  return {c.mean, c.directions.col(0)};
 }
 
 // The largest angle between neighbouring directions, degrees.
@@ -58,7 +73,8 @@ std::vector<RingCircle> RingsFromApex(
     circles.back().contour = contour;
     centres.push_back(circles.back().centre);
   }
-  if (circles.size() < 3) return {};
+  // Which end is the base needs a ring between each end and the middle.
+  if (circles.size() < kMinRingsJudged) return {};
   const Eigen::Vector3d d = FitLine(centres).direction;
   std::sort(circles.begin(), circles.end(),
             [&](const RingCircle& a, const RingCircle& b) {
@@ -106,15 +122,11 @@ std::string SliceOf(const std::string& contour) {
 }  // namespace
 
 RingCircle FitRingCircle(const std::vector<Eigen::Vector3d>& ring) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : ring) mean += p;
-  mean /= static_cast<double>(ring.size());
-  Eigen::MatrixXd centred(ring.size(), 3);
-  for (size_t i = 0; i < ring.size(); ++i) centred.row(i) = ring[i] - mean;
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(centred, Eigen::ComputeFullV);
+  const Centred c = CentredPoints(ring);
+  const Eigen::MatrixXd& centred = c.rows;
   RingCircle circle;
-  circle.e1 = svd.matrixV().col(0);
-  circle.e2 = svd.matrixV().col(1);
+  circle.e1 = c.directions.col(0);
+  circle.e2 = c.directions.col(1);
   // Kasa's algebraic fit, x^2 + y^2 + D x + E y + F = 0: linear in D, E, F.
   Eigen::MatrixXd a(ring.size(), 3);
   Eigen::VectorXd b(ring.size());
@@ -126,7 +138,7 @@ RingCircle FitRingCircle(const std::vector<Eigen::Vector3d>& ring) {
   }
   const Eigen::Vector3d def = a.colPivHouseholderQr().solve(b);
   const double cx = -0.5 * def(0), cy = -0.5 * def(1);
-  circle.centre = mean + cx * circle.e1 + cy * circle.e2;
+  circle.centre = c.mean + cx * circle.e1 + cy * circle.e2;
   circle.radius = std::sqrt(std::max(0.0, cx * cx + cy * cy - def(2)));
   return circle;
 }

@@ -30,6 +30,9 @@ namespace pfdm {
 // rings' 0.27-0.51, the epicardial arcs' 0.11-0.34).
 inline constexpr double kPartialRingGapDeg = 90.0;
 inline constexpr double kBesideAxisRadii = 0.75;
+// Fewer rings of a type than this leave every ring in (the base's end is
+// told by the rings next to the ends).
+inline constexpr size_t kMinRingsJudged = 4;
 
 // A ring's least-squares plane (e1, e2) and circle in it.
 struct RingCircle {
@@ -49,15 +52,15 @@ double LargestGapDeg(const std::vector<Eigen::Vector3d>& ring,
 
 // One frame's points and, per point, its contour ("SAX_LV_ENDOCARDIAL 2":
 // the contour type and its slice).  Per short-axis type ("SAX_" types)
-// with at least 3 rings: the rings are ordered along the line through
-// their centres, the base at the end where they are wider; the most basal
-// one lies beside the axis when, seen from the line through the other
-// rings' centres, it leaves a gap wider than kPartialRingGapDeg and its
-// centre lies more than kBesideAxisRadii of its radius from that line.
-// That slice's short-axis contours of every type are then dropped from
-// *points and recorded in *left_out (its coverage seen from that line):
-// the plane holds the outflow tract, and its epicardial arc kept alone
-// still pulled biv-me's frame 13 basal Ecc 4.4 points off its neighbours.
+// with at least kMinRingsJudged rings of 3 points or more: the rings are
+// ordered along the line through their centres, the base at the end where they
+// are wider; the most basal one lies beside the axis when, seen from the line
+// through the other rings' centres, it leaves a gap wider than
+// kPartialRingGapDeg and its centre lies more than kBesideAxisRadii of its
+// radius from that line. That slice's short-axis contours of every type are
+// then dropped from *points and recorded in *left_out (its coverage seen from
+// that line): the plane holds the outflow tract, and its epicardial arc kept
+// alone still pulled biv-me's frame 13 basal Ecc 4.4 points off its neighbours.
 // Other contours are kept as they are.
 void LeaveOutPartialRings(int frame, const std::vector<std::string>& contours,
                           std::vector<DataPoint>* points,

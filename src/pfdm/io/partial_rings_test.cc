@@ -111,6 +111,18 @@ TEST(PartialRingsTest, RingsAndArcsRoundTheAxisAreKept) {
   EXPECT_EQ(arc.points.size(), 155u);
 }
 
+// Three rings cannot tell the base's end: all are kept.
+TEST(PartialRingsTest, ThreeRingsAreLeftAsTheyAre) {
+  Stack stack;
+  stack.Add("SAX_LV_ENDOCARDIAL 4", Arc(0, 0, 10, 18.0, 0, 6.1, 40));
+  stack.Add("SAX_LV_ENDOCARDIAL 3", Arc(0, 0, 20, 25.0, 0, 6.1, 50));
+  stack.Add("SAX_LV_ENDOCARDIAL 2", Arc(20.0, 0, 30, 14.0, 0, 6.1, 25));
+  std::vector<LeftOutContour> left_out;
+  LeaveOutPartialRings(0, stack.contours, &stack.points, &left_out);
+  EXPECT_TRUE(left_out.empty());
+  EXPECT_EQ(stack.points.size(), 115u);
+}
+
 TEST(PartialRingsTest, ApicalEndIsNotJudged) {
   // The same outflow-tract ring at the narrow end is the apex's side: kept.
   Stack stack;
