@@ -27,8 +27,9 @@ struct Frame {
   std::vector<DataPoint> points;
 };
 
-// A contour the reader left out of the fit: a short-axis contour that does
-// not go round the cavity (io/partial_rings.h).
+// A contour the reader left out of the fit: a basal short-axis contour on a
+// slice that holds the outflow tract beside the axis, not the ventricle
+// round it (io/partial_rings.h).
 struct LeftOutContour {
   int frame = 0;
   std::string contour;  // "SAX_LV_ENDOCARDIAL 2": the type and slice.

@@ -17,9 +17,12 @@ namespace pfdm {
 // has contours of both walls, or tags spread across the wall by at least
 // kMinWallSpreadMm after a converged mid-wall fit of that frame, outliers
 // left out (RobustWallSpreadMm); a single
-// surface otherwise.  Throws InputError naming the frame when a frame has too
-// few points or the solver fails, and when --wall solid meets data with
-// neither.
+// surface otherwise.  The pull toward the previous frame
+// (options.temporal_prior_weight) applies to sequences of
+// kTemporalPriorMinFrames or more (temporal_prior.h), and the result
+// records what was used.  Throws InputError naming the frame when a frame
+// has too few points or the solver fails, and when --wall solid meets data
+// with neither.
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options);
 
