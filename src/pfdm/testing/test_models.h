@@ -21,15 +21,20 @@ inline Model TestSpheroid(int num_knots) {
   return Model::Uniform(ModelConfig::Paper(num_knots), values);
 }
 
+// A local field's grid of rows x cols nodes over the model's u range.
+inline LocalGrid GridOver(const ModelConfig& config, int rows, int cols) {
+  LocalGrid grid;
+  grid.rows = rows;
+  grid.cols = cols;
+  grid.u_min = config.u_min;
+  grid.u_max = config.u_max;
+  return grid;
+}
+
 // Gives the model a local field of 5 x 8 nodes over its u range, node
 // values amplitude sin(1.7 i) mm: uneven, nowhere zero by accident.
 inline void AddTestLocalField(double amplitude, Model* model) {
-  LocalGrid grid;
-  grid.rows = 5;
-  grid.cols = 8;
-  grid.u_min = model->config.u_min;
-  grid.u_max = model->config.u_max;
-  model->state.local = LocalField::Zero(grid);
+  model->state.local = LocalField::Zero(GridOver(model->config, 5, 8));
   for (size_t i = 0; i < model->state.local.values.size(); ++i) {
     model->state.local.values[i] = amplitude * std::sin(1.7 * i);
   }

@@ -30,10 +30,7 @@ struct Case {
 Case MakeCase(int num_points, bool weighted, unsigned seed,
               bool sliding = false) {
   Case c;
-  c.grid.rows = 7;
-  c.grid.cols = 12;
-  c.grid.u_min = c.model.config.u_min;
-  c.grid.u_max = c.model.config.u_max;
+  c.grid = GridOver(c.model.config, 7, 12);
   c.rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())
                    .toRotationMatrix();
   std::mt19937 random(seed);

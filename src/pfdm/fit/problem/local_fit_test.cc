@@ -40,20 +40,11 @@ Truth MakeTruth(const LocalGrid& grid) {
   return truth;
 }
 
-LocalGrid GridOf(const Model& model, int rows, int cols) {
-  LocalGrid grid;
-  grid.rows = rows;
-  grid.cols = cols;
-  grid.u_min = model.config.u_min;
-  grid.u_max = model.config.u_max;
-  return grid;
-}
-
 // Tracked points of the whole model, without noise, and the fitted field's
 // largest error over a dense grid, for each solver: the linear problem has
 // one minimum, and with little stiffness it is the truth.
 TEST(LocalFitTest, EverySolverRecoversAFieldWithoutRingMeans) {
-  const LocalGrid grid = GridOf(TestSpheroid(5), 7, 12);
+  const LocalGrid grid = GridOver(TestSpheroid(5).config, 7, 12);
   const Truth truth = MakeTruth(grid);
   std::mt19937 random(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -114,7 +105,7 @@ double WorstDistance(const Model& a, const Model& b, const LocalGrid& grid) {
 // loss (reweighted until the weights settle) leaves it about where the
 // points without outliers put it.
 TEST(LocalFitTest, ARobustLossLeavesOutliersOut) {
-  const LocalGrid grid = GridOf(TestSpheroid(5), 7, 12);
+  const LocalGrid grid = GridOver(TestSpheroid(5).config, 7, 12);
   const Truth truth = MakeTruth(grid);
   std::mt19937 random(5);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -171,7 +162,7 @@ TEST(LocalFitTest, ARobustLossLeavesOutliersOut) {
 // along the axis by 1 mm) is the global functions' job: the local field
 // takes almost none of it.
 TEST(LocalFitTest, RingMeansStayWithTheGlobalFunctions) {
-  const LocalGrid grid = GridOf(TestSpheroid(5), 7, 12);
+  const LocalGrid grid = GridOver(TestSpheroid(5).config, 7, 12);
   Model global = TestSpheroid(5);
   std::vector<Eigen::Vector3d> points;
   std::vector<MaterialPoint> material;

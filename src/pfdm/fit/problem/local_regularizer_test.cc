@@ -9,15 +9,6 @@
 namespace pfdm {
 namespace {
 
-LocalGrid Grid(const Model& model, int rows, int cols) {
-  LocalGrid grid;
-  grid.rows = rows;
-  grid.cols = cols;
-  grid.u_min = model.config.u_min;
-  grid.u_max = model.config.u_max;
-  return grid;
-}
-
 // On a 5 x 8 grid: membrane 4 x 8 along the meridians and 4 x 8 around the
 // rings, plate 3 x 8 and 4 x 8, the mixed term 3 x 8, 4 through the pole and
 // the pole's mean: 149 differences, and a ring mean per row below the pole
@@ -25,7 +16,7 @@ LocalGrid Grid(const Model& model, int rows, int cols) {
 // mean is left.
 TEST(LocalRegularizerTest, HasEveryTermOfTheGrid) {
   const Model model = TestSpheroid(5);
-  const LocalGrid grid = Grid(model, 5, 8);
+  const LocalGrid grid = GridOver(model.config, 5, 8);
   const LocalRegularizer regularizer =
       MakeLocalRegularizer(model, grid, 400, 0.1);
   EXPECT_EQ(regularizer.differences.size(), 149u);
@@ -49,7 +40,7 @@ TEST(LocalRegularizerTest, HasEveryTermOfTheGrid) {
 // nodes)^2 |t|^2 per ring, and the pole's 1/2 w^2 |t|^2.
 TEST(LocalRegularizerTest, CostsATranslationItsMeansOnly) {
   const Model model = TestSpheroid(5);
-  const LocalGrid grid = Grid(model, 5, 8);
+  const LocalGrid grid = GridOver(model.config, 5, 8);
   const LocalRegularizer regularizer =
       MakeLocalRegularizer(model, grid, 400, 0.1);
   LocalField field = LocalField::Zero(grid);
