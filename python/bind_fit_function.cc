@@ -145,7 +145,7 @@ std::shared_ptr<FitResult> FitWithFlags(
     const py::object& rv_insertion, const std::string& model, int knots,
     const std::string& wall, const std::string& surface, int ed_frame,
     double smoothness, double prior, double untracked_prior,
-    double temporal_prior, const std::string& loss,
+    double temporal_prior, double incompressible, const std::string& loss,
     const py::object& loss_scale, int threads, const py::object& apex,
     const py::object& base, const std::string& solver,
     const std::string& linear_solver, double time_step, double rest_tolerance,
@@ -167,6 +167,7 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.prior = prior;
   s.untracked_prior = untracked_prior;
   s.temporal_prior = temporal_prior;
+  s.incompressible = incompressible;
   s.loss = loss;
   s.loss_scale = LossScaleText(loss_scale);
   s.threads = threads;
@@ -206,6 +207,7 @@ void BindFitFunction(py::module_& m) {
         py::arg("prior") = fit_defaults.prior,
         py::arg("untracked_prior") = fit_defaults.untracked_prior,
         py::arg("temporal_prior") = fit_defaults.temporal_prior,
+        py::arg("incompressible") = fit_defaults.incompressible,
         py::arg("loss") = fit_defaults.loss,
         py::arg("loss_scale") = fit_defaults.loss_scale,
         py::arg("threads") = fit_defaults.threads, py::arg("apex") = py::none(),

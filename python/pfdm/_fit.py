@@ -61,16 +61,15 @@ def _without_dashes(message, keywords):
 
 _INTS = ("knots", "ed_frame", "threads", "max_steps")
 _FLOATS = ("smoothness", "prior", "untracked_prior", "temporal_prior",
-           "time_step",
-           "rest_tolerance", "local_stiffness")
+           "incompressible", "time_step", "rest_tolerance", "local_stiffness")
 
 
 def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         contours=("lv-cavity",), base_plane="auto", rv_insertion=None,
         model="paper", knots=17, wall="auto", surface="auto", ed_frame=0,
         smoothness=1.0, prior=0.001, untracked_prior=0.01,
-        temporal_prior=0.05, loss="none", loss_scale="auto", threads=1,
-        apex=None, base=None, solver="direct",
+        temporal_prior=0.05, incompressible=0.0, loss="none",
+        loss_scale="auto", threads=1, apex=None, base=None, solver="direct",
         linear_solver="SPARSE_NORMAL_CHOLESKY", time_step=0.0,
         rest_tolerance=1e-6, max_steps=20000, damping="jacobi",
         damping_scale="", jacobian="analytic", local=True,
@@ -125,6 +124,10 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         pull toward the previous frame (the default settles every frame of
         biv-me's patient 1 and keeps its strain curves smooth; 0: off;
         docs/contour_sequences.md).
+    incompressible : float
+        A solid's wall keeps frame 0's volume with this weight (a soft
+        constraint; 0: off). fit.json's `myocardial_volume_change_percent`
+        shows the change with or without it.
     loss : {"none", "huber", "cauchy"}
         Robust loss on each point's distance.
     loss_scale : "auto" or float

@@ -107,3 +107,18 @@ def test_surface_ed_frame_and_trigger_times_reach_the_fit(wall_tags):
     assert fit.to_dict()["frames"][2]["time_ms"] == 90.0
     with pytest.raises(pfdm.InputError, match="^surface must be auto, endo"):
         pfdm.fit(str(timed), surface="inner")
+
+
+def test_incompressible_holds_the_wall(wall_tags):
+    """--incompressible as a keyword: the weight in the settings and the term
+    in every frame's problem after frame 0 (docs/accuracy.md)."""
+    _, csv = wall_tags
+    fit = pfdm.fit(str(csv), local=False, incompressible=1.0)
+    document = fit.to_dict()
+    assert document["settings"]["incompressible_weight"] == 1.0
+    costs = [frame["final_cost"]["incompressibility"]
+             for frame in document["frames"]]
+    assert costs[0] == 0.0
+    assert all(cost > 0.0 for cost in costs[1:])
+    with pytest.raises(pfdm.InputError, match="incompressible"):
+        pfdm.fit(str(csv), local=False, incompressible=-1.0)

@@ -51,6 +51,9 @@ DEFINE_double(temporal_prior, kDefaults.temporal_prior,
               "frames without tracked points, in sequences of 20 frames or "
               "more: pull toward the previous frame too, same units, 0 (off) "
               "to 1e6 (docs/contour_sequences.md)");
+DEFINE_double(incompressible, kDefaults.incompressible,
+              "a solid's wall keeps frame 0's volume, same units, 0 (off) to "
+              "1e6 (docs/accuracy.md, \"The myocardium\")");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
 DEFINE_string(loss_scale, kDefaults.loss_scale.c_str(),
               "--loss huber or cauchy: the loss's scale, auto (per frame, "
@@ -141,6 +144,7 @@ FitSettings FitSettingsFromFlags() {
   s.prior = FLAGS_prior;
   s.untracked_prior = FLAGS_untracked_prior;
   s.temporal_prior = FLAGS_temporal_prior;
+  s.incompressible = FLAGS_incompressible;
   s.loss = FLAGS_loss;
   s.loss_scale = FLAGS_loss_scale;
   s.threads = FLAGS_threads;

@@ -73,6 +73,14 @@ struct FitOptions {
   // And toward the frame before, with this weight (fit/stages/
   // temporal_prior.h says what it does); 0: off.
   double temporal_prior_weight = 0.05;
+  // A solid's wall keeps frame 0's volume with this weight (fit/residuals/
+  // incompressibility_residual.h: a 1 % change costs like every point
+  // 1 % of the wall thickness off, times the weight); 0: off.
+  double incompressible_weight = 0.0;
+  // The rings between which it holds the wall's volume: frame 0's data's
+  // lowest and highest u (FitFrame sets them after frame 0); equal: the
+  // model's whole length.
+  double incompressible_u_low = 0.0, incompressible_u_high = 0.0;
   // "none", "huber" or "cauchy" (fit/residuals/robust_loss.h).  Its scale
   // is measured by the fit (fit/stages/loss_scale.h, recorded in
   // SequenceFit::loss_scale_mm) unless loss_scale_auto is false; then it is

@@ -209,6 +209,7 @@ FitOptions OptionsFrom(const FitSettings& s, bool every_solver) {
   options.prior_weight = Weight("prior", s.prior);
   options.untracked_prior_weight = Weight("untracked_prior", s.untracked_prior);
   options.temporal_prior_weight = Weight("temporal_prior", s.temporal_prior);
+  options.incompressible_weight = Weight("incompressible", s.incompressible);
   options.wall = WallModelFromName(s.wall);
   CheckLossName(s.loss);
   SetSurface(s, &options);

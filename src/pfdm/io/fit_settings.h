@@ -36,6 +36,7 @@ struct FitSettings {
   double prior = 0.001;
   double untracked_prior = FitOptions().untracked_prior_weight;
   double temporal_prior = FitOptions().temporal_prior_weight;
+  double incompressible = FitOptions().incompressible_weight;
   std::string loss = "none";
   // "auto" (measured: fit/stages/loss_scale.h) or a number of mm; refused
   // with a loss of none.

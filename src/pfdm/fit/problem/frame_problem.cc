@@ -13,6 +13,7 @@
 #include "pfdm/fit/problem/frame_blocks.h"
 #include "pfdm/fit/residuals/axis_gauge_chain.h"
 #include "pfdm/fit/residuals/data_cost.h"
+#include "pfdm/fit/residuals/incompressibility_residual.h"
 #include "pfdm/fit/residuals/meridian_gauge_residual.h"
 #include "pfdm/fit/residuals/point_group_residual.h"
 #include "pfdm/fit/residuals/point_residual.h"
@@ -102,9 +103,11 @@ class FrameProblem {
   // Where the base rim must sit (RimResidual), along the model's axis from
   // its centre as the solve starts.
   void AddRim(size_t num_points, double rim_height);
-  void AddGauges(size_t num_points,
-                 const std::array<double, 4>& reference_quaternion);
+  void AddGauges(size_t num_points, const ModelState& reference);
   void AddPrior(size_t num_points, const ModelState& prior);
+  // A solid's wall keeps the reference's volume (after frame 0, with
+  // FitOptions::incompressible_weight).
+  void AddIncompressibility(size_t num_points, const ModelState& reference);
   // Solves with the chosen solver and leaves the solution in the model.
   SolverReport Solve();
   // Each term's cost at the parameters' current values, the data's as the
@@ -146,6 +149,7 @@ class FrameProblem {
   // The residual blocks of each term but the data (null: a constant left
   // out, see FrameBlocks::AddResidual).
   std::vector<ceres::ResidualBlockId> smoothness_ids_, prior_ids_, gauge_ids_;
+  ceres::ResidualBlockId incompressibility_id_ = nullptr;
   // The data's residual blocks, the problem's first (the covariance's
   // effective number of parameters).
   std::vector<ceres::ResidualBlockId> data_ids_;
@@ -254,14 +258,13 @@ void FrameProblem::AddRim(size_t num_points, double rim_height) {
       nullptr, true, {kGlobalsBlock, config.num_knots - 1});
 }
 
-void FrameProblem::AddGauges(
-    size_t num_points, const std::array<double, 4>& reference_quaternion) {
+void FrameProblem::AddGauges(size_t num_points, const ModelState& reference) {
   const ModelConfig& config = model_->config;
   const double sqrt_weight = kGaugeWeight * std::sqrt(num_points);
   if (kind_ != FrameKind::kReference) {
     gauge_ids_.push_back(problem_.AddResidualBlock(
         SpinGaugeResidual::Create(sqrt_weight, SpinGaugeLength(*model_),
-                                  reference_quaternion),
+                                  reference.quaternion),
         nullptr, model_->state.quaternion.data()));
   }
   if (kind_ == FrameKind::kUntracked &&
@@ -321,6 +324,35 @@ void FrameProblem::AddPrior(size_t num_points, const ModelState& prior) {
       nullptr, false, {kGlobalsBlock}));
 }
 
+void FrameProblem::AddIncompressibility(size_t num_points,
+                                        const ModelState& reference) {
+  const ModelConfig& config = model_->config;
+  if (options_.incompressible_weight <= 0.0 || !config.Solid() ||
+      kind_ == FrameKind::kReference) {
+    return;
+  }
+  const Model before{config, reference};
+  double thickness = 0.0;
+  for (int k = 0; k < config.num_knots; ++k) {
+    thickness += before.FunctionAt(kH, config.Grid().KnotU(k));
+  }
+  thickness /= config.num_knots;
+  double u_low = options_.incompressible_u_low;
+  double u_high = options_.incompressible_u_high;
+  if (u_low >= u_high) {
+    u_low = config.u_min;
+    u_high = config.u_max;
+  }
+  std::vector<int> blocks = {kGlobalsBlock};
+  for (int k = 0; k < config.num_knots; ++k) blocks.push_back(k);
+  incompressibility_id_ = blocks_.AddResidual(
+      IncompressibilityResidual::Create(
+          config, model_->UnitExponents(), u_low, u_high,
+          std::sqrt(options_.incompressible_weight * num_points),
+          IncompressibilityVolume(before, u_low, u_high), thickness),
+      nullptr, false, blocks);
+}
+
 SolverReport FrameProblem::Solve() {
   SolverOptions solver = options_.solver;
   // The groups' threads are PrecomputedGroups'; Ceres' own would only copy
@@ -348,9 +380,10 @@ TermCosts FrameProblem::Costs(const SolverReport& report) const {
   costs.smoothness = CostOf(smoothness_ids_);
   costs.prior = CostOf(prior_ids_);
   costs.gauge = CostOf(gauge_ids_);
+  costs.incompressibility = CostOf({incompressibility_id_});
   const double total = report.trace.empty() ? 0.0 : report.trace.back().cost;
-  costs.data =
-      std::max(0.0, total - costs.smoothness - costs.prior - costs.gauge);
+  costs.data = std::max(0.0, total - costs.smoothness - costs.prior -
+                                 costs.gauge - costs.incompressibility);
   return costs;
 }
 
@@ -414,15 +447,15 @@ void BuildFrameProblem(const std::vector<Eigen::Vector3d>& points,
                        const std::vector<MaterialPoint>& material,
                        const std::vector<Eigen::Vector3d>& normals,
                        std::optional<double> rim_height,
-                       const ModelState& prior,
-                       const std::array<double, 4>& reference_quaternion,
+                       const ModelState& prior, const ModelState& reference,
                        FrameProblem* problem) {
   CHECK_EQ(normals.size(), points.size());
   problem->AddData(points, material, normals);
   problem->AddSmoothness(points.size());
   if (rim_height) problem->AddRim(points.size(), *rim_height);
-  problem->AddGauges(points.size(), reference_quaternion);
+  problem->AddGauges(points.size(), reference);
   problem->AddPrior(points.size(), prior);
+  problem->AddIncompressibility(points.size(), reference);
 }
 
 }  // namespace
@@ -431,13 +464,12 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<MaterialPoint>& material,
                         const std::vector<Eigen::Vector3d>& normals,
                         std::optional<double> rim_height, FrameKind kind,
-                        const ModelState& prior,
-                        const std::array<double, 4>& reference_quaternion,
+                        const ModelState& prior, const ModelState& reference,
                         const FitOptions& options, Model* model,
                         TermCosts* costs) {
   FrameProblem problem(kind, options, model);
-  BuildFrameProblem(points, material, normals, rim_height, prior,
-                    reference_quaternion, &problem);
+  BuildFrameProblem(points, material, normals, rim_height, prior, reference,
+                    &problem);
   SolverReport report = problem.Solve();
   if (costs != nullptr) *costs = problem.Costs(report);
   return report;
@@ -448,14 +480,14 @@ FrameCovariance EstimateFrameCovariance(
     const std::vector<MaterialPoint>& material,
     const std::vector<Eigen::Vector3d>& normals,
     std::optional<double> rim_height, FrameKind kind, const ModelState& prior,
-    const std::array<double, 4>& reference_quaternion,
-    const FitOptions& options, const Model& model) {
+    const ModelState& reference, const FitOptions& options,
+    const Model& model) {
   // The problem holds pointers into the model's state; Ceres only
   // evaluates it here, but the copy keeps the caller's model out of reach.
   Model at = model;
   FrameProblem problem(kind, options, &at);
-  BuildFrameProblem(points, material, normals, rim_height, prior,
-                    reference_quaternion, &problem);
+  BuildFrameProblem(points, material, normals, rim_height, prior, reference,
+                    &problem);
   return problem.Covariance(points, material, normals);
 }
 

@@ -26,7 +26,10 @@ struct TermCosts {
   double smoothness = 0.0;
   double prior = 0.0;
   double gauge = 0.0;
-  double Total() const { return data + smoothness + prior + gauge; }
+  double incompressibility = 0.0;  // --incompressible.
+  double Total() const {
+    return data + smoothness + prior + gauge + incompressibility;
+  }
 };
 
 // A point with a non-zero normal (unit, world frame) pulls along it
@@ -36,15 +39,16 @@ struct TermCosts {
 // the base rim must sit (RimResidual), along the model's axis from its
 // centre as the solve starts.  `prior` is the state the prior term pulls
 // toward (the previous frame's; frame 0's for untracked frames, with
-// FitOptions::untracked_prior_weight); reference_quaternion frame 0's pose,
-// which later frames may not spin away from (SpinGaugeResidual).  Leaves the
-// solution in *model and, when given, each term's cost there in *costs.
+// FitOptions::untracked_prior_weight); `reference` frame 0's state: its
+// pose, which later frames may not spin away from (SpinGaugeResidual), and
+// a solid's wall volume, which later frames keep with
+// FitOptions::incompressible_weight.  Leaves the solution in *model and,
+// when given, each term's cost there in *costs.
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::vector<MaterialPoint>& material,
                         const std::vector<Eigen::Vector3d>& normals,
                         std::optional<double> rim_height, FrameKind kind,
-                        const ModelState& prior,
-                        const std::array<double, 4>& reference_quaternion,
+                        const ModelState& prior, const ModelState& reference,
                         const FitOptions& options, Model* model,
                         TermCosts* costs = nullptr);
 
@@ -56,8 +60,7 @@ FrameCovariance EstimateFrameCovariance(
     const std::vector<MaterialPoint>& material,
     const std::vector<Eigen::Vector3d>& normals,
     std::optional<double> rim_height, FrameKind kind, const ModelState& prior,
-    const std::array<double, 4>& reference_quaternion,
-    const FitOptions& options, const Model& model);
+    const ModelState& reference, const FitOptions& options, const Model& model);
 
 }  // namespace pfdm
 

@@ -32,8 +32,8 @@ TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
   const SolverReport report = SolveFrame(
       points, material,
       std::vector<Eigen::Vector3d>(points.size(), Eigen::Vector3d::Zero()),
-      std::nullopt, FrameKind::kTracked, model.state, model.state.quaternion,
-      options, &model);
+      std::nullopt, FrameKind::kTracked, model.state, model.state, options,
+      &model);
   ASSERT_TRUE(report.usable);
   for (int k = 1; k < 5; ++k) {
     EXPECT_NEAR(model.state.knots[k][kA1], 0.42, 1e-6) << k;

@@ -26,8 +26,8 @@ void FitGlobal(const FramePoints& points, const ModelState& prior,
   const bool measure = MeasuresLossScale(options);
   // The rounds read these at every solve.
   FitOptions round_options = measure ? WithoutLoss(options) : options;
-  GlobalRounds rounds(points, prior, carried->reference.quaternion,
-                      round_options, source, &model, fit);
+  GlobalRounds rounds(points, prior, carried->reference, round_options, source,
+                      &model, fit);
   if (options.loss != "none" && !measure) {
     fit->loss_scale_mm = options.loss_scale_mm;
     if (reference) carried->reference_loss_scale_mm = fit->loss_scale_mm;
@@ -100,6 +100,17 @@ bool HasTrackedPoints(const FramePoints& points) {
   return false;
 }
 
+// Frame 0's data's u range, where the wall keeps its volume.
+void RememberDataSpan(const std::vector<MaterialPoint>& material,
+                      CarriedState* carried) {
+  if (material.empty()) return;
+  const auto [low, high] = std::minmax_element(
+      material.begin(), material.end(),
+      [](const MaterialPoint& a, const MaterialPoint& b) { return a.u < b.u; });
+  carried->data_u_low = low->u;
+  carried->data_u_high = high->u;
+}
+
 }  // namespace
 
 FrameFit FitFrame(const Frame& frame, bool reference,
@@ -122,14 +133,16 @@ FrameFit FitFrame(const Frame& frame, bool reference,
       points.kind, carried->reference, carried->previous,
       /*previous_is_reference=*/carried->frames_fitted <= 1, sequence_options);
   const ModelState& prior = frame_prior.state;
-  const FitOptions& options = frame_prior.options;
+  FitOptions options = frame_prior.options;
+  options.incompressible_u_low = carried->data_u_low;
+  options.incompressible_u_high = carried->data_u_high;
   CheckInterrupt(options.solver);
   FitGlobal(points, prior, options, source, wall, carried, &fit);
   RememberTags(frame, points, fit, &carried->tracked_material);
   CanonicalizeBending(&model, &fit);
   if (options.uncertainty) {
     fit.covariance = MeasureFrameCovariance(
-        points, fit.material, prior, carried->reference.quaternion,
+        points, fit.material, prior, carried->reference,
         WithLossScale(options, fit.loss_scale_mm), model);
   }
   CheckInterrupt(options.solver);
@@ -141,7 +154,10 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   CheckFinite(source, fit);
   fit.solve_seconds = SecondsSince(start);
   carried->previous = model.state;
-  if (reference) carried->reference = model.state;
+  if (reference) {
+    carried->reference = model.state;
+    RememberDataSpan(fit.material, carried);
+  }
   ++carried->frames_fitted;
   return fit;
 }

@@ -28,6 +28,9 @@ struct CarriedState {
   ModelState previous;
   ModelState reference;
   int frames_fitted = 0;  // Before the frame being fitted.
+  // Frame 0's material points' lowest and highest u: where --incompressible
+  // holds the wall's volume.
+  double data_u_low = 0.0, data_u_high = 0.0;
   TrackedMaterial tracked_material;
   // Frame 0's robust loss scale (0 without a loss), for the band of a
   // solid's ranks in every frame (RankBandMm).

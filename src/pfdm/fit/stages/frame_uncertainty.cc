@@ -11,7 +11,7 @@ namespace pfdm {
 
 FrameCovariance MeasureFrameCovariance(
     const FramePoints& points, const std::vector<MaterialPoint>& material,
-    const ModelState& prior, const std::array<double, 4>& reference_quaternion,
+    const ModelState& prior, const ModelState& reference,
     const FitOptions& options, const Model& model) {
   // As GlobalRounds::SolveRound: sliding points pull along the normals at
   // their material points, and the base rim holds later frames of contours.
@@ -23,8 +23,8 @@ FrameCovariance MeasureFrameCovariance(
   const std::vector<Eigen::Vector3d> normals =
       SlidingNormals(model, material, points.sliding);
   return EstimateFrameCovariance(points.positions, material, normals,
-                                 rim_height, points.kind, prior,
-                                 reference_quaternion, options, model);
+                                 rim_height, points.kind, prior, reference,
+                                 options, model);
 }
 
 }  // namespace pfdm

@@ -17,7 +17,7 @@ namespace pfdm {
 // (no local field), `material` the frame's final material points.
 FrameCovariance MeasureFrameCovariance(
     const FramePoints& points, const std::vector<MaterialPoint>& material,
-    const ModelState& prior, const std::array<double, 4>& reference_quaternion,
+    const ModelState& prior, const ModelState& reference,
     const FitOptions& options, const Model& model);
 
 }  // namespace pfdm

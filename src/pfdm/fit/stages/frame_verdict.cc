@@ -120,8 +120,7 @@ void JudgeRms(const FrameFit& frame, double median_rms, double radius,
 // contours fix the surface, not where its material points are, and what
 // they leave free is by design the prior's (frame 0's state).
 double PriorPullMm(const Frame& points, const FrameFit& frame,
-                   const ModelConfig& config,
-                   const std::array<double, 4>& reference_quaternion,
+                   const ModelConfig& config, const ModelState& reference,
                    const FitOptions& options) {
   const Model solution{config, frame.state};
   Model probe = solution;
@@ -135,7 +134,7 @@ double PriorPullMm(const Frame& points, const FrameFit& frame,
   const std::vector<Eigen::Vector3d> normals(positions.size(),
                                              Eigen::Vector3d::Zero());
   SolveFrame(positions, frame.material, normals, std::nullopt, frame.kind,
-             frame.state, reference_quaternion, step, &probe);
+             frame.state, reference, step, &probe);
   Model global = solution;
   global.state.local = LocalField();
   const std::vector<Eigen::Vector3d> before =
@@ -264,7 +263,7 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     JudgeDownWeighted(frame, &frame.verdict);
     if (frame.tracked && options.prior_weight > 0) {
       JudgePrior(PriorPullMm(sequence.frames[t], frame, fit->config,
-                             fit->frames[0].state.quaternion, options),
+                             fit->frames[0].state, options),
                  frame, &frame.verdict);
     }
     JudgeBounds(fit->config, frame, &frame.verdict);

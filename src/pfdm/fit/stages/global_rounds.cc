@@ -32,12 +32,12 @@ constexpr int kRerankRounds = 2;
 }  // namespace
 
 GlobalRounds::GlobalRounds(const FramePoints& frame, const ModelState& prior,
-                           const std::array<double, 4>& reference_quaternion,
+                           const ModelState& reference,
                            const FitOptions& options, const std::string& source,
                            Model* model, FrameFit* fit)
     : frame_(frame),
       prior_(prior),
-      reference_quaternion_(reference_quaternion),
+      reference_(reference),
       options_(options),
       source_(source),
       model_(model),
@@ -84,10 +84,9 @@ void GlobalRounds::SolveCoarse() {
   }
   FitOptions coarse_options = options_;
   coarse_options.solver.on_step = nullptr;  // Not part of the path.
-  const SolverReport coarse_report =
-      SolveFrame(coarse_points, coarse_material, coarse_normals, std::nullopt,
-                 FrameKind::kReference, prior_, reference_quaternion_,
-                 coarse_options, model_);
+  const SolverReport coarse_report = SolveFrame(
+      coarse_points, coarse_material, coarse_normals, std::nullopt,
+      FrameKind::kReference, prior_, reference_, coarse_options, model_);
   AddSolverCounts(coarse_report, fit_);
   SpanAxialExtent(frame_.positions, options_, model_);
 }
@@ -176,9 +175,9 @@ SolverReport GlobalRounds::SolveRound(TrajectoryRecorder* recorder) {
   if (!normals_current_) {
     normals_ = SlidingNormals(*model_, fit_->material, frame_.sliding);
   }
-  SolverReport report = SolveFrame(
-      frame_.positions, fit_->material, normals_, rim_height, frame_.kind,
-      prior_, reference_quaternion_, round_options, model_, &fit_->costs);
+  SolverReport report = SolveFrame(frame_.positions, fit_->material, normals_,
+                                   rim_height, frame_.kind, prior_, reference_,
+                                   round_options, model_, &fit_->costs);
   normals_current_ = false;
   AddSolverCounts(report, fit_);
   ++fit_->correspondence_rounds;

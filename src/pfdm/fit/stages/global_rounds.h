@@ -26,14 +26,14 @@ namespace pfdm {
 class GlobalRounds {
  public:
   // `prior` is the state the prior term pulls toward (the previous frame's,
-  // or frame 0's for an untracked frame), reference_quaternion frame 0's
-  // pose; both outlive the rounds, and so do `options`, read at every
-  // solve (frame_fit.cc turns the loss on between runs).  The rounds move
-  // *model and fill *fit's material points, counts and trace.
+  // or frame 0's for an untracked frame), `reference` frame 0's
+  // (frame_problem.h says what of it the solve uses); both outlive the rounds,
+  // and so do `options`, read at every solve (frame_fit.cc turns the loss on
+  // between runs).  The rounds move *model and fill *fit's material points,
+  // counts and trace.
   GlobalRounds(const FramePoints& frame, const ModelState& prior,
-               const std::array<double, 4>& reference_quaternion,
-               const FitOptions& options, const std::string& source,
-               Model* model, FrameFit* fit);
+               const ModelState& reference, const FitOptions& options,
+               const std::string& source, Model* model, FrameFit* fit);
 
   // The first search: on frame 0 of many points after a coarse solve on a
   // subset of them; in a solid, the tracked tags' depths ranked.
@@ -75,7 +75,7 @@ class GlobalRounds {
 
   const FramePoints& frame_;
   const ModelState& prior_;
-  const std::array<double, 4>& reference_quaternion_;
+  const ModelState& reference_;
   const FitOptions& options_;
   const std::string& source_;
   Model* model_;

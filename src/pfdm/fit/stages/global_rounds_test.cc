@@ -36,8 +36,8 @@ TEST(GlobalRoundsTest, SearchAndSolveUntilTheClosestPointsSettle) {
   Model model = frame.start.model;
   const ModelState prior = model.state;
   const FitOptions options;
-  GlobalRounds rounds(frame.points, prior, prior.quaternion, options, "tags",
-                      &model, &frame.fit);
+  GlobalRounds rounds(frame.points, prior, prior, options, "tags", &model,
+                      &frame.fit);
   rounds.Start();
   TrajectoryRecorder recorder(0, &model, &frame.fit.trajectory);
   rounds.Run(&recorder);
@@ -61,8 +61,8 @@ TEST(GlobalRoundsTest, SayHowFarUnsettledPointsMoved) {
   FitOptions options;
   options.max_correspondence_rounds = 1;
   options.max_accelerated_rounds = 1;  // Contours' rounds are mixed.
-  GlobalRounds rounds(frame.points, prior, prior.quaternion, options, "tags",
-                      &model, &frame.fit);
+  GlobalRounds rounds(frame.points, prior, prior, options, "tags", &model,
+                      &frame.fit);
   rounds.Start();
   TrajectoryRecorder recorder(0, &model, &frame.fit.trajectory);
   rounds.Run(&recorder);

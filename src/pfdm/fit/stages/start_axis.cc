@@ -147,8 +147,8 @@ CandidateFit FitCandidate(const std::vector<DataPoint>& points,
   choice.max_correspondence_rounds = max_rounds;
   choice.max_accelerated_rounds = max_rounds;
   Model fitted = model;
-  GlobalRounds rounds(frame_points, model.state, model.state.quaternion, choice,
-                      source, &fitted, &fit);
+  GlobalRounds rounds(frame_points, model.state, model.state, choice, source,
+                      &fitted, &fit);
   try {
     rounds.Start();
     TrajectoryRecorder recorder(0, &fitted, &fit.trajectory);
