@@ -15,7 +15,8 @@ namespace {
 // The reference's rings, u by height fraction and surface, found once for
 // every frame measured against it: each is a bisection of 50-60 steps, of
 // 24 model points a step off the mid-wall, and a frame of a solid asked
-// for 14 of them (as much as the rest of its summary).
+// for 14 of them (as much as the rest of its summary); and the myocardium
+// between two of them.
 class ReferenceRings {
  public:
   explicit ReferenceRings(const Model& reference) : reference_(reference) {}
@@ -25,10 +26,20 @@ class ReferenceRings {
     if (inserted) it->second = RingAtHeightFraction(reference_, h, w);
     return it->second;
   }
+  // MaterialMyocardiumMl of the reference between the rings at u_low and
+  // u_high.
+  double MyocardiumMl(double u_low, double u_high) {
+    const auto [it, inserted] = myocardium_ml_.try_emplace({u_low, u_high});
+    if (inserted) {
+      it->second = MaterialMyocardiumMl(reference_, u_low, u_high);
+    }
+    return it->second;
+  }
 
  private:
   const Model& reference_;
   std::map<std::pair<double, double>, double> u_;
+  std::map<std::pair<double, double>, double> myocardium_ml_;
 };
 
 double ApexToBaseRim(const Model& model) {
@@ -114,9 +125,9 @@ void SummarizeWall(ReferenceRings& rings, const Model& current,
   summary->material_myocardium_ml =
       MaterialMyocardiumMl(current, u_low, u_high);
   summary->myocardial_volume_change_percent =
-      100.0 * (summary->material_myocardium_ml /
-                   MaterialMyocardiumMl(reference, u_low, u_high) -
-               1.0);
+      100.0 *
+      (summary->material_myocardium_ml / rings.MyocardiumMl(u_low, u_high) -
+       1.0);
 }
 
 ClinicalSummary Summarize(int frame, ReferenceRings& rings,
