@@ -248,9 +248,14 @@ def job_table(document, batch):
                 number(1e6 * b["us_per_point"], 2),
                 number(b.get("evaluations_per_point", float("nan")), 2)])
             continue
+        biv_me = ["biv-me patient 1, LV endo contours, 25 frames",
+                  "biv-me patient 1, lv-cavity (`pfdm fit`'s axis), "
+                  "25 frames",
+                  "biv-me patient 1, lv-cavity,lv-epi (`pfdm fit`'s axis), "
+                  "25 frames"]
         case = ("phantom, {:,} tags x 5 frames".format(a["tags"])
                 if key.startswith(("BM_PhantomJob", "BM_OutputsJob")) else
-                "biv-me patient 1, LV endo contours, 25 frames")
+                biv_me[a.get("contours", 0)])
         if key.startswith("BM_OutputsJob"):
             case += (", outputs as before (.vtk and .vtp, doubles)"
                      if a["outputs"] else ", default outputs (.vtp, float32)")

@@ -1,6 +1,8 @@
 #include "pfdm/report/clinical_summary.h"
 
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/material_myocardium.h"
@@ -10,15 +12,46 @@
 namespace pfdm {
 namespace {
 
+// The reference's rings, u by height fraction and surface, found once for
+// every frame measured against it: each is a bisection of 50-60 steps, of
+// 24 model points a step off the mid-wall, and a frame of a solid asked
+// for 14 of them (as much as the rest of its summary); and the myocardium
+// between two of them.
+class ReferenceRings {
+ public:
+  explicit ReferenceRings(const Model& reference) : reference_(reference) {}
+  const Model& model() const { return reference_; }
+  double At(double h, double w = 0.0) {
+    const auto [it, inserted] = u_.try_emplace({h, w}, 0.0);
+    if (inserted) it->second = RingAtHeightFraction(reference_, h, w);
+    return it->second;
+  }
+  // MaterialMyocardiumMl of the reference between the rings at u_low and
+  // u_high.
+  double MyocardiumMl(double u_low, double u_high) {
+    const auto [it, inserted] = myocardium_ml_.try_emplace({u_low, u_high});
+    if (inserted) {
+      it->second = MaterialMyocardiumMl(reference_, u_low, u_high);
+    }
+    return it->second;
+  }
+
+ private:
+  const Model& reference_;
+  std::map<std::pair<double, double>, double> u_;
+  std::map<std::pair<double, double>, double> myocardium_ml_;
+};
+
 double ApexToBaseRim(const Model& model) {
   const Eigen::Vector3d apex = model.WorldPoint(model.config.u_min, 0.0);
   return (SampleRing(model, model.config.u_max).centroid - apex).norm();
 }
 
 // Rotation (degrees) of surface w's ring at height fraction h.
-double RingRotationDeg(const Model& reference, const Model& current, double h,
+double RingRotationDeg(ReferenceRings& rings, const Model& current, double h,
                        double w) {
-  const double u = RingAtHeightFraction(reference, h, w);
+  const Model& reference = rings.model();
+  const double u = rings.At(h, w);
   return MeanRotation(SampleRing(reference, u, kRingSamples, w),
                       SampleRing(current, u, kRingSamples, w),
                       LongAxis(reference)) *
@@ -26,11 +59,12 @@ double RingRotationDeg(const Model& reference, const Model& current, double h,
 }
 
 // Mean over the contraction rings of 1 - r / r0 on surface w, percent.
-double RadialContractionPercent(const Model& reference, const Model& current,
+double RadialContractionPercent(ReferenceRings& rings, const Model& current,
                                 double w, const RingSpan& span) {
+  const Model& reference = rings.model();
   double percent = 0.0;
   for (int i = 0; i < kContractionRings; ++i) {
-    const double u = RingAtHeightFraction(reference, span.At(i), w);
+    const double u = rings.At(span.At(i), w);
     percent +=
         100.0 *
         (1.0 - MeanRadius(SampleRing(current, u, kRingSamples, w)) /
@@ -49,28 +83,30 @@ double RingThickness(const Model& model, double u) {
   return sum / kRingSamples;
 }
 
-void SummarizeWall(const Model& reference, const Model& current,
-                   const RingSpan& span, ClinicalSummary* summary) {
+void SummarizeWall(ReferenceRings& rings, const Model& current,
+                   const RingSpan& span, bool flat_lid_volumes,
+                   ClinicalSummary* summary) {
+  const Model& reference = rings.model();
   summary->solid = true;
   summary->endo_apex_rotation_deg =
-      RingRotationDeg(reference, current, kApicalRingFraction, -1.0);
+      RingRotationDeg(rings, current, kApicalRingFraction, -1.0);
   summary->endo_base_rotation_deg =
-      RingRotationDeg(reference, current, kBasalRingFraction, -1.0);
+      RingRotationDeg(rings, current, kBasalRingFraction, -1.0);
   summary->endo_net_twist_deg =
       summary->endo_base_rotation_deg - summary->endo_apex_rotation_deg;
   summary->epi_apex_rotation_deg =
-      RingRotationDeg(reference, current, kApicalRingFraction, 1.0);
+      RingRotationDeg(rings, current, kApicalRingFraction, 1.0);
   summary->epi_base_rotation_deg =
-      RingRotationDeg(reference, current, kBasalRingFraction, 1.0);
+      RingRotationDeg(rings, current, kBasalRingFraction, 1.0);
   summary->epi_net_twist_deg =
       summary->epi_base_rotation_deg - summary->epi_apex_rotation_deg;
   summary->endo_radial_contraction_percent =
-      RadialContractionPercent(reference, current, -1.0, span);
+      RadialContractionPercent(rings, current, -1.0, span);
   summary->epi_radial_contraction_percent =
-      RadialContractionPercent(reference, current, 1.0, span);
+      RadialContractionPercent(rings, current, 1.0, span);
   double thickness = 0.0, thickening = 0.0;
   for (int i = 0; i < kContractionRings; ++i) {
-    const double u = RingAtHeightFraction(reference, span.At(i));
+    const double u = rings.At(span.At(i));
     const double now = RingThickness(current, u);
     thickness += now / kContractionRings;
     thickening +=
@@ -78,31 +114,33 @@ void SummarizeWall(const Model& reference, const Model& current,
   }
   summary->wall_thickness_mm = thickness;
   summary->wall_thickening_percent = thickening;
-  summary->volume_ml = CavityVolumeMl(current, nullptr, -1.0);
-  summary->myocardial_volume_ml =
-      CavityVolumeMl(current, nullptr, 1.0) - summary->volume_ml;
-  summary->lv_mass_g = kMyocardialDensity * summary->myocardial_volume_ml;
-  const double u_low = RingAtHeightFraction(reference, span.low);
-  const double u_high = RingAtHeightFraction(reference, span.high);
+  if (flat_lid_volumes) {
+    summary->volume_ml = CavityVolumeMl(current, nullptr, -1.0);
+    summary->myocardial_volume_ml =
+        CavityVolumeMl(current, nullptr, 1.0) - summary->volume_ml;
+    summary->lv_mass_g = kMyocardialDensity * summary->myocardial_volume_ml;
+  }
+  const double u_low = rings.At(span.low);
+  const double u_high = rings.At(span.high);
   summary->material_myocardium_ml =
       MaterialMyocardiumMl(current, u_low, u_high);
   summary->myocardial_volume_change_percent =
-      100.0 * (summary->material_myocardium_ml /
-                   MaterialMyocardiumMl(reference, u_low, u_high) -
-               1.0);
+      100.0 *
+      (summary->material_myocardium_ml / rings.MyocardiumMl(u_low, u_high) -
+       1.0);
 }
 
-}  // namespace
-
-ClinicalSummary SummarizeFrame(int frame, const Model& reference,
-                               const Model& current, const RingSpan& span) {
+ClinicalSummary Summarize(int frame, ReferenceRings& rings,
+                          const Model& current, const RingSpan& span,
+                          bool flat_lid_volumes) {
+  const Model& reference = rings.model();
   const KnotGrid grid = current.config.Grid();
   const Eigen::Vector3d axis = LongAxis(reference);
   ClinicalSummary summary;
   summary.frame = frame;
 
-  const double u_apex = RingAtHeightFraction(reference, kApicalRingFraction);
-  const double u_base = RingAtHeightFraction(reference, kBasalRingFraction);
+  const double u_apex = rings.At(kApicalRingFraction);
+  const double u_base = rings.At(kBasalRingFraction);
   const MaterialRing apex0 = SampleRing(reference, u_apex);
   const MaterialRing base0 = SampleRing(reference, u_base);
   summary.apex_rotation_deg =
@@ -129,15 +167,23 @@ ClinicalSummary SummarizeFrame(int frame, const Model& reference,
     summary.longitudinal_ratio.push_back(ratio(kA3));
   }
   summary.radial_contraction_percent =
-      RadialContractionPercent(reference, current, 0.0, span);
+      RadialContractionPercent(rings, current, 0.0, span);
   summary.longitudinal_shortening_percent =
       100.0 * (1.0 - ApexToBaseRim(current) / ApexToBaseRim(reference));
   if (current.config.Solid()) {
-    SummarizeWall(reference, current, span, &summary);
-  } else {
+    SummarizeWall(rings, current, span, flat_lid_volumes, &summary);
+  } else if (flat_lid_volumes) {
     summary.volume_ml = CavityVolumeMl(current);
   }
   return summary;
+}
+
+}  // namespace
+
+ClinicalSummary SummarizeFrame(int frame, const Model& reference,
+                               const Model& current, const RingSpan& span) {
+  ReferenceRings rings(reference);
+  return Summarize(frame, rings, current, span, /*flat_lid_volumes=*/true);
 }
 
 void LeaveOutRotation(ClinicalSummary* summary) {
@@ -164,11 +210,13 @@ void LeaveOutApexRing(ClinicalSummary* summary) {
 
 std::vector<ClinicalSummary> SummarizeSequence(const std::vector<Model>& frames,
                                                int reference,
-                                               const RingSpan& span) {
+                                               const RingSpan& span,
+                                               bool flat_lid_volumes) {
+  ReferenceRings rings(frames.at(reference));
   std::vector<ClinicalSummary> summaries;
   for (size_t t = 0; t < frames.size(); ++t) {
-    summaries.push_back(SummarizeFrame(static_cast<int>(t),
-                                       frames.at(reference), frames[t], span));
+    summaries.push_back(Summarize(static_cast<int>(t), rings, frames[t], span,
+                                  flat_lid_volumes));
   }
   return summaries;
 }

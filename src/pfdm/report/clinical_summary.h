@@ -134,9 +134,12 @@ ClinicalSummary SummarizeFrame(int frame, const Model& reference,
                                const RingSpan& span = RingSpan());
 
 // SummarizeFrame of every frame against frames[reference] (end-diastole).
+// Without flat_lid_volumes the volumes closed by a flat lid (volume_ml and,
+// of a solid, myocardial_volume_ml and lv_mass_g) are left at their
+// defaults, for a caller that closes them at the base planes instead.
 std::vector<ClinicalSummary> SummarizeSequence(
     const std::vector<Model>& frames, int reference = 0,
-    const RingSpan& span = RingSpan());
+    const RingSpan& span = RingSpan(), bool flat_lid_volumes = true);
 
 // From the summaries' volumes, ED at summaries[ed_frame]; all zero for an
 // empty list or an ed_frame outside it.

@@ -122,15 +122,18 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   }
   const int ed = fit.ed_frame;
   analysis.ring_span = ClinicalRingSpan(fit, show_extrapolated);
+  // With a base plane per frame the volumes are closed there (below), and
+  // the flat lids' are not measured: a third of the analysis's volumes.
+  const bool planes = base_planes.size() == fit.frames.size();
   analysis.clinical =
-      SummarizeSequence(analysis.models, ed, analysis.ring_span);
+      SummarizeSequence(analysis.models, ed, analysis.ring_span, !planes);
   if (fit.time_ms.size() == fit.frames.size()) {
     for (size_t t = 0; t < fit.frames.size(); ++t) {
       analysis.clinical[t].time_ms = fit.time_ms[t];
     }
   }
   analysis.volume_surface = VolumeSurfaceName(fit);
-  if (base_planes.size() == fit.frames.size()) {
+  if (planes) {
     analysis.base_planes = base_planes;
     const bool solid = fit.config.Solid();
     for (size_t t = 0; t < fit.frames.size(); ++t) {

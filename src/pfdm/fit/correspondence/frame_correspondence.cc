@@ -1,6 +1,7 @@
 #include "pfdm/fit/correspondence/frame_correspondence.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/correspondence/transmural.h"
@@ -110,13 +111,18 @@ void UpdateClosest(const Model& model,
                    const std::vector<bool>& assign_depth, bool warm,
                    std::vector<MaterialPoint>* material,
                    std::vector<Eigen::Vector3d>* normals,
-                   std::vector<Eigen::Vector3d>* found,
-                   double outlier_band_mm) {
+                   std::vector<Eigen::Vector3d>* found, double outlier_band_mm,
+                   SurfaceGrid* grid) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
   // One grid for the mid-wall search and, in a solid, the walls' after it:
   // both searches start from the mid-wall's samples.
-  const SurfaceGrid grid(model);
+  std::optional<SurfaceGrid> own_grid;
+  if (grid == nullptr) {
+    grid = &own_grid.emplace(model);
+  } else {
+    grid->Follow(model);
+  }
   CorrespondenceOptions correspondence;
   correspondence.num_threads = num_threads;
   if (warm) {
@@ -124,12 +130,12 @@ void UpdateClosest(const Model& model,
   }
   std::vector<Eigen::Vector3d> found_normals;
   std::vector<MaterialPoint> closest = ClosestMaterialPointsFrom(
-      grid, model, subset, correspondence, found, &found_normals);
+      *grid, model, subset, correspondence, found, &found_normals);
   if (model.config.Solid()) {
     const std::vector<double> surfaces = SurfacesOf(
         model, subset, which, layer_w, assign_depth, closest, outlier_band_mm);
-    RefineOnSurfaces(grid, model, subset, which, surfaces, correspondence, warm,
-                     *material, &closest, found, &found_normals);
+    RefineOnSurfaces(*grid, model, subset, which, surfaces, correspondence,
+                     warm, *material, &closest, found, &found_normals);
   }
   for (size_t j = 0; j < which.size(); ++j) {
     (*material)[which[j]] = closest[j];

@@ -13,6 +13,8 @@
 
 namespace pfdm {
 
+class SurfaceGrid;  // surface_grid.h
+
 // The listed points' material points.
 std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
                                   const std::vector<size_t>& which);
@@ -29,6 +31,8 @@ double MaxDistance(const std::vector<Eigen::Vector3d>& a,
 // QuantileDepths' w, among the tags within the wall widened by
 // outlier_band_mm when that is positive (a robust loss: WithinWall).
 // `warm` starts each search from the point's current material point.
+// `grid` (may be null: one is built for the search) follows `model` and
+// keeps its tree for the next search (SurfaceGrid::Follow).
 void UpdateClosest(const Model& model,
                    const std::vector<Eigen::Vector3d>& points,
                    const std::vector<size_t>& which, int num_threads,
@@ -37,7 +41,7 @@ void UpdateClosest(const Model& model,
                    std::vector<MaterialPoint>* material,
                    std::vector<Eigen::Vector3d>* normals,
                    std::vector<Eigen::Vector3d>* found,
-                   double outlier_band_mm = 0.0);
+                   double outlier_band_mm = 0.0, SurfaceGrid* grid = nullptr);
 
 // Sets the listed points' w to their QuantileDepths on `model` and returns
 // how far (mm) the farthest one's model point moved.  Why each frame ranks

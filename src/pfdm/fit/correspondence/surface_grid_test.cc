@@ -1,5 +1,6 @@
 #include "pfdm/fit/correspondence/surface_grid.h"
 
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -55,6 +56,42 @@ TEST(SurfaceGridTest, SharedGridFindsTheSamePoints) {
   for (size_t i = 0; i < own.size(); ++i) {
     EXPECT_EQ(own[i].u, shared[i].u) << i;
     EXPECT_EQ(own[i].v, shared[i].v) << i;
+  }
+}
+
+// A grid that follows a moving model answers as a grid built of it, to the
+// bit, whether it keeps its tree (moved less than kRebuildMm) or not: 400
+// points about the surface at each of three moves.
+TEST(SurfaceGridTest, FollowingGridAnswersAsAFreshOne) {
+  Model model = TwistedTestModel();
+  SurfaceGrid following(model);
+  EXPECT_EQ(following.builds(), 1);
+  std::mt19937 random(11);
+  std::normal_distribution<double> noise(0.0, 2.0);
+  std::uniform_real_distribution<double> u(-1.5, 0.6), v(-M_PI, M_PI);
+  // Moves: a shift and a bulge within the tolerance, then a larger shift.
+  const double shifts[] = {0.6, 0.0, 3.0};
+  const double bulges[] = {0.0, 0.01, 0.0};
+  const int builds[] = {1, 1, 2};
+  for (int step = 0; step < 3; ++step) {
+    model.state.center[0] += shifts[step];
+    for (FunctionValues& knot : model.state.knots) knot[kA1] += bulges[step];
+    following.Follow(model);
+    EXPECT_EQ(following.builds(), builds[step]) << step;
+    const SurfaceGrid fresh(model);
+    for (int k = 0; k < 400; ++k) {
+      const Eigen::Vector3d p =
+          model.WorldPoint(u(random), v(random)) +
+          Eigen::Vector3d(noise(random), noise(random), noise(random));
+      const SurfaceGrid::Nearest a = following.NearestTo(p);
+      const SurfaceGrid::Nearest b = fresh.NearestTo(p);
+      // The apex ring's samples are one point: any of them is the nearest
+      // (the search takes its v from the point, not the sample).
+      const size_t ring = SurfaceGrid::kGridV;
+      EXPECT_TRUE(a.index == b.index || (a.index < ring && b.index < ring))
+          << step << " " << k << ": " << a.index << " " << b.index;
+      EXPECT_EQ(a.distance_squared, b.distance_squared) << step << " " << k;
+    }
   }
 }
 

@@ -28,6 +28,7 @@ void FitGlobal(const FramePoints& points, const ModelState& prior,
   FitOptions round_options = measure ? WithoutLoss(options) : options;
   GlobalRounds rounds(points, prior, carried->reference, round_options, source,
                       &model, fit);
+  rounds.set_surface_grid(&carried->surface_grid);
   if (options.loss != "none" && !measure) {
     fit->loss_scale_mm = options.loss_scale_mm;
     if (reference) carried->reference_loss_scale_mm = fit->loss_scale_mm;
@@ -148,7 +149,7 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   CheckInterrupt(options.solver);
   if (options.local.enabled) {
     FitLocalStage(points, WithLossScale(options, fit.loss_scale_mm), source,
-                  &model, &fit, &carried->local_solver);
+                  &model, &fit, &carried->local_solver, &carried->surface_grid);
   }
   Summarize(model, points.positions, &fit);
   CheckFinite(source, fit);

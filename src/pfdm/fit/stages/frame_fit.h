@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/fit_options.h"
 #include "pfdm/fit/problem/local_direct.h"
 #include "pfdm/fit/stages/frame_points.h"
@@ -38,6 +39,9 @@ struct CarriedState {
   // The local field's direct solver, kept for its factorization: tracked
   // frames' fields share one matrix (local_direct.h).
   LocalDirectSolver local_solver;
+  // The closest-point searches' grid, its k-d tree kept while the surface
+  // moves little (SurfaceGrid::Follow): rebuilt about once a frame.
+  SurfaceGrid surface_grid;
 };
 
 // Fits `frame` (`reference`: frame 0) from carried->model and updates

@@ -73,7 +73,7 @@ void GlobalRounds::SolveCoarse() {
   pfdm::UpdateClosest(*model_, frame_.positions, coarse,
                       options_.solver.num_threads, frame_.layer_w,
                       frame_.assign_depth, false, &fit_->material, &normals_,
-                      &found_, rank_band_mm_);
+                      &found_, rank_band_mm_, grid_);
   fit_->correspondence_seconds += SecondsSince(closest_start);
   std::vector<Eigen::Vector3d> coarse_points, coarse_normals;
   std::vector<MaterialPoint> coarse_material;
@@ -230,7 +230,7 @@ double GlobalRounds::UpdateClosest(std::vector<Eigen::Vector3d> now) {
   pfdm::UpdateClosest(*model_, frame_.positions, frame_.untracked,
                       options_.solver.num_threads, frame_.layer_w,
                       frame_.assign_depth, found_closest_, &fit_->material,
-                      &normals_, &found_, rank_band_mm_);
+                      &normals_, &found_, rank_band_mm_, grid_);
   const double moved = found_closest_ || frame_.untracked.empty()
                            ? MaxDistance(now, found_)
                            : std::numeric_limits<double>::infinity();

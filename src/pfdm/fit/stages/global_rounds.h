@@ -12,6 +12,7 @@
 
 #include "Eigen/Core"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/fit_options.h"
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/fit/stages/frame_points.h"
@@ -51,6 +52,9 @@ class GlobalRounds {
   // those farther than band_mm outside it (QuantileDepths); 0, the
   // default, ranks them all.
   void set_rank_band_mm(double band_mm) { rank_band_mm_ = band_mm; }
+  // The searches' grid, kept from search to search (null, the default: a
+  // grid per search); it outlives the rounds.
+  void set_surface_grid(SurfaceGrid* grid) { grid_ = grid; }
 
   // The last solve's report.
   const SolverReport& report() const { return report_; }
@@ -90,6 +94,7 @@ class GlobalRounds {
   double moved_ = 0.0;          // By the last search.
   bool rerank_depths_ = false;
   double rank_band_mm_ = 0.0;
+  SurfaceGrid* grid_ = nullptr;
   SolverReport report_;
   // Frames whose untracked points are all contour points: the rounds are
   // accelerated (round_acceleration.h), the change of each measured at the

@@ -28,14 +28,14 @@ constexpr double kMinLocalRoundGain = 0.01;
 double UpdateContours(const FramePoints& frame,
                       const std::vector<size_t>& contours,
                       const FitOptions& options, const Model& model,
-                      FrameFit* fit) {
+                      SurfaceGrid* grid, FrameFit* fit) {
   const std::vector<Eigen::Vector3d> before =
       WorldPoints(model, Listed(fit->material, contours));
   std::vector<Eigen::Vector3d> found;
   std::vector<Eigen::Vector3d> normals(frame.positions.size());
   UpdateClosest(model, frame.positions, contours, options.solver.num_threads,
                 frame.layer_w, std::vector<bool>(frame.positions.size(), false),
-                /*warm=*/true, &fit->material, &normals, &found);
+                /*warm=*/true, &fit->material, &normals, &found, 0.0, grid);
   return MaxDistance(before, found);
 }
 
@@ -59,7 +59,7 @@ bool MixField(Eigen::VectorXd change, RoundAcceleration* acceleration,
 
 void FitLocalStage(const FramePoints& frame, const FitOptions& options,
                    const std::string& source, Model* model, FrameFit* fit,
-                   LocalDirectSolver* direct) {
+                   LocalDirectSolver* direct, SurfaceGrid* grid) {
   std::vector<size_t> contours;
   std::vector<bool> sliding(frame.positions.size(), false);
   for (size_t i : frame.untracked) {
@@ -84,13 +84,14 @@ void FitLocalStage(const FramePoints& frame, const FitOptions& options,
     const bool stalled = cost > (1.0 - kMinLocalRoundGain) * last_cost;
     last_cost = cost;
     if (contours.empty()) break;
-    const double moved = UpdateContours(frame, contours, options, *model, fit);
+    const double moved =
+        UpdateContours(frame, contours, options, *model, grid, fit);
     if (stalled || moved < options.correspondence_tolerance_mm ||
         round + 1 == options.max_correspondence_rounds) {
       break;
     }
     if (MixField(ProbePoints(*model, probes) - before, &acceleration, model)) {
-      UpdateContours(frame, contours, options, *model, fit);
+      UpdateContours(frame, contours, options, *model, grid, fit);
     }
   }
   fit->local_seconds = SecondsSince(start);

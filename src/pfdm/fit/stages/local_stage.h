@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/fit_options.h"
 #include "pfdm/fit/problem/local_direct.h"
 #include "pfdm/fit/stages/frame_points.h"
@@ -23,10 +24,12 @@ namespace pfdm {
 // points settle or a round gains little.  Sets model->state.local, the
 // contours' material points in *fit and its local account; throws
 // InputError naming the frame when a solve is unusable.  `direct` (may be
-// null) keeps the direct solver's factorization from frame to frame.
+// null) keeps the direct solver's factorization from frame to frame,
+// `grid` (may be null) the searches' grid (SurfaceGrid::Follow).
 void FitLocalStage(const FramePoints& frame, const FitOptions& options,
                    const std::string& source, Model* model, FrameFit* fit,
-                   LocalDirectSolver* direct = nullptr);
+                   LocalDirectSolver* direct = nullptr,
+                   SurfaceGrid* grid = nullptr);
 
 }  // namespace pfdm
 
