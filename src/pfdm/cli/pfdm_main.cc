@@ -22,13 +22,13 @@ struct Command {
 const std::string kFitFlags =
     "format contours model knots wall smoothness prior untracked_prior loss "
     "loss_scale threads apex base linear_solver time_step rest_tolerance "
-    "max_steps damping damping_scale jacobian local local_grid "
+    "max_steps integrator damping damping_scale jacobian local local_grid "
     "local_stiffness ";
 
 const Command kCommands[] = {
     {"fit", RunFit,
      "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
-     "[--solver direct|damped|integrator]",
+     "[--solver direct|damped|integrator [--integrator rkc|euler]]",
      "points out solver vtk_format base_plane " + kFitFlags},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",

@@ -22,11 +22,20 @@ enum class SolverKind { kDirect, kDamped, kIntegrator };
 // damping; then pseudo-time carries the units of the parameters).
 enum class DampingKind { kJacobi, kUnit };
 
+// How the integrator steps D qdot = -J^T r: forward Euler (the paper's
+// method) or second-order Runge-Kutta-Chebyshev with error control (the
+// same ODE and rest point, a stable step that grows with the square of its
+// stage count; docs/dynamics.md).
+enum class IntegratorKind { kEuler, kRkc };
+
 // "direct", "damped" or "integrator"; throws InputError otherwise.
 SolverKind SolverFromName(const std::string& name);
 const char* SolverName(SolverKind kind);
 // "jacobi" or "unit"; throws InputError otherwise.
 DampingKind DampingFromName(const std::string& name);
+// "euler" or "rkc"; throws InputError otherwise.
+IntegratorKind IntegratorFromName(const std::string& name);
+const char* IntegratorName(IntegratorKind kind);
 
 // One iteration (direct, damped) or step (integrator).
 struct SolverTracePoint {
@@ -66,6 +75,12 @@ struct SolverOptions {
   // that a caller can make parameter groups move at different rates.  The
   // damped mode's D is Ceres' Levenberg-Marquardt diagonal, diag(J^T J).
   DampingKind damping = DampingKind::kJacobi;
+  // Integrator only.  RKC by default: forward Euler needs about
+  // lambda_max / lambda_min steps per e-fold of the slowest mode (1e4 on a
+  // frame fit) and stops at max_steps short of rest; RKC follows the same
+  // trajectory to its error tolerance and rests in hundreds of evaluations.
+  // With RKC, time_step is the first step only.
+  IntegratorKind integrator = IntegratorKind::kRkc;
   std::unordered_map<const double*, std::vector<double>> damping_scale;
   // Called with each point of SolverReport::trace as it is recorded, while
   // the parameter blocks hold that iterate: lets a caller keep the path.
@@ -98,8 +113,11 @@ SolverReport SolveProblem(ceres::Problem* problem,
 
 SolverReport SolveDirect(ceres::Problem* problem, const SolverOptions& options);
 SolverReport SolveDamped(ceres::Problem* problem, const SolverOptions& options);
+// Dispatches on options.integrator.
 SolverReport SolveIntegrator(ceres::Problem* problem,
                              const SolverOptions& options);
+SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options);
+SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options);
 
 }  // namespace pfdm
 
