@@ -76,7 +76,8 @@ void DefEntryDicts(FitFrameClass& fit_frame) {
           "points (contours).");
 }
 
-// ids, points, material and residuals: a row per data point.
+// ids, points, material, residuals and loss weights: a row per data
+// point.
 void DefDataPointArrays(FitFrameClass& fit_frame) {
   fit_frame
       .def_property_readonly(
@@ -98,7 +99,17 @@ void DefDataPointArrays(FitFrameClass& fit_frame) {
           [](const FitFrame& f) {
             return VectorsArray(f.frame_fit().residuals);
           },
-          "(N, 3) array: model point minus data point (mm).");
+          "(N, 3) array: model point minus data point (mm).")
+      .def_property_readonly(
+          "loss_weights",
+          [](const FitFrame& f) {
+            std::vector<double> weights = f.frame_fit().loss_weights;
+            weights.resize(f.frame_fit().residuals.size(), 1.0);
+            return py::array_t<double>(weights.size(), weights.data());
+          },
+          "(N,) array: each data point's weight under the robust loss at "
+          "its residual, in (0, 1] (the frame files' loss_weight); all 1 "
+          "without a loss.");
 }
 
 }  // namespace
@@ -130,7 +141,7 @@ void BindFitFrame(py::module_& m) {
           py::arg("u"), py::arg("v"), kEvaluateDoc)
       .def(
           "surface",
-          [](const FitFrame& f, int rings, int meridians) {
+          [](const FitFrame& f, std::int64_t rings, std::int64_t meridians) {
             return SurfaceArrays(f.model(), rings, meridians);
           },
           py::arg("rings") = kSurfaceRings,

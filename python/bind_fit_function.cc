@@ -11,6 +11,7 @@
 #include "pfdm/io/fit_settings.h"
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
+#include "pfdm/io/rv_insertion_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/util/error.h"
 #include "pybind11/stl.h"
@@ -19,8 +20,8 @@
 namespace pfdm::python {
 namespace {
 
-// --apex or --base as the CLI reads it, from None (not given), a 'x,y,z'
-// text or a sequence of numbers.
+// --apex, --base or --rv_insertion as the CLI reads it, from None (not
+// given), a 'x,y,z' text or a sequence of numbers.
 std::string PointText(const py::object& point, const char* name) {
   if (point.is_none()) return "";
   if (py::isinstance<py::str>(point)) return point.cast<std::string>();
@@ -35,10 +36,18 @@ std::string PointText(const py::object& point, const char* name) {
   return text;
 }
 
-// Lets Ctrl-C stop a fit: checked at every solver step, with the GIL held
-// for the check only.  The exception stops the solve (SolverOptions::on_step)
-// and reaches Python as KeyboardInterrupt.
-void CheckSignals(const SolverTracePoint&) {
+// --loss_scale as the CLI reads it, from 'auto' (or any text) or a number.
+std::string LossScaleText(const py::object& scale) {
+  if (py::isinstance<py::str>(scale)) return scale.cast<std::string>();
+  // repr round-trips a float exactly, so the scale is the one given.
+  return py::repr(py::float_(scale)).cast<std::string>();
+}
+
+// Lets Ctrl-C stop a fit: checked at every step of every solver, refused
+// ones too, and between the fit's rounds and stages
+// (SolverOptions::interrupt), with the GIL held for the check only.  The
+// exception stops the fit and reaches Python as KeyboardInterrupt.
+void CheckSignals() {
   py::gil_scoped_acquire gil;
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
 }
@@ -65,17 +74,22 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
   auto result = std::make_shared<FitResult>();
   const ModelConfig config = ModelConfigFrom(settings);
   result->options = FitOptionsFrom(settings);
-  BasePlanesFrom(settings, "");  // Checks base_plane before the fit.
+  BasePlanesFrom(settings, "");             // Checks base_plane before the fit.
+  ParseRvInsertion(settings.rv_insertion);  // Likewise.
   result->points = SequenceFrom(points, settings);
   CheckOptionsAgainstPoints(result->options, result->points);
   result->base_planes = BasePlanesFrom(settings, result->points.source);
   FitOptions options = result->options;
-  options.solver.on_step = CheckSignals;
+  options.solver.interrupt = CheckSignals;
   AddLandmarkAxis(result->points.source, &options);
   py::gil_scoped_release release;
   result->fit = FitSequence(result->points, config, options);
   CheckPlanesBelowApex(result->points.source, result->base_planes, result->fit);
-  result->analysis = AnalyzeFit(result->fit, result->base_planes);
+  result->analysis = AnalyzeFit(
+      result->fit, result->base_planes,
+      AnatomicalLayout(
+          result->fit.ModelAt(0),
+          RvInsertionFrom(settings.rv_insertion, result->points.source)));
   result->json =
       FitJson(result->points, result->fit, result->options, result->analysis);
   return result;
@@ -86,9 +100,10 @@ std::shared_ptr<FitResult> FitPoints(const py::object& points,
 std::shared_ptr<FitResult> FitWithFlags(
     const py::object& points, const std::string& format,
     const std::string& contours, const std::string& base_plane,
-    const std::string& model, int knots, const std::string& wall,
+    const py::object& rv_insertion, const std::string& model, int knots,
+    const std::string& wall, const std::string& surface, int ed_frame,
     double smoothness, double prior, double untracked_prior,
-    const std::string& loss, double loss_scale, int threads,
+    const std::string& loss, const py::object& loss_scale, int threads,
     const py::object& apex, const py::object& base, const std::string& solver,
     const std::string& linear_solver, double time_step, double rest_tolerance,
     int max_steps, const std::string& damping, const std::string& damping_scale,
@@ -98,14 +113,17 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.format = format;
   s.contours = contours;
   s.base_plane = base_plane;
+  s.rv_insertion = PointText(rv_insertion, "rv_insertion");
   s.model = model;
   s.knots = knots;
   s.wall = wall;
+  s.surface = surface;
+  s.ed_frame = ed_frame;
   s.smoothness = smoothness;
   s.prior = prior;
   s.untracked_prior = untracked_prior;
   s.loss = loss;
-  s.loss_scale = loss_scale;
+  s.loss_scale = LossScaleText(loss_scale);
   s.threads = threads;
   s.apex = PointText(apex, "apex");
   s.base = PointText(base, "base");
@@ -131,9 +149,12 @@ void BindFitFunction(py::module_& m) {
         py::arg("format") = fit_defaults.format,
         py::arg("contours") = fit_defaults.contours,
         py::arg("base_plane") = fit_defaults.base_plane,
+        py::arg("rv_insertion") = py::none(),
         py::arg("model") = fit_defaults.model,
         py::arg("knots") = fit_defaults.knots,
         py::arg("wall") = fit_defaults.wall,
+        py::arg("surface") = fit_defaults.surface,
+        py::arg("ed_frame") = fit_defaults.ed_frame,
         py::arg("smoothness") = fit_defaults.smoothness,
         py::arg("prior") = fit_defaults.prior,
         py::arg("untracked_prior") = fit_defaults.untracked_prior,
@@ -158,6 +179,10 @@ void BindFitFunction(py::module_& m) {
         "same material point).  apex and base: (x, y, z) in mm or 'x,y,z', "
         "together.  base_plane 'auto' closes the cavity at the mitral valve "
         "planes of guide points read from a path, 'rim' at the base rim.  "
+        "loss_scale: 'auto' or a number of mm.  "
+        "rv_insertion: the anterior RV insertion (x, y, z), or it and the "
+        "inferior one (6 numbers), or 'x,y,z[,x,y,z]': the AHA segments' "
+        "anchor; without, guide points' RV_INSERT.  "
         "Releases the GIL; Ctrl-C raises KeyboardInterrupt within a solver "
         "step.  Raises InputError for bad options or data, with the CLI's "
         "message.");

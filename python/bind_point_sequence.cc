@@ -60,6 +60,9 @@ void BindPointSequence(py::module_& m) {
                     "'phantom'); named in error messages and fit.json.")
       .def_readonly("contour_types", &PointSequence::contour_types,
                     "Guide points: the contour types kept; else empty.")
+      .def_readonly("time_ms", &PointSequence::time_ms,
+                    "Per frame, its time from the trigger (ms) when the "
+                    "input has a time_ms column; else empty.")
       .def_property_readonly(
           "num_frames", [](const PointSequence& s) { return s.frames.size(); },
           "Number of frames.")

@@ -1,5 +1,8 @@
 // The module functions that make a PointSequence: read_points and
 // read_mesh_points read files as the CLI does, simulate makes a phantom.
+#include <cstdint>
+#include <limits>
+#include <sstream>
 #include <string>
 
 #include "binding_helpers.h"
@@ -7,6 +10,7 @@
 #include "pfdm/io/fit_settings.h"
 #include "pfdm/io/mesh_source.h"
 #include "pfdm/phantom/phantom.h"
+#include "pfdm/util/error.h"
 #include "pybind11/stl.h"
 #include "python_conversions.h"
 
@@ -49,12 +53,27 @@ void BindReadMeshPoints(py::module_& m) {
       "binary) or the CAP mean_shape.csv.");
 }
 
-// `pfdm simulate`'s phantom; the GIL released while it is made.
-py::tuple Simulate(int frames, int tags, double noise, double outliers,
-                   unsigned seed) {
+// frames or tags as an int for CheckPhantomOptions, which names the flag
+// and its range; one beyond an int's range is refused here, as pybind11
+// would refuse it as a TypeError naming no bound.
+int PhantomCount(const char* name, std::int64_t value, double high) {
+  if (value > std::numeric_limits<int>::max() ||
+      value < std::numeric_limits<int>::min()) {
+    std::ostringstream text;
+    text << "--" << name << " must be between 1 and " << high << ", got "
+         << value;
+    throw InputError(text.str());
+  }
+  return static_cast<int>(value);
+}
+
+// `pfdm simulate`'s phantom, its size checked before it is made (also
+// frames x tags, CheckPhantomOptions); the GIL released while it is made.
+py::tuple Simulate(std::int64_t frames, std::int64_t tags, double noise,
+                   double outliers, unsigned seed) {
   PhantomOptions options;
-  options.num_frames = frames;
-  options.num_points = tags;
+  options.num_frames = PhantomCount("frames", frames, 1000);
+  options.num_points = PhantomCount("tags", tags, 1e6);
   options.noise_mm = noise;
   options.outlier_fraction = outliers;
   options.seed = seed;

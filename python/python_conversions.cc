@@ -95,7 +95,10 @@ PointSequence SequenceFromArrays(const py::object& frames,
     }
     Frame frame;
     frame.index = static_cast<int>(t);
+    frame.points.reserve(count);
+    // Ids 0..N-1 (ids None) are distinct: no set of a million of them.
     std::unordered_set<std::int64_t> seen;
+    if (!id_lists.empty()) seen.reserve(count);
     const double* xyz = array.data();
     for (size_t i = 0; i < count; ++i) {
       const Eigen::Vector3d p(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
@@ -103,7 +106,7 @@ PointSequence SequenceFromArrays(const py::object& frames,
         throw InputError(where + ": point " + std::to_string(i) +
                          " is not finite");
       }
-      if (!seen.insert(frame_ids[i]).second) {
+      if (!id_lists.empty() && !seen.insert(frame_ids[i]).second) {
         throw InputError(source + ": id " + std::to_string(frame_ids[i]) +
                          " appears twice in frame " + std::to_string(t));
       }
@@ -178,6 +181,14 @@ py::array_t<double> EvaluateModel(const Model& model, const py::object& u,
   const py::module_ numpy = py::module_::import("numpy");
   const py::tuple both = numpy.attr("broadcast_arrays")(
       numpy.attr("asarray")(u, "float64"), numpy.attr("asarray")(v, "float64"));
+  // Broadcasting made views; the copies below and the result are what
+  // would be allocated.
+  const auto size = both[0].attr("size").cast<std::int64_t>();
+  if (size > kMaxEvaluatePoints) {
+    throw InputError("evaluate: u and v broadcast to " + std::to_string(size) +
+                     " points, more than " +
+                     std::to_string(kMaxEvaluatePoints));
+  }
   const DoubleArray us = DoubleArray::ensure(both[0]);
   const DoubleArray vs = DoubleArray::ensure(both[1]);
   std::vector<py::ssize_t> shape(us.shape(), us.shape() + us.ndim());
@@ -198,13 +209,22 @@ py::array_t<double> EvaluateModel(const Model& model, const py::object& u,
   return points;
 }
 
-py::tuple SurfaceArrays(const Model& model, int rings, int meridians) {
+py::tuple SurfaceArrays(const Model& model, std::int64_t rings,
+                        std::int64_t meridians) {
   if (rings < 2 || meridians < 3) {
     throw InputError("surface needs rings >= 2 and meridians >= 3, got " +
                      std::to_string(rings) + " and " +
                      std::to_string(meridians));
   }
-  const ModelSurface surface = MakeModelSurface(model, rings, meridians);
+  // Checked before MakeModelSurface allocates: rings = meridians = 1e9
+  // once ran for minutes towards 1e18 vertices.
+  if (rings > kMaxSurfaceVertices / meridians) {
+    throw InputError("surface needs rings x meridians <= " +
+                     std::to_string(kMaxSurfaceVertices) + " vertices, got " +
+                     std::to_string(rings) + " x " + std::to_string(meridians));
+  }
+  const ModelSurface surface = MakeModelSurface(model, static_cast<int>(rings),
+                                                static_cast<int>(meridians));
   const auto& triangles = surface.mesh.triangles;
   py::array_t<std::int64_t> faces(
       {static_cast<py::ssize_t>(triangles.size()), py::ssize_t{3}});

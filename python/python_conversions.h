@@ -3,6 +3,7 @@
 #ifndef PFDM_PYTHON_PYTHON_CONVERSIONS_H_
 #define PFDM_PYTHON_PYTHON_CONVERSIONS_H_
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,16 +40,23 @@ py::array_t<double> FunctionsArray(const Model& model);
 // The knots' latitudes u, (K,).
 py::array_t<double> KnotUArray(const ModelConfig& config);
 
+// The most points evaluate and surface make (the result's float64 (N, 3):
+// 1.2 GB and 0.1 GB, with surface's faces 0.3 GB), so that a size typed
+// wrong is refused at once instead of swapping for minutes.
+inline constexpr std::int64_t kMaxEvaluatePoints = 50000000;
+inline constexpr std::int64_t kMaxSurfaceVertices = 4000000;
+
 // x(u, v) in world coordinates (mm) for u, v array-likes that broadcast
 // against each other; shape: theirs plus a last axis of 3.  Throws
-// InputError for non-finite u or v.
+// InputError for non-finite u or v, or over kMaxEvaluatePoints points.
 py::array_t<double> EvaluateModel(const Model& model, const py::object& u,
                                   const py::object& v);
 
 // (vertices (V, 3) float64, faces (F, 3) int64) of the model's u, v grid,
 // as MakeModelSurface makes it.  Throws InputError for rings < 2 or
-// meridians < 3.
-py::tuple SurfaceArrays(const Model& model, int rings, int meridians);
+// meridians < 3, or over kMaxSurfaceVertices vertices, before allocating.
+py::tuple SurfaceArrays(const Model& model, std::int64_t rings,
+                        std::int64_t meridians);
 
 // A JSON text as Python dicts, lists and numbers (json.loads).
 py::object FromJson(const std::string& text);

@@ -63,10 +63,10 @@ def python_defaults(function):
 def test_fit_takes_the_clis_flags_with_their_defaults():
     cli = cli_defaults()
     ours = python_defaults(pfdm.fit)
-    assert len(ours) == 25
+    assert len(ours) == 28
     for name, value in ours.items():
         assert name in cli, name
-        if name in ("apex", "base"):
+        if name in ("apex", "base", "rv_insertion"):
             assert value == "None" and cli[name] == ""
         elif re.fullmatch(r"[-+.\deE]+", value):
             assert float(value) == float(cli[name]), name

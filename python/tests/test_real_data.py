@@ -27,6 +27,10 @@ def test_guide_points_fit_and_mitral_valve_volumes_equal_the_clis():
     assert "apex_hint" not in cli["settings"]
     assert fit.points.contour_types == cli["settings"]["contour_types"]
     assert "mitral valve plane" in fit.ejection_fraction["cavity_closure"]
+    # Frame 0's RV_INSERT points anchor the AHA segments, as in the CLI.
+    assert cli["segments_anatomical"] is True
+    assert cli["segments"]["anchor"] == "10 RV_INSERT points of GPFile_000.txt"
+    assert cli["regions"][1]["name"] == "basal anteroseptal"
     assert len(fit) == 25
     assert fit.volume_surface == "cavity"  # Endocardial contours.
     # Contours: no turn about the axis is seen, so none is reported.

@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pfdm
-from conftest import scratch
+from conftest import run_cli, scratch
 
 # Timing differs run to run; nothing else may.
 TIMING = ("solve_seconds",)
@@ -37,7 +37,7 @@ def test_fit_from_a_path_gives_the_cli_fit_json_to_the_last_digit(cli_phantom):
     assert fit.to_dict()["midwall_volume_fraction"] == (
         cli_json["midwall_volume_fraction"])
     assert fit.regions == cli_json["regions"]
-    assert len(fit.regions) == 16
+    assert len(fit.regions) == 17
 
 
 def test_written_outputs_equal_the_clis_byte_for_byte(cli_phantom):
@@ -123,3 +123,31 @@ def test_simulate_gives_the_clis_phantom_and_its_truth_is_recovered(cli_phantom)
                               - np.interp(0.2, fraction, true_tau))
     assert abs(net_twist - true_twist) < 1.0
     assert fit.frames[0].stats["rms_mm"] < 0.6
+
+
+def test_a_robust_loss_records_its_scale_and_weighs_each_point(cli_phantom):
+    folder, points_csv, _ = cli_phantom
+    fit = pfdm.fit(points_csv, loss="huber", local="off")
+    assert fit.settings["loss_scale"] == "auto"
+    scales = fit.settings["loss_scale_mm"]
+    assert len(scales) == 3 and all(0.1 < s < 5.0 for s in scales)
+    code, _, err = run_cli("fit", "--points", points_csv, "--loss", "huber",
+                           "--local", "off", "--out", folder / "huber")
+    assert code == 0, err
+    with open(folder / "huber" / "fit.json") as f:
+        assert json.load(f)["settings"]["loss_scale_mm"] == scales
+    for frame in fit.frames:
+        weights = frame.loss_weights
+        assert weights.shape == (len(frame.residuals),)
+        # huber: 1 within the scale, scale / |r| beyond.
+        distances = np.linalg.norm(frame.residuals, axis=1)
+        scale = scales[frame.frame]
+        np.testing.assert_allclose(
+            weights, np.minimum(1.0, scale / np.maximum(distances, 1e-300)),
+            rtol=1e-12)
+    fixed = pfdm.fit(points_csv, loss="cauchy", loss_scale=2.5, local="off")
+    assert fixed.settings["loss_scale"] == 2.5
+    assert fixed.settings["loss_scale_mm"] == 2.5
+    plain = pfdm.fit(points_csv, local="off")
+    assert "loss_scale" not in plain.settings
+    assert (plain.frames[1].loss_weights == 1.0).all()

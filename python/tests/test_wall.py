@@ -58,3 +58,25 @@ def test_midwall_keeps_one_surface(wall_tags):
     assert "midwall_volume_ml" in fit[0].clinical
     names = list(fit.function_names)
     np.testing.assert_array_equal(fit.functions[:, :, names.index("h")], 0.0)
+
+
+def test_surface_ed_frame_and_trigger_times_reach_the_fit(wall_tags):
+    """--surface endo makes the volumes the cavity's (an ejection fraction);
+    --ed_frame moves ED; a time_ms column reaches the points and the frames."""
+    folder, csv = wall_tags
+    lines = csv.read_text().splitlines()
+    timed = folder / "timed.csv"
+    timed.write_text("\n".join(
+        [lines[0] + ",time_ms"] +
+        [line + "," + str(40 * int(line.split(",")[0]) + 10) for line in lines[1:]])
+        + "\n")
+    points = pfdm.read_points(str(timed))
+    assert points.time_ms == [10.0, 50.0, 90.0]
+    fit = pfdm.fit(str(timed), surface="endo", ed_frame=1, local="off")
+    assert fit.settings["surface"] == "endo"
+    assert fit.settings["ed_frame"] == 1
+    assert fit.volume_surface == "cavity"
+    assert fit.ejection_fraction["ed_frame"] == 1
+    assert fit.to_dict()["frames"][2]["time_ms"] == 90.0
+    with pytest.raises(pfdm.InputError, match="--surface must be auto, endo"):
+        pfdm.fit(str(timed), surface="inner")

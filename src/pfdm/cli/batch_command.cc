@@ -16,6 +16,7 @@
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/io/point_source.h"
+#include "pfdm/io/rv_insertion_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/atomic_file.h"
@@ -75,8 +76,13 @@ std::string RunCase(const BatchCase& c, const std::string& out,
     SvgRendering plots;  // gnuplot loads while the case is fitted.
     const SequenceFit fit = FitSequence(points, config, case_options);
     CheckPlanesBelowApex(c.points, planes, fit);
-    WriteFitOutputs(dir, points, fit, AnalyzeFit(fit, planes), options,
-                    VtkFormatFromFlags(), &plots);
+    // The case's own RV_INSERT points, if any, place its AHA segments.
+    const RegionLayout layout =
+        AnatomicalLayout(fit.ModelAt(0), RvInsertionFrom("", c.points));
+    WriteFitOutputs(
+        dir, points, fit,
+        AnalyzeFit(fit, planes, layout, ShowExtrapolatedFromFlags()), options,
+        VtkFormatFromFlags(), &plots);
     fs::remove(dir + "/error.txt");
     RemoveAbandonedTemporaries(dir, "error.txt");
   } catch (const std::exception& error) {

@@ -51,6 +51,17 @@ TEST(LvPhantomCliTest, WritesPointsAndTruth) {
       nlohmann::json::parse(ReadText(dir + "/spin_truth.json"));
   EXPECT_EQ(spin["frames"][2]["rigid"]["spin_deg"].get<double>(), 10.0);
 
+  // --outliers: the truth lists them per frame (10 % of 200 tags).
+  run = RunPfdm("simulate --phantom lv --outliers 0.1 --tags 200 --out " + dir +
+                "/outliers.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json outliers =
+      nlohmann::json::parse(ReadText(dir + "/outliers_truth.json"));
+  EXPECT_EQ(outliers["outlier_fraction"].get<double>(), 0.1);
+  for (const nlohmann::json& frame : outliers["frames"]) {
+    EXPECT_NEAR(frame["outlier_ids"].size(), 20.0, 13.0);
+  }
+
   run = RunPfdm("simulate --phantom lv --nobreathing --tags 20 --out " + dir +
                 "/still.csv");
   ASSERT_EQ(run.exit_code, 0) << run.error;
@@ -117,7 +128,8 @@ TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
            Case{"--phantom lv --kinematics diastole",
                 "unknown --kinematics 'diastole'"},
            Case{"--phantom lv --wall_tags endo", "unknown --wall_tags 'endo'"},
-           Case{"--phantom lv --outliers 0.1", "--outliers is for"},
+           Case{"--phantom lv --outliers 1.5",
+                "--outliers must be between 0 and 1"},
            Case{"--phantom lv --frames 0",
                 "--frames must be between 1 and 1000, got 0"},
            Case{"--kinematics cycle", "need --phantom lv"},
@@ -182,6 +194,109 @@ TEST(LvPhantomCliTest, TagsThroughTheWallFitASolid) {
   EXPECT_FALSE(midwall.contains("ejection_fraction"));
   EXPECT_GT(midwall["frames"][0]["midwall_volume_ml"].get<double>(), 150.0);
   EXPECT_FALSE(midwall["frames"][0].contains("lv_mass_g"));
+}
+
+// --loss with --loss_scale auto (the default): fit.json records "auto"
+// and each frame's measured scale, the frames' files each point's weight;
+// a number is recorded as given; without a loss neither.
+TEST(LvPhantomCliTest, ARobustLossRecordsItsScaleAndWeights) {
+  const std::string dir = ScratchDirectory("lv_loss");
+  CommandResult run = RunPfdm(
+      "simulate --phantom lv --outliers 0.05 --frames 3 --tags 500 --out " +
+      dir + "/lv.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const std::string fit =
+      "fit --local off --wall midwall --points " + dir + "/lv.csv --out " + dir;
+  run = RunPfdm(fit + "/auto --loss cauchy");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  nlohmann::json settings =
+      nlohmann::json::parse(ReadText(dir + "/auto/fit.json"))["settings"];
+  EXPECT_EQ(settings["loss"], "cauchy");
+  EXPECT_EQ(settings["loss_scale"], "auto");
+  ASSERT_EQ(settings["loss_scale_mm"].size(), 3u);
+  // Frame 0's distances along the normal: sigma about the 0.5 mm noise,
+  // times cauchy's 2.385.
+  EXPECT_NEAR(settings["loss_scale_mm"][0].get<double>(), 2.385 * 0.55, 0.3);
+  for (const char* file : {"/auto/frame_002.vtk", "/auto/frame_002.vtp"}) {
+    EXPECT_NE(ReadText(dir + file).find("loss_weight"), std::string::npos)
+        << file;
+  }
+  run = RunPfdm(fit + "/fixed --loss huber --loss_scale 2");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  settings =
+      nlohmann::json::parse(ReadText(dir + "/fixed/fit.json"))["settings"];
+  EXPECT_EQ(settings["loss_scale"].get<double>(), 2.0);
+  EXPECT_EQ(settings["loss_scale_mm"].get<double>(), 2.0);
+  run = RunPfdm(fit + "/none");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  settings =
+      nlohmann::json::parse(ReadText(dir + "/none/fit.json"))["settings"];
+  EXPECT_FALSE(settings.contains("loss_scale"));
+  EXPECT_EQ(ReadText(dir + "/none/frame_002.vtk").find("loss_weight"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace pfdm
+
+namespace pfdm {
+namespace {
+
+// The truth's RV insertion, given to `pfdm fit --rv_insertion`, makes the
+// segments the AHA's: named, said to be anatomical in fit.json, the
+// console and the report; without it they say they are not; a bad value is
+// refused before the fit.
+TEST(LvPhantomCliTest, RvInsertionAnchorsTheAhaSegments) {
+  const std::string dir = ScratchDirectory("lv");
+  CommandResult run =
+      RunPfdm("simulate --phantom lv --lesion --tags 300 --frames 3 --out " +
+              dir + "/lv.csv");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json truth =
+      nlohmann::json::parse(ReadText(dir + "/lv_truth.json"));
+  std::string flag;
+  for (const char* which : {"anterior", "inferior"}) {
+    for (const auto& x : truth["rv_insertion"][which]) {
+      flag += (flag.empty() ? "" : ",") + std::to_string(x.get<double>());
+    }
+  }
+  run = RunPfdm("fit --local off --points " + dir + "/lv.csv --rv_insertion " +
+                flag + " --out " + dir + "/aha");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_NE(run.output.find("segments: AHA, anatomical (--rv_insertion)"),
+            std::string::npos)
+      << run.output;
+  const nlohmann::json aha =
+      nlohmann::json::parse(ReadText(dir + "/aha/fit.json"));
+  EXPECT_EQ(aha["segments_anatomical"], true);
+  EXPECT_NEAR(aha["segments"]["rv_insertion"]["septal_arc_deg"].get<double>(),
+              120.0, 5.0);
+  EXPECT_EQ(aha["regions"][7]["name"], "mid anteroseptal");
+  EXPECT_EQ(aha["regions"][16]["name"], "apex");
+  const std::string report = ReadText(dir + "/aha/report.html");
+  EXPECT_NE(report.find("mid anteroseptal"), std::string::npos);
+  EXPECT_NE(report.find("The segments are anatomical"), std::string::npos);
+
+  run = RunPfdm("fit --local off --points " + dir + "/lv.csv --out " + dir +
+                "/plain");
+  ASSERT_EQ(run.exit_code, 0) << run.error;
+  EXPECT_NE(run.output.find("segments: not anatomical (no RV insertion "
+                            "given)"),
+            std::string::npos);
+  const nlohmann::json plain =
+      nlohmann::json::parse(ReadText(dir + "/plain/fit.json"));
+  EXPECT_EQ(plain["segments_anatomical"], false);
+  EXPECT_EQ(plain["regions"][7]["name"], "mid 2");
+  EXPECT_NE(ReadText(dir + "/plain/report.html")
+                .find("The segments are not anatomical"),
+            std::string::npos);
+
+  run = RunPfdm("fit --points " + dir + "/lv.csv --rv_insertion 1,2 --out " +
+                dir + "/bad");
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.error.find("--rv_insertion '1,2'"), std::string::npos)
+      << run.error;
+  EXPECT_FALSE(fs::exists(dir + "/bad/fit.json"));
 }
 
 }  // namespace

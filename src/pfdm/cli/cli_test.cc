@@ -51,7 +51,7 @@ TEST(CliTest, SimulateThenFitWritesEveryOutput) {
   std::istringstream rows(ReadText(dir + "/fit/parameters.csv"));
   std::string line;
   std::getline(rows, line);
-  EXPECT_EQ(line, "frame,function,knot,u,z_mm,value");
+  EXPECT_EQ(line, "frame,function,knot,u,z_mm,value,sd");
   int count = 0;
   while (std::getline(rows, line)) ++count;
   EXPECT_EQ(count, 3 * kNumFunctions * 17);
@@ -160,10 +160,12 @@ const BadInput kBadInputs[] = {
      "",
      "tags.csv: frame 0: the points lie in a plane; a surface needs points "
      "that span space"},
-    {"zero loss scale", "frame,id,x,y,z\n0,1,2,3,4\n", "--loss_scale 0",
-     "--loss_scale must be a positive number of mm, got 0"},
-    {"nan loss scale", "frame,id,x,y,z\n0,1,2,3,4\n", "--loss_scale nan",
-     "--loss_scale must be a positive number of mm, got nan"},
+    {"zero loss scale", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--loss huber --loss_scale 0",
+     "--loss_scale must be auto or a positive number of mm, got '0'"},
+    {"nan loss scale", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--loss huber --loss_scale nan",
+     "--loss_scale must be auto or a positive number of mm, got 'nan'"},
     {"negative smoothness", "frame,id,x,y,z\n0,1,2,3,4\n", "--smoothness -1",
      "--smoothness must be between 0 and 1e6, got -1"},
     {"nan smoothness", "frame,id,x,y,z\n0,1,2,3,4\n", "--smoothness nan",

@@ -1,11 +1,16 @@
 // pfdm fit's verdict end to end: what a clean fit, a fit the regularizer
 // decides and an absurd fit say, and their exit codes.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <string>
+#include <vector>
 
+#include "Eigen/Geometry"
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
+#include "pfdm/io/point_reader.h"
 #include "pfdm/testing/test_util.h"
 
 namespace pfdm {
@@ -57,17 +62,29 @@ TEST(CliVerdictTest, APriorThatWinsIsNamed) {
   EXPECT_NE(run.error.find("pfdm: frame 2: "), std::string::npos) << run.error;
 }
 
-// A uniform random cloud: no ventricle, yet once EF 0.96 and exit 0.
+// A uniform random cloud: no ventricle, yet once EF 0.96 and exit 0.  Its
+// points keep their ids from frame to frame, moved by up to 1 mm: a fresh
+// cloud per frame under the same ids is scrambled ids, an input error
+// (fit/stages/tracked_ids.h).
 TEST(CliVerdictTest, ARandomCloudFailsWithExitThree) {
   const std::string dir = ScratchDirectory("cli_verdict_cloud");
   std::mt19937 random(11);
   std::uniform_real_distribution<double> coordinate(-50.0, 50.0);
+  std::uniform_real_distribution<double> jitter(-1.0 / std::sqrt(3.0),
+                                                1.0 / std::sqrt(3.0));
+  double cloud[500][3];
+  for (auto& point : cloud) {
+    for (double& x : point) x = coordinate(random);
+  }
   std::string csv = "frame,id,x,y,z\n";
   for (int t = 0; t < 3; ++t) {
     for (int id = 0; id < 500; ++id) {
+      double x[3];
+      for (int i = 0; i < 3; ++i)
+        x[i] = cloud[id][i] + (t ? jitter(random) : 0);
       char line[128];
-      std::snprintf(line, sizeof(line), "%d,%d,%.3f,%.3f,%.3f\n", t, id,
-                    coordinate(random), coordinate(random), coordinate(random));
+      std::snprintf(line, sizeof(line), "%d,%d,%.3f,%.3f,%.3f\n", t, id, x[0],
+                    x[1], x[2]);
       csv += line;
     }
   }
@@ -136,6 +153,61 @@ TEST(CliVerdictTest, ASegmentWithoutApexSaysTheApexIsExtrapolated) {
     EXPECT_TRUE(extrapolated) << frame["quality_reasons"];
   }
   EXPECT_NE(run.error.find("are extrapolated"), std::string::npos) << run.error;
+  // What lies below the data is null, unless asked for.
+  EXPECT_EQ(fit["not_measured"]["extrapolated"]["levels"],
+            nlohmann::json({"apical", "apex cap"}));
+  EXPECT_TRUE(fit["frames"][2]["clinical"]["net_twist_deg"].is_null());
+  EXPECT_TRUE(fit["frames"][2]["clinical"]["base_rotation_deg"].is_number());
+  EXPECT_TRUE(fit["regions"][15]["ecc_percent"][2].is_null());
+  EXPECT_TRUE(fit["regions"][6]["ecc_percent"][2].is_number());
+  run = RunPfdm("fit --extrapolated --points " + dir + "/segment.csv --out " +
+                dir + "/shown/fit");
+  EXPECT_EQ(run.exit_code, 0) << run.error;
+  const nlohmann::json shown = FitJsonOf(dir + "/shown");
+  EXPECT_TRUE(shown["not_measured"]["extrapolated"]["shown"].get<bool>());
+  EXPECT_TRUE(shown["frames"][2]["clinical"]["net_twist_deg"].is_number());
+  EXPECT_TRUE(shown["regions"][15]["ecc_percent"][2].is_number());
+
+  // The same data told that the apex is the centre of their lowest ring
+  // (the data's own 5 % lowest along the axis the fit found): the hint is
+  // taken, and frame 0 cannot settle on it (once RMS 5.5 mm, closest points
+  // moving by 22.6 mm, "CONVERGENCE" and exit 0).  It fails, and says why.
+  const nlohmann::json& pose = fit["frames"][0]["pose"]["quaternion_wxyz"];
+  const Eigen::Vector3d axis =
+      Eigen::Quaterniond(pose[0], pose[1], pose[2], pose[3]) *
+      Eigen::Vector3d::UnitZ();
+  const PointSequence sequence = ReadPointsCsv(dir + "/segment.csv");
+  const std::vector<DataPoint>& points = sequence.frames[0].points;
+  std::vector<double> heights;
+  for (const DataPoint& p : points) heights.push_back(axis.dot(p.position));
+  std::vector<double> sorted = heights;
+  std::sort(sorted.begin(), sorted.end());
+  const double low = sorted[sorted.size() / 20];
+  const double high = sorted[sorted.size() - 1 - sorted.size() / 20];
+  Eigen::Vector3d apex = Eigen::Vector3d::Zero(), base = apex;
+  int num_low = 0, num_high = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (heights[i] < low) apex += points[i].position, ++num_low;
+    if (heights[i] > high) base += points[i].position, ++num_high;
+  }
+  apex /= num_low;
+  base /= num_high;
+  const auto text = [](const Eigen::Vector3d& x) {
+    return std::to_string(x.x()) + "," + std::to_string(x.y()) + "," +
+           std::to_string(x.z());
+  };
+  run = RunPfdm("fit --points " + dir + "/segment.csv --out " + dir +
+                "/hinted/fit --apex=" + text(apex) + " --base=" + text(base));
+  EXPECT_EQ(run.exit_code, 3) << run.error;
+  const nlohmann::json hinted = FitJsonOf(dir + "/hinted");
+  EXPECT_EQ(hinted["frames"][0]["quality"], "failed");
+  bool unsettled = false;
+  for (const auto& reason : hinted["frames"][0]["quality_reasons"]) {
+    unsettled = unsettled || reason["code"] == "unsettled";
+  }
+  EXPECT_TRUE(unsettled) << hinted["frames"][0]["quality_reasons"];
+  EXPECT_GT(hinted["frames"][0]["correspondence_unsettled_mm"].get<double>(),
+            5.0);
 }
 
 }  // namespace

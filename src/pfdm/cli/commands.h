@@ -38,6 +38,8 @@ PointSequence PointsFromFlags();
 ModelConfig ModelConfigFromFlags();
 FitOptions FitOptionsFromFlags();
 VtkFormat VtkFormatFromFlags();
+// --extrapolated: AnalyzeFit's show_extrapolated.
+bool ShowExtrapolatedFromFlags();
 // Per frame, the plane closing the cavity for --base_plane; "" only checks
 // the flag.
 std::vector<BasePlane> BasePlanesFromFlags(const std::string& points);

@@ -6,6 +6,7 @@
 #include "pfdm/io/fit_output.h"
 #include "pfdm/io/landmark_axis.h"
 #include "pfdm/io/mitral_valve_planes.h"
+#include "pfdm/io/rv_insertion_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
 #include "pfdm/util/error.h"
@@ -49,6 +50,26 @@ int ReportQuality(const SequenceFit& fit, const FitAnalysis& analysis) {
   return 0;
 }
 
+// ED and ES volumes, and the ejection fraction where they are the
+// cavity's; else what they are and how to say the points are the
+// endocardium's.
+void ReportVolumes(const FitAnalysis& analysis) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  const bool cavity = analysis.volume_surface == "cavity";
+  std::printf("%s volume: ED %.1f ml (frame %d), ES %.1f ml (frame %d)",
+              analysis.volume_surface.c_str(), ef.edv_ml, ef.ed_frame,
+              ef.esv_ml, ef.es_frame);
+  if (ef.es_frame == ef.ed_frame) {
+    std::printf("; no frame holds less than ED, so no ejection fraction\n");
+  } else if (cavity) {
+    std::printf(", ejection fraction %.2f\n", ef.ratio);
+  } else {
+    std::printf(
+        "; not the cavity, so no ejection fraction (--surface endo if the "
+        "points are the endocardium's)\n");
+  }
+}
+
 }  // namespace
 
 int RunFit() {
@@ -56,6 +77,7 @@ int RunFit() {
   const ModelConfig config = ModelConfigFromFlags();
   const FitOptions options = FitOptionsFromFlags();
   BasePlanesFromFlags("");  // Checks the flag before the fit.
+  ParseRvInsertion(FitSettingsFromFlags().rv_insertion);  // Likewise.
   const VtkFormat vtk_format = VtkFormatFromFlags();
   // Before the minutes of work, not after them.
   CheckFitOutputFolder(FLAGS_out, FLAGS_points);
@@ -72,10 +94,19 @@ int RunFit() {
   CheckPlanesBelowApex(FLAGS_points, planes, fit);
   std::printf("wall: %s (%s)\n", fit.config.Solid() ? "solid" : "midwall",
               fit.wall_reason.c_str());
-  const FitAnalysis analysis = AnalyzeFit(fit, planes);
+  const FitAnalysis analysis = AnalyzeFit(
+      fit, planes,
+      AnatomicalLayout(
+          fit.ModelAt(0),
+          RvInsertionFrom(FitSettingsFromFlags().rv_insertion, FLAGS_points)),
+      ShowExtrapolatedFromFlags());
+  std::printf("segments: %s (%s)\n",
+              analysis.layout.anatomical ? "AHA, anatomical" : "not anatomical",
+              analysis.layout.anchor.c_str());
   WriteFitOutputs(FLAGS_out, points, fit, analysis, options, vtk_format,
                   &plots);
   const int exit_code = ReportQuality(fit, analysis);
+  ReportVolumes(analysis);
   std::printf(
       "wrote %s/fit.json, parameters.csv, parameters.svg, report.html, "
       "frame_*.vtk, frame_*.vtp, fit.pvd\n",

@@ -24,6 +24,14 @@ DEFINE_string(wall, kDefaults.wall.c_str(),
               "midwall (one surface), solid (endocardium to epicardium, "
               "wall thickness h and transmural twist dtau) or auto: solid "
               "for contours of both walls or tags spread across the wall");
+DEFINE_string(surface, kDefaults.surface.c_str(),
+              "the wall the points lie on, fitted as one surface: endo (its "
+              "volume is the cavity's: an ejection fraction), midwall, epi, "
+              "or auto (from the contour types or a mesh's surface column, "
+              "else midwall)");
+DEFINE_int32(ed_frame, kDefaults.ed_frame,
+             "end-diastole: the frame the ejection fraction's EDV and the "
+             "strains are measured from (ES: the least volume)");
 DEFINE_double(smoothness, kDefaults.smoothness,
               "smoothness weight, relative to one knot's data, 0 to 1e6");
 DEFINE_double(prior, kDefaults.prior,
@@ -32,9 +40,11 @@ DEFINE_double(untracked_prior, kDefaults.untracked_prior,
               "frames without tracked points (contours): pull toward frame "
               "0, same units, 0 to 1e6");
 DEFINE_string(loss, kDefaults.loss.c_str(), "none, huber or cauchy");
-DEFINE_double(loss_scale, kDefaults.loss_scale,
-              "--loss huber or cauchy: the loss's scale, mm, 1e-2 to 1e3 "
-              "times the RMS radius of frame 0's points");
+DEFINE_string(loss_scale, kDefaults.loss_scale.c_str(),
+              "--loss huber or cauchy: the loss's scale, auto (per frame, "
+              "from the frame's fit without the loss: 1.4826 times its "
+              "median distance, times 1.345 for huber, 2.385 for cauchy) or "
+              "mm, 1e-2 to 1e3 times the RMS radius of frame 0's points");
 DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
 DEFINE_string(apex, "",
               "optional apex hint x,y,z (mm), with --base; within twice the "
@@ -42,6 +52,11 @@ DEFINE_string(apex, "",
               "biv-me's APEX_POINT and valve points, the normal of parallel "
               "slices, or the point cloud's best candidate axis");
 DEFINE_string(base, "", "optional base-centre hint x,y,z (mm), with --apex");
+DEFINE_string(rv_insertion, "",
+              "the RV insertion at frame 0, x,y,z (anterior) or "
+              "x,y,z,x,y,z (anterior, inferior), mm: places the AHA "
+              "segments; without it biv-me's RV_INSERT points, else the "
+              "segments are not anatomical");
 DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
 DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
               "direct and damped: Ceres linear solver of the global "
@@ -77,6 +92,9 @@ DEFINE_string(local_grid, kDefaults.local_grid.c_str(),
 DEFINE_double(local_stiffness, kDefaults.local_stiffness,
               "local deformations' membrane and thin-plate weight, relative "
               "to one node's data, 1e-4 to 1e6 (--local off: none)");
+DEFINE_string(uncertainty, kDefaults.uncertainty.c_str(),
+              "each frame's parameter covariance, a standard deviation per "
+              "knot value in parameters.csv: on or off");
 DEFINE_string(vtk_format, kDefaults.vtk_format.c_str(),
               "fit, batch: frame_NNN.vtk and .vtp as binary (legacy BINARY, "
               "XML appended raw; exact, no formatting) or ascii (text, 9 "
@@ -86,17 +104,26 @@ DEFINE_string(base_plane, kDefaults.base_plane.c_str(),
               "closed: auto (the mitral valve plane when biv-me guide points "
               "have MITRAL_VALVE points in every frame, else rim) or rim "
               "(a flat lid at the base rim)");
+DEFINE_bool(extrapolated, false,
+            "fit, batch: report the numbers measured where frame 0 has no "
+            "data (the apical level and ring when the data do not reach the "
+            "apex); by default they are null / n/a");
 
 namespace pfdm {
+
+bool ShowExtrapolatedFromFlags() { return FLAGS_extrapolated; }
 
 FitSettings FitSettingsFromFlags() {
   FitSettings s;
   s.format = FLAGS_format;
   s.contours = FLAGS_contours;
   s.base_plane = FLAGS_base_plane;
+  s.rv_insertion = FLAGS_rv_insertion;
   s.model = FLAGS_model;
   s.knots = FLAGS_knots;
   s.wall = FLAGS_wall;
+  s.surface = FLAGS_surface;
+  s.ed_frame = FLAGS_ed_frame;
   s.smoothness = FLAGS_smoothness;
   s.prior = FLAGS_prior;
   s.untracked_prior = FLAGS_untracked_prior;
@@ -117,6 +144,7 @@ FitSettings FitSettingsFromFlags() {
   s.local = FLAGS_local;
   s.local_grid = FLAGS_local_grid;
   s.local_stiffness = FLAGS_local_stiffness;
+  s.uncertainty = FLAGS_uncertainty;
   s.vtk_format = FLAGS_vtk_format;
   return s;
 }

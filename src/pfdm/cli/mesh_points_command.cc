@@ -57,7 +57,14 @@ int RunMeshPoints() {
       ReadMeshFrames(FLAGS_mesh, MeshSettingsFromFlags());
   std::vector<std::vector<Eigen::Vector3d>> points;
   for (const TriangleMesh& mesh : frames) points.push_back(mesh.points);
-  const std::string csv = ToPointsCsv(MeshPointSequence(FLAGS_mesh, points));
+  PointSequence sequence = MeshPointSequence(FLAGS_mesh, points);
+  // The wall the names say, in the CSV's surface column: fit reads it as
+  // --surface (an endocardium's volume is the cavity's).
+  const WallLayer surface = MeshSurface(FLAGS_mesh, MeshSettingsFromFlags());
+  for (Frame& frame : sequence.frames) {
+    for (DataPoint& p : frame.points) p.layer = surface;
+  }
+  const std::string csv = ToPointsCsv(sequence);
   std::vector<MeshFrameMotion> motion;
   if (!frames.front().triangles.empty()) {
     try {
@@ -71,6 +78,10 @@ int RunMeshPoints() {
   WriteFileAtomically(FLAGS_out, csv);
   std::printf("wrote %s (%zu frames x %zu vertices)\n", FLAGS_out.c_str(),
               frames.size(), frames.front().points.size());
+  if (surface != WallLayer::kAnywhere) {
+    std::printf("surface: %s (from the names; fit takes it as --surface)\n",
+                surface == WallLayer::kEndocardium ? "endo" : "epi");
+  }
   if (!motion.empty()) {
     std::printf(
         "measured on the meshes (apex vertex to rim centroid):\n"

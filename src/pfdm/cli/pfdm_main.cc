@@ -20,16 +20,18 @@ struct Command {
 
 // The model's and the fit's, FitSettings' but for the solver and outputs.
 const std::string kFitFlags =
-    "format contours model knots wall smoothness prior untracked_prior loss "
+    "format contours model knots wall surface ed_frame smoothness prior "
+    "untracked_prior loss "
     "loss_scale threads apex base linear_solver time_step rest_tolerance "
     "max_steps integrator damping damping_scale jacobian local local_grid "
-    "local_stiffness ";
+    "local_stiffness uncertainty ";
 
 const Command kCommands[] = {
     {"fit", RunFit,
      "--points FILE --out DIR [--model paper|superellipsoid] [--knots 17] "
      "[--solver direct|damped|integrator [--integrator rkc|euler]]",
-     "points out solver vtk_format base_plane " + kFitFlags},
+     "points out solver vtk_format base_plane extrapolated rv_insertion " +
+         kFitFlags},
     {"simulate", RunSimulate,
      "--out FILE.csv [--noise 0.5 --outliers 0 --frames 5 --tags 2000]",
      "out frames tags noise outliers seed phantom kinematics wall_tags "
@@ -40,7 +42,8 @@ const Command kCommands[] = {
      "points out trajectory_per_decade " + kFitFlags},
     {"batch", RunBatch,
      "--manifest cases.csv --out DIR [--jobs N] [--shard i/n]: fits a cohort",
-     "manifest out jobs shard solver vtk_format base_plane " + kFitFlags},
+     "manifest out jobs shard solver vtk_format base_plane extrapolated " +
+         kFitFlags},
     {"mesh-points", RunMeshPoints,
      "--mesh FILE|DIR --out FILE.csv [--mesh_filter S] [--label 0] "
      "[--cap_surfaces ED-endo,ES-endo]: mesh vertices as tracked points",

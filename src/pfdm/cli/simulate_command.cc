@@ -16,7 +16,9 @@ DEFINE_int32(frames, 5,
              "simulate: frames (--phantom lv: 5, or 9 for --kinematics cycle)");
 DEFINE_int32(tags, 2000, "simulate: tracked tags");
 DEFINE_double(noise, 0.5, "simulate: Gaussian noise per coordinate, mm");
-DEFINE_double(outliers, 0.0, "simulate: fraction of outlier points");
+DEFINE_double(outliers, 0.0,
+              "simulate: fraction of outlier points (--phantom model: moved "
+              "10 mm, lv: 5 to 10 mm, in a random direction)");
 DEFINE_int32(seed, 1, "simulate: random seed");
 DEFINE_string(phantom, "model",
               "simulate: model (the model's own equations) or lv (the "
@@ -50,7 +52,7 @@ bool IsDefault(const char* flag) {
 }
 
 // Both phantoms' counts and noise, named with their values as the Python
-// module's simulate names them (--phantom lv refuses outliers itself).
+// module's simulate names them.
 void CheckSimulateFlags() {
   PhantomOptions options;
   options.num_frames = FLAGS_frames;
@@ -97,9 +99,6 @@ int RunLvPhantom() {
     throw InputError("unknown --wall_tags '" + FLAGS_wall_tags +
                      "' (midwall, wall)");
   }
-  if (FLAGS_outliers != 0.0) {
-    throw InputError("--outliers is for --phantom model only");
-  }
   if (!ParseLvRegion(FLAGS_region, &options.region)) {
     throw InputError("unknown --region '" + FLAGS_region +
                      "' (full, midventricular)");
@@ -115,6 +114,7 @@ int RunLvPhantom() {
   options.num_frames = IsDefault("frames") ? 0 : FLAGS_frames;
   options.num_tags = FLAGS_tags;
   options.noise_mm = FLAGS_noise;
+  options.outlier_fraction = FLAGS_outliers;
   options.seed = FLAGS_seed;
   options.deformation.lesion = FLAGS_lesion;
   options.breathing = FLAGS_breathing;

@@ -6,6 +6,8 @@
 #include "ceres/types.h"
 #include "nlohmann/json.hpp"
 #include "pfdm/io/fit_output.h"
+#include "pfdm/io/not_measured_json.h"
+#include "pfdm/io/segments_json.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
 #include "pfdm/util/verdict.h"
@@ -34,7 +36,8 @@ constexpr const char* kGaugeConvention =
     "the same bend) until their knot means lie in [0, 2).";
 
 constexpr const char* kEjectionDefinition =
-    "(EDV - ESV) / EDV; ED is frame 0, ES the frame of least volume; the "
+    "(EDV - ESV) / EDV; ED is settings.ed_frame (--ed_frame, frame 0 unless "
+    "given), ES the frame of least volume; the "
     "volumes are the frames' cavity_volume_ml, closed as cavity_closure "
     "says.";
 
@@ -43,8 +46,9 @@ constexpr const char* kVolumeFractionDefinition =
     "is not the cavity (volume_surface says what it is: a surface through "
     "the middle of the wall encloses the cavity and about half the "
     "myocardium), so this is not the ejection fraction: fit tags through "
-    "the wall or contours of both walls (--wall solid) for that; ED is frame "
-    "0, ES the frame of least volume.";
+    "the wall or contours of both walls (--wall solid), or points of the "
+    "endocardium (--surface endo), for that; ED is settings.ed_frame, ES the "
+    "frame of least volume.";
 
 constexpr const char* kWallDefinition =
     "A solid (model.wall): x(u, v, w) with w from -1 (endocardium) to +1 "
@@ -74,14 +78,13 @@ constexpr const char* kQualityDefinition =
     "fraction): docs/verdict.md";
 
 constexpr const char* kRegionsConvention =
-    "AHA-style segments: thirds of frame 0's axis from the base rim to the "
-    "apex (segments 1-6 basal, 7-12 mid, 13-16 apical), each cut into equal "
-    "sectors of longitude v counted counter-clockwise about +z (seen from "
-    "the base) from v = -180 degrees, the model's -x axis, not the RV "
-    "insertion; per frame, rotation_deg is the mean turn of the segment's "
-    "material points about frame 0's long axis (about their ring's "
-    "centroid) and radial_contraction_percent the mean of 1 - r / r(frame "
-    "0), r a material point's distance from its ring's centroid.";
+    "segments 1-17 as \"segments\" places them (anatomical or not), each "
+    "with its name and its range of longitude v on frame 0's model; per "
+    "frame, rotation_deg is the mean turn of the segment's material points "
+    "about frame 0's long axis (about their ring's centroid) and "
+    "radial_contraction_percent the mean of 1 - r / r(frame 0), r a "
+    "material point's distance from its ring's centroid; null where not "
+    "measured (segment 17 without data near the apex).";
 
 constexpr const char* kStrainDefinition =
     "Lagrangian (Green-Lagrange) surface strain of the fitted model's "
@@ -110,15 +113,6 @@ constexpr const char* kClinicalDefinition =
     "longitudinal_shortening_percent, 1 - L / L0, L from the apex pole to the "
     "centroid of the base rim's material points.  The *_per_knot ratios are "
     "a1, a2, a3 against frame 0 (the paper's Fig. 5).";
-
-constexpr const char* kNotMeasuredDefinition =
-    "null marks what the data cannot determine.  A turn about the long axis "
-    "is seen only on tracked points (ids in more than one frame: tags); in "
-    "the frames listed, which have none (contours), or when frame 0 has none, "
-    "the fit holds tau, and every number a turn makes is null: the "
-    "rotations, twists, torsion and shear angle in clinical (a solid's "
-    "endo_* and epi_* ones too), gcl_percent, and the regions' rotation_deg "
-    "and ecl_percent.";
 
 // A number, or null where it is kNotMeasured.
 json Value(double value) { return Measured(value) ? json(value) : json(); }
@@ -173,14 +167,40 @@ void AddStepperSettings(const FitOptions& options, json* settings) {
   }
 }
 
-json Settings(const PointSequence& points, const FitOptions& options) {
+// The loss: with one, "loss_scale" is "auto" or the number given and
+// "loss_scale_mm" the scale used, measured per frame for auto (a list, a
+// frame's FrameFit::loss_scale_mm each); without, "loss_scale_mm" is the
+// option as given.
+void AddLossSettings(const SequenceFit& fit, const FitOptions& options,
+                     json* settings) {
+  if (options.loss == "none") {
+    settings->erase("loss_scale");
+    return;
+  }
+  if (!options.loss_scale_auto) {
+    (*settings)["loss_scale"] = options.loss_scale_mm;
+    return;
+  }
+  (*settings)["loss_scale"] = "auto";
+  json scales = json::array();
+  for (const FrameFit& frame : fit.frames) {
+    scales.push_back(frame.loss_scale_mm);
+  }
+  (*settings)["loss_scale_mm"] = scales;
+}
+
+json Settings(const PointSequence& points, const SequenceFit& fit,
+              const FitOptions& options) {
   json settings = {
       {"points", points.source},
       {"smoothness_weight", options.smoothness_weight},
       {"wall", WallModelName(options.wall)},
+      {"surface", SurfaceChoiceName(options.surface)},
+      {"ed_frame", options.ed_frame},
       {"prior_weight", options.prior_weight},
       {"untracked_prior_weight", options.untracked_prior_weight},
       {"loss", options.loss},
+      {"loss_scale", nullptr},
       {"loss_scale_mm", options.loss_scale_mm},
       {"max_correspondence_rounds", options.max_correspondence_rounds},
       {"correspondence_tolerance_mm", options.correspondence_tolerance_mm},
@@ -193,10 +213,12 @@ json Settings(const PointSequence& points, const FitOptions& options) {
       {"local", options.local.enabled},
       {"local_grid", std::to_string(options.local.rows) + "x" +
                          std::to_string(options.local.cols)},
-      {"local_stiffness", options.local.stiffness}};
+      {"local_stiffness", options.local.stiffness},
+      {"uncertainty", options.uncertainty}};
   if (!points.contour_types.empty()) {
     settings["contour_types"] = points.contour_types;
   }
+  AddLossSettings(fit, options, &settings);
   AddStepperSettings(options, &settings);
   if (options.hint) {
     const auto& h = *options.hint;
@@ -289,7 +311,10 @@ json QualitySection(const FitAnalysis& analysis) {
 }
 
 // One frame's fit errors, solve, verdict, volume (under volume_key, named
-// after the surface measured), pose and clinical numbers.
+// after the surface measured), pose and clinical numbers; with
+// --uncertainty on, what its covariance rests on (fit/problem/
+// frame_covariance.h: the data's sigma, the directions left undetermined)
+// and what it took.
 json FrameEntry(const FrameFit& frame, const Verdict& verdict,
                 const ClinicalSummary& summary, const GlobalStrain& strain,
                 const std::string& volume_key, bool solid) {
@@ -315,9 +340,21 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
     entry["myocardial_volume_ml"] = summary.myocardial_volume_ml;
     entry["lv_mass_g"] = summary.lv_mass_g;
   }
+  // Only when the input gave times: a frame number is no time.
+  if (Measured(summary.time_ms)) entry["time_ms"] = summary.time_ms;
   entry["pose"] = {{"center_mm", frame.state.center},
                    {"quaternion_wxyz", frame.state.quaternion}};
   entry["clinical"] = FrameClinical(summary, strain, solid);
+  if (frame.covariance.computed) {
+    const FrameCovariance& covariance = frame.covariance;
+    entry["uncertainty"] = {
+        {"sigma_mm", covariance.sigma_mm},
+        {"degrees_of_freedom", covariance.degrees_of_freedom},
+        {"parameters", covariance.entries.size()},
+        {"rank_deficiency", covariance.rank_deficiency},
+        {"deficient_directions", covariance.deficient_directions},
+        {"seconds", covariance.seconds}};
+  }
   return entry;
 }
 
@@ -369,15 +406,15 @@ json RegionEntry(const FitAnalysis& analysis, size_t r, double peak_ecc,
       {"v_range_deg",
        {region.v_begin * kDegreesPerRadian, region.v_end * kDegreesPerRadian}},
       {"rotation_deg", Values(rotation)},
-      {"radial_contraction_percent", radial},
-      {"ecc_percent", ecc},
-      {"ell_percent", ell},
+      {"radial_contraction_percent", Values(radial)},
+      {"ecc_percent", Values(ecc)},
+      {"ell_percent", Values(ell)},
       {"ecl_percent", Values(ecl)},
-      {"peak_ecc_percent", peak_ecc},
+      {"peak_ecc_percent", Value(peak_ecc)},
       {"area_mm2", analysis.region_motion.empty()
                        ? 0.0
                        : analysis.region_motion[0][r].area_mm2}};
-  if (solid) entry["thickening_percent"] = thickening;
+  if (solid) entry["thickening_percent"] = Values(thickening);
   return entry;
 }
 
@@ -405,16 +442,6 @@ json StrainLevels(const FitAnalysis& analysis) {
   return levels;
 }
 
-// The frames whose rotation is null, and why; null when there are none.
-json NotMeasured(const FitAnalysis& analysis) {
-  json frames = json::array();
-  for (size_t t = 0; t < analysis.rotation_measured.size(); ++t) {
-    if (!analysis.rotation_measured[t]) frames.push_back(t);
-  }
-  if (frames.empty()) return json();
-  return {{"frames", frames}, {"definition", kNotMeasuredDefinition}};
-}
-
 json StrainSection(const FitAnalysis& analysis) {
   const StrainPeak gcs = PeakGcs(analysis.strain);
   const StrainPeak gls = PeakGls(analysis.strain);
@@ -436,7 +463,7 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   const bool solid = fit.config.Solid();
   const bool cavity = analysis.volume_surface == "cavity";
   json document = {{"pfdm_version", "0.1.0"},
-                   {"settings", Settings(points, options)},
+                   {"settings", Settings(points, fit, options)},
                    {"model", ModelSection(fit, analysis)},
                    {"quality", QualitySection(analysis)},
                    {"gauge_convention", kGaugeConvention},
@@ -447,7 +474,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
   document[cavity ? "ejection_fraction"
                   : analysis.volume_surface + "_volume_fraction"] =
       EjectionSection(analysis);
-  document.update(json{{"regions_convention", kRegionsConvention},
+  document.update(json{{"segments_anatomical", analysis.layout.anatomical},
+                       {"segments", SegmentsSection(analysis)},
+                       {"regions_convention", kRegionsConvention},
                        {"regions", Regions(analysis, solid)},
                        {"strain", StrainSection(analysis)},
                        {"frames", Frames(fit, analysis)}});

@@ -52,13 +52,59 @@ TEST(FitJsonTest, HasVolumesEjectionFractionAndRegions) {
   EXPECT_NEAR(ef["ratio"].get<double>(), 1.0 - volumes[2] / volumes[0], 1e-12);
   EXPECT_NE(ef["cavity_closure"].get<std::string>().find("flat lid"),
             std::string::npos);
-  ASSERT_EQ(json["regions"].size(), 16u);
+  ASSERT_EQ(json["regions"].size(), 17u);
   EXPECT_EQ(json["regions"][0]["name"], "basal 1");
+  EXPECT_EQ(json["regions"][16]["name"], "apex");
+  EXPECT_EQ(json["regions"][16]["segment"], 17);
+  // No RV insertion: the segments say they are not anatomical, and why.
+  EXPECT_EQ(json["segments_anatomical"], false);
+  EXPECT_EQ(json["segments"]["anchor"], "no RV insertion given");
+  EXPECT_NE(
+      json["segments"]["definition"].get<std::string>().find("not anatomical"),
+      std::string::npos);
+  EXPECT_FALSE(json["segments"].contains("rv_insertion"));
+  EXPECT_EQ(json["segments"]["apex_cap"]["measured"],
+            json["model"]["apex_in_data"]);
   EXPECT_EQ(json["regions"][15]["rotation_deg"].size(), 3u);
   EXPECT_EQ(json["regions"][15]["rotation_deg"][0].get<double>(), 0.0);
   EXPECT_LT(json["regions"][15]["rotation_deg"][2].get<double>(), -1.0);
   EXPECT_EQ(json["settings"]["points"], f.phantom.points.source);
   EXPECT_FALSE(json["settings"].contains("contour_types"));
+}
+
+// Anchored to an RV insertion: AHA names, the insertion's longitudes and
+// sense; without data near the apex segment 17's numbers are null.
+TEST(FitJsonTest, AnatomicalSegmentsAndAnApexCapNotSeen) {
+  const FittedPhantom& f = SmallPhantomFit();
+  SequenceFit fit = f.fit;
+  fit.apex_in_data = false;
+  RegionLayout layout;
+  layout.anatomical = true;
+  layout.anchor = "--rv_insertion";
+  layout.anchor_v = 0.5;
+  layout.direction = -1.0;
+  layout.inferior_v = 0.5 - 2.0;
+  layout.anterior_points = layout.inferior_points = 1;
+  const nlohmann::json json = nlohmann::json::parse(FitJson(
+      f.phantom.points, fit, FitOptions(), AnalyzeFit(fit, {}, layout)));
+  EXPECT_EQ(json["segments_anatomical"], true);
+  const auto& segments = json["segments"];
+  EXPECT_EQ(segments["anchor"], "--rv_insertion");
+  EXPECT_NE(segments["definition"].get<std::string>().find("Cerqueira"),
+            std::string::npos);
+  EXPECT_NEAR(segments["rv_insertion"]["anterior_v_deg"].get<double>(),
+              0.5 * 180 / 3.14159265358979323846, 1e-9);
+  EXPECT_NEAR(segments["rv_insertion"]["septal_arc_deg"].get<double>(),
+              2.0 * 180 / 3.14159265358979323846, 1e-9);
+  EXPECT_EQ(segments["apex_cap"]["measured"], false);
+  EXPECT_EQ(json["regions"][1]["name"], "basal anteroseptal");
+  EXPECT_EQ(json["regions"][13]["name"], "apical septal");
+  const auto& cap = json["regions"][16];
+  EXPECT_EQ(cap["name"], "apex");
+  EXPECT_TRUE(cap["radial_contraction_percent"][2].is_null());
+  EXPECT_TRUE(cap["peak_ecc_percent"].is_null());
+  EXPECT_GT(cap["area_mm2"].get<double>(), 10.0);
+  EXPECT_TRUE(json["regions"][15]["ecc_percent"][2].is_number());
 }
 
 // Strain per frame in the clinical block, per region and level, peaks in
@@ -129,6 +175,31 @@ TEST(FitJsonTest, WhatIsNotMeasuredIsNull) {
   EXPECT_LT(tags["regions"][15]["rotation_deg"][2].get<double>(), -1.0);
   EXPECT_EQ(json["regions"][15]["rotation_deg"][1],
             tags["regions"][15]["rotation_deg"][1]);
+}
+
+// The loss in the settings: none as before (the scale as given, no
+// loss_scale); auto with each frame's measured scale; a number as given.
+TEST(FitJsonTest, RecordsTheLossScaleUsed) {
+  const FittedPhantom& f = SmallPhantomFit();
+  SequenceFit fit = f.fit;
+  for (int t = 0; t < 3; ++t) fit.frames[t].loss_scale_mm = 0.5 + t;
+  FitOptions options;
+  nlohmann::json settings = nlohmann::json::parse(
+      FitJson(f.phantom.points, fit, options))["settings"];
+  EXPECT_EQ(settings["loss"], "none");
+  EXPECT_FALSE(settings.contains("loss_scale"));
+  EXPECT_EQ(settings["loss_scale_mm"].get<double>(), 1.0);
+  options.loss = "cauchy";
+  settings = nlohmann::json::parse(
+      FitJson(f.phantom.points, fit, options))["settings"];
+  EXPECT_EQ(settings["loss_scale"], "auto");
+  EXPECT_EQ(settings["loss_scale_mm"], nlohmann::json({0.5, 1.5, 2.5}));
+  options.loss_scale_auto = false;
+  options.loss_scale_mm = 2.0;
+  settings = nlohmann::json::parse(
+      FitJson(f.phantom.points, fit, options))["settings"];
+  EXPECT_EQ(settings["loss_scale"].get<double>(), 2.0);
+  EXPECT_EQ(settings["loss_scale_mm"].get<double>(), 2.0);
 }
 
 // Guide points name the contour types they kept, so a fit can be redone.

@@ -1,5 +1,6 @@
 #include "pfdm/io/fit_output.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -7,6 +8,7 @@
 #include <filesystem>
 #include <regex>
 #include <sstream>
+#include <utility>
 
 #include "pfdm/io/fit_json.h"
 #include "pfdm/io/vtp_writer.h"
@@ -160,10 +162,27 @@ const char* ReportedUnit(int f) {
   return f == kTau || f == kDtau ? "rad" : IsLength(f) ? "mm" : "1";
 }
 
-std::string ParametersCsv(const std::vector<Model>& frames) {
+double ReportedSd(const Model& model, const FrameCovariance& covariance, int f,
+                  int k) {
+  const int i = covariance.FunctionIndex(model.config, f, k);
+  const auto variance = [&](int a, int b) {
+    return a < 0 || b < 0 ? 0.0 : covariance.covariance(a, b);
+  };
+  if (f != kA1 && f != kA2 && f != kA3) return std::sqrt(variance(i, i));
+  // d(a0 a_i) = a_i da0 + a0 da_i.
+  const double a0 = model.state.globals[kA0];
+  const double ai = model.FunctionAt(f, model.config.Grid().KnotU(k));
+  const int j = covariance.FunctionIndex(model.config, kA0, k);
+  return std::sqrt(std::max(0.0, a0 * a0 * variance(i, i) +
+                                     ai * ai * variance(j, j) +
+                                     2.0 * a0 * ai * variance(i, j)));
+}
+
+std::string ParametersCsv(const std::vector<Model>& frames,
+                          const SequenceFit* fit) {
   std::ostringstream out;
   out.precision(10);
-  out << "frame,function,knot,u,z_mm,value\n";
+  out << "frame,function,knot,u,z_mm,value" << (fit ? ",sd" : "") << '\n';
   for (size_t t = 0; t < frames.size(); ++t) {
     const Model& model = frames[t];
     const KnotGrid grid = model.config.Grid();
@@ -171,7 +190,13 @@ std::string ParametersCsv(const std::vector<Model>& frames) {
       for (int k = 0; k < grid.num_knots(); ++k) {
         const double u = grid.KnotU(k);
         out << t << ',' << FunctionName(f) << ',' << k << ',' << u << ','
-            << KnotRingZ(model, u) << ',' << ReportedValue(model, f, u) << '\n';
+            << KnotRingZ(model, u) << ',' << ReportedValue(model, f, u);
+        if (fit != nullptr) {
+          const FrameCovariance& covariance = fit->frames[t].covariance;
+          out << ',';
+          if (covariance.computed) out << ReportedSd(model, covariance, f, k);
+        }
+        out << '\n';
       }
     }
   }
@@ -224,6 +249,13 @@ VtkPolyData FramePolyData(const Model& model, const Frame& frame,
                         {"w", w_values},
                         {"twist_deg", twist},
                         {"is_data", is_data}};
+  if (!fit.loss_weights.empty()) {
+    // The surface's vertices weigh 1, as data points the loss trusts.
+    std::vector<double> weights(data.points.size() - frame.points.size(), 1.0);
+    weights.insert(weights.end(), fit.loss_weights.begin(),
+                   fit.loss_weights.end());
+    data.point_scalars.emplace_back("loss_weight", std::move(weights));
+  }
   data.point_vectors = {{"residual", residuals}};
   return data;
 }
@@ -252,7 +284,8 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
   // plots (one gnuplot for the four: its start-up, not the plotting, was
   // most of their time).
   plots->Render({ParameterPlots(analysis.models, analysis.rotation_measured),
-                 CycleCurves(analysis.clinical, analysis.volume_surface),
+                 CycleCurves(analysis.clinical, analysis.volume_surface,
+                             analysis.ejection_fraction.ed_frame),
                  StrainCurves(analysis.strain),
                  Bullseye(analysis.regions, ClinicalBullseyeMaps(analysis))});
   std::vector<std::string> frame_names;
@@ -261,7 +294,10 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
     char name[32];
     std::snprintf(name, sizeof(name), "frame_%03d", frame.frame);
     frame_names.push_back(name);
-    timesteps.emplace_back(frame.frame, std::string(name) + ".vtp");
+    // ParaView's time: the trigger time (ms) where the input gave one.
+    const bool timed = fit.time_ms.size() == fit.frames.size();
+    timesteps.emplace_back(timed ? fit.time_ms[frame.frame] : frame.frame,
+                           std::string(name) + ".vtp");
   }
   std::vector<std::string> names = {
       "parameters.csv", "fit.pvd", "parameters.svg", "report.html", "fit.json"};
@@ -293,7 +329,7 @@ void WriteFitOutputs(const std::string& dir, const PointSequence& points,
       write(name + ".vtk", ToLegacyVtk(data, "pfdm " + name, vtk_format));
       write(name + ".vtp", ToVtkXmlPolyData(data, vtk_format));
     }
-    write("parameters.csv", ParametersCsv(analysis.models));
+    write("parameters.csv", ParametersCsv(analysis.models, &fit));
     write("fit.pvd", PvdCollection(timesteps));
     const std::string json = FitJson(points, fit, options, analysis);
     const std::vector<std::string> svgs = plots->Finish();

@@ -29,12 +29,21 @@ constexpr int kSurfaceMeridians = 48;
 // One row per frame, function and knot: frame,function,knot,u,z_mm,value.
 // Lengths (a0, a1..a3 as a0 a_i, b0, b2, offsets) in mm, tau in radians,
 // eps and b1, b3 unitless; z_mm is the knot ring's axial position in the
-// model frame.
-std::string ParametersCsv(const std::vector<Model>& frames);
+// model frame.  With `fit`, a last column sd: the value's standard
+// deviation in its unit (ReportedSd), 0 for an entry the gauge or the model
+// holds, empty for a frame without a covariance (--uncertainty off).
+std::string ParametersCsv(const std::vector<Model>& frames,
+                          const SequenceFit* fit = nullptr);
+
+// The standard deviation of ReportedValue(model, f, knot k's u) from the
+// frame's covariance (a1..a3 as a0 a_i: to first order in a0 and a_i).
+double ReportedSd(const Model& model, const FrameCovariance& covariance, int f,
+                  int k);
 
 // The fitted surface (a u, v grid of triangles) and the data points as
-// vertices, with point data u, v, twist_deg (tau at u), is_data and the
-// residual vectors.
+// vertices, with point data u, v, twist_deg (tau at u), is_data, the
+// residual vectors and, for a fit with a robust loss, loss_weight (each
+// data point's FrameFit::loss_weights, 1 on the surface).
 VtkPolyData FramePolyData(const Model& model, const Frame& frame,
                           const FrameFit& fit);
 std::string FrameVtk(const Model& model, const Frame& frame,

@@ -8,6 +8,7 @@
 
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
+#include "pfdm/io/vtp_writer.h"
 #include "pfdm/model/model_surface.h"
 #include "pfdm/testing/small_phantom_fit.h"
 #include "pfdm/testing/test_util.h"
@@ -38,6 +39,31 @@ TEST(FitOutputTest, SurfaceCarriesTwistInDegreesAtEachVertex) {
   }
   // The phantom's apex turns -5 degrees by frame 4, so about -2.5 by 2.
   EXPECT_LT(*std::min_element(twist.begin(), twist.end()), -1.5);
+}
+
+// A fit with a loss gives its points' weights as loss_weight, 1 on the
+// surface; without one there is no such array.
+TEST(FitOutputTest, PointsCarryTheirLossWeights) {
+  const FittedPhantom& f = SmallPhantomFit();
+  FrameFit frame = f.fit.frames[1];
+  for (size_t i = 0; i < frame.residuals.size(); ++i) {
+    frame.loss_weights.push_back(1.0 / (1.0 + i));
+  }
+  const VtkPolyData data =
+      FramePolyData(f.fit.ModelAt(1), f.phantom.points.frames[1], frame);
+  ASSERT_EQ(data.point_scalars.size(), 6u);
+  EXPECT_EQ(data.point_scalars[5].first, "loss_weight");
+  const std::vector<double>& weights = data.point_scalars[5].second;
+  ASSERT_EQ(weights.size(), data.points.size());
+  const size_t surface = data.points.size() - frame.residuals.size();
+  for (size_t i = 0; i < weights.size(); ++i) {
+    EXPECT_EQ(weights[i], i < surface ? 1.0 : 1.0 / (1.0 + (i - surface)));
+  }
+  EXPECT_NE(ToLegacyVtk(data, "t").find("SCALARS loss_weight"),
+            std::string::npos);
+  EXPECT_NE(
+      ToVtkXmlPolyData(data, VtkFormat::kAscii).find("Name=\"loss_weight\""),
+      std::string::npos);
 }
 
 TEST(FitOutputTest, WritesEveryFileWholeWithACollectionOfTheFrames) {

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "ceres/types.h"
+#include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/io/mitral_valve_planes.h"
 #include "pfdm/model/local_field.h"
 #include "pfdm/solvers/damping_groups.h"
@@ -65,6 +67,20 @@ int IntInRange(const char* flag, int value, int low, int high) {
 // overflow and the data no longer count.
 double Weight(const char* flag, double value) {
   return InRange(flag, value, 0.0, 1e6, "0 and 1e6");
+}
+
+// A --loss_scale number: positive and finite (scale 0 once left the model
+// unmoved with exit 0).
+double LossScale(const std::string& text) {
+  char* end = nullptr;
+  const double scale = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !(scale > 0.0) ||
+      !std::isfinite(scale)) {
+    throw InputError(
+        "--loss_scale must be auto or a positive number of mm, got '" +
+        Clip(text) + "'");
+  }
+  return scale;
 }
 
 void SetSolverOptions(const FitSettings& s, FitOptions* options) {
@@ -166,27 +182,55 @@ void CheckSettingsApply(const FitSettings& s, bool every_solver) {
   }
 }
 
+// --surface declares one surface (FitOptions::surface); a solid has two.
+void SetSurface(const FitSettings& s, FitOptions* options) {
+  const SurfaceChoice choices[] = {
+      SurfaceChoice::kAuto, SurfaceChoice::kEndocardium,
+      SurfaceChoice::kMidwall, SurfaceChoice::kEpicardium};
+  const auto it = std::find_if(
+      std::begin(choices), std::end(choices),
+      [&](SurfaceChoice c) { return s.surface == SurfaceChoiceName(c); });
+  if (it == std::end(choices)) {
+    throw InputError("--surface must be auto, endo, midwall or epi, got '" +
+                     Clip(s.surface) + "'");
+  }
+  options->surface = *it;
+  if (*it != SurfaceChoice::kAuto && options->wall == WallModel::kSolid) {
+    throw InputError("--surface " + s.surface +
+                     " declares one surface; --wall solid fits two");
+  }
+  if (s.ed_frame < 0) {
+    throw InputError("--ed_frame must be a frame number from 0, got " +
+                     std::to_string(s.ed_frame));
+  }
+  options->ed_frame = s.ed_frame;
+}
+
 FitOptions OptionsFrom(const FitSettings& s, bool every_solver) {
   FitOptions options;
   options.smoothness_weight = Weight("smoothness", s.smoothness);
   options.prior_weight = Weight("prior", s.prior);
   options.untracked_prior_weight = Weight("untracked_prior", s.untracked_prior);
   options.wall = WallModelFromName(s.wall);
+  CheckLossName(s.loss);
+  SetSurface(s, &options);
   options.loss = s.loss;
-  // Scale 0 once left the model unmoved with exit 0; the data's scale
-  // bounds it further (CheckOptionsAgainstPoints).
-  if (!(s.loss_scale > 0.0) || !std::isfinite(s.loss_scale)) {
-    throw InputError("--loss_scale must be a positive number of mm, got " +
-                     Show(s.loss_scale));
-  }
-  options.loss_scale_mm = s.loss_scale;
   // The choices the other settings depend on, then whether those apply,
   // then their values.
   SolverFromName(s.solver);
   if (s.local != "on" && s.local != "off") {
     throw InputError("--local must be on or off, got '" + Clip(s.local) + "'");
   }
+  if (s.uncertainty != "on" && s.uncertainty != "off") {
+    throw InputError("--uncertainty must be on or off, got '" +
+                     Clip(s.uncertainty) + "'");
+  }
+  options.uncertainty = s.uncertainty == "on";
   CheckSettingsApply(s, every_solver);
+  // A number is bounded further by the data's scale
+  // (CheckOptionsAgainstPoints).
+  options.loss_scale_auto = s.loss_scale == "auto";
+  if (!options.loss_scale_auto) options.loss_scale_mm = LossScale(s.loss_scale);
   SetSolverOptions(s, &options);
   options.jacobian = JacobianFromName(s.jacobian);
   SetLocalOptions(s, &options);
@@ -214,6 +258,12 @@ FitOptions FitOptionsForEverySolver(const FitSettings& settings) {
 
 void CheckOptionsAgainstPoints(const FitOptions& options,
                                const PointSequence& points) {
+  if (!points.frames.empty() &&
+      options.ed_frame >= static_cast<int>(points.frames.size())) {
+    throw InputError("--ed_frame " + std::to_string(options.ed_frame) +
+                     " is not a frame of " + points.source + " (frames 0 to " +
+                     std::to_string(points.frames.size() - 1) + ")");
+  }
   // Too few points, or all at one place, are the data's fault, which the
   // fit's start names (StartSequence): no scale to measure here.
   if (points.frames.empty() ||
@@ -235,9 +285,8 @@ void CheckOptionsAgainstPoints(const FitOptions& options,
   // Cauchy at 1e12 mm, or at 0.1 mm on tags with 0.5 mm noise (RMS radius
   // 39.7 mm), left the model near its start: a scale is a residual's size,
   // between a tag's noise and the heart's.  A scale measured from the data
-  // (--loss_scale auto) is to be set in options before this check, which it
-  // passes by construction, or to skip it.
-  if (options.loss != "none") {
+  // (--loss_scale auto) is not checked: it is measured per frame.
+  if (options.loss != "none" && !options.loss_scale_auto) {
     InRange("loss_scale", options.loss_scale_mm, 1e-2 * rms_radius,
             1e3 * rms_radius,
             ShowMm(1e-2 * rms_radius) + " and " + ShowMm(1e3 * rms_radius) +

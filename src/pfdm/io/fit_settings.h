@@ -22,16 +22,23 @@ struct FitSettings {
   std::string format = "auto";
   std::string contours = "lv-cavity";
   std::string base_plane = "auto";
+  // The AHA segments' anchor (io/rv_insertion_source.h): "x,y,z[,x,y,z]"
+  // anterior, inferior; empty: guide points' RV_INSERT, if any.
+  std::string rv_insertion;
   // The model.
   std::string model = "paper";
   int knots = 17;
   std::string wall = "auto";
+  std::string surface = "auto";  // auto, endo, midwall or epi.
+  int ed_frame = 0;
   // The fit.
   double smoothness = 1.0;
   double prior = 0.001;
   double untracked_prior = FitOptions().untracked_prior_weight;
   std::string loss = "none";
-  double loss_scale = 1.0;
+  // "auto" (measured: fit/stages/loss_scale.h) or a number of mm; refused
+  // with a loss of none.
+  std::string loss_scale = "auto";
   int threads = 1;
   std::string apex;  // "x,y,z" in mm, with base; empty: from the data.
   std::string base;
@@ -48,6 +55,8 @@ struct FitSettings {
   std::string local = FitOptions().local.enabled ? "on" : "off";
   std::string local_grid = "13x24";  // LocalOptions' rows x cols.
   double local_stiffness = FitOptions().local.stiffness;
+  // Each frame's parameter covariance (FitOptions::uncertainty): on or off.
+  std::string uncertainty = FitOptions().uncertainty ? "on" : "off";
   // The outputs.
   std::string vtk_format = "binary";
 };

@@ -33,6 +33,8 @@ TEST(FitSettingsTest, DefaultsAreTheLibrarys) {
   EXPECT_EQ(options.local.cols, library.local.cols);
   EXPECT_EQ(options.local.stiffness, library.local.stiffness);
   EXPECT_EQ(options.loss, library.loss);
+  EXPECT_EQ(options.loss_scale_auto, library.loss_scale_auto);
+  EXPECT_TRUE(options.loss_scale_auto);
   EXPECT_EQ(options.loss_scale_mm, library.loss_scale_mm);
   EXPECT_EQ(options.solver.kind, library.solver.kind);
   EXPECT_EQ(options.solver.linear_solver, library.solver.linear_solver);
@@ -84,6 +86,19 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   EXPECT_EQ(FitOptionsFrom(settings).local.stiffness, 1e-4);
 }
 
+// --loss_scale: auto (measured) by default, or a number of mm.
+TEST(FitSettingsTest, LossScaleIsAutoOrANumber) {
+  FitSettings settings;
+  settings.loss = "cauchy";
+  FitOptions options = FitOptionsFrom(settings);
+  EXPECT_EQ(options.loss, "cauchy");
+  EXPECT_TRUE(options.loss_scale_auto);
+  settings.loss_scale = "2.5";
+  options = FitOptionsFrom(settings);
+  EXPECT_FALSE(options.loss_scale_auto);
+  EXPECT_EQ(options.loss_scale_mm, 2.5);
+}
+
 TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   FitSettings s;
   s.apex = "1,2,3";
@@ -121,6 +136,19 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   s = FitSettings();
   s.knots = 1;
   EXPECT_EQ(ErrorOf(s), "--knots must be between 2 and 100, got 1");
+  for (const char* scale : {"0", "-1", "nan", "inf", "2mm", "", "Auto"}) {
+    s = FitSettings();
+    s.loss = "huber";
+    s.loss_scale = scale;
+    EXPECT_EQ(ErrorOf(s),
+              std::string("--loss_scale must be auto or a positive number of "
+                          "mm, got '") +
+                  scale + "'");
+  }
+  s = FitSettings();
+  s.loss = "tukey";
+  EXPECT_EQ(ErrorOf(s),
+            "unknown --loss 'tukey' (expected none, huber or cauchy)");
   s = FitSettings();
   s.base_plane = "lid";
   EXPECT_EQ(ErrorOf(s), "unknown --base_plane 'lid' (expected auto or rim)");
@@ -184,7 +212,7 @@ TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
        },
        "--linear_solver applies to --solver direct or damped, not --solver "
        "integrator"},
-      {[](FitSettings* s) { s->loss_scale = 2.0; },
+      {[](FitSettings* s) { s->loss_scale = "2"; },
        "--loss_scale applies to --loss huber or cauchy, not --loss none"},
       {[](FitSettings* s) {
          s->local = "off";
@@ -208,7 +236,7 @@ TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
   s.damping = "unit";
   s.linear_solver = "DENSE_QR";
   EXPECT_EQ(FitOptionsForEverySolver(s).solver.time_step, 1.0);
-  s.loss_scale = 2.0;
+  s.loss_scale = "2";
   EXPECT_THROW(FitOptionsForEverySolver(s), InputError);
 }
 
@@ -242,18 +270,18 @@ TEST(FitSettingsTest, LossScaleAndAxisHintAreBoundedByTheDatasScale) {
   const PointSequence cube = Cube();
   FitSettings s;
   s.loss = "cauchy";
-  s.loss_scale = 1e150;
+  s.loss_scale = "1e150";
   EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube),
             "--loss_scale must be between 0.173 and 17321 mm (1e-2 to 1e3 "
             "times the RMS radius of frame 0's points, 17.3 mm), got 1e+150");
   s.loss = "huber";
-  s.loss_scale = 1e-300;
+  s.loss_scale = "1e-300";
   EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube),
             "--loss_scale must be between 0.173 and 17321 mm (1e-2 to 1e3 "
             "times the RMS radius of frame 0's points, 17.3 mm), got 1e-300");
-  s.loss_scale = 0.18;  // Just inside.
+  s.loss_scale = "0.18";  // Just inside.
   EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube), "");
-  s.loss_scale = 17000;
+  s.loss_scale = "17000";
   EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube), "");
 
   s = FitSettings();
@@ -279,6 +307,39 @@ TEST(FitSettingsTest, LossScaleAndAxisHintAreBoundedByTheDatasScale) {
   PointSequence one_place = cube;
   for (DataPoint& p : one_place.frames[0].points) p.position.setZero();
   EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), one_place), "");
+}
+
+// --surface declares one surface, so not with --wall solid; --ed_frame is a
+// frame of the points.
+TEST(FitSettingsTest, SurfaceAndEndDiastoleAreCheckedAndReachTheOptions) {
+  FitSettings s;
+  EXPECT_EQ(FitOptionsFrom(s).surface, SurfaceChoice::kAuto);
+  EXPECT_EQ(FitOptionsFrom(s).ed_frame, 0);
+  s.surface = "endo";
+  s.ed_frame = 3;
+  EXPECT_EQ(FitOptionsFrom(s).surface, SurfaceChoice::kEndocardium);
+  EXPECT_EQ(FitOptionsFrom(s).ed_frame, 3);
+  s.surface = "epi";
+  EXPECT_EQ(FitOptionsFrom(s).surface, SurfaceChoice::kEpicardium);
+  s.surface = "midwall";
+  EXPECT_EQ(FitOptionsFrom(s).surface, SurfaceChoice::kMidwall);
+  s.wall = "solid";
+  EXPECT_EQ(ErrorOf(s),
+            "--surface midwall declares one surface; --wall solid fits two");
+  s = FitSettings();
+  s.surface = "endocardium";
+  EXPECT_EQ(ErrorOf(s),
+            "--surface must be auto, endo, midwall or epi, got 'endocardium'");
+  s = FitSettings();
+  s.ed_frame = -1;
+  EXPECT_EQ(ErrorOf(s), "--ed_frame must be a frame number from 0, got -1");
+  s.ed_frame = 1;  // Cube() has one frame.
+  PointSequence cube = Cube();
+  cube.source = "cube.csv";
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube),
+            "--ed_frame 1 is not a frame of cube.csv (frames 0 to 0)");
+  s.ed_frame = 0;
+  EXPECT_EQ(ErrorAgainst(FitOptionsFrom(s), cube), "");
 }
 
 }  // namespace

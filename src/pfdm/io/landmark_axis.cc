@@ -10,25 +10,6 @@
 namespace pfdm {
 namespace {
 
-// Frame 0's file of guide points at `path`; empty when they are not.
-std::string FrameZeroFile(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  if (!fs::is_directory(path, error)) {
-    return fs::path(path).filename().string().rfind("GPFile", 0) == 0 ? path
-                                                                      : "";
-  }
-  std::vector<std::string> files;
-  for (const auto& entry : fs::directory_iterator(path, error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("GPFile_", 0) == 0 && entry.path().extension() == ".txt") {
-      files.push_back(entry.path().string());
-    }
-  }
-  if (files.empty()) return "";
-  return *std::min_element(files.begin(), files.end());
-}
-
 // The mean of the file's points of these contour types; nullopt if none.
 std::optional<Eigen::Vector3d> Mean(const std::string& file,
                                     const std::vector<std::string>& types,
@@ -47,8 +28,26 @@ std::optional<Eigen::Vector3d> Mean(const std::string& file,
 
 }  // namespace
 
+std::string FrameZeroGuidePoints(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (!fs::is_directory(path, error)) {
+    return fs::path(path).filename().string().rfind("GPFile", 0) == 0 ? path
+                                                                      : "";
+  }
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(path, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("GPFile_", 0) == 0 && entry.path().extension() == ".txt") {
+      files.push_back(entry.path().string());
+    }
+  }
+  if (files.empty()) return "";
+  return *std::min_element(files.begin(), files.end());
+}
+
 std::optional<AxisHint> LandmarkAxis(const std::string& points) {
-  const std::string file = FrameZeroFile(points);
+  const std::string file = FrameZeroGuidePoints(points);
   if (file.empty()) return std::nullopt;
   int apexes = 0, valves = 0, mitral = 0;
   const auto apex = Mean(file, {"APEX_POINT"}, &apexes);

@@ -11,6 +11,10 @@
 
 namespace pfdm {
 
+// Frame 0's file of the guide points at `path` (a folder of GPFile_*.txt,
+// its first in name order, or one GPFile*); empty when they are not.
+std::string FrameZeroGuidePoints(const std::string& path);
+
 // From frame 0 of the guide points at `points` (a folder of GPFile_*.txt,
 // its first file in name order, or one GPFile*): the APEX_POINTs' mean as
 // the apex and the centroid of the MITRAL_VALVE and AORTA_VALVE points as

@@ -126,10 +126,7 @@ std::string FolderFormat(const fs::path& path) {
   return vtk ? "vtk" : "obj";
 }
 
-}  // namespace
-
-std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
-                                         const MeshSettings& settings) {
+std::string MeshFormat(const std::string& path, const MeshSettings& settings) {
   std::string format = settings.mesh_format;
   const fs::path p(path);
   if (format == "auto") {
@@ -142,6 +139,45 @@ std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
       throw InputError(path + ": unknown mesh format (use --mesh_format)");
     }
   }
+  return format;
+}
+
+// The wall every name says, by its ending ("-endo") or a part of it
+// ("LV_ENDOCARDIAL"), else kAnywhere.
+WallLayer WallNamed(const std::vector<std::string>& names) {
+  bool endo = !names.empty(), epi = !names.empty();
+  for (std::string name : names) {
+    std::transform(name.begin(), name.end(), name.begin(), ::toupper);
+    const bool is_endo = name.find("ENDO") != std::string::npos;
+    endo = endo && is_endo;
+    epi = epi && !is_endo && name.find("EPI") != std::string::npos;
+  }
+  return endo  ? WallLayer::kEndocardium
+         : epi ? WallLayer::kEpicardium
+               : WallLayer::kAnywhere;
+}
+
+}  // namespace
+
+WallLayer MeshSurface(const std::string& path, const MeshSettings& settings) {
+  const std::string format = MeshFormat(path, settings);
+  if (format == "cap-mean") return WallNamed(Split(settings.cap_surfaces));
+  // A label's number means what the mesh's maker chose.
+  if (!settings.label.empty() || (format != "obj" && format != "vtk")) {
+    return WallLayer::kAnywhere;
+  }
+  std::vector<std::string> names;
+  for (const std::string& file :
+       FrameFiles(fs::path(path), "." + format, settings.mesh_filter)) {
+    names.push_back(fs::path(file).filename().string());
+  }
+  return WallNamed(names);
+}
+
+std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
+                                         const MeshSettings& settings) {
+  const std::string format = MeshFormat(path, settings);
+  const fs::path p(path);
   std::vector<TriangleMesh> frames;
   if (format == "obj") {
     for (const std::string& file : FrameFiles(p, ".obj", settings.mesh_filter))
@@ -184,7 +220,12 @@ PointSequence ReadMeshPoints(const std::string& path,
   for (const TriangleMesh& mesh : ReadMeshFrames(path, settings)) {
     points.push_back(mesh.points);
   }
-  return MeshPointSequence(path, points);
+  PointSequence sequence = MeshPointSequence(path, points);
+  const WallLayer surface = MeshSurface(path, settings);
+  for (Frame& frame : sequence.frames) {
+    for (DataPoint& p : frame.points) p.layer = surface;
+  }
+  return sequence;
 }
 
 }  // namespace pfdm

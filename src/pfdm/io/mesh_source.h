@@ -27,7 +27,15 @@ struct MeshSettings {
 std::vector<TriangleMesh> ReadMeshFrames(const std::string& path,
                                          const MeshSettings& settings);
 
-// Their vertices as tracked points, id = vertex index (MeshPointSequence).
+// The wall the meshes are of, by name: the CAP surfaces listed, or every
+// frame file's name (biv-me's patient1_LV_ENDOCARDIAL_000.obj), all of the
+// endocardium ("endo" in the name) or all of the epicardium ("epi" and no
+// "endo"); kAnywhere otherwise, and for a VTK label, whose number means what
+// the mesh's maker chose.
+WallLayer MeshSurface(const std::string& path, const MeshSettings& settings);
+
+// Their vertices as tracked points, id = vertex index (MeshPointSequence),
+// on the MeshSurface.
 PointSequence ReadMeshPoints(const std::string& path,
                              const MeshSettings& settings);
 

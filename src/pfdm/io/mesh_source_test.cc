@@ -50,6 +50,41 @@ TEST(MeshSourceTest, FolderFramesInNameOrderByExtension) {
             dir + ": no .vtk file matching 'zz'");
 }
 
+// The wall a mesh is of, by name: biv-me's LV_ENDOCARDIAL files, the CAP
+// surfaces; nothing for mixed names, other names or a VTK label.
+TEST(MeshSourceTest, SurfaceFromTheNames) {
+  const std::string dir = ScratchDirectory("mesh_surface") + "/obj";
+  std::filesystem::create_directories(dir);
+  const std::string tri = "v 0 0 5\nv 1 0 5\nv 0 1 5\nf 1 2 3\n";
+  for (const char* name :
+       {"patient1_LV_ENDOCARDIAL_000.obj", "patient1_LV_ENDOCARDIAL_001.obj",
+        "patient1_EPICARDIAL_000.obj"}) {
+    WriteText(dir + "/" + name, tri);
+  }
+  MeshSettings settings;
+  settings.mesh_filter = "LV_ENDO";
+  EXPECT_EQ(MeshSurface(dir, settings), WallLayer::kEndocardium);
+  const PointSequence points = ReadMeshPoints(dir, settings);
+  EXPECT_EQ(points.frames[1].points[2].layer, WallLayer::kEndocardium);
+  settings.mesh_filter = "EPI";
+  EXPECT_EQ(MeshSurface(dir, settings), WallLayer::kEpicardium);
+  settings.mesh_filter = "";
+  EXPECT_EQ(MeshSurface(dir, settings), WallLayer::kAnywhere);
+  EXPECT_EQ(MeshSurface(dir + "/patient1_EPICARDIAL_000.obj", settings),
+            WallLayer::kEpicardium);
+  MeshSettings cap;
+  cap.cap_surfaces = "ED-endo,ES-endo";
+  EXPECT_EQ(MeshSurface("mean_shape.csv", cap), WallLayer::kEndocardium);
+  cap.cap_surfaces = "ED-epi,ES-epi";
+  EXPECT_EQ(MeshSurface("mean_shape.csv", cap), WallLayer::kEpicardium);
+  cap.cap_surfaces = "ED-endo,ED-epi";
+  EXPECT_EQ(MeshSurface("mean_shape.csv", cap), WallLayer::kAnywhere);
+  MeshSettings labelled;
+  labelled.label = "1";
+  EXPECT_EQ(MeshSurface(dir + "/patient1_LV_ENDOCARDIAL_000.obj", labelled),
+            WallLayer::kAnywhere);
+}
+
 // pfdm's own frames carry is_data: their data points would pair by their
 // place in each file, so they are refused without a label.
 TEST(MeshSourceTest, PfdmFramesNeedTheirLabel) {

@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "libfccp/csv.h"
+#include "pfdm/io/frame_times.h"
+#include "pfdm/io/gp_file_header.h"
 #include "pfdm/io/point_spread.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/input_file.h"
@@ -167,6 +169,18 @@ PointSequence Assemble(const std::string& path,
   return sequence;
 }
 
+// The optional surface column: which wall a point lies on (mesh-points
+// writes it for a mesh of one wall).
+WallLayer ParseSurface(const std::string& path, unsigned line,
+                       const char* text) {
+  const std::string word = text;
+  if (word == "endo") return WallLayer::kEndocardium;
+  if (word == "epi") return WallLayer::kEpicardium;
+  if (word.empty() || word == "midwall") return WallLayer::kAnywhere;
+  throw InputError(Where(path, line, "surface") + " is '" + Clip(text) +
+                   "' (expected endo, midwall, epi or empty)");
+}
+
 }  // namespace
 
 PointSequence ReadPointsCsv(const std::string& path) {
@@ -174,20 +188,28 @@ PointSequence ReadPointsCsv(const std::string& path) {
   const std::string text = ReadInputFile(path);
   std::map<long long, std::vector<DataPoint>> frames;
   std::map<long long, std::vector<unsigned>> lines;  // Each point's.
+  FrameTimes times;
   try {
     // Blank lines (a trailing one, say) are skipped, not short rows.
-    io::CSVReader<5, io::trim_chars<' ', '\t'>,
+    io::CSVReader<7, io::trim_chars<' ', '\t'>,
                   io::double_quote_escape<',', '"'>, io::throw_on_overflow,
                   io::empty_line_comment>
         in(path, text.data(), text.data() + text.size());
-    in.read_header(io::ignore_extra_column, "frame", "id", "x", "y", "z");
+    in.read_header(io::ignore_extra_column | io::ignore_missing_column, "frame",
+                   "id", "x", "y", "z", "time_ms", "surface");
+    for (const char* name : {"frame", "id", "x", "y", "z"}) {
+      if (!in.has_column(name)) {
+        throw InputError(path + ": missing column '" + name + "'");
+      }
+    }
     long long frame, id;
     char *x = nullptr, *y = nullptr, *z = nullptr;
+    char *time = nullptr, *surface = nullptr;  // Optional columns.
     // The rows of a frame mostly come together: its lists, looked up once.
     long long listed = -1;
     std::vector<DataPoint>* points = nullptr;
     std::vector<unsigned>* point_lines = nullptr;
-    while (in.read_row(frame, id, x, y, z)) {
+    while (in.read_row(frame, id, x, y, z, time, surface)) {
       const unsigned line = in.get_file_line();
       const Eigen::Vector3d position(ParseCoordinate(path, line, "x", x),
                                      ParseCoordinate(path, line, "y", y),
@@ -201,7 +223,12 @@ PointSequence ReadPointsCsv(const std::string& path) {
         points = &frames[frame];
         point_lines = &lines[frame];
       }
-      points->push_back({id, position});
+      if (time != nullptr) {
+        times.Add(path, line, frame, ParseFinite(path, line, "time_ms", time));
+      }
+      points->push_back(
+          {id, position,
+           surface ? ParseSurface(path, line, surface) : WallLayer::kAnywhere});
       point_lines->push_back(line);
     }
   } catch (const io::error::base& error) {
@@ -209,6 +236,7 @@ PointSequence ReadPointsCsv(const std::string& path) {
   }
   CheckIdsOncePerFrame(path, frames, lines);
   PointSequence sequence = Assemble(path, std::move(frames));
+  sequence.time_ms = times.Times(path);
   for (const Frame& frame : sequence.frames) {
     CheckPointsLieTogether(path, frame.index, frame.points,
                            lines.at(frame.index));
@@ -312,7 +340,9 @@ struct GpFilePoints {
 GpFilePoints ReadGpFile(const std::string& file,
                         const std::set<std::string>& keep,
                         std::int64_t* next_id) {
-  const std::string text = ReadInputFile(file);
+  bool headerless = false;
+  const std::string text =
+      WithGpFileHeader(file, ReadInputFile(file), &headerless);
   GpFilePoints kept;
   TimeFrames time_frames;
   try {
@@ -322,6 +352,8 @@ GpFilePoints ReadGpFile(const std::string& file,
     // frameID, weight and time frame are checked when there.
     in.read_header(io::ignore_extra_column | io::ignore_missing_column, "x",
                    "y", "z", "contour type", "frameID", "weight", "time frame");
+    // The header put before a file without one is no line of the file.
+    if (headerless) in.set_file_line(0);
     for (const char* name : {"x", "y", "z", "contour type"}) {
       if (!in.has_column(name)) {
         throw InputError(file + ": missing column '" + name + "'");

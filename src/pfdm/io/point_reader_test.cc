@@ -389,6 +389,85 @@ TEST(PointReaderTest, ContourAliasesExpand) {
                                       "LAX_LA"}));
 }
 
+// biv-me's second test case has a GPFile without the header line: read as
+// biv-me's columns, every row kept (biv-me drops the first), errors named by
+// the file's own lines.
+TEST(PointReaderTest, GpFileWithoutItsHeaderLineKeepsEveryRow) {
+  const std::string dir = ScratchDirectory("gp_headerless");
+  const std::string rows =
+      "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t0\n"
+      "4\t5\t6\tSAX_RV_FREEWALL\t2\t1.0\t0\n"
+      "7\t8\t9\tLAX_LV_ENDOCARDIAL\t9\t1.0\t1.0\n";
+  WriteText(dir + "/GPFile_000.txt", rows);
+  WriteText(dir + "/GPFile_001.txt", std::string(kGpHeader) + rows);
+  const PointSequence sequence = ReadGpFiles(dir, {});
+  ASSERT_EQ(sequence.frames.size(), 2u);
+  ASSERT_EQ(sequence.frames[0].points.size(), 3u);
+  ASSERT_EQ(sequence.frames[1].points.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(sequence.frames[0].points[i].position,
+              sequence.frames[1].points[i].position);
+    EXPECT_EQ(sequence.frames[0].points[i].layer,
+              sequence.frames[1].points[i].layer);
+  }
+  EXPECT_EQ(sequence.frames[0].points[0].position, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(sequence.frames[0].points[0].layer, WallLayer::kEndocardium);
+  WriteText(dir + "/GPFile_000.txt",
+            "1\t2\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t0\n"
+            "1\tnan\t3\tSAX_LV_ENDOCARDIAL\t2\t1.0\t0\n");
+  EXPECT_EQ(GpErrorOf(dir, {}),
+            dir + "/GPFile_000.txt:2: column 'y' is not a finite number");
+}
+
+// The same from the real data: GPFile_000.txt with its header line taken
+// off reads as the file does, all 1,814 rows.
+TEST(PointReaderTest, BivMeGpFileWithoutItsHeaderLineReadsTheSame) {
+  const std::string shared = SharedDataDirectory();
+  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
+  const std::string original =
+      shared + "/biv-me-patient1/guidepoints/GPFile_000.txt";
+  const std::string text = ReadText(original);
+  const std::string copy = ScratchDirectory("gp_real") + "/GPFile_000.txt";
+  WriteText(copy, text.substr(text.find('\n') + 1));
+  const PointSequence with = ReadGpFiles(original, {});
+  const PointSequence without = ReadGpFiles(copy, {});
+  ASSERT_EQ(with.frames[0].points.size(), 1814u);
+  ASSERT_EQ(without.frames[0].points.size(), 1814u);
+  for (size_t i = 0; i < 1814; ++i) {
+    ASSERT_EQ(without.frames[0].points[i].position,
+              with.frames[0].points[i].position);
+    ASSERT_EQ(without.frames[0].points[i].layer,
+              with.frames[0].points[i].layer);
+  }
+  EXPECT_EQ(
+      ReadGpFiles(copy, ExpandContourAlias("lv-endo")).frames[0].points.size(),
+      441u);
+}
+
+// A time_ms column gives each frame's trigger time, a surface column each
+// point's wall; both read back from what ToPointsCsv writes.
+TEST(PointReaderTest, CsvTimesAndSurfacesAreReadAndChecked) {
+  const PointSequence sequence = ReadPointsCsv(
+      CsvFile("frame,id,x,y,z,time_ms,surface\n0,1,0,0,0,0,endo\n"
+              "0,2,1,0,0,0,epi\n1,1,0,0,1,42.5,\n1,2,1,0,1,42.5,midwall\n"));
+  EXPECT_EQ(sequence.time_ms, (std::vector<double>{0.0, 42.5}));
+  EXPECT_EQ(sequence.frames[0].points[0].layer, WallLayer::kEndocardium);
+  EXPECT_EQ(sequence.frames[0].points[1].layer, WallLayer::kEpicardium);
+  EXPECT_EQ(sequence.frames[1].points[0].layer, WallLayer::kAnywhere);
+  EXPECT_EQ(sequence.frames[1].points[1].layer, WallLayer::kAnywhere);
+  EXPECT_TRUE(
+      ReadPointsCsv(CsvFile("frame,id,x,y,z\n0,1,0,0,0\n")).time_ms.empty());
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z,time_ms\n0,1,0,0,0,0\n0,2,1,0,0,5\n"),
+            "points.csv:3: time_ms 5 differs from frame 0's 0 (line 2)");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z,time_ms\n0,1,0,0,0,40\n1,1,1,0,0,30\n"),
+            "points.csv:3: frame 1's time_ms 30 is not after frame 0's 40");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z,time_ms\n0,1,0,0,0,\n"),
+            "points.csv:2: column 'time_ms' is not a number: ''");
+  EXPECT_EQ(ErrorOf("frame,id,x,y,z,surface\n0,1,0,0,0,endocardium\n"),
+            "points.csv:2: column 'surface' is 'endocardium' (expected endo, "
+            "midwall, epi or empty)");
+}
+
 TEST(PointReaderTest, ReadsTheBivMePatient) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";

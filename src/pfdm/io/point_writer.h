@@ -8,7 +8,9 @@
 
 namespace pfdm {
 
-// Header frame,id,x,y,z; coordinates with enough digits to round-trip.
+// Header frame,id,x,y,z, then time_ms when the sequence has times and
+// surface (endo, epi or empty) when a point names its wall; numbers with
+// enough digits to round-trip.
 std::string ToPointsCsv(const PointSequence& sequence);
 
 }  // namespace pfdm

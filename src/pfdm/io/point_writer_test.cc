@@ -26,5 +26,24 @@ TEST(PointWriterTest, CsvRoundTripsExactly) {
   }
 }
 
+// Trigger times and the points' walls are written only when there: a
+// sequence without them keeps the five columns.
+TEST(PointWriterTest, TimesAndSurfacesRoundTrip) {
+  PointSequence sequence;
+  sequence.frames = {{0, {{4, {1, 2, 3}, WallLayer::kEndocardium}}},
+                     {1, {{4, {1, 2, 2.5}, WallLayer::kEndocardium}}}};
+  EXPECT_EQ(ToPointsCsv(sequence),
+            "frame,id,x,y,z,surface\n0,4,1,2,3,endo\n1,4,1,2,2.5,endo\n");
+  sequence.time_ms = {0.0, 37.25};
+  const std::string path = ScratchDirectory("writer") + "/timed.csv";
+  WriteText(path, ToPointsCsv(sequence));
+  EXPECT_EQ(ReadText(path),
+            "frame,id,x,y,z,time_ms,surface\n0,4,1,2,3,0,endo\n"
+            "1,4,1,2,2.5,37.25,endo\n");
+  const PointSequence read = ReadPointsCsv(path);
+  EXPECT_EQ(read.time_ms, sequence.time_ms);
+  EXPECT_EQ(read.frames[1].points[0].layer, WallLayer::kEndocardium);
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "pfdm/phantom/lv_slices.h"
 #include "pfdm/util/error.h"
@@ -90,6 +91,54 @@ std::vector<DataPoint> SliceContours(const LvShape& shape,
     }
   }
   return points;
+}
+
+// Moves each point of each frame, with probability outlier_fraction, by a
+// distance uniform in the outlier range along a uniformly random direction
+// (LvPhantomOptions), and says which in the truth.
+class OutlierDraws {
+ public:
+  explicit OutlierDraws(const LvPhantomOptions& options)
+      : options_(options), seed_{options.seed, 0x6f75746cu}, random_(seed_) {}
+
+  // Whether the next point is an outlier; if so, adds its displacement
+  // to *x.
+  bool Move(Eigen::Vector3d* x) {
+    // Every draw is made for every point, so that the fraction only
+    // decides which displacements are applied.
+    const double chance = uniform_(random_);
+    Eigen::Vector3d direction(gaussian_(random_), gaussian_(random_),
+                              gaussian_(random_));
+    const double distance =
+        options_.outlier_min_mm +
+        (options_.outlier_max_mm - options_.outlier_min_mm) * uniform_(random_);
+    if (!(chance < options_.outlier_fraction)) return false;
+    *x += distance * direction.normalized();
+    return true;
+  }
+
+ private:
+  const LvPhantomOptions& options_;
+  std::seed_seq seed_;
+  std::mt19937 random_;
+  std::uniform_real_distribution<double> uniform_{0.0, 1.0};
+  std::normal_distribution<double> gaussian_{0.0, 1.0};
+};
+
+void CheckOptions(const LvPhantomOptions& options) {
+  if (options.num_frames < 0 || options.num_tags < 1 ||
+      !(options.noise_mm >= 0) || options.num_slices < 0) {
+    throw InputError(
+        "lv phantom needs frames >= 1, tags >= 1, noise >= 0 and slices >= 0");
+  }
+  if (!(options.outlier_fraction >= 0 && options.outlier_fraction <= 1 &&
+        options.outlier_min_mm >= 0 &&
+        options.outlier_max_mm >= options.outlier_min_mm &&
+        options.outlier_max_mm <= 1000)) {
+    throw InputError(
+        "lv phantom needs an outlier fraction in [0, 1] and outlier "
+        "distances 0 <= min <= max <= 1000 mm");
+  }
 }
 
 // The shape, checked: a shell the phantom's truth can measure.
@@ -214,11 +263,7 @@ Eigen::Vector3d LvWorldPoint(const LvShape& shape,
 }
 
 LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
-  if (options.num_frames < 0 || options.num_tags < 1 ||
-      !(options.noise_mm >= 0) || options.num_slices < 0) {
-    throw InputError(
-        "lv phantom needs frames >= 1, tags >= 1, noise >= 0 and slices >= 0");
-  }
+  CheckOptions(options);
   LvPhantom phantom;
   phantom.options = options;
   if (phantom.options.num_frames == 0) {
@@ -234,12 +279,23 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
       slices ? ImagePlanes(shape, options, num_frames)
              : std::vector<LvImagePlane>();
   const int per_contour = slices ? ContourPoints(options, planes.size()) : 0;
+  const LvFrameMotion ed =
+      ScenarioMotion(options.kinematics, 0, num_frames, options.breathing);
+  const double insertion_nu =
+      shape.NuAtHeight(kLvInsertionHeight * shape.base_z(), 0.0);
+  auto insertion = [&](double phi_deg) {
+    return LvWorldPoint(shape, options.deformation, ed,
+                        shape.Position(insertion_nu, phi_deg * kPi / 180, 0.0));
+  };
+  phantom.rv_anterior = insertion(kLvAnteriorInsertionDeg);
+  phantom.rv_inferior = insertion(kLvInferiorInsertionDeg);
 
   // Noise from its own stream, so that it leaves the placement unchanged.
   std::seed_seq noise_seed{options.seed, 0x6e6f6973u};
   std::mt19937 random(noise_seed);
   std::mt19937 placement(options.seed);  // The slices' longitudes.
   std::normal_distribution<double> noise(0.0, 1.0);
+  OutlierDraws outliers(options);
   std::vector<LvMaterialPoint> tags, samples;
   for (const Eigen::Vector3d& x : phantom.tag_material) {
     tags.push_back(MaterialPointAt(shape, x));
@@ -260,9 +316,11 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
 
     Frame frame;
     frame.index = t;
+    std::vector<int> outlier_ids;
     for (int i = 0; i < static_cast<int>(tags.size()); ++i) {
       Eigen::Vector3d x = move(tags[i]);
       for (int k = 0; k < 3; ++k) x[k] += options.noise_mm * noise(random);
+      if (outliers.Move(&x)) outlier_ids.push_back(i);
       frame.points.push_back({i, x});
     }
     if (slices) {
@@ -281,6 +339,7 @@ LvPhantom MakeLvPhantom(const LvPhantomOptions& options) {
     truth.progress = motion.progress;
     truth.rigid = motion.rigid;
     truth.world_from_body = world_from_body;
+    truth.outlier_ids = std::move(outlier_ids);
     phantom.truth.push_back(std::move(truth));
   }
   return phantom;

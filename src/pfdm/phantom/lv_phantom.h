@@ -49,6 +49,19 @@
 // the mid-wall, or with wall tags the endocardium and epicardium (their
 // WallLayer set, which points.csv does not carry); noise in the image
 // plane only.  The truth is the whole LV's, as for full data.
+//
+// Outliers (outlier_fraction > 0; tags only, not sax-slices contours):
+// each frame's tags are drawn
+// independently, each an outlier with that probability, moved by a
+// distance uniform in [outlier_min_mm, outlier_max_mm] in a uniformly
+// random direction on top of its noise, as a tracker that loses a tag in
+// one frame puts it.  Their draws have a third stream, made for every
+// point whatever the fraction: the data of the inliers are those without
+// outliers, and a higher fraction moves a superset of the points, each
+// the same way.  A tag moved at frame 0 also misplaces its material point
+// for a fit that takes it from frame 0 (pfdm's does), so such a fit sees
+// it off in every frame; LvFrameTruth::outlier_ids says which were moved
+// where.
 #ifndef PFDM_PHANTOM_LV_PHANTOM_H_
 #define PFDM_PHANTOM_LV_PHANTOM_H_
 
@@ -83,7 +96,10 @@ struct LvPhantomOptions {
   LvTagLayer tags = LvTagLayer::kMidwall;
   int num_frames = 0;  // 0: DefaultFrameCount(kinematics).
   int num_tags = 2000;
-  double noise_mm = 0.5;  // Gaussian, per coordinate.
+  double noise_mm = 0.5;          // Gaussian, per coordinate.
+  double outlier_fraction = 0.0;  // 0 to 1, per point and frame.
+  double outlier_min_mm = 5.0;
+  double outlier_max_mm = 10.0;
   unsigned seed = 1;
   bool breathing = true;  // Systole and cycle only.
   LvShapeSize shape;
@@ -106,8 +122,22 @@ LvHeights LvRegionHeights(LvRegion region);
 // the base plane left out, as in a short-axis stack).
 std::vector<double> LvSliceHeights(const LvPhantomOptions& options);
 
+// The RV insertion the phantom's AHA segments hang on: the anterior at body
+// longitude phi = atan2(y, x) = kLvAnteriorInsertionDeg, the inferior 120
+// degrees on clockwise seen from the base (as the septum runs from the
+// anterior insertion in a right-handed patient frame), at the body's -x.
+// AHA segment 8 (mid anteroseptal) then spans phi -120 to -60 degrees,
+// longitude lambda 60 to 120 from -x: the default lesion's.
+inline constexpr double kLvAnteriorInsertionDeg = -60.0;
+inline constexpr double kLvInferiorInsertionDeg = -180.0;
+// The insertion points' ED height fraction, on the mid-wall.
+inline constexpr double kLvInsertionHeight = 0.6;
+
 struct LvPhantom {
   LvPhantomOptions options;  // num_frames resolved.
+  // The RV insertion points at frame 0, world (see kLvAnteriorInsertionDeg).
+  Eigen::Vector3d rv_anterior = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rv_inferior = Eigen::Vector3d::Zero();
   // source "lv-phantom"; id = tag index (sax-slices: frame x num_tags +
   // the point's index in its frame).
   PointSequence points;
@@ -116,7 +146,8 @@ struct LvPhantom {
 };
 
 // Throws InputError for num_frames < 0, num_tags < 1, noise_mm < 0,
-// num_slices < 0, or fewer tags than slice contours (sax-slices).
+// num_slices < 0, fewer tags than slice contours (sax-slices), an
+// outlier_fraction outside [0, 1] or an outlier range not 0 <= min <= max.
 LvPhantom MakeLvPhantom(const LvPhantomOptions& options);
 
 // World position at frame `motion` of the material point at ED body

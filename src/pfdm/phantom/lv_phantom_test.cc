@@ -278,6 +278,57 @@ TEST(LvPhantomTest, NoiseHasTheRequestedSpread) {
   EXPECT_NEAR(std::sqrt(squares / count), 0.5, 0.01);
 }
 
+// 5 % outliers among 2,000 tags x 5 frames: the truth lists the points that
+// moved, each 5-10 mm from its place without outliers (the same seed), in
+// directions that average out; every other point is where it was.  A larger
+// fraction moves a superset, each point by the same vector.
+TEST(LvPhantomTest, OutliersMoveTheListedPointsOnly) {
+  LvPhantomOptions options;
+  const LvPhantom clean = MakeLvPhantom(options);
+  options.outlier_fraction = 0.05;
+  const LvPhantom dirty = MakeLvPhantom(options);
+  options.outlier_fraction = 0.1;
+  const LvPhantom dirtier = MakeLvPhantom(options);
+  int count = 0;
+  Eigen::Vector3d mean_direction = Eigen::Vector3d::Zero();
+  double shortest = 1e9, longest = 0.0, sum = 0.0;
+  for (size_t t = 0; t < 5; ++t) {
+    const std::vector<int>& ids = dirty.truth[t].outlier_ids;
+    EXPECT_TRUE(std::is_sorted(ids.begin(), ids.end()));
+    const std::vector<int>& more = dirtier.truth[t].outlier_ids;
+    EXPECT_TRUE(std::includes(more.begin(), more.end(), ids.begin(), ids.end()))
+        << t;
+    for (int i = 0; i < 2000; ++i) {
+      const Eigen::Vector3d e = dirty.points.frames[t].points[i].position -
+                                clean.points.frames[t].points[i].position;
+      if (!std::binary_search(ids.begin(), ids.end(), i)) {
+        EXPECT_EQ(e.norm(), 0.0) << t << " " << i;
+        continue;
+      }
+      ++count;
+      shortest = std::min(shortest, e.norm());
+      longest = std::max(longest, e.norm());
+      sum += e.norm();
+      mean_direction += e.normalized();
+      EXPECT_EQ((dirtier.points.frames[t].points[i].position -
+                 dirty.points.frames[t].points[i].position)
+                    .norm(),
+                0.0);
+    }
+  }
+  // 10,000 draws at 5 %: 500 expected, sd 22.
+  EXPECT_NEAR(count, 500, 70);
+  EXPECT_GE(shortest, 5.0);
+  EXPECT_LE(longest, 10.0);
+  EXPECT_LT(shortest, 5.1);
+  EXPECT_GT(longest, 9.9);
+  EXPECT_NEAR(sum / count, 7.5, 0.25);  // Uniform: sd 1.44 / sqrt(500).
+  // Unit vectors uniform on the sphere: each coordinate's mean has sd
+  // 0.58 / sqrt(500) = 0.026.
+  EXPECT_LT((mean_direction / count).cwiseAbs().maxCoeff(), 0.1);
+  EXPECT_TRUE(clean.truth[2].outlier_ids.empty());
+}
+
 // Area-weighted mean height fraction of the mid-wall between h0 and h1.
 double MeanHeight(const LvShape& shape, double h0, double h1) {
   constexpr int kSlices = 3000;
@@ -418,6 +469,14 @@ TEST(LvPhantomTest, RejectsBadOptions) {
   options.noise_mm = -1;
   EXPECT_THROW(MakeLvPhantom(options), InputError);
   options.noise_mm = 0;
+  options.outlier_fraction = 1.5;
+  EXPECT_THROW(MakeLvPhantom(options), InputError);
+  options.outlier_fraction = 0.1;
+  options.outlier_min_mm = 10.0;
+  options.outlier_max_mm = 5.0;
+  EXPECT_THROW(MakeLvPhantom(options), InputError);
+  options.outlier_max_mm = 20.0;
+  EXPECT_NO_THROW(MakeLvPhantom(options));
   options.shape.wall_mm = 40.0;  // Thicker than the radius.
   EXPECT_THROW(MakeLvPhantom(options), InputError);
   options.shape.wall_mm = 10.0;

@@ -25,9 +25,11 @@
 //   ring (a closed triangulation, divergence theorem); endo_volume_ml the
 //   endocardial cavity likewise, epi_volume_ml the epicardium's,
 //   myocardial_volume_ml = epi - endo.
-// - segments: the 16 AHA-style segments of report/wall_motion (thirds of
-//   the ED axis, basal first, 6/6/4 sectors of longitude counted
-//   counter-clockwise about +z from the body's -x): area-weighted means
+// - segments: the 16 AHA-style segments of report/wall_motion without an
+//   RV insertion (thirds of the ED axis, basal first, 6/6/4 sectors of
+//   longitude counted counter-clockwise about +z from the body's -x; by the
+//   phantom's RV insertion, lv_phantom.h, basal and mid sector k is AHA
+//   sector (2 - k) mod 6, so "mid 2" is mid anteroseptal either way): area-weighted means
 //   (ED mid-wall area) of each point's rotation as above and of
 //   100 (1 - rho / rho0), rho its distance from its ring's centroid.
 //   wall_thickening_percent (segments and per ring): 100 (T / T0 - 1), T
@@ -95,6 +97,9 @@ struct LvFrameTruth {
   // Per LvRingHeights(), at the mid-wall ring's nu.
   std::vector<double> wall_thickening_percent;
   std::vector<LvSegmentTruth> segments;
+  // Ids of the tags moved as outliers in this frame (LvPhantomOptions),
+  // ascending.
+  std::vector<int> outlier_ids;
 };
 
 // Lays out the material samples once; Measure() takes them moved to the

@@ -53,6 +53,7 @@ Json FrameJson(const LvFrameTruth& truth) {
          {"radial_contraction_percent", segment.radial_contraction_percent}});
   }
   frame["segments"] = segments;
+  frame["outlier_ids"] = truth.outlier_ids;
   return frame;
 }
 
@@ -78,6 +79,8 @@ std::string LvTruthJson(const LvPhantom& phantom) {
     json["slice_heights"] = LvSliceHeights(options);
   }
   json["noise_mm"] = options.noise_mm;
+  json["outlier_fraction"] = options.outlier_fraction;
+  json["outlier_mm"] = {options.outlier_min_mm, options.outlier_max_mm};
   json["seed"] = options.seed;
   json["geometry"] = {{"length_mm", options.shape.length_mm},
                       {"radius_mm", options.shape.radius_mm},
@@ -98,6 +101,18 @@ std::string LvTruthJson(const LvPhantom& phantom) {
                     {"lesion_edge_deg", design.lesion_edge_deg},
                     {"lesion_center_deg", design.lesion_center_deg}};
   json["ring_heights"] = LvRingHeights();
+  const Eigen::Vector3d& a = phantom.rv_anterior;
+  const Eigen::Vector3d& b = phantom.rv_inferior;
+  json["rv_insertion"] = {
+      {"anterior", {a.x(), a.y(), a.z()}},
+      {"inferior", {b.x(), b.y(), b.z()}},
+      {"body_longitude_deg",
+       {kLvAnteriorInsertionDeg, kLvInferiorInsertionDeg}},
+      {"height_fraction", kLvInsertionHeight},
+      {"definition",
+       "frame 0's world positions of the RV insertion points (mid-wall): "
+       "pfdm fit --rv_insertion anterior,inferior places the AHA segments "
+       "by them; the default lesion lies in segment 8, mid anteroseptal"}};
   int es = 0;
   for (size_t t = 0; t < phantom.truth.size(); ++t) {
     if (phantom.truth[t].endo_volume_ml < phantom.truth[es].endo_volume_ml) {

@@ -18,7 +18,11 @@ namespace pfdm {
 //  "base_rotation_deg", "net_twist_deg", "mean_radial_contraction_percent",
 //  the volumes, "rings" {"midwall",
 //  "endo", "epi"} each {"rotation_deg", "radial_contraction_percent"} per
-//  ring height, and "segments" (16, with "segment" and "name")}.
+//  ring height, "segments" (16, with "segment" and "name") and
+//  "outlier_ids" (the tags moved as outliers in the frame)}; the options
+//  include "outlier_fraction" and "outlier_mm" [min, max];
+//  "rv_insertion": {"anterior", "inferior" (frame 0, world, mm),
+//  "body_longitude_deg", "height_fraction", "definition"}.
 std::string LvTruthJson(const LvPhantom& phantom);
 
 }  // namespace pfdm

@@ -1,5 +1,7 @@
 #include "pfdm/phantom/lv_truth_json.h"
 
+#include <vector>
+
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
 
@@ -10,6 +12,7 @@ TEST(LvPhantomJsonTest, WritesEveryFramesTruth) {
   LvPhantomOptions options;
   options.num_tags = 10;
   options.deformation.lesion = true;
+  options.outlier_fraction = 0.3;
   const LvPhantom phantom = MakeLvPhantom(options);
   const nlohmann::json json = nlohmann::json::parse(LvTruthJson(phantom));
   EXPECT_EQ(json["phantom"], "lv");
@@ -42,6 +45,11 @@ TEST(LvPhantomJsonTest, WritesEveryFramesTruth) {
   EXPECT_EQ(es["segments"][7]["name"], "mid 2");
   EXPECT_EQ(es["segments"][7]["radial_contraction_percent"].get<double>(),
             phantom.truth[4].segments[7].radial_contraction_percent);
+  EXPECT_EQ(json["outlier_fraction"].get<double>(), 0.3);
+  EXPECT_EQ(json["outlier_mm"], nlohmann::json({5.0, 10.0}));
+  ASSERT_FALSE(phantom.truth[4].outlier_ids.empty());
+  EXPECT_EQ(es["outlier_ids"].get<std::vector<int>>(),
+            phantom.truth[4].outlier_ids);
   const nlohmann::json& pose = es["world_from_body"];
   ASSERT_EQ(pose.size(), 4u);
   EXPECT_EQ(pose[3], nlohmann::json({0.0, 0.0, 0.0, 1.0}));

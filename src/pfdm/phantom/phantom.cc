@@ -105,6 +105,17 @@ void CheckPhantomOptions(const PhantomOptions& options) {
   check("tags", options.num_points, 1, 1e6, "");
   check("noise", options.noise_mm, 0, 1000, " (mm)");
   check("outliers", options.outlier_fraction, 0, 1, " (a fraction)");
+  // Each point takes some 40 bytes with its truth: 2e7 of them, 0.8 GB, is
+  // already more than any fit of the phantom needs (1e6 tags over 20
+  // frames); 1,000 frames of 1e6 tags would be 40 GB.
+  const double total = double{1.0} * options.num_frames * options.num_points;
+  if (total > kMaxPhantomPoints) {
+    std::ostringstream text;
+    text << "--frames times --tags must be at most " << kMaxPhantomPoints
+         << " points, got " << options.num_frames << " x "
+         << options.num_points;
+    throw InputError(text.str());
+  }
 }
 
 }  // namespace pfdm

@@ -31,9 +31,13 @@ struct Phantom {
 // a pose neither axis-aligned nor centred.
 Phantom MakePhantom(const PhantomOptions& options);
 
+// The most points (frames x tags) a phantom is made of.
+constexpr double kMaxPhantomPoints = 2e7;
+
 // Throws InputError "--FLAG must be between LOW and HIGH, got V" naming
 // pfdm simulate's flag (--frames, --tags, --noise, --outliers) of the
-// first option that makes no phantom.
+// first option that makes no phantom, or "--frames times --tags must be at
+// most ..." for more than kMaxPhantomPoints points in all.
 void CheckPhantomOptions(const PhantomOptions& options);
 
 }  // namespace pfdm

@@ -4,6 +4,7 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
@@ -60,6 +61,26 @@ TEST(PhantomTest, SizeMatchesThePaper) {
       (ed.WorldPoint(ed.config.u_max, 0.0) - ed.WorldPoint(-M_PI / 2, 0.0))
           .dot(ed.Rotation().col(2));
   EXPECT_NEAR(length, 110.0, 1e-9);
+}
+
+// Refused before anything is allocated: 1,000 frames of 1e6 tags would be
+// 40 GB.  2e7 points in all is the bound, frames x tags of 20 x 1e6 passes.
+TEST(PhantomTest, TooManyPointsInAllAreRefusedUpFront) {
+  PhantomOptions options;
+  options.num_frames = 1000;
+  options.num_points = 1000000;
+  try {
+    CheckPhantomOptions(options);
+    FAIL() << "not refused";
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(),
+                 "--frames times --tags must be at most 2e+07 points, got "
+                 "1000 x 1000000");
+  }
+  options.num_frames = 20;
+  EXPECT_NO_THROW(CheckPhantomOptions(options));
+  options.num_frames = 21;
+  EXPECT_THROW(CheckPhantomOptions(options), InputError);
 }
 
 }  // namespace

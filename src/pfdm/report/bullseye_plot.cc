@@ -19,10 +19,23 @@ constexpr double kCapRadius = 1.0;
 constexpr double kArcStepDeg = 6.0;
 
 double InnerRadius(RegionLevel level) {
-  return level == kApical ? kCapRadius : level == kMid ? 2.0 : 3.0;
+  return level == kApex     ? 0.0
+         : level == kApical ? kCapRadius
+         : level == kMid    ? 2.0
+                            : 3.0;
 }
 
 // A colour-scale half range holding every value, in round steps.
+// A segment whose value the data cannot determine: unfilled, "n/a".
+void NotMeasuredLabel(const WallRegion& region, double begin_deg,
+                      double end_deg, std::ostringstream* script) {
+  const double middle = (begin_deg + end_deg) / 2 / kDegreesPerRadian;
+  const double radius = InnerRadius(region.level) + 0.5;
+  *script << "set label 'n/a' at " << radius * std::cos(middle) << ','
+          << radius * std::sin(middle)
+          << " center front font 'sans,9' tc rgb '#777777'\n";
+}
+
 double ScaleOf(const std::vector<double>& values) {
   double largest = 0.0;
   for (double v : values) largest = std::max(largest, std::abs(v));
@@ -50,8 +63,8 @@ const char* PaletteOf(BullseyePalette palette) {
 
 std::pair<double, double> BullseyeSpanDeg(const WallRegion& region) {
   const double width = (region.v_end - region.v_begin) * kDegreesPerRadian;
-  const double begin =
-      90.0 - width / 2 + (region.v_begin + kPi) * kDegreesPerRadian;
+  if (region.level == kApex) return {0.0, 360.0};
+  const double begin = 90.0 - width / 2 + region.sector * width;
   return {begin, begin + width};
 }
 
@@ -81,13 +94,19 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
     for (size_t r = 0; r < regions.size() && r < map.values.size(); ++r) {
       const WallRegion& region = regions[r];
       const auto [begin, end] = BullseyeSpanDeg(region);
+      if (!Measured(map.values[r])) {
+        NotMeasuredLabel(region, begin, end, &script);
+        continue;
+      }
       const double inner = InnerRadius(region.level), outer = inner + 1.0;
       const int steps =
           std::max(2, static_cast<int>(std::ceil((end - begin) / kArcStepDeg)));
+      // Not measured (the cap without data near the apex): white, "n/a".
+      const double fill = std::isnan(map.values[r]) ? 0.0 : map.values[r];
       auto point = [&](double radius, double deg) {
         segments.rows.push_back({radius * std::cos(deg / kDegreesPerRadian),
                                  radius * std::sin(deg / kDegreesPerRadian),
-                                 map.values[r]});
+                                 fill});
       };
       for (int i = 0; i <= steps; ++i) {
         point(outer, begin + (end - begin) * i / steps);
@@ -98,9 +117,13 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
       point(outer, begin);  // Closes the border line.
       segments.rows.insert(segments.rows.end(), 2, std::vector<double>{});
       const double middle = (begin + end) / 2 / kDegreesPerRadian;
-      const double radius = inner + 0.5;
+      const double radius = region.level == kApex ? 0.0 : inner + 0.5;
       char value[32];
-      std::snprintf(value, sizeof(value), "%.1f", map.values[r]);
+      if (std::isnan(map.values[r])) {
+        std::snprintf(value, sizeof(value), "n/a");
+      } else {
+        std::snprintf(value, sizeof(value), "%.1f", map.values[r]);
+      }
       script << "set label '" << value << "' at " << radius * std::cos(middle)
              << ',' << radius * std::sin(middle)
              << " center front font 'sans,10' offset 0,-0.35\n"
@@ -108,9 +131,7 @@ SvgPlot Bullseye(const std::vector<WallRegion>& regions,
              << radius * std::cos(middle) << ',' << radius * std::sin(middle)
              << " center front font 'sans,8' tc rgb '#333333' offset 0,0.55\n";
     }
-    script << "set label 'apex' at 0,0 center front font 'sans,8' tc rgb "
-              "'#777777'\n"
-           << "set colorbox vertical user origin " << (p + 1.0) / panels - 0.035
+    script << "set colorbox vertical user origin " << (p + 1.0) / panels - 0.035
            << ",0.18 size 0.012,0.6\n"
            << "plot ";
     if (!segments.rows.empty()) {
@@ -148,10 +169,15 @@ std::vector<BullseyeMap> ClinicalBullseyeMaps(const FitAnalysis& analysis) {
       rotation.values.push_back(m.rotation_deg);
     }
   }
-  // At an ES without tracked points rotation is not measured: no map.
-  if (!std::all_of(rotation.values.begin(), rotation.values.end(), Measured)) {
-    return {ecc, radial};
+  // At an ES without tracked points rotation is not measured: no map.  (The
+  // apex cap alone may be n/a: no data near the apex.)
+  bool measured = !rotation.values.empty();
+  for (size_t r = 0; r < rotation.values.size(); ++r) {
+    const bool cap =
+        r < analysis.regions.size() && analysis.regions[r].level == kApex;
+    if (!cap && !Measured(rotation.values[r])) measured = false;
   }
+  if (!measured) return {ecc, radial};
   return {ecc, radial, rotation};
 }
 

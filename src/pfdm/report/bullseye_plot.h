@@ -29,14 +29,19 @@ struct BullseyeMap {
 
 // The display angles (degrees, counter-clockwise from the +x of the page)
 // a region spans: as the AHA draws it, sector 1 of every ring centred at
-// the top and sectors numbered counter-clockwise on the page.  Sectors run
-// counter-clockwise about the long axis seen from the base, so the map is
-// the LV seen from its base, not anchored to the RV insertion.
+// the top and sectors numbered counter-clockwise on the page; the apex cap
+// (segment 17) the whole disc in the centre.  Anatomical segments
+// (RegionLayout::anatomical) run clockwise about the long axis seen from the
+// base, so the map is the LV seen from its apex, the standard view: anterior
+// at the top, the septum (2, 3, 8, 9, 14) on the left, lateral on the
+// right.  Otherwise sectors run counter-clockwise seen from the base and
+// the map is the LV seen from its base, not anchored to the anatomy.
 std::pair<double, double> BullseyeSpanDeg(const WallRegion& region);
 
-// Rings from the centre: apex cap (left blank, not a segment here), apical,
-// mid, basal; each segment filled by its value on the panel's scale and
-// labelled with its number and value.  One panel per map, side by side.
+// Rings from the centre: the apex cap (segment 17, when the layout has it),
+// apical, mid, basal; each segment filled by its value on the panel's scale
+// (white and "n/a" where not measured) and labelled with its number and
+// value.  One panel per map, side by side.
 std::string BullseyeSvg(const std::vector<WallRegion>& regions,
                         const std::vector<BullseyeMap>& maps);
 SvgPlot Bullseye(const std::vector<WallRegion>& regions,

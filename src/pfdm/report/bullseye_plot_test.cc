@@ -1,8 +1,11 @@
 #include "pfdm/report/bullseye_plot.h"
 
+#include <cmath>
+
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/testing/test_util.h"
+#include "pfdm/testing/truth_as_fit.h"
 
 namespace pfdm {
 namespace {
@@ -25,6 +28,35 @@ TEST(BullseyePlotTest, SegmentsSitWhereTheAhaDrawsThem) {
   EXPECT_NEAR(centre(16), 360.0, 1e-9);
   EXPECT_NEAR(BullseyeSpanDeg(regions[0]).first, 60.0, 1e-9);
   EXPECT_NEAR(BullseyeSpanDeg(regions[12]).first, 45.0, 1e-9);
+  EXPECT_NEAR(BullseyeSpanDeg(regions[16]).first, 0.0, 1e-9);  // The cap.
+  EXPECT_NEAR(BullseyeSpanDeg(regions[16]).second, 360.0, 1e-9);
+}
+
+// Anatomical segments in the standard orientation: anterior at the top,
+// the septum on the left (page angles 90-270), lateral on the right.
+TEST(BullseyePlotTest, AnatomicalMapHasTheSeptumOnTheLeft) {
+  RegionLayout layout;
+  layout.anatomical = true;
+  layout.anchor_v = 0.4;
+  layout.direction = -1.0;
+  const std::vector<WallRegion> regions = Regions(layout);
+  auto centre = [&](const std::string& name) {
+    for (const WallRegion& region : regions) {
+      if (region.Name() != name) continue;
+      const auto [begin, end] = BullseyeSpanDeg(region);
+      return (begin + end) / 2;
+    }
+    ADD_FAILURE() << name;
+    return 0.0;
+  };
+  EXPECT_NEAR(centre("basal anterior"), 90.0, 1e-9);
+  EXPECT_NEAR(centre("mid anteroseptal"), 150.0, 1e-9);
+  EXPECT_NEAR(centre("basal inferoseptal"), 210.0, 1e-9);
+  EXPECT_NEAR(centre("mid inferior"), 270.0, 1e-9);
+  EXPECT_NEAR(centre("basal anterolateral"), 390.0, 1e-9);  // 30.
+  EXPECT_NEAR(centre("apical anterior"), 90.0, 1e-9);
+  EXPECT_NEAR(centre("apical septal"), 180.0, 1e-9);
+  EXPECT_NEAR(centre("apical lateral"), 360.0, 1e-9);
 }
 
 // Every segment drawn with its number and value, in each panel, with a
@@ -45,9 +77,10 @@ TEST(BullseyePlotTest, PanelsLabelEverySegment) {
   EXPECT_EQ(CountOf(svg, ">-16.2<"), 1);  // Segment 16, -16.25.
   EXPECT_EQ(CountOf(svg, ">8.0<"), 1);    // Rotation of segment 16.
   EXPECT_EQ(CountOf(svg, ">16<"), 2);     // Its number, once per panel.
-  EXPECT_EQ(CountOf(svg, ">apex<"), 2);
+  EXPECT_EQ(CountOf(svg, ">17<"), 2);     // The apex cap's.
+  EXPECT_EQ(CountOf(svg, ">9.0<"), 1);    // Its rotation.
   // Segment borders: one path per panel, a closed outline (a move, M,
-  // then lines) for each of its 16 segments.
+  // then lines) for each of its 17 segments.
   const std::string border = "stroke='rgb( 64,  64,  64)'";
   EXPECT_EQ(CountOf(svg, border), 2);
   int outlines = 0;
@@ -55,7 +88,7 @@ TEST(BullseyePlotTest, PanelsLabelEverySegment) {
        at = svg.find(border, at + 1)) {
     outlines += CountOf(svg.substr(at, svg.find("/>", at) - at), "M");
   }
-  EXPECT_EQ(outlines, 32);
+  EXPECT_EQ(outlines, 34);
   EXPECT_NE(svg.find("rgb(214,  96,  77)"), std::string::npos);
 }
 
@@ -64,14 +97,7 @@ TEST(BullseyePlotTest, NoRotationMapWhereRotationIsNotMeasured) {
   PhantomOptions options;
   options.num_points = 1;
   const Phantom phantom = MakePhantom(options);
-  SequenceFit fit;
-  fit.config = phantom.truth[0].config;
-  for (size_t t = 0; t < phantom.truth.size(); ++t) {
-    FrameFit frame;
-    frame.frame = static_cast<int>(t);
-    frame.state = phantom.truth[t].state;
-    fit.frames.push_back(frame);
-  }
+  SequenceFit fit = TruthAsFit(phantom);
   const std::vector<BullseyeMap> tags = ClinicalBullseyeMaps(AnalyzeFit(fit));
   ASSERT_EQ(tags.size(), 3u);
   EXPECT_EQ(tags[2].title, "rotation at ES, degrees");
@@ -86,7 +112,17 @@ TEST(BullseyePlotTest, NoRotationMapWhereRotationIsNotMeasured) {
   const std::string svg = BullseyeSvg(analysis.regions, contours);
   EXPECT_EQ(svg.find("rotation"), std::string::npos);
   EXPECT_EQ(svg.find("nan"), std::string::npos);
-  EXPECT_EQ(CountOf(svg, ">apex<"), 2);
+  EXPECT_EQ(CountOf(svg, ">17<"), 2);
+  // Without data near the apex the cap is n/a, and the rotation map stays.
+  fit.frames[4].tracked = true;
+  fit.apex_in_data = false;
+  const FitAnalysis no_apex = AnalyzeFit(fit);
+  const std::vector<BullseyeMap> maps = ClinicalBullseyeMaps(no_apex);
+  ASSERT_EQ(maps.size(), 3u);
+  EXPECT_TRUE(std::isnan(maps[2].values[16]));
+  const std::string cap_svg = BullseyeSvg(no_apex.regions, maps);
+  EXPECT_EQ(CountOf(cap_svg, ">n/a<"), 3);
+  EXPECT_EQ(cap_svg.find("nan"), std::string::npos);
 }
 
 TEST(BullseyePlotTest, StrainCurvesHaveGlobalAndLevels) {

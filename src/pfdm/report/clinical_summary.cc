@@ -147,22 +147,34 @@ void LeaveOutRotation(ClinicalSummary* summary) {
   }
 }
 
-std::vector<ClinicalSummary> SummarizeSequence(
-    const std::vector<Model>& frames) {
+void LeaveOutApexRing(ClinicalSummary* summary) {
+  for (double* value :
+       {&summary->apex_rotation_deg, &summary->net_twist_deg,
+        &summary->torsion_deg_per_cm, &summary->shear_angle_deg,
+        &summary->endo_apex_rotation_deg, &summary->endo_net_twist_deg,
+        &summary->epi_apex_rotation_deg, &summary->epi_net_twist_deg}) {
+    *value = kNotMeasured;
+  }
+}
+
+std::vector<ClinicalSummary> SummarizeSequence(const std::vector<Model>& frames,
+                                               int reference) {
   std::vector<ClinicalSummary> summaries;
   for (size_t t = 0; t < frames.size(); ++t) {
     summaries.push_back(
-        SummarizeFrame(static_cast<int>(t), frames.front(), frames[t]));
+        SummarizeFrame(static_cast<int>(t), frames.at(reference), frames[t]));
   }
   return summaries;
 }
 
 EjectionFraction EjectionFractionOf(
-    const std::vector<ClinicalSummary>& summaries) {
+    const std::vector<ClinicalSummary>& summaries, int ed_frame) {
   EjectionFraction ef;
-  if (summaries.empty()) return ef;
-  ef.ed_frame = summaries.front().frame;
-  ef.edv_ml = summaries.front().volume_ml;
+  if (ed_frame < 0 || static_cast<size_t>(ed_frame) >= summaries.size()) {
+    return ef;
+  }
+  ef.ed_frame = summaries[ed_frame].frame;
+  ef.edv_ml = summaries[ed_frame].volume_ml;
   ef.es_frame = ef.ed_frame;
   ef.esv_ml = ef.edv_ml;
   for (const ClinicalSummary& s : summaries) {

@@ -31,6 +31,8 @@ constexpr double kMyocardialDensity = 1.05;
 // carry (report/material_rings.h).
 struct ClinicalSummary {
   int frame = 0;
+  // From the trigger, when the input gave it (PointSequence::time_ms).
+  double time_ms = kNotMeasured;
   // Rotation of the apical and basal material rings (kApicalRingFraction,
   // kBasalRingFraction) about frame 0's long axis, degrees, right-handed
   // about the apex-to-base axis: seen from the apex a normal apex turns
@@ -83,8 +85,9 @@ struct ClinicalSummary {
   double lv_mass_g = 0.0;
 };
 
-// (EDV - ESV) / EDV with end-diastole the first frame and end-systole the
-// frame of least volume: the fit starts at ED, as tagged sequences do.
+// (EDV - ESV) / EDV with end-diastole the frame given (--ed_frame, frame 0
+// unless said: the fit starts at ED, as tagged sequences do) and
+// end-systole the frame of least volume.
 struct EjectionFraction {
   int ed_frame = 0;
   int es_frame = 0;
@@ -98,17 +101,23 @@ struct EjectionFraction {
 // a solid's walls.
 void LeaveOutRotation(ClinicalSummary* summary);
 
+// Sets what the apical ring (kApicalRingFraction) measures to
+// kNotMeasured: its rotations, the net twists, the torsion and the shear
+// angle; the base ring's rotations stay.
+void LeaveOutApexRing(ClinicalSummary* summary);
+
 // reference is frame 0's model, current the frame's.
 ClinicalSummary SummarizeFrame(int frame, const Model& reference,
                                const Model& current);
 
-// SummarizeFrame of every frame against frames[0].
-std::vector<ClinicalSummary> SummarizeSequence(
-    const std::vector<Model>& frames);
+// SummarizeFrame of every frame against frames[reference] (end-diastole).
+std::vector<ClinicalSummary> SummarizeSequence(const std::vector<Model>& frames,
+                                               int reference = 0);
 
-// From the summaries' volumes; all zero for an empty list.
+// From the summaries' volumes, ED at summaries[ed_frame]; all zero for an
+// empty list or an ed_frame outside it.
 EjectionFraction EjectionFractionOf(
-    const std::vector<ClinicalSummary>& summaries);
+    const std::vector<ClinicalSummary>& summaries, int ed_frame = 0);
 
 }  // namespace pfdm
 

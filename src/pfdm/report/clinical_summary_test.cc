@@ -79,5 +79,24 @@ TEST(ClinicalSummaryTest, EndSystoleIsTheSmallestVolumeWhereverItFalls) {
   EXPECT_EQ(EjectionFractionOf({}).ratio, 0.0);
 }
 
+// --ed_frame: a sequence that starts mid-cycle reads EDV at the frame given;
+// ES stays the least volume.  An ED outside the frames gives zeros.
+TEST(ClinicalSummaryTest, EndDiastoleIsTheFrameGiven) {
+  std::vector<ClinicalSummary> summaries(5);
+  const double volumes[] = {90, 140, 150, 120, 60};
+  for (int t = 0; t < 5; ++t) {
+    summaries[t].frame = t;
+    summaries[t].volume_ml = volumes[t];
+  }
+  const EjectionFraction ef = EjectionFractionOf(summaries, 2);
+  EXPECT_EQ(ef.ed_frame, 2);
+  EXPECT_DOUBLE_EQ(ef.edv_ml, 150.0);
+  EXPECT_EQ(ef.es_frame, 4);
+  EXPECT_DOUBLE_EQ(ef.ratio, 0.6);
+  EXPECT_NEAR(EjectionFractionOf(summaries).ratio, 1.0 / 3.0, 1e-12);
+  EXPECT_EQ(EjectionFractionOf(summaries, 5).ratio, 0.0);
+  EXPECT_EQ(EjectionFractionOf(summaries, -1).edv_ml, 0.0);
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -32,16 +32,65 @@ void LeaveOutFrameRotation(size_t t, FitAnalysis* analysis) {
   analysis->strain[t].gcl_percent = kNotMeasured;
 }
 
+// Without data near the apex: the cap, and each level whose middle height
+// (a fraction of frame 0's length from the apex pole; thirds, the apical
+// one above the cap: wall_motion.h) lies below the lowest data point.
+void FindExtrapolated(const SequenceFit& fit, const RegionLayout& layout,
+                      FitAnalysis* analysis) {
+  if (fit.apex_in_data) return;
+  analysis->level_extrapolated[kApex] = true;
+  const double middle[3] = {5.0 / 6.0, 0.5,
+                            (layout.apex_cap_fraction + 1.0 / 3.0) / 2.0};
+  for (int level : {kBasal, kMid, kApical}) {
+    analysis->level_extrapolated[level] =
+        fit.lowest_data_height > middle[level];
+  }
+  analysis->apex_ring_extrapolated =
+      fit.lowest_data_height > kApicalRingFraction;
+}
+
+void LeaveOutRegion(RegionMotion* motion) {
+  for (double* value :
+       {&motion->rotation_deg, &motion->radial_contraction_percent,
+        &motion->ecc_percent, &motion->ell_percent, &motion->ecl_percent,
+        &motion->thickening_percent}) {
+    *value = kNotMeasured;
+  }
+}
+
+// kNotMeasured in frame t's numbers measured where frame 0 has no data.
+void LeaveOutExtrapolated(size_t t, FitAnalysis* analysis) {
+  if (analysis->apex_ring_extrapolated) {
+    LeaveOutApexRing(&analysis->clinical[t]);
+  }
+  for (size_t r = 0; r < analysis->regions.size(); ++r) {
+    if (analysis->level_extrapolated[analysis->regions[r].level]) {
+      LeaveOutRegion(&analysis->region_motion[t][r]);
+    }
+  }
+  for (int level : {kBasal, kMid, kApical}) {
+    if (!analysis->level_extrapolated[level]) continue;
+    analysis->strain[t].level_ecc_percent[level] = kNotMeasured;
+    analysis->strain[t].level_ell_percent[level] = kNotMeasured;
+  }
+}
+
 }  // namespace
 
 FitAnalysis AnalyzeFit(const SequenceFit& fit,
                        const std::vector<BasePlane>& base_planes,
-                       const RegionLayout& layout) {
+                       const RegionLayout& layout, bool show_extrapolated) {
   FitAnalysis analysis;
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.models.push_back(fit.ModelAt(static_cast<int>(t)));
   }
-  analysis.clinical = SummarizeSequence(analysis.models);
+  const int ed = fit.ed_frame;
+  analysis.clinical = SummarizeSequence(analysis.models, ed);
+  if (fit.time_ms.size() == fit.frames.size()) {
+    for (size_t t = 0; t < fit.frames.size(); ++t) {
+      analysis.clinical[t].time_ms = fit.time_ms[t];
+    }
+  }
   analysis.volume_surface = VolumeSurfaceName(fit);
   if (base_planes.size() == fit.frames.size()) {
     analysis.base_planes = base_planes;
@@ -57,7 +106,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
       }
     }
   }
-  analysis.ejection_fraction = EjectionFractionOf(analysis.clinical);
+  analysis.ejection_fraction = EjectionFractionOf(analysis.clinical, ed);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.verdicts.push_back(fit.frames[t].verdict);
     analysis.verdicts.back().Add(JudgeClinical(analysis.clinical,
@@ -67,7 +116,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   analysis.layout = layout;
   analysis.regions = Regions(layout);
   const ReferenceSamples reference =
-      SampleReference(analysis.models.front(), layout);
+      SampleReference(analysis.models.at(ed), layout);
   for (const Model& model : analysis.models) {
     analysis.region_motion.push_back(SummarizeRegions(reference, model));
     analysis.strain.push_back(
@@ -77,6 +126,13 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (!analysis.rotation_measured[t]) LeaveOutFrameRotation(t, &analysis);
   }
+  FindExtrapolated(fit, layout, &analysis);
+  analysis.extrapolated_shown = show_extrapolated;
+  for (size_t t = 0; t < fit.frames.size() && !show_extrapolated; ++t) {
+    LeaveOutExtrapolated(t, &analysis);
+  }
+  // The levels' strain, above, keeps the cap as part of the apical third.
+  analysis.apex_cap_measured = fit.apex_in_data || show_extrapolated;
   return analysis;
 }
 

@@ -2,6 +2,7 @@
 #ifndef PFDM_REPORT_FIT_ANALYSIS_H_
 #define PFDM_REPORT_FIT_ANALYSIS_H_
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,23 @@ struct FitAnalysis {
   // gcl are kNotMeasured: contours show no turn about the axis, and the
   // circumferential-longitudinal shear is a twist's gradient.
   std::vector<bool> rotation_measured;
+  // Without data near the apex (SequenceFit::apex_in_data), what lies
+  // where frame 0 has no data is the model's continuation of the data
+  // above: a level (kBasal, kMid, kApical) whose middle height lies below
+  // frame 0's lowest data point, the apex cap (kApex, segment 17) always,
+  // and the apical ring (kApicalRingFraction) when it lies below it.  Unless
+  // AnalyzeFit is asked to show them, their numbers are kNotMeasured: the
+  // level's regions and strains, and the ring's rotations, net twist, torsion
+  // and shear angle (LeaveOutApexRing).
+  std::array<bool, 4> level_extrapolated{};  // By RegionLevel.
+  bool apex_ring_extrapolated = false;
+  bool extrapolated_shown = false;
+  // Whether the apex cap's (segment 17's) numbers are given: frame 0's
+  // data reach the apex (SequenceFit::apex_in_data), or they are shown
+  // anyway.  Where not, its entries in region_motion are kNotMeasured (its
+  // area kept); the levels' and global strains still take the model's cap
+  // in.
+  bool apex_cap_measured = true;
   // What clinical[t].volume_ml encloses: "cavity" (a solid's endocardium,
   // or a surface fitted to endocardial contours), "epicardial" or "midwall"
   // (VolumeSurfaceName).
@@ -48,9 +66,12 @@ std::vector<bool> RotationMeasured(const SequenceFit& fit);
 
 // base_planes: one per frame to close the cavity there (see
 // CavityVolumeMl), or empty for the flat lid at the base rim.
+// show_extrapolated: keep the numbers measured where frame 0 has no data
+// (FitAnalysis::level_extrapolated; --extrapolated).
 FitAnalysis AnalyzeFit(const SequenceFit& fit,
                        const std::vector<BasePlane>& base_planes = {},
-                       const RegionLayout& layout = RegionLayout());
+                       const RegionLayout& layout = RegionLayout(),
+                       bool show_extrapolated = false);
 
 }  // namespace pfdm
 

@@ -3,21 +3,10 @@
 #include "gtest/gtest.h"
 #include "pfdm/model/model_surface.h"
 #include "pfdm/phantom/phantom.h"
+#include "pfdm/testing/truth_as_fit.h"
 
 namespace pfdm {
 namespace {
-
-SequenceFit TruthAsFit(const Phantom& phantom) {
-  SequenceFit fit;
-  fit.config = phantom.truth[0].config;
-  for (size_t t = 0; t < phantom.truth.size(); ++t) {
-    FrameFit frame;
-    frame.frame = static_cast<int>(t);
-    frame.state = phantom.truth[t].state;
-    fit.frames.push_back(frame);
-  }
-  return fit;
-}
 
 TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
   PhantomOptions options;
@@ -30,7 +19,9 @@ TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
   EXPECT_NEAR(analysis.clinical[4].net_twist_deg, 7.0 * 0.65, 0.01);
   EXPECT_EQ(analysis.ejection_fraction.es_frame, 4);
   ASSERT_EQ(analysis.region_motion.size(), 5u);
-  ASSERT_EQ(analysis.region_motion[4].size(), 16u);
+  ASSERT_EQ(analysis.region_motion[4].size(), 17u);
+  EXPECT_FALSE(analysis.layout.anatomical);
+  EXPECT_TRUE(analysis.apex_cap_measured);
   // The phantom's a1 shrinks 20 % everywhere and a2 by 20 % at the apex to
   // 10 % at the base: every segment contracts by 10-20 %.
   for (const RegionMotion& m : analysis.region_motion[4]) {
@@ -83,6 +74,91 @@ TEST(FitAnalysisTest, FramesWithoutTrackedPointsHaveNoRotation) {
   fit.frames[2].tracked = true;
   fit.frames[0].tracked = false;  // The reference of every rotation.
   EXPECT_EQ(RotationMeasured(fit), std::vector<bool>(3, false));
+}
+
+// Data that stop 49 % of the length above the apex pole (a
+// mid-ventricular segment): the apical level (middle at 1/6) and the apical
+// ring (at 0.2) lie below them, the mid level's middle (0.5) does not.
+// What lies there is null unless shown; the rest is as measured.
+TEST(FitAnalysisTest, WhatLiesBelowTheDataIsNotMeasuredUnlessShown) {
+  PhantomOptions options;
+  options.num_points = 1;
+  options.num_frames = 3;
+  SequenceFit fit = TruthAsFit(MakePhantom(options));
+  const FitAnalysis full = AnalyzeFit(fit);
+  EXPECT_EQ(full.level_extrapolated, (std::array<bool, 4>{}));
+  fit.apex_in_data = false;
+  fit.lowest_data_height = 0.49;
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  EXPECT_EQ(analysis.level_extrapolated,
+            (std::array<bool, 4>{false, false, true, true}));
+  EXPECT_TRUE(analysis.apex_ring_extrapolated);
+  EXPECT_FALSE(analysis.extrapolated_shown);
+  const ClinicalSummary& c = analysis.clinical[2];
+  for (double value :
+       {c.apex_rotation_deg, c.net_twist_deg, c.torsion_deg_per_cm,
+        c.shear_angle_deg, analysis.strain[2].level_ecc_percent[kApical],
+        analysis.strain[2].level_ell_percent[kApical]}) {
+    EXPECT_FALSE(Measured(value));
+  }
+  EXPECT_EQ(c.base_rotation_deg, full.clinical[2].base_rotation_deg);
+  EXPECT_EQ(c.volume_ml, full.clinical[2].volume_ml);
+  EXPECT_EQ(analysis.strain[2].gcs_percent, full.strain[2].gcs_percent);
+  EXPECT_EQ(analysis.strain[2].level_ecc_percent[kMid],
+            full.strain[2].level_ecc_percent[kMid]);
+  for (size_t r = 0; r < analysis.regions.size(); ++r) {
+    const RegionMotion& m = analysis.region_motion[2][r];
+    const bool apical = analysis.regions[r].level == kApical ||
+                        analysis.regions[r].level == kApex;
+    EXPECT_EQ(Measured(m.ecc_percent), !apical) << r;
+    EXPECT_EQ(Measured(m.radial_contraction_percent), !apical) << r;
+    EXPECT_EQ(Measured(m.rotation_deg), !apical) << r;
+  }
+  const FitAnalysis shown =
+      AnalyzeFit(fit, {}, RegionLayout(), /*show_extrapolated=*/true);
+  EXPECT_TRUE(shown.extrapolated_shown);
+  EXPECT_EQ(shown.clinical[2].net_twist_deg, full.clinical[2].net_twist_deg);
+  EXPECT_EQ(shown.region_motion[2][15].ecc_percent,
+            full.region_motion[2][15].ecc_percent);
+
+  // The apical level lies above the cap (0.1 to 1/3 of the length): its
+  // middle, 0.217, is above data from 0.21.
+  fit.lowest_data_height = 0.21;
+  EXPECT_FALSE(AnalyzeFit(fit).level_extrapolated[kApical]);
+  fit.lowest_data_height = 0.1;  // Below the ring: only the cap.
+  const FitAnalysis low = AnalyzeFit(fit);
+  EXPECT_EQ(low.level_extrapolated,
+            (std::array<bool, 4>{false, false, false, true}));
+  EXPECT_FALSE(low.apex_ring_extrapolated);
+}
+
+// Without data near the apex (SequenceFit::apex_in_data) the apex cap's
+// numbers are not measured, its area kept; the apical level's strain and
+// the global strain still take the model's cap in, as they did.
+TEST(FitAnalysisTest, ApexCapIsNotMeasuredWithoutDataNearTheApex) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  const FitAnalysis seen = AnalyzeFit(fit);
+  fit.apex_in_data = false;
+  const FitAnalysis unseen = AnalyzeFit(fit);
+  EXPECT_FALSE(unseen.apex_cap_measured);
+  ASSERT_EQ(unseen.regions[16].level, kApex);
+  EXPECT_GT(seen.region_motion[4][16].radial_contraction_percent, 9.0);
+  for (size_t t = 0; t < 5; ++t) {
+    const RegionMotion& cap = unseen.region_motion[t][16];
+    for (double value : {cap.rotation_deg, cap.radial_contraction_percent,
+                         cap.ecc_percent, cap.ell_percent, cap.ecl_percent}) {
+      EXPECT_FALSE(Measured(value)) << t;
+    }
+    EXPECT_EQ(cap.area_mm2, seen.region_motion[t][16].area_mm2);
+    EXPECT_EQ(unseen.strain[t].gcs_percent, seen.strain[t].gcs_percent);
+    EXPECT_EQ(unseen.strain[t].level_ecc_percent[kApical],
+              seen.strain[t].level_ecc_percent[kApical]);
+    EXPECT_EQ(unseen.region_motion[t][15].ecc_percent,
+              seen.region_motion[t][15].ecc_percent);
+  }
 }
 
 TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {

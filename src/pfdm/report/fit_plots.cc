@@ -125,15 +125,26 @@ std::string ParameterPlotsSvg(const std::vector<Model>& frames,
 }
 
 SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
-                    const std::string& volume_surface) {
+                    const std::string& volume_surface, int ed_frame) {
+  // Against the time from the trigger where every frame has one, else the
+  // frame number.
+  const bool timed =
+      !summaries.empty() &&
+      std::all_of(summaries.begin(), summaries.end(),
+                  [](const ClinicalSummary& s) { return Measured(s.time_ms); });
+  auto x_of = [&](const ClinicalSummary& s) {
+    return timed ? s.time_ms : static_cast<double>(s.frame);
+  };
   PlotData block{"cycle", {}};
   for (const ClinicalSummary& s : summaries) {
-    block.rows.push_back({static_cast<double>(s.frame), s.volume_ml,
-                          s.apex_rotation_deg, s.base_rotation_deg,
-                          s.net_twist_deg, s.radial_contraction_percent,
+    block.rows.push_back({x_of(s), s.volume_ml, s.apex_rotation_deg,
+                          s.base_rotation_deg, s.net_twist_deg,
+                          s.radial_contraction_percent,
                           s.longitudinal_shortening_percent});
   }
-  const EjectionFraction ef = EjectionFractionOf(summaries);
+  const EjectionFraction ef = EjectionFractionOf(summaries, ed_frame);
+  const double ed_x = summaries.empty() ? 0.0 : x_of(summaries[ef.ed_frame]);
+  const double es_x = summaries.empty() ? 0.0 : x_of(summaries[ef.es_frame]);
   // Rows of unmeasured rotations hold NaN, which gnuplot skips; with none
   // measured (contours) the panel would show nothing, and goes.
   const bool any_rotation = std::any_of(
@@ -144,7 +155,8 @@ SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
   script << "set multiplot layout 1," << (any_rotation ? 3 : 2)
          << " margins 0.06,0.98,0.14,0.8 "
             "spacing 0.07,0.1 title 'Over the cycle' font 'sans,15'\n"
-         << "set grid lc rgb '#dddddd'\nset xlabel 'frame'\n"
+         << "set grid lc rgb '#dddddd'\nset xlabel '"
+         << (timed ? "time from the trigger (ms)" : "frame") << "'\n"
          << "set style data linespoints\nset pointsize 0.6\n"
          << "unset key\n"
          << (volume_surface == "cavity"
@@ -152,9 +164,9 @@ SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
                        std::to_string(100.0 * ef.ratio) + ")"
                  : "set title '" + volume_surface + " volume (not the cavity)'")
          << "\nset ylabel 'ml'\n"
-         << "set label 1 'ED' at " << ef.ed_frame << ',' << ef.edv_ml
+         << "set label 1 'ED' at " << ed_x << ',' << ef.edv_ml
          << " offset 0.5,0.8\n"
-         << "set label 2 'ES' at " << ef.es_frame << ',' << ef.esv_ml
+         << "set label 2 'ES' at " << es_x << ',' << ef.esv_ml
          << " offset 0,-1\n"
          << "plot $cycle using 1:2 lc rgb '#1f3f8f' pt 7 title 'volume'\n"
          << "unset label 1\nunset label 2\n"
@@ -175,8 +187,8 @@ SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
 }
 
 std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
-                           const std::string& volume_surface) {
-  return RenderSvgString(CycleCurves(summaries, volume_surface));
+                           const std::string& volume_surface, int ed_frame) {
+  return RenderSvgString(CycleCurves(summaries, volume_surface, ed_frame));
 }
 
 }  // namespace pfdm

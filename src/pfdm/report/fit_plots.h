@@ -25,11 +25,15 @@ SvgPlot ParameterPlots(const std::vector<Model>& frames,
 // with net twist, and radial and longitudinal contraction.  Rotations that
 // are kNotMeasured are left out; where none is measured, so is their panel.
 // volume_surface: what the volumes enclose (FitAnalysis::volume_surface);
-// only the cavity's gives an ejection fraction.
+// only the cavity's gives an ejection fraction, ED at ed_frame.  The x axis
+// is the time from the trigger (ms) when every summary has one, else the
+// frame number.
 std::string CycleCurvesSvg(const std::vector<ClinicalSummary>& summaries,
-                           const std::string& volume_surface = "cavity");
+                           const std::string& volume_surface = "cavity",
+                           int ed_frame = 0);
 SvgPlot CycleCurves(const std::vector<ClinicalSummary>& summaries,
-                    const std::string& volume_surface = "cavity");
+                    const std::string& volume_surface = "cavity",
+                    int ed_frame = 0);
 
 }  // namespace pfdm
 

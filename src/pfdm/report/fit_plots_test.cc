@@ -40,6 +40,34 @@ TEST(FitPlotsTest, CycleCurvesNameTheEjectionFraction) {
   EXPECT_NE(svg.find("net twist"), std::string::npos);
 }
 
+// With trigger times the curves run against them, ED and ES marked at
+// theirs; without, against the frame number.
+TEST(FitPlotsTest, CycleCurvesRunAgainstTheTriggerTimeWhereKnown) {
+  std::vector<ClinicalSummary> summaries(4);
+  const double volumes[] = {100, 150, 60, 120};
+  for (int t = 0; t < 4; ++t) {
+    summaries[t].frame = t;
+    summaries[t].volume_ml = volumes[t];
+  }
+  const SvgPlot by_frame = CycleCurves(summaries, "cavity", 1);
+  EXPECT_NE(by_frame.script.find("set xlabel 'frame'"), std::string::npos);
+  EXPECT_NE(by_frame.script.find("set label 1 'ED' at 1,150"),
+            std::string::npos)
+      << by_frame.script;
+  EXPECT_EQ(by_frame.data.front().rows[3][0], 3.0);
+  for (int t = 0; t < 4; ++t) summaries[t].time_ms = 40.0 * t + 12.5;
+  const SvgPlot timed = CycleCurves(summaries, "cavity", 1);
+  EXPECT_NE(timed.script.find("set xlabel 'time from the trigger (ms)'"),
+            std::string::npos);
+  EXPECT_NE(timed.script.find("set label 1 'ED' at 52.5,150"),
+            std::string::npos)
+      << timed.script;
+  EXPECT_NE(timed.script.find("set label 2 'ES' at 92.5,60"),
+            std::string::npos);
+  EXPECT_EQ(timed.data.front().rows[3][0], 132.5);
+  EXPECT_NE(RenderSvgString(timed).find("EF 60.0 %"), std::string::npos);
+}
+
 // Rotations not measured (contours) are left out: with none measured, the
 // rotation panel goes; with some, their frames' rows are NaN, which gnuplot
 // skips.  The twist panels of the parameter plots say why they are empty.

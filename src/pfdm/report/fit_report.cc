@@ -345,13 +345,21 @@ std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
   if (!bullseye_svg.empty()) {
     h << InlineSvg(bullseye_svg) << "\n"
       << "<p class=\"note\">Bull's-eye maps in the AHA layout: basal ring "
-         "outside, mid, apical inside (the apex cap is not a segment here); "
-         "segment number above its value. As the AHA draws it, segment 1 "
-         "(and 7, 13) is at the top and numbers run counter-clockwise on the "
-         "page; but here sector 1 starts at the model's &minus;x axis, not "
-         "at the anterior RV insertion, which point data do not show, and "
-         "sectors run counter-clockwise about the long axis seen from the "
-         "base: the map is the LV seen from its base. Peak Ecc: the most "
+         "outside, mid, apical, the apex (17) in the centre; segment number "
+         "above its value; segment 1 (and 7, 13) at the top, numbers "
+         "counter-clockwise on the page. "
+      << (analysis.layout.anatomical
+              ? "The segments are anatomical (" +
+                    EscapeMarkup(analysis.layout.anchor) +
+                    "): the map is the LV seen from its apex, anterior at "
+                    "the top, the septum on the left. "
+              : "<b>The segments are not anatomical</b> (" +
+                    EscapeMarkup(analysis.layout.anchor) +
+                    "): sector 1 starts at the model's &minus;x axis and "
+                    "sectors run counter-clockwise about the long axis seen "
+                    "from the base, so the map is the LV seen from its base "
+                    "and its numbers depend on the case. ")
+      << "Peak Ecc: the most "
          "negative over the frames (red is shortening); radial contraction "
          "(red is inward) "
       << (Measured(analysis.clinical[ef.es_frame].net_twist_deg)
@@ -374,10 +382,22 @@ std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
        "mid, apical) cut into "
     << analysis.layout.basal_sectors << ", " << analysis.layout.mid_sectors
     << " and " << analysis.layout.apical_sectors
-    << " sectors of longitude, counted counter-clockwise seen from the base "
-       "from the model's &minus;x axis (AHA numbering, but anchored to the "
-       "model's axes, not to the RV insertion, which point data do not "
-       "show). Rotation: mean turn of the segment's material points about "
+    << " sectors of longitude, and the apex cap (17, the lowest "
+    << Fixed(100 * analysis.layout.apex_cap_fraction, 0) << " % of the axis"
+    << (analysis.apex_cap_measured ? ""
+                                   : "; n/a here: the data do not reach the "
+                                     "apex")
+    << "). "
+    << (analysis.layout.anatomical
+            ? "Anatomical, the AHA's: basal and mid sectors of 60&deg; from "
+              "the anterior RV insertion (the border of anterior and "
+              "anteroseptal) through the septum to the inferior wall; the "
+              "apical septal sector centred on the basal septum."
+            : "Not anatomical: counted counter-clockwise seen from the base "
+              "from the model's &minus;x axis, which the fit takes from the "
+              "data; give --rv_insertion (or guide points with RV_INSERT) "
+              "for the AHA's.")
+    << " Rotation: mean turn of the segment's material points about "
        "the ED long axis; radial contraction: mean of 1 &minus; "
        "r/r<sub>ED</sub>, r a material point's distance from its ring's "
        "centroid; Ecc, Ell, Ecl: the segment's mean Green-Lagrange strains "

@@ -5,6 +5,7 @@
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/testing/test_util.h"
+#include "pfdm/testing/truth_as_fit.h"
 
 namespace pfdm {
 namespace {
@@ -13,19 +14,6 @@ TEST(FitReportTest, InlinesSvg) {
   EXPECT_EQ(InlineSvg("<?xml version=\"1.0\"?>\n<!DOCTYPE svg>\n<svg a='1'/>"),
             "<svg a='1'/>");
   EXPECT_EQ(InlineSvg("not a plot"), "");
-}
-
-SequenceFit TruthAsFit(const Phantom& phantom) {
-  SequenceFit fit;
-  fit.config = phantom.truth[0].config;
-  for (size_t t = 0; t < phantom.truth.size(); ++t) {
-    FrameFit frame;
-    frame.frame = static_cast<int>(t);
-    frame.state = phantom.truth[t].state;
-    frame.termination = "CONVERGENCE";
-    fit.frames.push_back(frame);
-  }
-  return fit;
 }
 
 // Without tracked points at ES the cards read n/a for twist, torsion and
@@ -52,7 +40,7 @@ TEST(FitReportTest, WhatIsNotMeasuredReadsNA) {
                 analysis.clinical[4].radial_contraction_percent);
   EXPECT_NE(html.find(radial), std::string::npos) << radial;
   // Per frame: net twist, apex, base, torsion; per segment: rotation, Ecl.
-  EXPECT_EQ(CountOf(html, "<td>n/a</td>"), 5 * 4 + 16 * 2);
+  EXPECT_EQ(CountOf(html, "<td>n/a</td>"), 5 * 4 + 17 * 2);
 
   // Frame 2 alone without tracked points: ES has numbers, frame 2 n/a.
   fit = TruthAsFit(phantom);
@@ -70,17 +58,9 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   PhantomOptions options;
   options.num_points = 50;
   const Phantom phantom = MakePhantom(options);
-  SequenceFit fit;
-  fit.config = phantom.truth[0].config;
-  for (size_t t = 0; t < phantom.truth.size(); ++t) {
-    FrameFit frame;
-    frame.frame = static_cast<int>(t);
-    frame.state = phantom.truth[t].state;
-    frame.rms_mm = 0.5 + t;
-    frame.termination = "CONVERGENCE";
-    if (t == 3) frame.unsettled_mm = 0.94;
-    fit.frames.push_back(frame);
-  }
+  SequenceFit fit = TruthAsFit(phantom);
+  for (size_t t = 0; t < fit.frames.size(); ++t) fit.frames[t].rms_mm = 0.5 + t;
+  fit.frames[3].unsettled_mm = 0.94;
   PointSequence points = phantom.points;
   points.source = "tags<1>.csv";
   const FitAnalysis analysis = AnalyzeFit(fit);
@@ -112,8 +92,8 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
                       "last search)"),
             std::string::npos);
   EXPECT_EQ(CountOf(html, "unsettled"), 1);
-  // 5 frame rows and 16 segment rows, each a <tr> after its table's head.
-  EXPECT_EQ(CountOf(html, "<tr>"), 2 + 5 + 16);
+  // 5 frame rows and 17 segment rows, each a <tr> after its table's head.
+  EXPECT_EQ(CountOf(html, "<tr>"), 2 + 5 + 17);
   EXPECT_NE(html.find("apical 4"), std::string::npos);
   EXPECT_EQ(html.find("No tracked points"), std::string::npos);  // Tags.
   EXPECT_EQ(html.find("n/a"), std::string::npos);
@@ -129,6 +109,9 @@ TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   EXPECT_NE(with_maps.find("<svg id='s'></svg>"), std::string::npos);
   EXPECT_NE(with_maps.find("<svg id='b'></svg>"), std::string::npos);
   EXPECT_NE(with_maps.find("model's &minus;x axis"), std::string::npos);
+  EXPECT_NE(with_maps.find("The segments are not anatomical</b> (no RV "
+                           "insertion given)"),
+            std::string::npos);
   const StrainPeak gcs = PeakGcs(analysis.strain);
   EXPECT_LT(gcs.percent, -3.0);
   char peak[64];

@@ -25,7 +25,8 @@ GlobalStrain SummarizeStrain(const std::vector<WallRegion>& regions,
   std::array<double, 3> level_area{};
   for (size_t r = 0; r < regions.size() && r < motion.size(); ++r) {
     const RegionMotion& m = motion[r];
-    const int level = regions[r].level;
+    // The apex cap is part of the apical third.
+    const int level = std::min<int>(regions[r].level, kApical);
     strain.gcs_percent += m.area_mm2 * m.ecc_percent;
     strain.gls_percent += m.area_mm2 * m.ell_percent;
     strain.gcl_percent += m.area_mm2 * m.ecl_percent;

@@ -14,7 +14,8 @@ namespace pfdm {
 // GLS are the area-weighted means of Ecc and Ell over the whole sampled
 // surface, from the apex pole (never sampled itself) to the base rim: the
 // segments' means weighted by their frame-0 areas.  The levels likewise
-// over their segments (kBasal, kMid, kApical).
+// over their segments (kBasal, kMid, kApical; the apex cap, segment 17,
+// counts into the apical level, which is then the whole apical third).
 struct GlobalStrain {
   double gcs_percent = 0.0;
   double gls_percent = 0.0;

@@ -17,13 +17,15 @@ TEST(GlobalStrainTest, AreaWeightedOverSegmentsAndLevels) {
   motion[12].area_mm2 = 400.0;  // One apical segment four times as large.
   motion[12].ell_percent = -5.0;
   const GlobalStrain g = SummarizeStrain(regions, motion);
-  // 6 basal x 100 at -10, 6 mid x 100 + 3 x 100 + 400 apical at -20.
-  EXPECT_NEAR(g.gcs_percent, (-10.0 * 600 - 20.0 * 1300) / 1900, 1e-12);
-  EXPECT_NEAR(g.gls_percent, (-15.0 * 1500 - 5.0 * 400) / 1900, 1e-12);
+  // 6 basal x 100 at -10, 6 mid x 100 + 3 x 100 + 400 apical + the apex
+  // cap's 100 at -20; the cap counts into the apical level.
+  ASSERT_EQ(regions.size(), 17u);
+  EXPECT_NEAR(g.gcs_percent, (-10.0 * 600 - 20.0 * 1400) / 2000, 1e-12);
+  EXPECT_NEAR(g.gls_percent, (-15.0 * 1600 - 5.0 * 400) / 2000, 1e-12);
   EXPECT_NEAR(g.gcl_percent, 2.0, 1e-12);
   EXPECT_NEAR(g.level_ecc_percent[kBasal], -10.0, 1e-12);
   EXPECT_NEAR(g.level_ecc_percent[kApical], -20.0, 1e-12);
-  EXPECT_NEAR(g.level_ell_percent[kApical], (-15.0 * 300 - 5.0 * 400) / 700,
+  EXPECT_NEAR(g.level_ell_percent[kApical], (-15.0 * 400 - 5.0 * 400) / 800,
               1e-12);
 }
 

@@ -15,9 +15,47 @@ constexpr int kLatitudeSamples = 60;
 constexpr int kLongitudeSamples = 120;
 
 int SectorsOf(const RegionLayout& layout, RegionLevel level) {
-  return level == kBasal ? layout.basal_sectors
-         : level == kMid ? layout.mid_sectors
-                         : layout.apical_sectors;
+  return level == kBasal  ? layout.basal_sectors
+         : level == kMid  ? layout.mid_sectors
+         : level == kApex ? 1
+                          : layout.apical_sectors;
+}
+
+// Where sector 0 of a level begins, in radians past the anchor in the
+// layout's sense: at the anchor itself when not anatomical; anatomical,
+// basal and mid sector 0 (anterior) ends at the anterior insertion and
+// apical sector 1 (septal) is centred on the middle of sectors 1 and 2 of
+// the levels above, 60 degrees past it (RegionLayout).
+double SectorStart(const RegionLayout& layout, RegionLevel level) {
+  const double width = 2.0 * kPi / SectorsOf(layout, level);
+  if (!layout.anatomical || level == kApex) return 0.0;
+  if (level != kApical) return -width;
+  return kPi / 3.0 - 1.5 * width;
+}
+
+std::string RegionName(const RegionLayout& layout, RegionLevel level,
+                       int sector) {
+  static const char* const kLevels[] = {"basal", "mid", "apical"};
+  static const char* const kWalls[] = {"anterior",      "anteroseptal",
+                                       "inferoseptal",  "inferior",
+                                       "inferolateral", "anterolateral"};
+  static const char* const kApicalWalls[] = {"anterior", "septal", "inferior",
+                                             "lateral"};
+  if (level == kApex) return "apex";
+  const int sectors = SectorsOf(layout, level);
+  const std::string prefix = std::string(kLevels[level]) + " ";
+  if (layout.anatomical && level != kApical && sectors == 6) {
+    return prefix + kWalls[sector];
+  }
+  if (layout.anatomical && level == kApical && sectors == 4) {
+    return prefix + kApicalWalls[sector];
+  }
+  return prefix + std::to_string(sector + 1);
+}
+
+// Wraps an angle into [-pi, pi).
+double Wrapped(double angle) {
+  return angle - 2.0 * kPi * std::floor((angle + kPi) / (2.0 * kPi));
 }
 
 // Surface area per unit of sin u and v at (u, v) on the model: the
@@ -33,22 +71,24 @@ double AreaWeight(const Model& model, double u, double v) {
 
 }  // namespace
 
-std::string WallRegion::Name() const {
-  static const char* const kLevels[] = {"basal", "mid", "apical"};
-  return std::string(kLevels[level]) + " " + std::to_string(sector + 1);
-}
-
 std::vector<WallRegion> Regions(const RegionLayout& layout) {
   std::vector<WallRegion> regions;
-  for (RegionLevel level : {kBasal, kMid, kApical}) {
+  std::vector<RegionLevel> levels{kBasal, kMid, kApical};
+  if (layout.apex_cap_fraction > 0.0) levels.push_back(kApex);
+  for (RegionLevel level : levels) {
     const int sectors = SectorsOf(layout, level);
+    const double width = 2.0 * kPi / sectors;
     for (int s = 0; s < sectors; ++s) {
       WallRegion region;
       region.segment = static_cast<int>(regions.size()) + 1;
       region.level = level;
       region.sector = s;
-      region.v_begin = -kPi + 2.0 * kPi * s / sectors;
-      region.v_end = -kPi + 2.0 * kPi * (s + 1) / sectors;
+      const double start = SectorStart(layout, level) + width * s;
+      // The sector's longitudes from its first edge in the layout's sense.
+      const double first = layout.direction > 0 ? start : -(start + width);
+      region.v_begin = level == kApex ? -kPi : Wrapped(layout.anchor_v + first);
+      region.v_end = region.v_begin + width;
+      region.name = RegionName(layout, level, s);
       regions.push_back(region);
     }
   }
@@ -60,11 +100,16 @@ int AssignRegion(const Model& reference, double u, double v,
   const double apex = RingHeight(reference, reference.config.u_min);
   const double base = RingHeight(reference, reference.config.u_max);
   const double fraction = (RingHeight(reference, u) - apex) / (base - apex);
+  const int cap =
+      layout.basal_sectors + layout.mid_sectors + layout.apical_sectors;
+  if (fraction < layout.apex_cap_fraction) return cap;
   const RegionLevel level = fraction >= 2.0 / 3.0   ? kBasal
                             : fraction >= 1.0 / 3.0 ? kMid
                                                     : kApical;
   const int sectors = SectorsOf(layout, level);
-  const double turn = (v + kPi) / (2.0 * kPi);
+  const double past =
+      layout.direction * (v - layout.anchor_v) - SectorStart(layout, level);
+  const double turn = past / (2.0 * kPi);
   const int sector =
       static_cast<int>(std::floor((turn - std::floor(turn)) * sectors)) %
       sectors;

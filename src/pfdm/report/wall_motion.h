@@ -3,6 +3,7 @@
 #ifndef PFDM_REPORT_WALL_MOTION_H_
 #define PFDM_REPORT_WALL_MOTION_H_
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,26 +13,57 @@
 namespace pfdm {
 
 // Levels are thirds of the reference (frame 0) model's axis from apex to
-// base rim; each level is cut into equal sectors of longitude v, counted
-// counter-clockwise about +z (seen from the base) from v = -pi.  The AHA
-// layout has 6 basal, 6 mid and 4 apical segments, numbered 1-6 basal,
-// 7-12 mid, 13-16 apical; it anchors sector 1 at the anterior RV insertion,
-// which point data do not show, so here sector 1 starts at the model's -x.
+// base rim, the apical one less the apex cap (segment 17: the surface within
+// apex_cap_fraction of the axis of the apex pole); each level is cut into
+// equal sectors of longitude v.  The AHA 17-segment model (Cerqueira et al.
+// 2002) has 6 basal, 6 mid and 4 apical segments and the cap, numbered 1-6
+// basal, 7-12 mid, 13-16 apical, 17 the apex.
+//
+// Anatomical (an RV insertion known, rv_insertion.h): sectors run from the
+// anterior RV insertion at v = anchor_v in the sense `direction` (-1:
+// decreasing v, clockwise seen from the base, as anterior -> septum ->
+// inferior runs in a right-handed frame); basal and mid sector 1 (anterior)
+// ends at the insertion, sectors 2 and 3 (anteroseptal, inferoseptal) lie
+// past it, 60 degrees each; the apical septal sector (2 of 4) is centred on
+// the middle of those two, 60 degrees past the insertion.  Otherwise sector 1
+// of every level starts at v = -pi (the model's -x, which the start takes
+// from the data) and sectors run counter-clockwise seen from the base: the
+// numbers then depend on the case, not the anatomy.
 struct RegionLayout {
   int basal_sectors = 6;
   int mid_sectors = 6;
   int apical_sectors = 4;
+  // Segment 17's reach from the apex pole, a fraction of the apex-to-base
+  // length; 0: no cap (16 segments, the apical third whole).  A tenth makes
+  // the cap about as large as a segment (on the LV phantom 1.05 times the
+  // mean's area).
+  double apex_cap_fraction = 0.1;
+  bool anatomical = false;
+  double anchor_v = -3.14159265358979323846;  // Radians.
+  double direction = 1.0;                     // +1 or -1.
+  // Anatomical: where the insertion came from ("RV_INSERT points",
+  // "--rv_insertion"); otherwise why the segments are not anatomical.
+  std::string anchor = "no RV insertion given";
+  // Anatomical: the inferior insertion's v (radians; NaN when unknown) and
+  // how many points gave each insertion.
+  double inferior_v = std::numeric_limits<double>::quiet_NaN();
+  int anterior_points = 0, inferior_points = 0;
 };
 
-enum RegionLevel : int { kBasal = 0, kMid = 1, kApical = 2 };
+enum RegionLevel : int { kBasal = 0, kMid = 1, kApical = 2, kApex = 3 };
 
 struct WallRegion {
-  int segment = 0;  // 1-based, basal first.
+  int segment = 0;  // 1-based, basal first; the apex cap last (17).
   RegionLevel level = kBasal;
-  int sector = 0;  // 0-based within the level.
+  int sector = 0;  // 0-based within the level, in the layout's sense.
+  // The sector's longitudes: [v_begin, v_end), v_begin in [-pi, pi), v_end
+  // up to 2 pi past it (the cap: -pi to pi).
   double v_begin = 0.0;
   double v_end = 0.0;
-  std::string Name() const;  // e.g. "basal 2".
+  // The AHA name ("basal anterior", "mid inferoseptal", "apical septal",
+  // "apex") in an anatomical 6/6/4 layout; otherwise "basal 2" (and "apex").
+  std::string name;
+  const std::string& Name() const { return name; }
 };
 
 std::vector<WallRegion> Regions(const RegionLayout& layout);

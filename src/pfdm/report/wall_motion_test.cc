@@ -16,24 +16,88 @@ Model Sphere(double radius_fraction) {
   return Model::Uniform(ModelConfig::Paper(17), values);
 }
 
-TEST(WallMotionTest, AhaLayoutHasSixteenSegmentsBasalFirst) {
+// Without an RV insertion: today's sectors from v = -pi, counter-clockwise,
+// named by level and number, and the apex cap last.
+TEST(WallMotionTest, PlainLayoutHasSeventeenSegmentsBasalFirst) {
   const std::vector<WallRegion> regions = Regions(RegionLayout());
-  ASSERT_EQ(regions.size(), 16u);
+  ASSERT_EQ(regions.size(), 17u);
   EXPECT_EQ(regions[0].Name(), "basal 1");
   EXPECT_EQ(regions[6].Name(), "mid 1");
   EXPECT_EQ(regions[15].Name(), "apical 4");
   EXPECT_EQ(regions[15].segment, 16);
+  EXPECT_EQ(regions[16].Name(), "apex");
+  EXPECT_EQ(regions[16].segment, 17);
+  EXPECT_EQ(regions[16].level, kApex);
   EXPECT_NEAR(regions[13].v_begin, -kPi / 2, 1e-12);
   EXPECT_NEAR(regions[13].v_end, 0.0, 1e-12);
   RegionLayout quarters;
   quarters.basal_sectors = quarters.mid_sectors = 4;
+  quarters.apex_cap_fraction = 0.0;
   EXPECT_EQ(Regions(quarters).size(), 12u);
+}
+
+// The AHA's: anterior insertion at v = 1 rad, the septum at decreasing v.
+// Basal 1 (anterior) runs from the insertion 60 degrees away from the
+// septum, basal 2 and 3 (anteroseptal, inferoseptal) past it; apical
+// septal is centred 60 degrees past the insertion.
+TEST(WallMotionTest, AnatomicalLayoutHasTheAhaNamesAndPlaces) {
+  RegionLayout layout;
+  layout.anatomical = true;
+  layout.anchor_v = 1.0;
+  layout.direction = -1.0;
+  const std::vector<WallRegion> regions = Regions(layout);
+  ASSERT_EQ(regions.size(), 17u);
+  const char* const names[] = {"basal anterior",
+                               "basal anteroseptal",
+                               "basal inferoseptal",
+                               "basal inferior",
+                               "basal inferolateral",
+                               "basal anterolateral",
+                               "mid anterior",
+                               "mid anteroseptal",
+                               "mid inferoseptal",
+                               "mid inferior",
+                               "mid inferolateral",
+                               "mid anterolateral",
+                               "apical anterior",
+                               "apical septal",
+                               "apical inferior",
+                               "apical lateral",
+                               "apex"};
+  for (int r = 0; r < 17; ++r) {
+    EXPECT_EQ(regions[r].Name(), names[r]);
+    EXPECT_EQ(regions[r].segment, r + 1);
+  }
+  const double deg = kPi / 180;
+  EXPECT_NEAR(regions[0].v_begin, 1.0, 1e-12);  // Anterior: [1, 1 + 60 deg).
+  EXPECT_NEAR(regions[0].v_end, 1.0 + 60 * deg, 1e-12);
+  EXPECT_NEAR(regions[1].v_end, 1.0, 1e-12);  // Anteroseptal ends there.
+  EXPECT_NEAR(regions[2].v_begin, 1.0 - 120 * deg, 1e-12);
+  EXPECT_NEAR(regions[13].v_begin, 1.0 - 105 * deg, 1e-12);  // Septal.
+  EXPECT_NEAR(regions[13].v_end, 1.0 - 15 * deg, 1e-12);
+  // v_begin wraps into [-pi, pi): basal inferolateral, 1 - 240 deg.
+  EXPECT_NEAR(regions[4].v_begin, 1.0 - 240 * deg + 2 * kPi, 1e-12);
+  // Assignment follows: just past the insertion toward the septum.
+  const Model reference = Sphere(0.8);
+  EXPECT_EQ(AssignRegion(reference, std::asin(0.3), 1.0 - 0.01, layout), 1);
+  EXPECT_EQ(AssignRegion(reference, std::asin(0.3), 1.0 + 0.01, layout), 0);
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.3), 1.0 - 1.1, layout), 8);
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.3), 1.0 - 2.6, layout), 9);
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.7), 1.0 - 0.3, layout), 13);
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.7), 1.0 + 0.3, layout), 12);
+  // The cap: the lowest tenth of the axis, sin u below -0.85.
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.86), 0.0, layout), 16);
+  EXPECT_EQ(AssignRegion(reference, std::asin(-0.84), 1.0 - 1.0, layout), 13);
+  // A layout of other sector counts keeps numbered names.
+  layout.apical_sectors = 6;
+  EXPECT_EQ(Regions(layout)[12].Name(), "apical 1");
 }
 
 TEST(WallMotionTest, AssignsByThirdsOfTheAxisAndSectorsOfLongitude) {
   // Rings at sin u from -1 (apex) to 0.5 (rim): thirds end at -0.5 and 0.
   const Model reference = Sphere(0.8);
-  const RegionLayout layout;
+  RegionLayout layout;
+  layout.apex_cap_fraction = 0.0;  // The apical third whole.
   EXPECT_EQ(AssignRegion(reference, std::asin(-0.8), -3.0, layout), 12);
   EXPECT_EQ(AssignRegion(reference, std::asin(-0.8), 0.1, layout), 14);
   EXPECT_EQ(AssignRegion(reference, std::asin(-0.45), 0.1, layout), 6 + 3);
@@ -47,6 +111,9 @@ TEST(WallMotionTest, AssignsByThirdsOfTheAxisAndSectorsOfLongitude) {
   for (int k = 9; k < 17; ++k) stretched.state.knots[k][kA3] = 1.0;
   EXPECT_EQ(AssignRegion(reference, std::asin(-0.48), 0.1, layout), 9);
   EXPECT_EQ(AssignRegion(stretched, std::asin(-0.48), 0.1, layout), 14);
+  // With the cap, the lowest tenth is segment 17 (index 16).
+  EXPECT_EQ(
+      AssignRegion(reference, reference.config.u_min, 0.0, RegionLayout()), 16);
 }
 
 TEST(WallMotionTest, UniformContractionAndLinearTwistPerSegment) {
@@ -59,7 +126,7 @@ TEST(WallMotionTest, UniformContractionAndLinearTwistPerSegment) {
   }
   const std::vector<RegionMotion> motion =
       SummarizeRegions(reference, current, RegionLayout());
-  ASSERT_EQ(motion.size(), 16u);
+  ASSERT_EQ(motion.size(), 17u);
   // Green-Lagrange: (0.8^2 - 1) / 2 along the circles of latitude; along
   // the meridians the twist, linear in sin u (dtau/du = c cos u, c = 7
   // degrees over 1.5 of sin u), adds 0.64 (c cos^2 u)^2 / 2 < 0.22 points
@@ -77,11 +144,16 @@ TEST(WallMotionTest, UniformContractionAndLinearTwistPerSegment) {
   // A sphere of radius 40 mm from sin u = -1 to 0.5: 2 pi R^2 1.5.
   EXPECT_NEAR(area, 2 * kPi * 1600.0 * 1.5, 1e-3);
   // A sphere's area is uniform in sin u: each level's mean twist is tau at
-  // the middle of its third, sin u = 0.25, -0.25, -0.75.
+  // the middle of its part of the axis, sin u = 0.25, -0.25, -0.675 (the
+  // apical third less the cap, below -0.85), -0.925 (the cap).
   auto tau_at = [](double s) { return -5.0 + 7.0 * (s + 1.0) / 1.5; };
   EXPECT_NEAR(motion[0].rotation_deg, tau_at(0.25), 0.05);
   EXPECT_NEAR(motion[8].rotation_deg, tau_at(-0.25), 0.05);
-  EXPECT_NEAR(motion[15].rotation_deg, tau_at(-0.75), 0.05);
+  EXPECT_NEAR(motion[15].rotation_deg, tau_at(-0.675), 0.05);
+  // The cap's 6 rows of samples: within 0.1.
+  EXPECT_NEAR(motion[16].rotation_deg, tau_at(-0.925), 0.1);
+  // The cap is a tenth of the sphere's area here.
+  EXPECT_NEAR(motion[16].area_mm2, 2 * kPi * 1600.0 * 0.15, 1e-3);
   // No motion, no numbers.
   for (const RegionMotion& m :
        SummarizeRegions(reference, reference, RegionLayout())) {

@@ -61,6 +61,12 @@ class DampedCallback : public ceres::IterationCallback {
 
   ceres::CallbackReturnType operator()(
       const ceres::IterationSummary& summary) override {
+    try {  // An exception must not unwind through Ceres.
+      CheckInterrupt(options_);
+    } catch (...) {
+      error_ = std::current_exception();
+      return ceres::SOLVER_ABORT;
+    }
     const double dt = radius_;
     radius_ = summary.trust_region_radius;
     if (summary.iteration == 0) {
@@ -112,6 +118,7 @@ class DampedCallback : public ceres::IterationCallback {
 // non-finite is undone and dt halved for good.
 SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
   const Clock::time_point start = Clock::now();
+  CheckInterrupt(options);
   SolverReport report;
   const State state = FreeBlocks(*problem);
   Evaluation now;
@@ -153,6 +160,7 @@ SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
   Evaluation next;
   int refusals = 0;
   while (report.iterations < options.max_steps) {
+    CheckInterrupt(options);  // Refused steps too.
     for (int i = 0; i < state.tangent_size; ++i) {
       step[i] = -dt * now.gradient[i] / d[i];
     }

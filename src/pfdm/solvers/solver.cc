@@ -80,9 +80,12 @@ class StepObserver : public ceres::IterationCallback {
   ceres::CallbackReturnType operator()(
       const ceres::IterationSummary& summary) override {
     try {
-      options_.on_step({summary.iteration, 0.0,
-                        summary.cumulative_time_in_seconds, summary.cost,
-                        summary.gradient_norm});
+      CheckInterrupt(options_);
+      if (options_.on_step) {
+        options_.on_step({summary.iteration, 0.0,
+                          summary.cumulative_time_in_seconds, summary.cost,
+                          summary.gradient_norm});
+      }
     } catch (...) {
       error_ = std::current_exception();
       return ceres::SOLVER_ABORT;
@@ -104,9 +107,9 @@ SolverReport SolveDirect(ceres::Problem* problem,
                          const SolverOptions& options) {
   ceres::Solver::Options solver_options;
   StepObserver observer(options);
-  if (options.on_step) {
+  if (options.on_step || options.interrupt) {
     solver_options.callbacks.push_back(&observer);
-    solver_options.update_state_every_iteration = true;
+    solver_options.update_state_every_iteration = bool(options.on_step);
   }
   solver_options.linear_solver_type = options.linear_solver;
   solver_options.sparse_linear_algebra_library_type = options.sparse_library;

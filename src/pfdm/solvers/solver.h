@@ -88,7 +88,19 @@ struct SolverOptions {
   // KeyboardInterrupt so): the exception reaches the solver's caller, and
   // the parameter blocks hold some iterate.
   std::function<void(const SolverTracePoint&)> on_step;
+  // Called at every iteration of every solver, a refused step's too, and by
+  // the fit between its rounds and stages; it may throw to stop the fit
+  // (the Python module raises KeyboardInterrupt so, within a step of
+  // Ctrl-C).  Unlike on_step, which records the path and which the solves
+  // off it (the coarse start, the local field, the verdict's step) clear,
+  // nothing clears it.
+  std::function<void()> interrupt;
 };
+
+// options.interrupt(), where there is one.
+inline void CheckInterrupt(const SolverOptions& options) {
+  if (options.interrupt) options.interrupt();
+}
 
 struct SolverReport {
   int iterations = 0;

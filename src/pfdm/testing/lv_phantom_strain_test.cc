@@ -153,16 +153,22 @@ Fitted FitPhantom(bool lesion, LvKinematics kinematics = LvKinematics::kSystole,
     // Frame 0 (end-diastole) does not show the lesion, so its fit fixes
     // where the fit's sectors start; the lesion goes where they put
     // segment 8 (mid 2), as it sits in the phantom's own sectors.
+    // Two frames, so that frame 0's points are tags (ids seen again), fitted
+    // as in the whole sequence: a lone frame's points are contours, whose
+    // rounds run on (round_acceleration.h) to another turn about the axis.
     PointSequence first = MakeLvPhantom(options).points;
-    first.frames.resize(1);
+    first.frames.resize(2);
     const SequenceFit frame0 =
         FitSequence(first, ModelConfig::Paper(17), FitOptions());
     options.deformation.lesion_center_deg +=
         SectorOffset(MakeLvPhantom(options), frame0.ModelAt(0)) * 180 / kPi;
   }
   Fitted f{MakeLvPhantom(options), {}, {}};
+  RegionLayout sixteen;  // As PhantomTruthStrain's: the apical third whole.
+  sixteen.apex_cap_fraction = 0.0;
   f.analysis = AnalyzeFit(
-      FitSequence(f.phantom.points, ModelConfig::Paper(17), fit_options));
+      FitSequence(f.phantom.points, ModelConfig::Paper(17), fit_options), {},
+      sixteen);
   f.truth = PhantomTruthStrain(f.phantom,
                                SectorOffset(f.phantom, f.analysis.models[0]));
   return f;

@@ -149,8 +149,10 @@ TEST(LvThickWallTest, SegmentsThicken) {
   const ThickFit& f = Wall();
   const Model reference = f.fit.ModelAt(0);
   const size_t es = f.clinical.size() - 1;
+  RegionLayout sixteen;  // As the phantom's truth: the apical third whole.
+  sixteen.apex_cap_fraction = 0.0;
   const std::vector<RegionMotion> motion =
-      SummarizeRegions(reference, f.fit.ModelAt(es), RegionLayout());
+      SummarizeRegions(reference, f.fit.ModelAt(es), sixteen);
   const std::vector<LvSegmentTruth>& truth = f.phantom.truth[es].segments;
   for (size_t r = 0; r < motion.size(); ++r) {
     std::printf("segment %2zu thickening %.1f (truth %.1f)\n", r + 1,

@@ -33,6 +33,9 @@ struct PointSequence {
   // Guide points: the contour types kept; empty when all were, or for
   // other inputs.
   std::vector<std::string> contour_types;
+  // Per frame, its time from the trigger (ms) when the input gives one (a
+  // time_ms column); empty otherwise.
+  std::vector<double> time_ms;
 };
 
 }  // namespace pfdm

@@ -7,6 +7,20 @@
 namespace pfdm {
 namespace {
 
+// QuantileDepths of the points, among those within the wall widened by
+// outlier_band_mm when that is positive.
+std::vector<double> RankedDepths(const Model& model,
+                                 const std::vector<Eigen::Vector3d>& points,
+                                 const std::vector<MaterialPoint>& material,
+                                 const std::vector<double>& u,
+                                 double outlier_band_mm) {
+  const std::vector<double> distances =
+      MidwallDistances(model, points, material);
+  if (!(outlier_band_mm > 0.0)) return QuantileDepths(u, distances);
+  return QuantileDepths(
+      u, distances, WithinWall(model, material, distances, outlier_band_mm));
+}
+
 // In a solid, each listed point's surface: its contour's wall (layer_w), or
 // for a tag whose depth is assigned, its QuantileDepths rank among the
 // listed tags; 0, the mid-wall, for the rest.
@@ -15,7 +29,8 @@ std::vector<double> SurfacesOf(const Model& model,
                                const std::vector<size_t>& which,
                                const std::vector<double>& layer_w,
                                const std::vector<bool>& assign_depth,
-                               const std::vector<MaterialPoint>& closest) {
+                               const std::vector<MaterialPoint>& closest,
+                               double outlier_band_mm) {
   std::vector<double> surfaces(which.size(), 0.0);
   std::vector<size_t> tags;
   std::vector<Eigen::Vector3d> tag_points;
@@ -30,7 +45,7 @@ std::vector<double> SurfacesOf(const Model& model,
     tag_u.push_back(closest[j].u);
   }
   const std::vector<double> depths =
-      QuantileDepths(tag_u, MidwallDistances(model, tag_points, tag_material));
+      RankedDepths(model, tag_points, tag_material, tag_u, outlier_band_mm);
   for (size_t t = 0; t < tags.size(); ++t) surfaces[tags[t]] = depths[t];
   return surfaces;
 }
@@ -94,7 +109,8 @@ void UpdateClosest(const Model& model,
                    const std::vector<bool>& assign_depth, bool warm,
                    std::vector<MaterialPoint>* material,
                    std::vector<Eigen::Vector3d>* normals,
-                   std::vector<Eigen::Vector3d>* found) {
+                   std::vector<Eigen::Vector3d>* found,
+                   double outlier_band_mm) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
   CorrespondenceOptions correspondence;
@@ -106,8 +122,8 @@ void UpdateClosest(const Model& model,
   std::vector<MaterialPoint> closest = ClosestMaterialPoints(
       model, subset, correspondence, found, &found_normals);
   if (model.config.Solid()) {
-    const std::vector<double> surfaces =
-        SurfacesOf(model, subset, which, layer_w, assign_depth, closest);
+    const std::vector<double> surfaces = SurfacesOf(
+        model, subset, which, layer_w, assign_depth, closest, outlier_band_mm);
     RefineOnSurfaces(model, subset, which, surfaces, correspondence, warm,
                      *material, &closest, found, &found_normals);
   }
@@ -122,7 +138,8 @@ void UpdateClosest(const Model& model,
 double RerankDepths(const Model& model,
                     const std::vector<Eigen::Vector3d>& points,
                     const std::vector<size_t>& which,
-                    std::vector<MaterialPoint>* material) {
+                    std::vector<MaterialPoint>* material,
+                    double outlier_band_mm) {
   std::vector<Eigen::Vector3d> subset;
   std::vector<MaterialPoint> subset_material;
   std::vector<double> u;
@@ -132,7 +149,7 @@ double RerankDepths(const Model& model,
     u.push_back((*material)[i].u);
   }
   const std::vector<double> depths =
-      QuantileDepths(u, MidwallDistances(model, subset, subset_material));
+      RankedDepths(model, subset, subset_material, u, outlier_band_mm);
   double moved = 0.0;
   for (size_t j = 0; j < which.size(); ++j) {
     MaterialPoint& m = (*material)[which[j]];

@@ -26,8 +26,9 @@ double MaxDistance(const std::vector<Eigen::Vector3d>& a,
 // not: PullsAlongNormal) and found[j] with their model points, in the
 // listed order.  In a solid, a point is sought on its surface: layer_w[i]
 // for a contour of one wall, or, when depths are assigned (frame 0's tags),
-// QuantileDepths' w.  `warm` starts each search from the point's current
-// material point.
+// QuantileDepths' w, among the tags within the wall widened by
+// outlier_band_mm when that is positive (a robust loss: WithinWall).
+// `warm` starts each search from the point's current material point.
 void UpdateClosest(const Model& model,
                    const std::vector<Eigen::Vector3d>& points,
                    const std::vector<size_t>& which, int num_threads,
@@ -35,7 +36,8 @@ void UpdateClosest(const Model& model,
                    const std::vector<bool>& assign_depth, bool warm,
                    std::vector<MaterialPoint>* material,
                    std::vector<Eigen::Vector3d>* normals,
-                   std::vector<Eigen::Vector3d>* found);
+                   std::vector<Eigen::Vector3d>* found,
+                   double outlier_band_mm = 0.0);
 
 // Sets the listed points' w to their QuantileDepths on `model` and returns
 // how far (mm) the farthest one's model point moved.  Why each frame ranks
@@ -45,11 +47,12 @@ void UpdateClosest(const Model& model,
 // 0's own h comes out inflated by as much; ranked in every frame, h is
 // biased alike in all of them and the thickening (a ratio) is not.  A tag's
 // place in the order across the wall is material; its rank changes only by
-// noise.
+// noise.  outlier_band_mm as for UpdateClosest.
 double RerankDepths(const Model& model,
                     const std::vector<Eigen::Vector3d>& points,
                     const std::vector<size_t>& which,
-                    std::vector<MaterialPoint>* material);
+                    std::vector<MaterialPoint>* material,
+                    double outlier_band_mm = 0.0);
 
 }  // namespace pfdm
 

@@ -1,5 +1,6 @@
 #include "pfdm/fit/correspondence/frame_correspondence.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gtest/gtest.h"
@@ -108,6 +109,46 @@ TEST(FrameCorrespondenceTest, RanksTagsAcrossTheWall) {
     EXPECT_NEAR(material[i].w, depth[i], 1.0 / per_band) << i;
   }
   EXPECT_EQ(RerankDepths(model, points, which, &material), 0.0);
+}
+
+// Two tags of each band of 24 lie 4 mm outside either surface (outliers):
+// ranked with the others, they push the outermost tags' w 2/24 inward; left
+// out (a band of 1 mm), they take -1 and +1 and the others keep the ranks
+// they have alone.
+TEST(FrameCorrespondenceTest, RanksLeaveOutTagsOutsideTheWall) {
+  const Model model = SolidSpheroid();
+  const int bands = 10, inliers = kMinBand - 2;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<MaterialPoint> material;
+  std::vector<double> depth;
+  for (int j = 0; j < kMinBand; ++j) {
+    for (int b = 0; b < bands; ++b) {
+      const double w = j < inliers ? -1.0 + (2.0 * j + 1.0) / inliers
+                                   : (j == inliers ? -1.8 : 1.8);
+      const double u = -1.0 + 0.2 * b + 0.005 * j, v = 0.26 * j;
+      points.push_back(model.WorldPoint(u, v, w));
+      material.push_back({u, v, 0.0});
+      depth.push_back(w);
+    }
+  }
+  std::vector<size_t> which(points.size());
+  for (size_t i = 0; i < which.size(); ++i) which[i] = i;
+  std::vector<MaterialPoint> ranked = material;
+  RerankDepths(model, points, which, &ranked);
+  double outermost = 0.0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (std::abs(depth[i]) < 1.0) {
+      outermost = std::max(outermost, std::abs(ranked[i].w));
+    }
+  }
+  EXPECT_NEAR(outermost, 1.0 - 3.0 / kMinBand, 1e-9);
+  RerankDepths(model, points, which, &material, 1.0);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const double expected = std::abs(depth[i]) < 1.0 ? depth[i]
+                            : depth[i] < 0.0         ? -1.0
+                                                     : 1.0;
+    EXPECT_NEAR(material[i].w, expected, 1e-9) << i;
+  }
 }
 
 }  // namespace

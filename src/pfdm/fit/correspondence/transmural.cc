@@ -194,8 +194,22 @@ RobustWallSpread RobustWallSpreadMm(
 
 std::vector<double> QuantileDepths(const std::vector<double>& u,
                                    const std::vector<double>& distances) {
+  return QuantileDepths(u, distances, std::vector<bool>(u.size(), true));
+}
+
+std::vector<double> QuantileDepths(const std::vector<double>& u,
+                                   const std::vector<double>& distances,
+                                   const std::vector<bool>& ranked) {
   std::vector<double> depths(u.size(), 0.0);
-  for (std::vector<size_t>& members : LatitudeBands(u)) {
+  for (const std::vector<size_t>& band : LatitudeBands(u)) {
+    std::vector<size_t> members;
+    for (size_t i : band) {
+      if (ranked[i]) {
+        members.push_back(i);
+      } else {
+        depths[i] = distances[i] < 0.0 ? -1.0 : 1.0;
+      }
+    }
     std::stable_sort(members.begin(), members.end(), [&](size_t a, size_t b) {
       return distances[a] < distances[b];
     });
@@ -225,18 +239,44 @@ std::vector<bool> InsideTheWall(const std::vector<double>& u,
   return inside;
 }
 
+std::vector<bool> WithinWall(const Model& model,
+                             const std::vector<MaterialPoint>& material,
+                             const std::vector<double>& distances,
+                             double band_mm) {
+  std::vector<MaterialPoint> endo = material, epi = material;
+  for (MaterialPoint& m : endo) m.w = -1.0;
+  for (MaterialPoint& m : epi) m.w = 1.0;
+  const std::vector<double> inner =
+      MidwallDistances(model, WorldPoints(model, endo), material);
+  const std::vector<double> outer =
+      MidwallDistances(model, WorldPoints(model, epi), material);
+  std::vector<bool> within(distances.size());
+  for (size_t i = 0; i < distances.size(); ++i) {
+    within[i] = distances[i] >= inner[i] - band_mm &&
+                distances[i] <= outer[i] + band_mm;
+  }
+  return within;
+}
+
 double TangentialNoiseMm(const Model& model,
                          const std::vector<Eigen::Vector3d>& residuals,
                          const std::vector<MaterialPoint>& material,
-                         const std::vector<size_t>& which) {
+                         const std::vector<size_t>& which, bool robust) {
   if (which.empty()) return 0.0;
   double sum = 0.0;
+  std::vector<double> squares;
   for (size_t i : which) {
     const MaterialPoint& m = material[i];
     const Eigen::Vector3d n = SurfaceNormal(model, m.u, m.v, m.w);
-    sum += (residuals[i] - residuals[i].dot(n) * n).squaredNorm();
+    const double square =
+        (residuals[i] - residuals[i].dot(n) * n).squaredNorm();
+    sum += square;
+    if (robust) squares.push_back(square);
   }
-  return std::sqrt(sum / (4.0 * which.size()));
+  if (!robust) return std::sqrt(sum / (4.0 * which.size()));
+  const auto middle = squares.begin() + squares.size() / 2;
+  std::nth_element(squares.begin(), middle, squares.end());
+  return std::sqrt(*middle / (4.0 * std::log(2.0)));
 }
 
 double DeconvolvedThickness(double h_obs, double sigma) {

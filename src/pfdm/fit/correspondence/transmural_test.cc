@@ -229,6 +229,66 @@ TEST(TransmuralOutlierTest, InsideTheWallLeavesOutTagsFarBeyondIt) {
   EXPECT_NEAR(inliers, 10.83, 0.01);
 }
 
+// Left out of the ranks, tags take -1 or +1 by their side, and the others
+// rank among themselves: 0.5 mm of ranked distances over (-1, 1) again.
+TEST(TransmuralDepthTest, TagsLeftOutOfTheRanksTakeTheirSide) {
+  const std::vector<double> u = {0.0, 0.1, 0.2, 0.3, 0.4, 0.5};
+  const std::vector<double> distances = {3.0, -1.0, 2.0, 0.0, -9.0, 12.0};
+  const std::vector<double> w =
+      QuantileDepths(u, distances, {true, true, true, true, false, false});
+  EXPECT_EQ(w, (std::vector<double>{0.75, -0.75, 0.25, -0.25, -1.0, 1.0}));
+  // All ranked: the two-argument form.
+  EXPECT_EQ(QuantileDepths(u, distances, std::vector<bool>(6, true)),
+            QuantileDepths(u, distances));
+}
+
+// A solid spheroid of a 10 mm wall: within it, or within the band outside
+// either surface.
+TEST(TransmuralDepthTest, WithinWallWidensTheWallByTheBand) {
+  Model model = TestSpheroid(9);
+  model.config.MakeSolid();
+  model.state.globals[kH] = 10.0;
+  for (FunctionValues& knot : model.state.knots) knot[kH] = 10.0;
+  const std::vector<MaterialPoint> material(6, MaterialPoint{0.2, 1.0, 0.0});
+  // The wall's surfaces along the normal, at this (u, v).
+  const std::vector<double> distances = {0.0, 4.9, -4.9, 5.9, -6.1, 8.0};
+  EXPECT_EQ(WithinWall(model, material, distances, 1.0),
+            (std::vector<bool>{true, true, true, true, false, false}));
+  EXPECT_EQ(WithinWall(model, material, distances, 0.0),
+            (std::vector<bool>{true, true, true, false, false, false}));
+}
+
+// Tangential residuals of sigma = 0.5 mm per direction and frame (2 sigma^2
+// in each tangential direction): the mean and the median read 0.5; 5 % of
+// them moved 5-10 mm in a random direction take the mean to 0.86 mm and
+// the median to 0.52.
+TEST(TransmuralDepthTest, RobustTangentialNoiseIgnoresOutliers) {
+  const Model model = TestSpheroid(9);
+  std::mt19937 random(11);
+  std::normal_distribution<double> noise(0.0, 0.5 * std::sqrt(2.0));
+  std::normal_distribution<double> unit(0.0, 1.0);
+  std::uniform_real_distribution<double> u(-1.2, 0.4), v(-3.1, 3.1),
+      far(5.0, 10.0);
+  std::vector<MaterialPoint> material;
+  std::vector<Eigen::Vector3d> residuals;
+  std::vector<size_t> which;
+  for (int i = 0; i < 20000; ++i) {
+    material.push_back({u(random), v(random), 0.0});
+    residuals.emplace_back(noise(random), noise(random), noise(random));
+    which.push_back(i);
+  }
+  EXPECT_NEAR(TangentialNoiseMm(model, residuals, material, which), 0.5, 0.01);
+  EXPECT_NEAR(TangentialNoiseMm(model, residuals, material, which, true), 0.5,
+              0.015);
+  for (size_t i = 0; i < residuals.size(); i += 20) {
+    const Eigen::Vector3d direction(unit(random), unit(random), unit(random));
+    residuals[i] += far(random) * direction.normalized();
+  }
+  EXPECT_NEAR(TangentialNoiseMm(model, residuals, material, which), 0.86, 0.05);
+  EXPECT_NEAR(TangentialNoiseMm(model, residuals, material, which, true), 0.52,
+              0.02);
+}
+
 TEST(TransmuralDepthTest, WallModelNames) {
   EXPECT_EQ(WallModelFromName("solid"), WallModel::kSolid);
   EXPECT_STREQ(WallModelName(WallModelFromName("midwall")), "midwall");

@@ -25,6 +25,11 @@ class FrameBlocks {
   const FreeEntries* entries(int block) const {
     return blocks_[block + 1].entries.get();
   }
+  // The Ceres parameter block of a block (its free entries, or the whole
+  // constant block).
+  const double* parameters(int block) const {
+    return blocks_[block + 1].parameters;
+  }
 
   // Adds `cost` over the pose (when with_pose) and then the listed blocks,
   // each as the problem holds it.  A cost over whole blocks is wrapped in

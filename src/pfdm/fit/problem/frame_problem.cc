@@ -5,7 +5,6 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <string>
 #include <utility>
 
 #include "ceres/ceres.h"
@@ -19,8 +18,8 @@
 #include "pfdm/fit/residuals/point_residual.h"
 #include "pfdm/fit/residuals/precomputed_groups.h"
 #include "pfdm/fit/residuals/regularizer.h"
+#include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/fit/residuals/spin_gauge_residual.h"
-#include "pfdm/util/error.h"
 
 namespace pfdm {
 namespace {
@@ -74,17 +73,6 @@ void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
   }
 }
 
-ceres::LossFunction* MakeLoss(const FitOptions& options) {
-  if (options.loss == "none") return nullptr;
-  if (options.loss == "huber")
-    return new ceres::HuberLoss(options.loss_scale_mm);
-  if (options.loss == "cauchy") {
-    return new ceres::CauchyLoss(options.loss_scale_mm);
-  }
-  throw InputError("unknown --loss '" + options.loss +
-                   "' (expected none, huber or cauchy)");
-}
-
 // One frame's ceres::Problem as it is built up, term by term, and solved.
 // The terms go in a fixed order (data, smoothness, rim, gauges, prior):
 // Ceres sums in the order residual blocks were added, so the order is part
@@ -120,6 +108,10 @@ class FrameProblem {
   // Each term's cost at the parameters' current values, the data's as the
   // rest of the solve's final cost.
   TermCosts Costs(const SolverReport& report) const;
+  // The free parameters' covariance at their current values.
+  FrameCovariance Covariance(const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<MaterialPoint>& material,
+                             const std::vector<Eigen::Vector3d>& normals);
 
  private:
   static std::unique_ptr<PrecomputedGroups> MakePrecomputed(
@@ -145,7 +137,8 @@ class FrameProblem {
   std::unique_ptr<PrecomputedGroups> precomputed_;
   ceres::Problem problem_;
   FrameBlocks blocks_;
-  ceres::LossFunction* loss_ = MakeLoss(options_);  // Owned by problem_.
+  // Owned by problem_.
+  ceres::LossFunction* loss_ = MakeLoss(options_.loss, options_.loss_scale_mm);
   // The axis gauge's partial sums, parameter blocks of the problem.
   std::optional<AxisGaugeChain> axis_gauge_;
   // The residual blocks of each term but the data (null: a constant left
@@ -355,6 +348,43 @@ TermCosts FrameProblem::Costs(const SolverReport& report) const {
   return costs;
 }
 
+FrameCovariance FrameProblem::Covariance(
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material,
+    const std::vector<Eigen::Vector3d>& normals) {
+  using Kind = CovarianceEntry::Kind;
+  std::vector<CovarianceBlock> blocks;
+  ModelState& state = model_->state;
+  const std::array<std::pair<double*, Kind>, 2> pose = {
+      {{state.center.data(), Kind::kCenter},
+       {state.quaternion.data(), Kind::kRotation}}};
+  for (const auto& [parameters, kind] : pose) {
+    if (problem_.IsParameterBlockConstant(parameters)) continue;
+    CovarianceBlock block{parameters, {}};
+    for (int axis = 0; axis < 3; ++axis) {
+      block.entries.push_back({kind, -1, axis});
+    }
+    blocks.push_back(std::move(block));
+  }
+  for (int b = kGlobalsBlock; b < model_->config.num_knots; ++b) {
+    const FreeEntries* entries = blocks_.entries(b);
+    if (entries == nullptr) continue;
+    CovarianceBlock block{blocks_.parameters(b), {}};
+    const Kind kind = b == kGlobalsBlock ? Kind::kGlobal : Kind::kKnot;
+    for (int f : entries->free()) block.entries.push_back({kind, b, f});
+    blocks.push_back(std::move(block));
+  }
+  int num_parameters = 0;
+  for (const CovarianceBlock& block : blocks) {
+    num_parameters += static_cast<int>(block.entries.size());
+  }
+  double sigma_mm = 0.0, degrees_of_freedom = 0.0;
+  DataSigma(*model_, points, material, normals, options_.loss,
+            options_.loss_scale_mm, num_parameters, &sigma_mm,
+            &degrees_of_freedom);
+  return BlockCovariance(&problem_, blocks, sigma_mm, degrees_of_freedom);
+}
+
 double FrameProblem::CostOf(
     const std::vector<ceres::ResidualBlockId>& ids) const {
   double cost = 0.0;
@@ -372,6 +402,22 @@ double FrameProblem::CostOf(
   return cost;
 }
 
+// The frame's terms, as SolveFrame adds them.
+void BuildFrameProblem(const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<MaterialPoint>& material,
+                       const std::vector<Eigen::Vector3d>& normals,
+                       std::optional<double> rim_height,
+                       const ModelState& prior,
+                       const std::array<double, 4>& reference_quaternion,
+                       FrameProblem* problem) {
+  CHECK_EQ(normals.size(), points.size());
+  problem->AddData(points, material, normals);
+  problem->AddSmoothness(points.size());
+  if (rim_height) problem->AddRim(points.size(), *rim_height);
+  problem->AddGauges(points.size(), reference_quaternion);
+  problem->AddPrior(points.size(), prior);
+}
+
 }  // namespace
 
 SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
@@ -382,16 +428,28 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::array<double, 4>& reference_quaternion,
                         const FitOptions& options, Model* model,
                         TermCosts* costs) {
-  CHECK_EQ(normals.size(), points.size());
   FrameProblem problem(kind, options, model);
-  problem.AddData(points, material, normals);
-  problem.AddSmoothness(points.size());
-  if (rim_height) problem.AddRim(points.size(), *rim_height);
-  problem.AddGauges(points.size(), reference_quaternion);
-  problem.AddPrior(points.size(), prior);
+  BuildFrameProblem(points, material, normals, rim_height, prior,
+                    reference_quaternion, &problem);
   SolverReport report = problem.Solve();
   if (costs != nullptr) *costs = problem.Costs(report);
   return report;
+}
+
+FrameCovariance EstimateFrameCovariance(
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material,
+    const std::vector<Eigen::Vector3d>& normals,
+    std::optional<double> rim_height, FrameKind kind, const ModelState& prior,
+    const std::array<double, 4>& reference_quaternion,
+    const FitOptions& options, const Model& model) {
+  // The problem holds pointers into the model's state; Ceres only
+  // evaluates it here, but the copy keeps the caller's model out of reach.
+  Model at = model;
+  FrameProblem problem(kind, options, &at);
+  BuildFrameProblem(points, material, normals, rim_height, prior,
+                    reference_quaternion, &problem);
+  return problem.Covariance(points, material, normals);
 }
 
 }  // namespace pfdm

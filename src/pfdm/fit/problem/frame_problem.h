@@ -11,6 +11,7 @@
 #include "Eigen/Core"
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/problem/frame_covariance.h"
 #include "pfdm/fit/problem/gauge.h"
 #include "pfdm/model/model.h"
 #include "pfdm/solvers/solver.h"
@@ -46,6 +47,17 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const std::array<double, 4>& reference_quaternion,
                         const FitOptions& options, Model* model,
                         TermCosts* costs = nullptr);
+
+// The covariance of the frame's free parameters at `model` (a solution of
+// SolveFrame with the same arguments), from the same problem, not solved
+// again (frame_covariance.h says what it is and is not).
+FrameCovariance EstimateFrameCovariance(
+    const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material,
+    const std::vector<Eigen::Vector3d>& normals,
+    std::optional<double> rim_height, FrameKind kind, const ModelState& prior,
+    const std::array<double, 4>& reference_quaternion,
+    const FitOptions& options, const Model& model);
 
 }  // namespace pfdm
 

@@ -46,8 +46,10 @@ std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
 double SpinGaugeLength(const Model& model);
 
 // Height along the model axis of the highest data point that is not an
-// outlier: with a robust loss, points farther than three loss scales from
-// the surface do not count.  NaN when none counts.
+// outlier: with a robust loss, points farther than OutlierBandMm
+// (fit/residuals/robust_loss.h) from the surface (a solid's wall) do not
+// count, nor any with fewer than two others within that band below it
+// (gauge.cc, kRimSupport).  NaN when none counts.
 double TopHeight(const std::vector<Eigen::Vector3d>& points,
                  const FitOptions& options, const Model& model);
 

@@ -57,6 +57,44 @@ TEST(GaugeTest, SpanAxialExtentReachesTheTopPointKeepingApexAndRadii) {
               radius_before, 1e-9);
 }
 
+// The rim already raised to 25 mm by two outliers on the surface's
+// continuation (at 22.5 and 24.5 mm), over data that end at 20 mm: without
+// a loss the highest point is the top; with one, a top needs two points
+// within three sigmas below it (cauchy at 0.5 mm: sigma 0.21 mm), which
+// only the data's end has.
+TEST(GaugeTest, WithALossTheTopNeedsPointsBelowIt) {
+  Model model = TestSpheroid(9);
+  const double apex = model.WorldPoint(model.config.u_min, 0.0).z();
+  SpanAxialExtent({{0.0, 0.0, apex}, {0.0, 0.0, 25.0}}, FitOptions(), &model);
+  // u of the model's point at height z, by bisection (z rises with u).
+  auto u_at = [&](double z) {
+    double low = model.config.u_min, high = model.config.u_max;
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (low + high);
+      (model.WorldPoint(mid, 0.0).z() < z ? low : high) = mid;
+    }
+    return low;
+  };
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < 100; ++i) {
+    const double u = u_at(10.0 + 0.1 * i);
+    points.push_back(model.WorldPoint(u, 0.37 * i));
+  }
+  points.push_back(model.WorldPoint(u_at(20.0), 1.0));
+  for (double z : {22.5, 24.5})
+    points.push_back(model.WorldPoint(u_at(z), 2.0));
+  const double center = model.state.center[2];  // Heights are from it.
+  FitOptions options;
+  EXPECT_NEAR(TopHeight(points, options, model), 24.5 - center, 1e-6);
+  options.loss = "cauchy";
+  options.loss_scale_mm = 0.5;
+  EXPECT_NEAR(TopHeight(points, options, model), 20.0 - center, 1e-6);
+  // Points 0.1 mm apart have no two within 0.063 mm: without support
+  // anywhere, the highest point.
+  options.loss_scale_mm = 0.05;
+  EXPECT_NEAR(TopHeight(points, options, model), 24.5 - center, 1e-6);
+}
+
 TEST(GaugeTest, TopHeightIsNanWithoutPoints) {
   const Model model = TestSpheroid(9);
   EXPECT_TRUE(std::isnan(TopHeight({}, FitOptions(), model)));

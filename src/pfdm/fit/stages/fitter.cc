@@ -5,6 +5,7 @@
 #include "pfdm/fit/stages/apex_coverage.h"
 #include "pfdm/fit/stages/frame_fit.h"
 #include "pfdm/fit/stages/frame_verdict.h"
+#include "pfdm/fit/stages/loss_scale.h"
 #include "pfdm/fit/stages/start.h"
 #include "pfdm/fit/stages/wall_stage.h"
 
@@ -13,6 +14,7 @@ namespace pfdm {
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config, const FitOptions& options) {
   SequenceStart start = StartSequence(sequence, config, options);
+  CheckInterrupt(options.solver);
   CarriedState carried(start.model);
   SequenceFit result;
   for (const Frame& frame : sequence.frames) {
@@ -24,11 +26,16 @@ SequenceFit FitSequence(const PointSequence& sequence,
   result.config = carried.model.config;
   result.wall_reason = start.wall.reason;
   result.axis_source = start.axis_source;
+  result.ed_frame = options.ed_frame;
+  result.time_ms = sequence.time_ms;
   result.surface =
       result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;
   if (result.config.Solid() && start.has_tags) {
-    TakeOutTagNoise(sequence, start.frames_per_id, &result);
+    TakeOutTagNoise(sequence, start.frames_per_id, &result,
+                    /*robust=*/options.loss != "none");
   }
+  CheckInterrupt(options.solver);
+  WeighPoints(options.loss, &result);
   MeasureApexCoverage(Positions(sequence.frames[0]), &result);
   JudgeFrames(sequence, options, &result);
   return result;

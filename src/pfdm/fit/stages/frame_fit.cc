@@ -3,8 +3,10 @@
 #include <algorithm>
 
 #include "pfdm/fit/stages/frame_summary.h"
+#include "pfdm/fit/stages/frame_uncertainty.h"
 #include "pfdm/fit/stages/global_rounds.h"
 #include "pfdm/fit/stages/local_stage.h"
+#include "pfdm/fit/stages/loss_scale.h"
 #include "pfdm/fit/stages/trajectory_recorder.h"
 #include "pfdm/util/stopwatch.h"
 
@@ -12,21 +14,42 @@ namespace pfdm {
 namespace {
 
 // The frame's global rounds, and on frame 0 with the wall undecided, the
-// wall: a solid runs the rounds again.
+// wall: a solid runs the rounds again.  With --loss_scale auto, the rounds
+// run without the loss until they settle (and the wall is decided), then
+// measure the frame's scale and go on with the loss.
 void FitGlobal(const FramePoints& points, const ModelState& prior,
                const FitOptions& options, const std::string& source,
                WallDecision* wall, CarriedState* carried, FrameFit* fit) {
   Model& model = carried->model;
-  GlobalRounds rounds(points, prior, carried->reference.quaternion, options,
-                      source, &model, fit);
+  const bool reference = points.kind == FrameKind::kReference;
+  const bool measure = MeasuresLossScale(options);
+  // The rounds read these at every solve.
+  FitOptions round_options = measure ? WithoutLoss(options) : options;
+  GlobalRounds rounds(points, prior, carried->reference.quaternion,
+                      round_options, source, &model, fit);
+  if (options.loss != "none" && !measure) {
+    fit->loss_scale_mm = options.loss_scale_mm;
+    if (reference) carried->reference_loss_scale_mm = fit->loss_scale_mm;
+    rounds.set_rank_band_mm(
+        RankBandMm(options.loss, carried->reference_loss_scale_mm));
+  }
   rounds.Start();
   TrajectoryRecorder recorder(options.trajectory_per_decade, &model,
                               &fit->trajectory);
   rounds.Run(&recorder);
-  if (points.kind == FrameKind::kReference && !wall->decided &&
+  if (reference && !wall->decided &&
       DecideWallFromTags(points, fit->material, rounds.report().converged,
                          options.wall, wall, &model)) {
     rounds.Search();
+    rounds.Run(&recorder);
+  }
+  if (measure) {
+    fit->loss_scale_mm =
+        MeasureLossScale(options.loss, model, points.positions, fit->material);
+    if (reference) carried->reference_loss_scale_mm = fit->loss_scale_mm;
+    round_options = WithLossScale(options, fit->loss_scale_mm);
+    rounds.set_rank_band_mm(
+        RankBandMm(options.loss, carried->reference_loss_scale_mm));
     rounds.Run(&recorder);
   }
   recorder.Finish();
@@ -90,11 +113,19 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   const ModelState& prior = points.kind == FrameKind::kUntracked
                                 ? carried->reference
                                 : carried->previous;
+  CheckInterrupt(options.solver);
   FitGlobal(points, prior, options, source, wall, carried, &fit);
   RememberTags(frame, points, fit, &carried->tracked_material);
   CanonicalizeBending(&model, &fit);
+  if (options.uncertainty) {
+    fit.covariance = MeasureFrameCovariance(
+        points, fit.material, prior, carried->reference.quaternion,
+        WithLossScale(options, fit.loss_scale_mm), model);
+  }
+  CheckInterrupt(options.solver);
   if (options.local.enabled) {
-    FitLocalStage(points, options, source, &model, &fit);
+    FitLocalStage(points, WithLossScale(options, fit.loss_scale_mm), source,
+                  &model, &fit);
   }
   Summarize(model, points.positions, &fit);
   CheckFinite(source, fit);

@@ -27,11 +27,15 @@ struct CarriedState {
   ModelState previous;
   ModelState reference;
   TrackedMaterial tracked_material;
+  // Frame 0's robust loss scale (0 without a loss), for the band of a
+  // solid's ranks in every frame (RankBandMm).
+  double reference_loss_scale_mm = 0.0;
 };
 
 // Fits `frame` (`reference`: frame 0) from carried->model and updates
 // *carried for the next frame; decides the wall on frame 0 when *wall is
-// undecided.  Throws InputError naming the frame when a solve fails or the
+// undecided, and with --loss_scale auto measures the frame's loss scale
+// (loss_scale.h).  Throws InputError naming the frame when a solve fails or the
 // fit diverges.
 FrameFit FitFrame(const Frame& frame, bool reference,
                   const FramesPerId& frames_per_id, const FitOptions& options,

@@ -35,6 +35,11 @@ constexpr double kRmsSizeWarn = 0.06, kRmsSizeFail = 0.2;
 // The step without the prior, RMS over the points, as a share of the
 // frame's RMS.
 constexpr double kPriorPullWarn = 0.25, kPriorPullFail = 1.0;
+// With a robust loss, the points it weighs at least kKeptWeight are the
+// ones the RMS reasons judge (a point 2 scales off under huber, 1 under
+// cauchy); more than kDownWeightedWarn of them weighed below it is a
+// warning: more outliers than a tracker makes.
+constexpr double kKeptWeight = 0.5, kDownWeightedWarn = 0.2;
 constexpr int kMinRingPoints = 3;
 constexpr double kFlatDataRatio = 0.02;
 

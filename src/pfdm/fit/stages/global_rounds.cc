@@ -1,5 +1,6 @@
 #include "pfdm/fit/stages/global_rounds.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -49,11 +50,13 @@ void GlobalRounds::Start() {
     SolveCoarse();
   }
   moved_ = UpdateClosest();
+  CheckInterrupt(options_.solver);
   // A solid's tracked tags keep (u, v) but take their depth from this
   // frame's ranks (RerankDepths).
   rerank_depths_ = model_->config.Solid() && !frame_.tracked.empty();
   if (rerank_depths_) {
-    RerankDepths(*model_, frame_.positions, frame_.tracked, &fit_->material);
+    RerankDepths(*model_, frame_.positions, frame_.tracked, &fit_->material,
+                 rank_band_mm_);
   }
 }
 
@@ -70,7 +73,7 @@ void GlobalRounds::SolveCoarse() {
   pfdm::UpdateClosest(*model_, frame_.positions, coarse,
                       options_.solver.num_threads, frame_.layer_w,
                       frame_.assign_depth, false, &fit_->material, &normals_,
-                      &found_);
+                      &found_, rank_band_mm_);
   fit_->correspondence_seconds += SecondsSince(closest_start);
   std::vector<Eigen::Vector3d> coarse_points, coarse_normals;
   std::vector<MaterialPoint> coarse_material;
@@ -93,14 +96,65 @@ void GlobalRounds::Search() { moved_ = UpdateClosest(); }
 
 void GlobalRounds::Run(TrajectoryRecorder* recorder) {
   fit_->unsettled_mm = 0.0;
-  for (int round = 0; round < options_.max_correspondence_rounds; ++round) {
+  acceleration_.reset();
+  best_.reset();
+  int max_rounds = options_.max_correspondence_rounds;
+  // Only contour points: a tag's material point, found here on its first
+  // frame, is kept for every later frame, so tagged fits stay as they were.
+  const bool contours_only =
+      std::none_of(frame_.untracked.begin(), frame_.untracked.end(),
+                   [this](size_t i) { return frame_.is_tag[i]; });
+  if (!rerank_depths_ && !frame_.untracked.empty() && contours_only) {
+    acceleration_.emplace();
+    probes_ = Listed(fit_->material, frame_.untracked);
+    max_rounds = options_.max_accelerated_rounds;
+  }
+  for (int round = 0; round < max_rounds; ++round) {
+    CheckInterrupt(options_.solver);  // After the search, before the solve.
+    const Model before = *model_;
     report_ = SolveRound(recorder);
     if (!report_.usable) {
       throw InputError(source_ + ": frame " + std::to_string(frame_.index) +
                        ": solver failed: " + report_.message);
     }
-    if (Settled(round)) break;
+    if (Settled(round, max_rounds)) break;
+    if (round + 1 < max_rounds) Accelerate(round, before);
   }
+}
+
+void GlobalRounds::Accelerate(int round, const Model& before) {
+  if (!acceleration_) return;
+  const Eigen::VectorXd solution = StateVector(model_->state);
+  const Eigen::VectorXd next = acceleration_->Next(
+      ProbePoints(*model_, probes_) - ProbePoints(before, probes_), solution);
+  // The first max_correspondence_rounds rounds are plain, as every frame's
+  // were: the mix only takes over rounds that would have run out.  Mixed
+  // from the start, the contours of a moving phantom (FitterTest) took 20
+  // rounds where plain ones settle in 9.
+  if (round + 1 < options_.max_correspondence_rounds || next == solution) {
+    return;
+  }
+  SetStateVector(next, &model_->state);
+  moved_ = UpdateClosest();
+}
+
+void GlobalRounds::KeepBest() {
+  if (best_ && best_->moved <= moved_) return;
+  best_ = Best{moved_,   model_->state, fit_->material, found_,
+               normals_, report_,       fit_->costs};
+}
+
+void GlobalRounds::BackToBest() {
+  if (!best_ || best_->moved >= moved_) return;
+  moved_ = best_->moved;
+  model_->state = std::move(best_->state);
+  fit_->material = std::move(best_->material);
+  found_ = std::move(best_->found);
+  normals_ = std::move(best_->normals);
+  normals_current_ = true;
+  report_ = std::move(best_->report);
+  fit_->costs = best_->costs;
+  best_.reset();
 }
 
 SolverReport GlobalRounds::SolveRound(TrajectoryRecorder* recorder) {
@@ -137,14 +191,14 @@ SolverReport GlobalRounds::SolveRound(TrajectoryRecorder* recorder) {
   return report;
 }
 
-bool GlobalRounds::Settled(int round) {
+bool GlobalRounds::Settled(int round, int max_rounds) {
   const double tolerance = options_.correspondence_tolerance_mm;
   if (rerank_depths_) {
     // Ranks settle in a round or two; later rounds only trade noise
     // between tags (kRerankRounds).
     return round + 1 >= kRerankRounds ||
            RerankDepths(*model_, frame_.positions, frame_.tracked,
-                        &fit_->material) < tolerance;
+                        &fit_->material, rank_band_mm_) < tolerance;
   }
   if (frame_.untracked.empty()) return true;
   if (frame_.kind == FrameKind::kReference) {
@@ -161,7 +215,9 @@ bool GlobalRounds::Settled(int round) {
   }
   moved_ = UpdateClosest(std::move(now));
   if (moved_ < tolerance) return true;
-  if (round + 1 == options_.max_correspondence_rounds) {
+  if (acceleration_) KeepBest();
+  if (round + 1 == max_rounds) {
+    BackToBest();
     fit_->unsettled_mm = moved_;
   }
   return false;
@@ -175,7 +231,7 @@ double GlobalRounds::UpdateClosest(std::vector<Eigen::Vector3d> now) {
   pfdm::UpdateClosest(*model_, frame_.positions, frame_.untracked,
                       options_.solver.num_threads, frame_.layer_w,
                       frame_.assign_depth, found_closest_, &fit_->material,
-                      &normals_, &found_);
+                      &normals_, &found_, rank_band_mm_);
   const double moved = found_closest_ || frame_.untracked.empty()
                            ? MaxDistance(now, found_)
                            : std::numeric_limits<double>::infinity();

@@ -5,12 +5,17 @@
 #define PFDM_FIT_STAGES_GLOBAL_ROUNDS_H_
 
 #include <array>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "Eigen/Core"
+#include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/fit/stages/frame_points.h"
+#include "pfdm/fit/stages/round_acceleration.h"
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/fit/stages/trajectory_recorder.h"
 #include "pfdm/model/model.h"
@@ -22,8 +27,9 @@ class GlobalRounds {
  public:
   // `prior` is the state the prior term pulls toward (the previous frame's,
   // or frame 0's for an untracked frame), reference_quaternion frame 0's
-  // pose; both outlive the rounds.  The rounds move *model and fill *fit's
-  // material points, counts and trace.
+  // pose; both outlive the rounds, and so do `options`, read at every
+  // solve (frame_fit.cc turns the loss on between runs).  The rounds move
+  // *model and fill *fit's material points, counts and trace.
   GlobalRounds(const FramePoints& frame, const ModelState& prior,
                const std::array<double, 4>& reference_quaternion,
                const FitOptions& options, const std::string& source,
@@ -33,11 +39,18 @@ class GlobalRounds {
   // subset of them; in a solid, the tracked tags' depths ranked.
   void Start();
   // Solves and searches until the closest points settle; a solid's tracked
-  // tags are re-ranked between solves instead.  Throws InputError naming
+  // tags are re-ranked between solves instead.  With contour points only
+  // (no tag among the untracked points) the rounds are accelerated and may run
+  // to FitOptions:: max_accelerated_rounds; if they run out, the frame ends on
+  // the round whose search moved the points least.  Throws InputError naming
   // the frame when a solve is unusable.
   void Run(TrajectoryRecorder* recorder);
   // A fresh search, after the model changed under the rounds (the wall).
   void Search();
+  // With a robust loss, the ranks of tags across a solid's wall leave out
+  // those farther than band_mm outside it (QuantileDepths); 0, the
+  // default, ranks them all.
+  void set_rank_band_mm(double band_mm) { rank_band_mm_ = band_mm; }
 
   // The last solve's report.
   const SolverReport& report() const { return report_; }
@@ -46,7 +59,15 @@ class GlobalRounds {
   void SolveCoarse();
   SolverReport SolveRound(TrajectoryRecorder* recorder);
   // Whether the rounds end after this solve.
-  bool Settled(int round);
+  bool Settled(int round, int max_rounds);
+  // After a round that did not settle: the round is recorded and, past
+  // FitOptions::max_correspondence_rounds, the next one starts from the
+  // mix of the last rounds' solutions, its closest points searched there.
+  void Accelerate(int round, const Model& before);
+  // Keeps this round as the best so far when its search moved the points
+  // least, or, after the last round, goes back to the best one.
+  void KeepBest();
+  void BackToBest();
   // Searches the untracked points' closest material points and returns how
   // far (mm) the farthest one's model point moved from `now`, its model
   // point before the search (computed when not given).
@@ -68,7 +89,24 @@ class GlobalRounds {
   bool found_closest_ = false;  // Then searches start from the last.
   double moved_ = 0.0;          // By the last search.
   bool rerank_depths_ = false;
+  double rank_band_mm_ = 0.0;
   SolverReport report_;
+  // Frames whose untracked points are all contour points: the rounds are
+  // accelerated (round_acceleration.h), the change of each measured at the
+  // untracked points' first material points.
+  std::optional<RoundAcceleration> acceleration_;
+  std::vector<MaterialPoint> probes_;
+  // The round whose search moved the points least: its model, material
+  // points, found points, report and costs.
+  struct Best {
+    double moved = std::numeric_limits<double>::infinity();
+    ModelState state;
+    std::vector<MaterialPoint> material;
+    std::vector<Eigen::Vector3d> found, normals;
+    SolverReport report;
+    TermCosts costs;
+  };
+  std::optional<Best> best_;
 };
 
 }  // namespace pfdm

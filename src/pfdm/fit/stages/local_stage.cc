@@ -1,10 +1,14 @@
 #include "pfdm/fit/stages/local_stage.h"
 
+#include <algorithm>
 #include <limits>
+#include <utility>
 #include <vector>
 
+#include "Eigen/Core"
 #include "pfdm/fit/correspondence/frame_correspondence.h"
 #include "pfdm/fit/problem/local_fit.h"
+#include "pfdm/fit/stages/round_acceleration.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/stopwatch.h"
 
@@ -35,6 +39,22 @@ double UpdateContours(const FramePoints& frame,
   return MaxDistance(before, found);
 }
 
+// The next round's field: the mix of the last rounds' fields
+// (round_acceleration.h).  The field's rounds swing as the global rounds
+// did; mixed, each lowers the field's cost further before it stalls (biv-me
+// patient 1's contours: pooled RMS 0.78 mm against 0.79).
+// Returns whether the field changed.
+bool MixField(Eigen::VectorXd change, RoundAcceleration* acceleration,
+              Model* model) {
+  std::vector<double>& values = model->state.local.values;
+  const Eigen::Map<const Eigen::VectorXd> solution(values.data(),
+                                                   values.size());
+  const Eigen::VectorXd next = acceleration->Next(std::move(change), solution);
+  if (next == solution) return false;
+  std::copy(next.data(), next.data() + next.size(), values.begin());
+  return true;
+}
+
 }  // namespace
 
 void FitLocalStage(const FramePoints& frame, const FitOptions& options,
@@ -47,8 +67,11 @@ void FitLocalStage(const FramePoints& frame, const FitOptions& options,
     sliding[i] = true;
   }
   const auto start = Clock::now();
+  const std::vector<MaterialPoint> probes = Listed(fit->material, contours);
+  RoundAcceleration acceleration;
   double last_cost = std::numeric_limits<double>::infinity();
   for (int round = 0; round < options.max_correspondence_rounds; ++round) {
+    const Eigen::VectorXd before = ProbePoints(*model, probes);
     const SolverReport local =
         FitLocalField(frame.positions, fit->material, sliding, options, model);
     fit->local_iterations += local.iterations;
@@ -61,7 +84,13 @@ void FitLocalStage(const FramePoints& frame, const FitOptions& options,
     last_cost = cost;
     if (contours.empty()) break;
     const double moved = UpdateContours(frame, contours, options, *model, fit);
-    if (stalled || moved < options.correspondence_tolerance_mm) break;
+    if (stalled || moved < options.correspondence_tolerance_mm ||
+        round + 1 == options.max_correspondence_rounds) {
+      break;
+    }
+    if (MixField(ProbePoints(*model, probes) - before, &acceleration, model)) {
+      UpdateContours(frame, contours, options, *model, fit);
+    }
   }
   fit->local_seconds = SecondsSince(start);
 }

@@ -8,6 +8,7 @@
 
 #include "Eigen/Core"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/problem/frame_covariance.h"
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/model/model.h"
 #include "pfdm/solvers/solver.h"
@@ -67,6 +68,19 @@ struct FrameFit {
   // Every solver iteration of every correspondence round, numbered on.
   std::vector<SolverTracePoint> trace;
   std::vector<TrajectoryPoint> trajectory;  // See trajectory_per_decade.
+  // The robust loss's scale the frame was fitted with (measured for
+  // --loss_scale auto: fit/stages/loss_scale.h; else
+  // FitOptions::loss_scale_mm); 0 without a loss.
+  double loss_scale_mm = 0.0;
+  // Per data point, the robust loss's weight at its final residual,
+  // rho'(|r|^2) in (0, 1] (fit/residuals/robust_loss.h): near 0 for a
+  // point the fit took for an outlier.  Empty without a loss (every point
+  // weighs 1).  Filled by FitSequence.
+  std::vector<double> loss_weights;
+  // The global parameters' covariance at the frame's global solution
+  // (before the local field), with FitOptions::uncertainty; computed false
+  // without.
+  FrameCovariance covariance;
 };
 
 struct SequenceFit {
@@ -98,6 +112,11 @@ struct SequenceFit {
   double apex_data_distance = 0.0;
   double lowest_data_height = 0.0;
   double lowest_data_u = 0.0;
+  // End-diastole (FitOptions::ed_frame), and each frame's time from the
+  // trigger (ms) when the input gave them (PointSequence::time_ms), else
+  // empty.
+  int ed_frame = 0;
+  std::vector<double> time_ms;
   std::vector<FrameFit> frames;
   Model ModelAt(int frame) const { return {config, frames[frame].state}; }
 };

@@ -6,6 +6,7 @@
 #include "Eigen/Dense"
 #include "pfdm/fit/stages/initialization.h"
 #include "pfdm/fit/stages/start_axis.h"
+#include "pfdm/fit/stages/tracked_ids.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -57,10 +58,18 @@ SequenceStart StartSequence(const PointSequence& sequence,
   if (sequence.frames.empty()) {
     throw InputError(sequence.source + ": no frames");
   }
+  if (options.ed_frame < 0 ||
+      options.ed_frame >= static_cast<int>(sequence.frames.size())) {
+    throw InputError(sequence.source + ": no frame " +
+                     std::to_string(options.ed_frame) + " for end-diastole");
+  }
   for (const Frame& frame : sequence.frames) {
     CheckEnoughPoints(sequence.source, frame, options.min_points);
     CheckSpansSpace(sequence.source, frame);
   }
+  CheckInterrupt(options.solver);
+  CheckIdsFollowPoints(sequence, options.solver.interrupt);
+  CheckInterrupt(options.solver);
   const Frame& first = sequence.frames[0];
   StartAxis axis = ChooseStartAxis(first, config, options, sequence.source);
   SequenceStart start{std::move(axis.model), CountFramesPerId(sequence), false,

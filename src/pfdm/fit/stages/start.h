@@ -24,7 +24,8 @@ struct SequenceStart {
 
 // Throws InputError naming the source and frame when there are no frames,
 // or a frame has fewer than options.min_points points or points that do
-// not span space.
+// not span space, or ids that do not follow the points of the frame before
+// (CheckIdsFollowPoints).
 SequenceStart StartSequence(const PointSequence& sequence,
                             const ModelConfig& config,
                             const FitOptions& options);

@@ -141,9 +141,11 @@ CandidateFit FitCandidate(const std::vector<DataPoint>& points,
   choice.solver.num_threads = options.solver.num_threads;
   choice.solver.linear_solver = options.solver.linear_solver;
   choice.solver.sparse_library = options.solver.sparse_library;
+  choice.solver.interrupt = options.solver.interrupt;
   choice.damping_groups = DampingGroups();
   choice.trajectory_per_decade = 0;
   choice.max_correspondence_rounds = max_rounds;
+  choice.max_accelerated_rounds = max_rounds;
   Model fitted = model;
   GlobalRounds rounds(frame_points, model.state, model.state.quaternion, choice,
                       source, &fitted, &fit);

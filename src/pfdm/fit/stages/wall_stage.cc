@@ -15,6 +15,7 @@ namespace {
 struct WallsSeen {
   bool endo = false;
   bool epi = false;
+  bool unlabelled = false;  // Tags, or points of no named wall.
 };
 
 WallsSeen WallsIn(const Frame& frame) {
@@ -22,8 +23,38 @@ WallsSeen WallsIn(const Frame& frame) {
   for (const DataPoint& p : frame.points) {
     seen.endo = seen.endo || p.layer == WallLayer::kEndocardium;
     seen.epi = seen.epi || p.layer == WallLayer::kEpicardium;
+    seen.unlabelled = seen.unlabelled || p.layer == WallLayer::kAnywhere;
   }
   return seen;
+}
+
+// --surface: the user's word for the wall the points lie on, one surface
+// there.  Points labelled with the other wall contradict it.
+WallDecision DeclaredSurface(const WallsSeen& walls, const FitOptions& options,
+                             const std::string& source) {
+  const SurfaceChoice surface = options.surface;
+  const std::string flag =
+      std::string("--surface ") +
+      (surface == SurfaceChoice::kEndocardium  ? "endo"
+       : surface == SurfaceChoice::kEpicardium ? "epi"
+                                               : "midwall");
+  if (options.wall == WallModel::kSolid) {
+    throw InputError(flag + " declares one surface; --wall solid fits two");
+  }
+  if ((surface == SurfaceChoice::kEndocardium && walls.epi) ||
+      (surface == SurfaceChoice::kEpicardium && walls.endo)) {
+    throw InputError(source + ": " + flag + ", but frame 0 has points of the " +
+                     (walls.epi ? "epicardium" : "endocardium") +
+                     " (keep one wall's contours, e.g. --contours lv-cavity)");
+  }
+  WallDecision decision;
+  decision.decided = true;
+  decision.reason = flag;
+  decision.surface =
+      surface == SurfaceChoice::kEndocardium  ? WallLayer::kEndocardium
+      : surface == SurfaceChoice::kEpicardium ? WallLayer::kEpicardium
+                                              : WallLayer::kAnywhere;
+  return decision;
 }
 
 std::string FormatMm(double mm) {
@@ -78,8 +109,12 @@ WallDecision DecideWallFromContours(const Frame& first, bool has_tags,
                                     const FitOptions& options,
                                     const std::string& source,
                                     ModelConfig* config) {
-  WallDecision decision;
   const WallsSeen walls = WallsIn(first);
+  if (options.surface != SurfaceChoice::kAuto) {
+    return DeclaredSurface(walls, options, source);
+  }
+  WallDecision decision;
+  const bool one_wall = walls.endo != walls.epi && !walls.unlabelled;
   if (options.wall == WallModel::kMidwall) {
     decision.reason = "--wall midwall";
   } else if (walls.endo && walls.epi) {
@@ -92,6 +127,11 @@ WallDecision DecideWallFromContours(const Frame& first, bool has_tags,
                        "or contours of both walls (lv-cavity,lv-epi)");
     }
     decision.reason = "no tracked tags and no contours of both walls";
+  } else if (one_wall && options.wall != WallModel::kSolid) {
+    // Tracked points all named as one wall's (a mesh's surface column):
+    // that wall, not tags through the wall.
+    decision.reason = std::string("tracked points of the ") +
+                      (walls.endo ? "endocardium" : "epicardium") + " only";
   }
   decision.decided = !decision.reason.empty();
   if (!config->Solid() && walls.endo != walls.epi) {
@@ -142,7 +182,8 @@ bool DecideWallFromTags(const FramePoints& frame,
 }
 
 void TakeOutTagNoise(const PointSequence& sequence,
-                     const FramesPerId& frames_per_id, SequenceFit* result) {
+                     const FramesPerId& frames_per_id, SequenceFit* result,
+                     bool robust) {
   double sum_squared = 0.0;
   int frames = 0;
   for (size_t t = 1; t < result->frames.size(); ++t) {
@@ -158,7 +199,7 @@ void TakeOutTagNoise(const PointSequence& sequence,
     if (tags.empty()) continue;
     const double sigma =
         TangentialNoiseMm(result->ModelAt(static_cast<int>(t)), frame.residuals,
-                          frame.material, tags);
+                          frame.material, tags, robust);
     sum_squared += sigma * sigma;
     ++frames;
   }

@@ -22,12 +22,14 @@ struct WallDecision {
   WallLayer surface = WallLayer::kAnywhere;  // SequenceFit::surface.
 };
 
-// Before any fit: contours of both walls make *config a solid; --wall
-// midwall, or data with neither tags nor both walls, a single surface (a
-// contour of one wall names it).  Undecided otherwise: tags through the
-// wall are told from tags on one surface after frame 0's mid-wall fit
-// (DecideWallFromTags).  Throws InputError when --wall solid meets data
-// with neither.
+// Before any fit: --surface declares one surface on its wall; contours of
+// both walls make *config a solid; --wall midwall, data with neither tags
+// nor both walls, or tracked points all named as one wall's (a mesh's
+// surface column), a single surface (points of one wall name it).
+// Undecided otherwise: tags through the wall are told from tags on one
+// surface after frame 0's mid-wall fit (DecideWallFromTags).  Throws
+// InputError when --wall solid meets data with neither or --surface, and
+// when --surface names one wall and frame 0 has points of the other.
 WallDecision DecideWallFromContours(const Frame& first, bool has_tags,
                                     const FitOptions& options,
                                     const std::string& source,
@@ -48,9 +50,11 @@ bool DecideWallFromTags(const FramePoints& frame,
 // A solid's tags were ranked across the wall in every frame, which widens
 // each frame's h by their noise, a thin wall's more (DeconvolvedThickness):
 // measures the noise on the tracked frames and takes it out of every
-// frame's h, then summarizes the frames again.
+// frame's h, then summarizes the frames again.  `robust` (a fit with a
+// robust loss): the noise measured robustly (TangentialNoiseMm).
 void TakeOutTagNoise(const PointSequence& sequence,
-                     const FramesPerId& frames_per_id, SequenceFit* result);
+                     const FramesPerId& frames_per_id, SequenceFit* result,
+                     bool robust = false);
 
 }  // namespace pfdm
 

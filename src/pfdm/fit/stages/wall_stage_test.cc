@@ -79,6 +79,64 @@ TEST(WallStageTest, ContoursDecideTheWallBeforeAnyFit) {
             "or contours of both walls (lv-cavity,lv-epi)");
 }
 
+WallDecision Declared(SurfaceChoice surface,
+                      const std::vector<WallLayer>& layers, bool has_tags,
+                      WallModel wall = WallModel::kAuto) {
+  FitOptions options;
+  options.surface = surface;
+  options.wall = wall;
+  ModelConfig config = ModelConfig::Paper(9);
+  WallDecision decision = DecideWallFromContours(
+      FrameOf(layers), has_tags, options, "points.csv", &config);
+  EXPECT_FALSE(config.Solid());
+  return decision;
+}
+
+// --surface declares the wall: one surface there, decided before any fit
+// (tags are not ranked across a wall), and said in the reason.
+TEST(WallStageTest, DeclaredSurfaceIsOneSurfaceOnThatWall) {
+  const WallLayer endo = WallLayer::kEndocardium;
+  const WallLayer epi = WallLayer::kEpicardium;
+  const WallLayer any = WallLayer::kAnywhere;
+  const WallDecision mesh = Declared(SurfaceChoice::kEndocardium, {any}, true);
+  EXPECT_TRUE(mesh.decided);
+  EXPECT_EQ(mesh.reason, "--surface endo");
+  EXPECT_EQ(mesh.surface, endo);
+  const WallDecision mid =
+      Declared(SurfaceChoice::kMidwall, {endo, epi}, false);
+  EXPECT_EQ(mid.reason, "--surface midwall");
+  EXPECT_EQ(mid.surface, any);
+  EXPECT_EQ(Declared(SurfaceChoice::kEpicardium, {epi}, false).surface, epi);
+  EXPECT_EQ(InputErrorOf([] {
+              Declared(SurfaceChoice::kEndocardium, {endo, epi}, false);
+            }),
+            "points.csv: --surface endo, but frame 0 has points of the "
+            "epicardium (keep one wall's contours, e.g. --contours "
+            "lv-cavity)");
+  EXPECT_EQ(InputErrorOf([] {
+              Declared(SurfaceChoice::kEpicardium, {any}, true,
+                       WallModel::kSolid);
+            }),
+            "--surface epi declares one surface; --wall solid fits two");
+}
+
+// Tracked points all named as one wall's (mesh-points' surface column) are
+// that wall, decided before the tags' spread is measured; tags of no named
+// wall stay undecided.
+TEST(WallStageTest, TrackedPointsOfOneNamedWallAreThatSurface) {
+  const WallLayer endo = WallLayer::kEndocardium;
+  ModelConfig config = ModelConfig::Paper(9);
+  const WallDecision mesh =
+      FromContours({WallModel::kAuto, {endo, endo}, true}, &config);
+  EXPECT_TRUE(mesh.decided);
+  EXPECT_EQ(mesh.reason, "tracked points of the endocardium only");
+  EXPECT_EQ(mesh.surface, endo);
+  const WallDecision mixed = FromContours(
+      {WallModel::kAuto, {endo, WallLayer::kAnywhere}, true}, &config);
+  EXPECT_FALSE(mixed.decided);
+  EXPECT_EQ(mixed.surface, endo);
+}
+
 // Frame 0's tags on the mid-wall's normals, `spread(random)` mm off it.
 template <typename Spread>
 FramePoints TagsAcrossTheWall(const Model& model, Spread spread,

@@ -1,0 +1,144 @@
+#include "pfdm/fit/problem/frame_covariance.h"
+
+#include <random>
+
+#include "Eigen/Dense"
+#include "ceres/ceres.h"
+#include "gtest/gtest.h"
+#include "pfdm/model/parameter_function.h"
+
+namespace pfdm {
+namespace {
+
+// r = c0 + c1 x - y, or with `sum` only c0 + c1 seen: r = (c0 + c1) x - y.
+struct LineResidual {
+  LineResidual(double x, double y, bool sum) : x(x), y(y), sum(sum) {}
+  template <typename T>
+  bool operator()(const T* c, T* r) const {
+    r[0] = sum ? (c[0] + c[1]) * x - y : c[0] + c[1] * x - y;
+    return true;
+  }
+  double x, y;
+  bool sum;
+};
+
+struct LineProblem {
+  std::array<double, 2> c{0.0, 0.0};
+  ceres::Problem problem;
+  Eigen::MatrixXd design;
+};
+
+// y = 1 + 2 x + noise of 0.3 at 200 x in [-1, 1], solved.
+void MakeLine(bool sum, LineProblem* line) {
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.3);
+  line->design.resize(200, 2);
+  for (int i = 0; i < 200; ++i) {
+    const double x = -1.0 + 2.0 * i / 199.0;
+    line->design.row(i) << 1.0, x;
+    line->problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<LineResidual, 1, 2>(
+            new LineResidual(x, 1.0 + 2.0 * x + noise(random), sum)),
+        nullptr, line->c.data());
+  }
+  ceres::Solver::Options options;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &line->problem, &summary);
+}
+
+// ceres::Covariance's DENSE_SVD pseudo-inverse of the line's J'J, times
+// sigma^2: what BlockCovariance must give.
+Eigen::Matrix2d CeresCovariance(LineProblem* line, double sigma) {
+  ceres::Covariance::Options options;
+  options.algorithm_type = ceres::DENSE_SVD;
+  options.null_space_rank = -1;
+  options.min_reciprocal_condition_number = kMinReciprocalCondition;
+  ceres::Covariance covariance(options);
+  const std::vector<const double*> blocks = {line->c.data()};
+  Eigen::Matrix2d values;
+  EXPECT_TRUE(covariance.Compute(blocks, &line->problem));
+  EXPECT_TRUE(covariance.GetCovarianceMatrix(blocks, values.data()));
+  return sigma * sigma * values;
+}
+
+std::vector<CovarianceBlock> LineBlocks(LineProblem* line) {
+  using Kind = CovarianceEntry::Kind;
+  return {
+      {line->c.data(), {{Kind::kGlobal, -1, kA0}, {Kind::kGlobal, -1, kA1}}}};
+}
+
+// A full-rank linear problem: sigma^2 (X'X)^-1, to round-off, and what
+// ceres::Covariance gives.
+TEST(FrameCovarianceTest, LinearProblemGivesTheTextbookCovariance) {
+  LineProblem line;
+  MakeLine(false, &line);
+  const FrameCovariance covariance =
+      BlockCovariance(&line.problem, LineBlocks(&line), 0.3, 198.0);
+  ASSERT_TRUE(covariance.computed);
+  EXPECT_EQ(covariance.rank_deficiency, 0);
+  const Eigen::Matrix2d expected =
+      0.09 * (line.design.transpose() * line.design).inverse();
+  EXPECT_LT((covariance.covariance - expected).norm(), 1e-10 * expected.norm());
+  EXPECT_LT((covariance.covariance - CeresCovariance(&line, 0.3)).norm(),
+            1e-10 * expected.norm());
+  EXPECT_EQ(covariance.IndexOf(CovarianceEntry::Kind::kGlobal, -1, kA1), 1);
+}
+
+// Only c0 + c1 is seen: no crash, the difference reported as the deficient
+// direction and left out (c0 - c1 has variance 0 in the pseudo-inverse),
+// the sum's variance what the data give it.
+TEST(FrameCovarianceTest, RankDeficientProblemReportsTheDirection) {
+  LineProblem line;
+  MakeLine(true, &line);
+  const FrameCovariance covariance =
+      BlockCovariance(&line.problem, LineBlocks(&line), 0.3, 199.0);
+  ASSERT_TRUE(covariance.computed);
+  EXPECT_EQ(covariance.rank_deficiency, 1);
+  ASSERT_EQ(covariance.deficient_directions.size(), 1u);
+  const std::string& direction = covariance.deficient_directions[0];
+  EXPECT_NE(direction.find("a0 "), std::string::npos) << direction;
+  EXPECT_NE(direction.find("a1 "), std::string::npos) << direction;
+  const Eigen::Vector2d sum(1.0, 1.0), difference(1.0, -1.0);
+  const double sum_x2 = line.design.col(1).squaredNorm();
+  EXPECT_NEAR(sum.dot(covariance.covariance * sum), 0.09 / sum_x2,
+              1e-9 / sum_x2);
+  EXPECT_NEAR(difference.dot(covariance.covariance * difference), 0.0, 1e-12);
+  const Eigen::Matrix2d ceres_covariance = CeresCovariance(&line, 0.3);
+  EXPECT_LT((covariance.covariance - ceres_covariance).norm(),
+            1e-8 * ceres_covariance.norm());
+}
+
+TEST(FrameCovarianceTest, KnotSdReadsTheKnotOrTheGlobalEntry) {
+  using Kind = CovarianceEntry::Kind;
+  ModelConfig config = ModelConfig::Paper(5);
+  FrameCovariance covariance;
+  covariance.computed = true;
+  covariance.entries = {{Kind::kGlobal, -1, kA0}, {Kind::kKnot, 2, kTau}};
+  covariance.covariance = Eigen::Vector2d(4.0, 0.25).asDiagonal();
+  ASSERT_EQ(config.modes[kTau], FunctionMode::kFree);
+  ASSERT_NE(config.modes[kA0], FunctionMode::kFree);
+  EXPECT_DOUBLE_EQ(covariance.KnotSd(config, kA0, 3), 2.0);
+  EXPECT_DOUBLE_EQ(covariance.KnotSd(config, kTau, 2), 0.5);
+  EXPECT_DOUBLE_EQ(covariance.KnotSd(config, kTau, 1), 0.0);  // Held.
+  EXPECT_EQ(covariance.entries[1].Name(), "tau[2]");
+}
+
+// The data's sigma: point-to-plane points count one coordinate, the others
+// three; sum of squares over (count - parameters).
+TEST(FrameCovarianceTest, DataSigmaCountsEachPointsCoordinates) {
+  Model model = Model::Uniform(ModelConfig::Paper(5), DefaultFunctionValues());
+  const std::vector<MaterialPoint> material = {{0.1, 0.2, 0.0},
+                                               {-0.3, 1.0, 0.0}};
+  const std::vector<Eigen::Vector3d> at = WorldPoints(model, material);
+  const Eigen::Vector3d normal = Eigen::Vector3d(0, 0, 1);
+  const std::vector<Eigen::Vector3d> points = {
+      at[0] + Eigen::Vector3d(1.0, 2.0, 2.0), at[1] + Eigen::Vector3d(5, 5, 3)};
+  double sigma = 0.0, dof = 0.0;
+  DataSigma(model, points, material, {Eigen::Vector3d::Zero(), normal}, "none",
+            1.0, 1, &sigma, &dof);
+  EXPECT_DOUBLE_EQ(dof, 3.0);  // 3 + 1 - 1.
+  EXPECT_NEAR(sigma, std::sqrt((9.0 + 9.0) / 3.0), 1e-9);
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,30 @@
+#include "pfdm/fit/stages/frame_uncertainty.h"
+
+#include <cmath>
+#include <optional>
+
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/problem/frame_problem.h"
+#include "pfdm/fit/problem/gauge.h"
+
+namespace pfdm {
+
+FrameCovariance MeasureFrameCovariance(
+    const FramePoints& points, const std::vector<MaterialPoint>& material,
+    const ModelState& prior, const std::array<double, 4>& reference_quaternion,
+    const FitOptions& options, const Model& model) {
+  // As GlobalRounds::SolveRound: sliding points pull along the normals at
+  // their material points, and the base rim holds later frames of contours.
+  std::optional<double> rim_height;
+  if (points.kind != FrameKind::kReference && !points.untracked.empty()) {
+    const double top = TopHeight(points.positions, options, model);
+    if (std::isfinite(top)) rim_height = top;
+  }
+  const std::vector<Eigen::Vector3d> normals =
+      SlidingNormals(model, material, points.sliding);
+  return EstimateFrameCovariance(points.positions, material, normals,
+                                 rim_height, points.kind, prior,
+                                 reference_quaternion, options, model);
+}
+
+}  // namespace pfdm

@@ -1,0 +1,65 @@
+#include "pfdm/io/not_measured_json.h"
+
+#include <cstddef>
+
+namespace pfdm {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+constexpr const char* kNotMeasuredDefinition =
+    "null marks what the data cannot determine.  A turn about the long axis "
+    "is seen only on tracked points (ids in more than one frame: tags); in "
+    "the frames listed, which have none (contours), or when frame 0 has none, "
+    "the fit holds tau, and every number a turn makes is null: the "
+    "rotations, twists, torsion and shear angle in clinical (a solid's "
+    "endo_* and epi_* ones too), gcl_percent, and the regions' rotation_deg "
+    "and ecl_percent.";
+
+constexpr const char* kExtrapolatedDefinition =
+    "Frame 0's data do not reach the apex (model apex_in_data): the levels "
+    "listed (thirds of frame 0's length, whose middle lies below the lowest "
+    "data point; the apex cap, segment 17, always) and the apical ring (at "
+    "20 % of the length, when below it) "
+    "are the model's continuation of the data above them.  Unless shown "
+    "(--extrapolated), their numbers are null: the levels' regions and "
+    "strains, the apical ring's rotations, the net twists, torsion and "
+    "shear angle.  Volumes and mass include the extrapolated apex cap "
+    "(the frames' quality says so).";
+
+// The levels and the apical ring measured where frame 0 has no data
+// (FitAnalysis::level_extrapolated); null when there are none.
+json Extrapolated(const FitAnalysis& analysis) {
+  static const char* const kLevelNames[] = {"basal", "mid", "apical",
+                                            "apex cap"};
+  json levels = json::array();
+  for (int level : {kBasal, kMid, kApical, kApex}) {
+    if (analysis.level_extrapolated[level]) {
+      levels.push_back(kLevelNames[level]);
+    }
+  }
+  if (levels.empty() && !analysis.apex_ring_extrapolated) return json();
+  return {{"levels", levels},
+          {"apex_ring", analysis.apex_ring_extrapolated},
+          {"shown", analysis.extrapolated_shown},
+          {"definition", kExtrapolatedDefinition}};
+}
+
+}  // namespace
+
+json NotMeasured(const FitAnalysis& analysis) {
+  json frames = json::array();
+  for (size_t t = 0; t < analysis.rotation_measured.size(); ++t) {
+    if (!analysis.rotation_measured[t]) frames.push_back(t);
+  }
+  const json extrapolated = Extrapolated(analysis);
+  if (frames.empty() && extrapolated.is_null()) return json();
+  json section;
+  if (!frames.empty()) {
+    section = {{"frames", frames}, {"definition", kNotMeasuredDefinition}};
+  }
+  if (!extrapolated.is_null()) section["extrapolated"] = extrapolated;
+  return section;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,36 @@
+#include "pfdm/io/not_measured_json.h"
+
+#include "gtest/gtest.h"
+
+namespace pfdm {
+namespace {
+
+// Every number measured: no section.  Contour frames list themselves; data
+// that stop above the apex list the levels they leave out, and whether
+// they are shown anyway.
+TEST(NotMeasuredJsonTest, ListsWhatIsNullAndWhy) {
+  FitAnalysis analysis;
+  analysis.rotation_measured = {true, true, true};
+  EXPECT_TRUE(NotMeasured(analysis).is_null());
+
+  analysis.rotation_measured = {true, false, true};
+  nlohmann::ordered_json section = NotMeasured(analysis);
+  EXPECT_EQ(section["frames"], nlohmann::ordered_json({1}));
+  EXPECT_FALSE(section.contains("extrapolated"));
+
+  analysis.rotation_measured = {true, true, true};
+  analysis.level_extrapolated = {false, false, true, true};
+  analysis.apex_ring_extrapolated = true;
+  section = NotMeasured(analysis);
+  EXPECT_FALSE(section.contains("frames"));
+  EXPECT_EQ(section["extrapolated"]["levels"],
+            nlohmann::ordered_json({"apical", "apex cap"}));
+  EXPECT_TRUE(section["extrapolated"]["apex_ring"].get<bool>());
+  EXPECT_FALSE(section["extrapolated"]["shown"].get<bool>());
+  EXPECT_NE(section["extrapolated"]["definition"].get<std::string>().find(
+                "--extrapolated"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace pfdm
