@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pfdm/solvers/rest_estimate.h"
 #include "pfdm/solvers/solver.h"
 #include "pfdm/solvers/tangent_state.h"
 #include "pfdm/util/stopwatch.h"
@@ -217,10 +218,12 @@ class StepSize {
   double h_max_, h_;
 };
 
-// The first evaluation, D and rho; false (report failed) if unusable.
+// The first evaluation, D, rho and the rest estimate; false (report
+// failed) if unusable.
 bool Start(ceres::Problem* problem, const State& state,
            const SolverOptions& options, Evaluation* now,
-           std::vector<double>* d, double* rho, SolverReport* report) {
+           std::vector<double>* d, double* rho,
+           std::optional<RestEstimate>* estimate, SolverReport* report) {
   report->residual_evaluations = report->jacobian_evaluations = 1;
   if (!Evaluate(problem, state, options.num_threads, true, now)) {
     Fail("the residuals or their Jacobian are not finite at the start", report);
@@ -236,21 +239,36 @@ bool Start(ceres::Problem* problem, const State& state,
   }
   *d = std::move(*damping);
   *rho = kSpectralMargin * LargestEigenvalue(now->jacobian, *d);
+  *estimate = RestEstimate::FromJacobian(now->jacobian);
   now->jacobian = ceres::CRSMatrix();
   return true;
 }
 
+// The rest rule above SolveRkc, for the bound-projected velocity f at the
+// end of a step that moved the model by delta in time h.
+bool AtRest(const std::optional<RestEstimate>& estimate,
+            const std::vector<double>& f, const std::vector<double>& delta,
+            const std::vector<double>& d, double h, double rest) {
+  if (estimate) {
+    std::vector<double> g(f.size());
+    for (size_t i = 0; i < f.size(); ++i) g[i] = -d[i] * f[i];
+    return estimate->DistanceToRest(g) <= rest;
+  }
+  return DampingNorm(f, d) <= rest && DampingNorm(delta, d) <= h * rest;
+}
+
 }  // namespace
 
-// Rest needs both the force at the end of a step and the step's mean
-// velocity small, each in the damping metric: |F|_D = |J^T r|_{D^-1} (the
-// power the damping dissipates, Euler's rule in the limit of short steps)
-// and |q_{n+1} - q_n|_D / h, below rest_tolerance x sqrt(E_0).  The force
-// at one point can vanish where the path turns; the mean over a step
-// cannot unless the model stood still.  (Requiring the move itself below
-// that, not per unit time, never ended: along the near-null directions of
-// a frame fit the model drifts by 1e-3 per step at constant energy, to 12
-// digits.)
+// Rest, as the direct solve judges its own end, by the Gauss-Newton step
+// that is left: the residual vector within rest_tolerance x sqrt(E_0) of
+// its value at the rest point, sqrt(g^T H^-1 g) with H = J^T J factored at
+// the start (RestEstimate; the bound-projected force).  A rule on the force
+// alone, |F|_D, fires early along the slowest modes (lambda ~ 1e-3, where
+// the distance is 30 times the force) and late along the stiff ones.
+// Without an estimate (past RestEstimate::kMaxColumns or H singular) both
+// the force and the step's mean velocity, |q_{n+1} - q_n|_D / h, must be
+// below that threshold: the force at one point can vanish where the path
+// turns, the mean over a step only if the model stood still.
 SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options) {
   const Clock::time_point start = Clock::now();
   SolverReport report;
@@ -258,7 +276,8 @@ SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options) {
   Evaluation now, next;
   std::vector<double> d;
   double rho = 0.0;
-  if (!Start(problem, state, options, &now, &d, &rho, &report)) {
+  std::optional<RestEstimate> estimate;
+  if (!Start(problem, state, options, &now, &d, &rho, &estimate, &report)) {
     return report;
   }
   report.trace.push_back(
@@ -306,8 +325,7 @@ SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options) {
     refusals = 0;
     time += h;
     ++report.iterations;
-    const bool at_rest = DampingNorm(f1, stepper.d()) <= rest &&
-                         DampingNorm(delta, stepper.d()) <= h * rest;
+    const bool at_rest = AtRest(estimate, f1, delta, stepper.d(), h, rest);
     std::swap(now, next);
     f0.swap(f1);
     report.trace.push_back(

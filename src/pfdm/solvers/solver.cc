@@ -54,6 +54,7 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
 
 SolverReport SolveProblem(ceres::Problem* problem,
                           const SolverOptions& options) {
+  if (options.linear) return SolveDirect(problem, options);
   switch (options.kind) {
     case SolverKind::kDirect:
       return SolveDirect(problem, options);

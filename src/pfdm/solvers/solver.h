@@ -58,10 +58,12 @@ struct SolverOptions {
   // a 170-parameter solve's time, spent idle.  Eigen's simplicial LDL^T is
   // single-threaded and does the arithmetic in a fraction of that.
   ceres::SparseLinearAlgebraLibraryType sparse_library = ceres::EIGEN_SPARSE;
-  // The residuals are affine in the parameters (the local field's): the
-  // direct solve takes one undamped Gauss-Newton step, the minimum up to
-  // round-off, instead of a damped one and a second factorization to
-  // confirm it.  The dynamics ignore it.
+  // The residuals are affine in the parameters (the local field's): every
+  // solver takes one undamped Gauss-Newton step, the minimum up to
+  // round-off.  A linear least-squares problem has one rest point, the
+  // same for every damped dynamics, and integrating the field's stiff thin
+  // plate to it only costs time; the global functions still follow the
+  // chosen dynamics (docs/dynamics.md).
   bool linear = false;
   // Dynamics (damped and integrator): pseudo-time step, 0 = the default
   // (integrator: 0.9 of the stability bound; damped: 1,000); rest when the
