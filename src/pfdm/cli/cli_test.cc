@@ -198,6 +198,9 @@ const BadInput kBadInputs[] = {
     {"unknown damping", "frame,id,x,y,z\n0,1,2,3,4\n",
      "--solver integrator --damping mass",
      "unknown --damping 'mass' (expected jacobi or unit)"},
+    {"unknown integrator", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--solver integrator --integrator rk4",
+     "unknown --integrator 'rk4' (expected euler or rkc)"},
     {"bad damping scale", "frame,id,x,y,z\n0,1,2,3,4\n",
      "--solver integrator --damping_scale twist=0",
      "--damping_scale entry 'twist=0' is not group=value with a positive "

@@ -110,6 +110,7 @@ int RunCompareSolvers() {
   const PointSequence points = PointsFromFlags();
   CheckOptionsAgainstPoints(base, points);
 
+  std::printf("integrator: %s\n", IntegratorName(base.solver.integrator));
   std::map<SolverKind, SequenceFit> fits;
   for (SolverKind kind : kSolvers) {
     FitOptions options = base;

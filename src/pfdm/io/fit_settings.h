@@ -49,6 +49,7 @@ struct FitSettings {
   double rest_tolerance = SolverOptions().rest_tolerance;
   int max_steps = SolverOptions().max_steps;
   std::string damping = "jacobi";
+  std::string integrator = IntegratorName(SolverOptions().integrator);
   std::string damping_scale;
   std::string jacobian = "analytic";
   // Local deformations (fit/local_fit.h).

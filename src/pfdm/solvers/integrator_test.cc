@@ -1,5 +1,6 @@
-// The explicit Lagrangian integrator (SolverKind::kIntegrator) on toy
-// problems whose steps can be worked out by hand.
+// The explicit Lagrangian integrator's forward Euler (the paper's method,
+// IntegratorKind::kEuler) on toy problems whose steps can be worked out by
+// hand; RKC's tests are in rkc_test.cc.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -29,6 +30,7 @@ class QuietCeres {
 
 TEST(IntegratorTest, OneStepIsForwardEulerWithJacobiDamping) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   toy.options.time_step = 0.3;
   toy.options.max_steps = 1;
   const SolverReport report = toy.Solve();
@@ -46,6 +48,7 @@ TEST(IntegratorTest, OneStepIsForwardEulerWithJacobiDamping) {
 
 TEST(IntegratorTest, OneStepUsesTheDampingScales) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   toy.options.time_step = 0.3;
   toy.options.max_steps = 1;
   toy.options.damping_scale[toy.x] = {2.0, 0.5};
@@ -62,6 +65,7 @@ TEST(IntegratorTest, OneStepUsesTheDampingScales) {
 
 TEST(IntegratorTest, UnitDampingIsPlainGradientFlow) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   toy.options.damping = DampingKind::kUnit;
   toy.options.time_step = 1e-3;
   toy.options.max_steps = 1;
@@ -76,6 +80,7 @@ TEST(IntegratorTest, UnitDampingIsPlainGradientFlow) {
 TEST(IntegratorTest, ScaledAndUnitDampingRestAtTheMinimum) {
   for (const DampingKind kind : {DampingKind::kJacobi, DampingKind::kUnit}) {
     LinearToyProblem toy(SolverKind::kIntegrator);
+    toy.options.integrator = IntegratorKind::kEuler;
     toy.options.damping = kind;
     toy.options.damping_scale[toy.x] = {2.0, 0.5};
     toy.options.rest_tolerance = 1e-9;
@@ -114,6 +119,7 @@ TEST(IntegratorTest, ThePathDoesNotDependOnWhereTheBlocksLie) {
         nullptr, x0, x1);
     SolverOptions options;
     options.kind = SolverKind::kIntegrator;
+    options.integrator = IntegratorKind::kEuler;
     options.damping = DampingKind::kUnit;
     options.on_step = [&](const SolverTracePoint& point) {
       path[layout].push_back(point.cost);
@@ -133,6 +139,7 @@ TEST(IntegratorTest, BadDampingScalesAreRefused) {
       {1.0}, {1.0, 0.0}, {1.0, -2.0}, {std::nan(""), 1.0}};
   for (const std::vector<double>& scale : bad) {
     LinearToyProblem toy(SolverKind::kIntegrator);
+    toy.options.integrator = IntegratorKind::kEuler;
     toy.options.damping_scale[toy.x] = scale;
     const SolverReport report = toy.Solve();
     EXPECT_FALSE(report.usable);
@@ -144,6 +151,7 @@ TEST(IntegratorTest, BadDampingScalesAreRefused) {
 
 TEST(IntegratorTest, ChoosesAStepBelowTheStabilityBound) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   toy.options.max_steps = 1;
   const SolverReport report = toy.Solve();
   ASSERT_EQ(report.trace.size(), 2u);
@@ -157,6 +165,7 @@ TEST(IntegratorTest, ChoosesAStepBelowTheStabilityBound) {
 // it is stable, and the energy never rises.
 TEST(IntegratorTest, RefusesStepsAboveTheStabilityBound) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   toy.options.time_step = 2.5 * LinearStabilityBound();
   toy.options.rest_tolerance = 1e-9;
   const SolverReport report = toy.Solve();
@@ -175,6 +184,7 @@ TEST(IntegratorTest, RefusesStepsAboveTheStabilityBound) {
 TEST(IntegratorTest, StepsIntoNaNAreRefused) {
   const QuietCeres quiet;
   ScalarToyProblem<SquareRootResidual> toy(4.0, SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   toy.options.time_step = 1000.0;  // The first step lands far below x = 0.
   const SolverReport report = toy.Solve();
   EXPECT_TRUE(report.usable) << report.message;
@@ -184,6 +194,7 @@ TEST(IntegratorTest, StepsIntoNaNAreRefused) {
 TEST(IntegratorTest, NaNAtTheStartIsUnusable) {
   const QuietCeres quiet;
   ScalarToyProblem<SquareRootResidual> toy(-1.0, SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   const SolverReport report = toy.Solve();
   EXPECT_FALSE(report.usable);
   EXPECT_EQ(report.termination, "FAILURE");

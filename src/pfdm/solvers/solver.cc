@@ -34,8 +34,27 @@ DampingKind DampingFromName(const std::string& name) {
                    "' (expected jacobi or unit)");
 }
 
+IntegratorKind IntegratorFromName(const std::string& name) {
+  if (name == "euler") return IntegratorKind::kEuler;
+  if (name == "rkc") return IntegratorKind::kRkc;
+  throw InputError("unknown --integrator '" + name +
+                   "' (expected euler or rkc)");
+}
+
+const char* IntegratorName(IntegratorKind kind) {
+  return kind == IntegratorKind::kEuler ? "euler" : "rkc";
+}
+
+SolverReport SolveIntegrator(ceres::Problem* problem,
+                             const SolverOptions& options) {
+  return options.integrator == IntegratorKind::kEuler
+             ? SolveEuler(problem, options)
+             : SolveRkc(problem, options);
+}
+
 SolverReport SolveProblem(ceres::Problem* problem,
                           const SolverOptions& options) {
+  if (options.linear) return SolveDirect(problem, options);
   switch (options.kind) {
     case SolverKind::kDirect:
       return SolveDirect(problem, options);

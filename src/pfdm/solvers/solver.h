@@ -22,11 +22,20 @@ enum class SolverKind { kDirect, kDamped, kIntegrator };
 // damping; then pseudo-time carries the units of the parameters).
 enum class DampingKind { kJacobi, kUnit };
 
+// How the integrator steps D qdot = -J^T r: forward Euler (the paper's
+// method) or second-order Runge-Kutta-Chebyshev with error control (the
+// same ODE and rest point, a stable step that grows with the square of its
+// stage count; docs/dynamics.md).
+enum class IntegratorKind { kEuler, kRkc };
+
 // "direct", "damped" or "integrator"; throws InputError otherwise.
 SolverKind SolverFromName(const std::string& name);
 const char* SolverName(SolverKind kind);
 // "jacobi" or "unit"; throws InputError otherwise.
 DampingKind DampingFromName(const std::string& name);
+// "euler" or "rkc"; throws InputError otherwise.
+IntegratorKind IntegratorFromName(const std::string& name);
+const char* IntegratorName(IntegratorKind kind);
 
 // One iteration (direct, damped) or step (integrator).
 struct SolverTracePoint {
@@ -49,10 +58,12 @@ struct SolverOptions {
   // a 170-parameter solve's time, spent idle.  Eigen's simplicial LDL^T is
   // single-threaded and does the arithmetic in a fraction of that.
   ceres::SparseLinearAlgebraLibraryType sparse_library = ceres::EIGEN_SPARSE;
-  // The residuals are affine in the parameters (the local field's): the
-  // direct solve takes one undamped Gauss-Newton step, the minimum up to
-  // round-off, instead of a damped one and a second factorization to
-  // confirm it.  The dynamics ignore it.
+  // The residuals are affine in the parameters (the local field's): every
+  // solver takes one undamped Gauss-Newton step, the minimum up to
+  // round-off.  A linear least-squares problem has one rest point, the
+  // same for every damped dynamics, and integrating the field's stiff thin
+  // plate to it only costs time; the global functions still follow the
+  // chosen dynamics (docs/dynamics.md).
   bool linear = false;
   // Dynamics (damped and integrator): pseudo-time step, 0 = the default
   // (integrator: 0.9 of the stability bound; damped: 1,000); rest when the
@@ -66,6 +77,12 @@ struct SolverOptions {
   // that a caller can make parameter groups move at different rates.  The
   // damped mode's D is Ceres' Levenberg-Marquardt diagonal, diag(J^T J).
   DampingKind damping = DampingKind::kJacobi;
+  // Integrator only.  RKC by default: forward Euler needs about
+  // lambda_max / lambda_min steps per e-fold of the slowest mode (1e4 on a
+  // frame fit) and stops at max_steps short of rest; RKC follows the same
+  // trajectory to its error tolerance and rests in hundreds of evaluations.
+  // With RKC, time_step is the first step only.
+  IntegratorKind integrator = IntegratorKind::kRkc;
   std::unordered_map<const double*, std::vector<double>> damping_scale;
   // Called with each point of SolverReport::trace as it is recorded, while
   // the parameter blocks hold that iterate: lets a caller keep the path.
@@ -110,8 +127,11 @@ SolverReport SolveProblem(ceres::Problem* problem,
 
 SolverReport SolveDirect(ceres::Problem* problem, const SolverOptions& options);
 SolverReport SolveDamped(ceres::Problem* problem, const SolverOptions& options);
+// Dispatches on options.integrator.
 SolverReport SolveIntegrator(ceres::Problem* problem,
                              const SolverOptions& options);
+SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options);
+SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options);
 
 }  // namespace pfdm
 
