@@ -89,8 +89,9 @@ DEFINE_string(integrator, kDefaults.integrator.c_str(),
               "comes to rest) or euler (forward Euler, the paper's)");
 DEFINE_int32(max_steps, kDefaults.max_steps,
              "damped and integrator: most steps per solve, 1 to 1e6");
-DEFINE_string(damping, kDefaults.damping.c_str(),
-              "integrator: damping D = jacobi (diag J^T J) or unit");
+DEFINE_string(
+    damping, kDefaults.damping.c_str(),
+    "integrator: damping D = jacobi (diag J^T J), unit or model (J^T J)");
 DEFINE_string(damping_scale, "",
               "integrator: multipliers of D per group, e.g. "
               "twist=10,offsets=2 (groups pose shape twist bending offsets)");

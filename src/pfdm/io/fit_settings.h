@@ -48,7 +48,7 @@ struct FitSettings {
   double time_step = 0.0;
   double rest_tolerance = SolverOptions().rest_tolerance;
   int max_steps = SolverOptions().max_steps;
-  std::string damping = "jacobi";
+  std::string damping = DampingName(SolverOptions().damping);
   std::string integrator = IntegratorName(SolverOptions().integrator);
   std::string damping_scale;
   std::string jacobian = "analytic";

@@ -60,14 +60,14 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   settings.solver = "integrator";
   settings.damping = "unit";
   settings.damping_scale = "twist=2";
-  settings.integrator = "euler";
+  settings.integrator = "rkc";
   settings.time_step = 0.5;
   settings.apex = "1,2,3";
   settings.base = "4,5,6.5";
   const FitOptions options = FitOptionsFrom(settings);
   EXPECT_EQ(options.solver.kind, SolverKind::kIntegrator);
   EXPECT_EQ(options.solver.damping, DampingKind::kUnit);
-  EXPECT_EQ(options.solver.integrator, IntegratorKind::kEuler);
+  EXPECT_EQ(options.solver.integrator, IntegratorKind::kRkc);
   EXPECT_EQ(options.damping_groups.twist, 2.0);
   EXPECT_EQ(options.solver.time_step, 0.5);
   ASSERT_TRUE(options.hint.has_value());
@@ -208,7 +208,7 @@ TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
        "--damping applies to --solver integrator, not --solver damped"},
       {[](FitSettings* s) { s->damping_scale = "twist=2"; },
        "--damping_scale applies to --solver integrator, not --solver direct"},
-      {[](FitSettings* s) { s->integrator = "euler"; },
+      {[](FitSettings* s) { s->integrator = "rkc"; },
        "--integrator applies to --solver integrator, not --solver direct"},
       {[](FitSettings* s) {
          s->solver = "integrator";

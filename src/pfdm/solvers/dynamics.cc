@@ -12,6 +12,7 @@
 
 #include "ceres/iteration_callback.h"
 #include "ceres/solver.h"
+#include "pfdm/solvers/damping_matrix.h"
 #include "pfdm/solvers/solver.h"
 #include "pfdm/solvers/tangent_state.h"
 #include "pfdm/util/stopwatch.h"
@@ -23,6 +24,12 @@ namespace {
 // iteration underestimates lambda_max, and at the limit itself the stiffest
 // mode would only oscillate.
 constexpr double kStabilitySafety = 0.9;
+// With the model damping every mode's rate lies in (0, lambda_max] with
+// lambda_max about 1: dt = 1 / lambda_max takes the stiffest mode to rest
+// in one step and keeps each mode's factor 1 - dt lambda in [0, 1), a
+// monotone decay like the continuous dynamics', where 0.9 x 2 / lambda_max
+// would flip the sign of the modes near lambda_max at every step.
+constexpr double kModelStepFraction = 1.0;
 // Pseudo-time step of the damped mode when none is given.  With
 // D = diag(J^T J) the explicit limit is about 1; at 1,000 the slow modes of
 // a frame fit (lambda ~ 1e-4) lose a tenth or more of their amplitude per
@@ -129,19 +136,18 @@ SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
     return report;
   }
   const RestTest rest_test(now.cost, options.rest_tolerance);
-  std::vector<double> d;
+  std::optional<DampingMatrix> d;
   double dt = options.time_step;
   if (state.tangent_size > 0) {
     std::string error;
-    std::optional<std::vector<double>> damping =
-        Damping(*problem, state, now.jacobian, options, &error);
-    if (!damping) {
+    d = DampingMatrix::Build(*problem, state, now.jacobian, options, &error);
+    if (!d) {
       Fail(error, &report);
       return report;
     }
-    d = std::move(*damping);
     if (dt <= 0.0) {
-      dt = kStabilitySafety * 2.0 / LargestEigenvalue(now.jacobian, d);
+      dt = (d->diagonal() ? kStabilitySafety * 2.0 : kModelStepFraction) /
+           d->LargestRate(now.jacobian);
     }
   }
   now.jacobian = ceres::CRSMatrix();
@@ -156,13 +162,22 @@ SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
     report.converged = true;
     return report;
   }
-  std::vector<double> step(state.tangent_size), before;
+  std::vector<double> velocity, step(state.tangent_size), before;
   Evaluation next;
   int refusals = 0;
   while (report.iterations < options.max_steps) {
     CheckInterrupt(options);  // Refused steps too.
-    for (int i = 0; i < state.tangent_size; ++i) {
-      step[i] = -dt * now.gradient[i] / d[i];
+    // A coordinate a bound holds does not move; with a coupled D the others
+    // then move by the reduced system, so the model rests where the free
+    // force vanishes (for a diagonal D the clipping in Move alone did).
+    if (d->diagonal()) {  // Today's arithmetic, to the last bit.
+      for (int i = 0; i < state.tangent_size; ++i) {
+        step[i] = -dt * now.gradient[i] / d->diagonal_entries()[i];
+      }
+    } else {
+      velocity = d->Velocity(now.gradient,
+                             HeldAtBounds(*problem, state, now.gradient));
+      for (int i = 0; i < state.tangent_size; ++i) step[i] = dt * velocity[i];
     }
     before = Snapshot(state);
     const bool moved = Move(problem, state, step);

@@ -2,6 +2,7 @@
 // paper's fits of a phantom; the solvers' own tests use toy problems
 // (solver_test.cc, damped_test.cc, integrator_test.cc).
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "gtest/gtest.h"
@@ -21,15 +22,17 @@ Phantom MakeNineKnotPhantom(int num_points, int num_frames) {
   return MakePhantom(options);
 }
 
-// The paper's dynamic fit, by forward Euler and by RKC, and the direct
-// least-squares solve of the same residuals end at the same model.
+// The paper's dynamic fit, by forward Euler and by RKC with the model
+// damping (the default), and the direct least-squares solve of the same
+// residuals end at the same model.
 // Tolerances: 0.01 mm and 0.02 degree, a fiftieth and a twenty-fifth of the
 // fit's own accuracy against the truth (2 % of the radii, 0.5 degree),
 // against the largest differences measured, 3e-4 mm and 1.4e-3 degree (the
 // damped solve at rest, frame 1); b1 and b3 (unitless, measured 6.5e-4)
 // are nearly unobservable where the bending amplitude is near zero, as
-// here.  RKC gets there in a fraction of Euler's evaluations (measured
-// per frame: see the counts below).
+// here.  With the model damping every mode decays at a rate near 1: each
+// frame rests in tens of steps (forward Euler with Jacobi damping, the
+// paper's variant, needs ~1e4 per e-fold and is not run here).
 TEST(DynamicsTest, EverySolverReachesTheSameFixedPoint) {
   const Phantom phantom = MakeNineKnotPhantom(400, 3);
   const ModelConfig config = ModelConfig::Paper(9);
@@ -80,8 +83,11 @@ TEST(DynamicsTest, EverySolverReachesTheSameFixedPoint) {
   }
   for (int t = 0; t < 3; ++t) {
     SCOPED_TRACE("frame " + std::to_string(t));
-    EXPECT_LT(10 * runs[3].fit.frames[t].jacobian_evaluations,
-              runs[2].fit.frames[t].jacobian_evaluations);
+    std::printf("frame %d evaluations: euler %d, rkc %d\n", t,
+                runs[2].fit.frames[t].jacobian_evaluations,
+                runs[3].fit.frames[t].jacobian_evaluations);
+    EXPECT_LT(runs[2].fit.frames[t].jacobian_evaluations, 50);
+    EXPECT_LT(runs[3].fit.frames[t].jacobian_evaluations, 500);
   }
 }
 

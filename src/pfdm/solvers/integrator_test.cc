@@ -31,6 +31,7 @@ class QuietCeres {
 TEST(IntegratorTest, OneStepIsForwardEulerWithJacobiDamping) {
   LinearToyProblem toy(SolverKind::kIntegrator);
   toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kJacobi;
   toy.options.time_step = 0.3;
   toy.options.max_steps = 1;
   const SolverReport report = toy.Solve();
@@ -49,6 +50,7 @@ TEST(IntegratorTest, OneStepIsForwardEulerWithJacobiDamping) {
 TEST(IntegratorTest, OneStepUsesTheDampingScales) {
   LinearToyProblem toy(SolverKind::kIntegrator);
   toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kJacobi;
   toy.options.time_step = 0.3;
   toy.options.max_steps = 1;
   toy.options.damping_scale[toy.x] = {2.0, 0.5};
@@ -152,6 +154,7 @@ TEST(IntegratorTest, BadDampingScalesAreRefused) {
 TEST(IntegratorTest, ChoosesAStepBelowTheStabilityBound) {
   LinearToyProblem toy(SolverKind::kIntegrator);
   toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kJacobi;
   toy.options.max_steps = 1;
   const SolverReport report = toy.Solve();
   ASSERT_EQ(report.trace.size(), 2u);
@@ -166,6 +169,7 @@ TEST(IntegratorTest, ChoosesAStepBelowTheStabilityBound) {
 TEST(IntegratorTest, RefusesStepsAboveTheStabilityBound) {
   LinearToyProblem toy(SolverKind::kIntegrator);
   toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kJacobi;
   toy.options.time_step = 2.5 * LinearStabilityBound();
   toy.options.rest_tolerance = 1e-9;
   const SolverReport report = toy.Solve();
@@ -200,6 +204,60 @@ TEST(IntegratorTest, NaNAtTheStartIsUnusable) {
   EXPECT_EQ(report.termination, "FAILURE");
   EXPECT_NE(report.message.find("not finite"), std::string::npos);
   EXPECT_EQ(toy.x[0], -1.0);
+}
+
+// The model damping D = J^T J (docs/dynamics.md): on a linear problem
+// D^-1 J^T J = I, so every mode decays at rate 1 and a step dt multiplies
+// the distance to the minimum by 1 - dt, whatever the stiffness ratio
+// (here 100 x 100).
+TEST(IntegratorTest, ModelDampingDecaysEveryModeAtRateOne) {
+  LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kModel;
+  toy.options.time_step = 0.25;
+  toy.options.max_steps = 1;
+  toy.Solve();
+  EXPECT_NEAR(toy.x[0], 1.0 + 0.75 * (5.0 - 1.0), 1e-8);
+  EXPECT_NEAR(toy.x[1], 2.0 + 0.75 * (-3.0 - 2.0), 1e-8);
+}
+
+// The default step 1 / lambda_max takes every mode to rest at once: the
+// next step finds nothing left to dissipate.
+TEST(IntegratorTest, ModelDampingRestsInTwoSteps) {
+  LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kModel;
+  toy.options.rest_tolerance = 1e-9;
+  const SolverReport report = toy.Solve();
+  EXPECT_EQ(report.termination, "REST");
+  EXPECT_LE(report.iterations, 2);
+  EXPECT_NEAR(toy.x[0], 1.0, 1e-8);
+  EXPECT_NEAR(toy.x[1], 2.0, 1e-8);
+}
+
+// With x0 <= 0.5 the minimum (1, 2) is out of bounds; the constrained one
+// holds x0 at 0.5 and x1 where the free force vanishes, 100 (x1 - 2) +
+// 0.01 (x1 - 2.5) = 0.  The coupled D (the 0.1 x0 + 0.1 x1 residual) would
+// keep pushing x1 if the held coordinate's force stayed in D^-1 g.
+TEST(IntegratorTest, ModelDampingRestsAtTheBoundedMinimum) {
+  for (const IntegratorKind kind :
+       {IntegratorKind::kEuler, IntegratorKind::kRkc}) {
+    LinearToyProblem toy(SolverKind::kIntegrator);
+    toy.x[0] = 0.0;
+    toy.problem.SetParameterUpperBound(toy.x, 0, 0.5);
+    toy.options.integrator = kind;
+    toy.options.damping = DampingKind::kModel;
+    toy.options.rest_tolerance = 1e-9;
+    const SolverReport report = toy.Solve();
+    EXPECT_EQ(report.termination, "REST") << IntegratorName(kind);
+    // Euler removes the free mode in a step; two RKC stages halve it per
+    // step (R(-1) = 1/2): 30 halvings to 1e-9.
+    EXPECT_LT(report.jacobian_evaluations,
+              kind == IntegratorKind::kEuler ? 10 : 200)
+        << IntegratorName(kind);
+    EXPECT_DOUBLE_EQ(toy.x[0], 0.5) << IntegratorName(kind);
+    EXPECT_NEAR(toy.x[1], 200.025 / 100.01, 1e-8) << IntegratorName(kind);
+  }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pfdm/solvers/damping_matrix.h"
 #include "pfdm/solvers/rest_estimate.h"
 #include "pfdm/solvers/solver.h"
 #include "pfdm/solvers/tangent_state.h"
@@ -84,30 +85,29 @@ int StagesFor(double h, double rho) {
   return std::min(s, kMaxStages);
 }
 
-// sqrt(v^T D v).
-double DampingNorm(const std::vector<double>& v, const std::vector<double>& d) {
-  double sum = 0.0;
-  for (size_t i = 0; i < v.size(); ++i) sum += d[i] * v[i] * v[i];
-  return std::sqrt(sum);
-}
-
 // What one RKC step needs and gives: the problem, D and the rate, and per
 // step the start (blocks, energy, F_0) and the end (tangent move, F_s).
 class RkcStepper {
  public:
   RkcStepper(ceres::Problem* problem, const State& state,
-             const SolverOptions& options, std::vector<double> d)
+             const SolverOptions& options, DampingMatrix d)
       : problem_(problem), state_(state), options_(options), d_(std::move(d)) {}
 
-  // F = -D^-1 J^T r from an evaluation at the blocks' values, less what
-  // pushes into a bound the model sits on.
+  // F = -D^-1 J^T r from an evaluation at the blocks' values, with the
+  // coordinates that a bound the model sits on holds left out.
   std::vector<double> Velocity(const Evaluation& e) const {
-    std::vector<double> f(state_.tangent_size);
-    for (int i = 0; i < state_.tangent_size; ++i) {
-      f[i] = -e.gradient[i] / d_[i];
+    return d_.Velocity(e.gradient, HeldAtBounds(*problem_, state_, e.gradient));
+  }
+
+  // J^T r at the blocks' values less what a bound holds: the force that is
+  // free to move the model.
+  std::vector<double> FreeForce(const Evaluation& e) const {
+    std::vector<double> g = e.gradient;
+    const std::vector<bool> held = HeldAtBounds(*problem_, state_, g);
+    for (size_t i = 0; i < g.size(); ++i) {
+      if (held[i]) g[i] = 0.0;
     }
-    HoldAtBounds(*problem_, state_, &f);
-    return f;
+    return g;
   }
 
   // From `base` (a Snapshot, F_0 = f0) one step h of s stages; on success
@@ -152,16 +152,16 @@ class RkcStepper {
     for (size_t i = 0; i < delta.size(); ++i) {
       est[i] = (-12.0 * delta[i] + 6.0 * h * (f0[i] + f1[i])) / 15.0;
     }
-    return DampingNorm(est, d_);
+    return d_.Norm(est);
   }
 
-  const std::vector<double>& d() const { return d_; }
+  const DampingMatrix& d() const { return d_; }
 
  private:
   ceres::Problem* problem_;
   const State& state_;
   const SolverOptions& options_;
-  std::vector<double> d_;
+  DampingMatrix d_;
 };
 
 // Sommeijer, Shampine & Verwer's step-size rule: after an accepted step
@@ -196,9 +196,14 @@ class StepSizeController {
 // or fixed at SolverOptions::time_step, always within kMaxStages' interval.
 class StepSize {
  public:
-  StepSize(const SolverOptions& options, double rho)
+  // With the model damping every rate lies near lambda_max (docs/dynamics.md):
+  // nothing is stiff, and a long step of many stages would only damp the
+  // modes near its interval's end by |R| ~ 0.95; the step is held at
+  // 1 / lambda_max, where two stages' R(-1) = 1/2 is their least.
+  StepSize(const SolverOptions& options, double rho, bool diagonal)
       : fixed_(options.time_step > 0.0),
-        h_max_(ChebyshevOfStages(kMaxStages).beta / rho),
+        h_max_(diagonal ? ChebyshevOfStages(kMaxStages).beta / rho
+                        : kSpectralMargin / rho),
         h_(std::min(fixed_ ? options.time_step : 1.0 / rho, h_max_)) {}
   double h() const { return h_; }
   bool fixed() const { return fixed_; }
@@ -222,7 +227,7 @@ class StepSize {
 // failed) if unusable.
 bool Start(ceres::Problem* problem, const State& state,
            const SolverOptions& options, Evaluation* now,
-           std::vector<double>* d, double* rho,
+           std::optional<DampingMatrix>* d, double* rho,
            std::optional<RestEstimate>* estimate, SolverReport* report) {
   report->residual_evaluations = report->jacobian_evaluations = 1;
   if (!Evaluate(problem, state, options.num_threads, true, now)) {
@@ -231,30 +236,25 @@ bool Start(ceres::Problem* problem, const State& state,
   }
   if (state.tangent_size == 0) return true;
   std::string error;
-  std::optional<std::vector<double>> damping =
-      Damping(*problem, state, now->jacobian, options, &error);
-  if (!damping) {
+  *d = DampingMatrix::Build(*problem, state, now->jacobian, options, &error);
+  if (!*d) {
     Fail(error, report);
     return false;
   }
-  *d = std::move(*damping);
-  *rho = kSpectralMargin * LargestEigenvalue(now->jacobian, *d);
+  *rho = kSpectralMargin * (*d)->LargestRate(now->jacobian);
   *estimate = RestEstimate::FromJacobian(now->jacobian);
   now->jacobian = ceres::CRSMatrix();
   return true;
 }
 
-// The rest rule above SolveRkc, for the bound-projected velocity f at the
-// end of a step that moved the model by delta in time h.
+// The rest rule above SolveRkc, for the free force g and the velocity f at
+// the end of a step that moved the model by delta in time h.
 bool AtRest(const std::optional<RestEstimate>& estimate,
-            const std::vector<double>& f, const std::vector<double>& delta,
-            const std::vector<double>& d, double h, double rest) {
-  if (estimate) {
-    std::vector<double> g(f.size());
-    for (size_t i = 0; i < f.size(); ++i) g[i] = -d[i] * f[i];
-    return estimate->DistanceToRest(g) <= rest;
-  }
-  return DampingNorm(f, d) <= rest && DampingNorm(delta, d) <= h * rest;
+            const std::vector<double>& g, const std::vector<double>& f,
+            const std::vector<double>& delta, const DampingMatrix& d, double h,
+            double rest) {
+  if (estimate) return estimate->DistanceToRest(g) <= rest;
+  return d.Norm(f) <= rest && d.Norm(delta) <= h * rest;
 }
 
 }  // namespace
@@ -274,7 +274,7 @@ SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options) {
   SolverReport report;
   const State state = FreeBlocks(*problem);
   Evaluation now, next;
-  std::vector<double> d;
+  std::optional<DampingMatrix> d;
   double rho = 0.0;
   std::optional<RestEstimate> estimate;
   if (!Start(problem, state, options, &now, &d, &rho, &estimate, &report)) {
@@ -289,10 +289,10 @@ SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options) {
     report.converged = true;
     return report;
   }
-  const RkcStepper stepper(problem, state, options, std::move(d));
+  const RkcStepper stepper(problem, state, options, std::move(*d));
   const double scale = std::sqrt(now.cost);
   const double rest = options.rest_tolerance * scale;
-  StepSize step_size(options, rho);
+  StepSize step_size(options, rho, stepper.d().diagonal());
   double time = 0.0;
   std::vector<double> f0 = stepper.Velocity(now), f1, delta;
   int refusals = 0, evaluations = 0;
@@ -325,7 +325,8 @@ SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options) {
     refusals = 0;
     time += h;
     ++report.iterations;
-    const bool at_rest = AtRest(estimate, f1, delta, stepper.d(), h, rest);
+    const bool at_rest = AtRest(estimate, stepper.FreeForce(next), f1, delta,
+                                stepper.d(), h, rest);
     std::swap(now, next);
     f0.swap(f1);
     report.trace.push_back(

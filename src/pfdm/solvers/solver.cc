@@ -30,8 +30,21 @@ const char* SolverName(SolverKind kind) {
 DampingKind DampingFromName(const std::string& name) {
   if (name == "jacobi") return DampingKind::kJacobi;
   if (name == "unit") return DampingKind::kUnit;
+  if (name == "model") return DampingKind::kModel;
   throw InputError("unknown --damping '" + name +
-                   "' (expected jacobi or unit)");
+                   "' (expected jacobi, unit or model)");
+}
+
+const char* DampingName(DampingKind kind) {
+  switch (kind) {
+    case DampingKind::kJacobi:
+      return "jacobi";
+    case DampingKind::kUnit:
+      return "unit";
+    case DampingKind::kModel:
+      return "model";
+  }
+  return "";
 }
 
 IntegratorKind IntegratorFromName(const std::string& name) {

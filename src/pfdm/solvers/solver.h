@@ -18,9 +18,12 @@ enum class SolverKind { kDirect, kDamped, kIntegrator };
 
 // The integrator's damping matrix D before the per-coordinate scales:
 // diag(J^T J) at the start (each parameter moves at the rate the residuals
-// hold it, pseudo-time dimensionless) or the identity (the paper's constant
-// damping; then pseudo-time carries the units of the parameters).
-enum class DampingKind { kJacobi, kUnit };
+// hold it, pseudo-time dimensionless), the identity (a constant damping;
+// then pseudo-time carries the units of the parameters), or the model's
+// coupled damping, J^T J at the start (the paper's integral of L^T L over
+// the material, sampled at the data, plus the regularizers' block): every
+// mode then decays at a rate near 1 (docs/dynamics.md).
+enum class DampingKind { kJacobi, kUnit, kModel };
 
 // How the integrator steps D qdot = -J^T r: forward Euler (the paper's
 // method) or second-order Runge-Kutta-Chebyshev with error control (the
@@ -31,8 +34,9 @@ enum class IntegratorKind { kEuler, kRkc };
 // "direct", "damped" or "integrator"; throws InputError otherwise.
 SolverKind SolverFromName(const std::string& name);
 const char* SolverName(SolverKind kind);
-// "jacobi" or "unit"; throws InputError otherwise.
+// "jacobi", "unit" or "model"; throws InputError otherwise.
 DampingKind DampingFromName(const std::string& name);
+const char* DampingName(DampingKind kind);
 // "euler" or "rkc"; throws InputError otherwise.
 IntegratorKind IntegratorFromName(const std::string& name);
 const char* IntegratorName(IntegratorKind kind);
@@ -76,13 +80,17 @@ struct SolverOptions {
   // multiplier for each tangent coordinate (a block not listed: all 1), so
   // that a caller can make parameter groups move at different rates.  The
   // damped mode's D is Ceres' Levenberg-Marquardt diagonal, diag(J^T J).
-  DampingKind damping = DampingKind::kJacobi;
-  // Integrator only.  RKC by default: forward Euler needs about
-  // lambda_max / lambda_min steps per e-fold of the slowest mode (1e4 on a
-  // frame fit) and stops at max_steps short of rest; RKC follows the same
-  // trajectory to its error tolerance and rests in hundreds of evaluations.
-  // With RKC, time_step is the first step only.
-  IntegratorKind integrator = IntegratorKind::kRkc;
+  // The model damping by default: with it forward Euler rests in 6-25
+  // steps a solve; with Jacobi damping it needs about lambda_max /
+  // lambda_min (1e4) steps per e-fold of the slowest mode and stops at
+  // max_steps short of rest (docs/dynamics.md).
+  DampingKind damping = DampingKind::kModel;
+  // Integrator only.  Forward Euler by default: with the model damping
+  // nothing is stiff and RKC's two stages per step cost 2.4x Euler's
+  // evaluations; with Jacobi damping RKC follows the same trajectory in
+  // fewer evaluations than Euler.  With RKC, time_step is the first step
+  // only.
+  IntegratorKind integrator = IntegratorKind::kEuler;
   std::unordered_map<const double*, std::vector<double>> damping_scale;
   // Called with each point of SolverReport::trace as it is recorded, while
   // the parameter blocks hold that iterate: lets a caller keep the path.

@@ -16,6 +16,7 @@ namespace {
 // Power iteration finds lambda_max of D^-1/2 J^T J D^-1/2 to its 1e-4.
 TEST(TangentStateTest, LargestEigenvalueIsTheStiffestJacobiRate) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.damping = DampingKind::kJacobi;
   const State state = FreeBlocks(toy.problem);
   ASSERT_EQ(state.tangent_size, 2);
   Evaluation e;
