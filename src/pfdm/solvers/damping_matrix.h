@@ -1,6 +1,7 @@
 // The damping matrix D of the paper's dynamics D qdot = -J^T r as the
 // explicit integrators apply it: diagonal (Jacobi, unit) or the model's
-// coupled damping, a dense SPD matrix factored once (docs/dynamics.md).
+// coupled damping, a dense SPD matrix (Euler builds it at each step's
+// start, RKC once; docs/dynamics.md).
 #ifndef PFDM_SOLVERS_DAMPING_MATRIX_H_
 #define PFDM_SOLVERS_DAMPING_MATRIX_H_
 

@@ -162,6 +162,7 @@ SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
     report.converged = true;
     return report;
   }
+  const double first_dt = dt;
   std::vector<double> velocity, step(state.tangent_size), before;
   Evaluation next;
   int refusals = 0;
@@ -183,8 +184,12 @@ SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
     const bool moved = Move(problem, state, step);
     ++report.residual_evaluations;
     ++report.jacobian_evaluations;
+    // The model damping is the paper's D(q) = integral of L(q)^T L(q): taken
+    // at the state each step starts from, as an explicit step takes the
+    // force (docs/dynamics.md).
+    const bool refresh = !d->diagonal();
     const bool finite =
-        moved && Evaluate(problem, state, options.num_threads, false, &next);
+        moved && Evaluate(problem, state, options.num_threads, refresh, &next);
     if (!finite || next.cost > now.cost) {
       Restore(state, before);
       if (finite && next.cost - now.cost <= kRounding * now.cost) {
@@ -207,6 +212,16 @@ SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
     time += dt;
     ++report.iterations;
     const bool at_rest = rest_test.AtRest(dt, now.cost, next.cost);
+    if (refresh) {
+      std::string error;
+      std::optional<DampingMatrix> fresh =
+          DampingMatrix::Build(*problem, state, next.jacobian, options, &error);
+      if (fresh) d = std::move(fresh);  // Else the last D, still SPD.
+      next.jacobian = ceres::CRSMatrix();
+      // The fresh D's rates are near 1 again: a step halved on the way
+      // (a rise where the path curved) grows back toward its start.
+      dt = std::min(2.0 * dt, first_dt);
+    }
     std::swap(now, next);
     report.trace.push_back(
         {report.iterations, time, SecondsSince(start), now.cost,

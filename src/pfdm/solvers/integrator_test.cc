@@ -260,5 +260,20 @@ TEST(IntegratorTest, ModelDampingRestsAtTheBoundedMinimum) {
   }
 }
 
+// The model damping is D(q) = J(q)^T J(q), taken at each step's start:
+// on r = x^2 - 4 a step of dt = 1 is then Newton's x - (x^2 - 4) / (2x),
+// 3 -> 2.1666667 -> 2.0064103 (a D frozen at x = 3 would give 2.0831).
+TEST(IntegratorTest, ModelDampingIsTakenAtEachStepsStart) {
+  ScalarToyProblem<QuadraticResidual> toy(3.0, SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kModel;
+  toy.options.time_step = 1.0;
+  toy.options.max_steps = 2;
+  const SolverReport report = toy.Solve();
+  EXPECT_EQ(report.iterations, 2);
+  const double x1 = 3.0 - 5.0 / 6.0;
+  EXPECT_NEAR(toy.x[0], x1 - (x1 * x1 - 4.0) / (2.0 * x1), 1e-8);
+}
+
 }  // namespace
 }  // namespace pfdm

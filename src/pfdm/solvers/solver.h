@@ -20,8 +20,8 @@ enum class SolverKind { kDirect, kDamped, kIntegrator };
 // diag(J^T J) at the start (each parameter moves at the rate the residuals
 // hold it, pseudo-time dimensionless), the identity (a constant damping;
 // then pseudo-time carries the units of the parameters), or the model's
-// coupled damping, J^T J at the start (the paper's integral of L^T L over
-// the material, sampled at the data, plus the regularizers' block): every
+// coupled damping, J^T J at each step's start (the paper's integral of L^T L
+// over the material, sampled at the data, plus the regularizers' block): every
 // mode then decays at a rate near 1 (docs/dynamics.md).
 enum class DampingKind { kJacobi, kUnit, kModel };
 
@@ -80,8 +80,8 @@ struct SolverOptions {
   // multiplier for each tangent coordinate (a block not listed: all 1), so
   // that a caller can make parameter groups move at different rates.  The
   // damped mode's D is Ceres' Levenberg-Marquardt diagonal, diag(J^T J).
-  // The model damping by default: with it forward Euler rests in 6-25
-  // steps a solve; with Jacobi damping it needs about lambda_max /
+  // The model damping by default: with it forward Euler rests in 3-11
+  // steps a tracked frame; with Jacobi damping it needs about lambda_max /
   // lambda_min (1e4) steps per e-fold of the slowest mode and stops at
   // max_steps short of rest (docs/dynamics.md).
   DampingKind damping = DampingKind::kModel;
