@@ -1,13 +1,15 @@
-// The three solvers on the same tracked phantom frame (frame 1 of 2, K = 17,
+// The solvers on the same tracked phantom frame (the integrator by forward
+// Euler with Jacobi damping, the paper's variant, and by forward Euler and
+// RKC with the model damping) (frame 1 of 2, K = 17,
 // N = 2k and 20k tags): Jacobian evaluations and wall time until the energy
 // is within 2e-4 of where the direct solve ends (the RMS within 1e-4,
 // 0.1 um at 1 mm), as counters and as ratios to the direct solve; and the
 // totals until rest.
 //
 // Frame 0 is solved in one correspondence round and every solve is capped
-// at 10,000 steps: the explicit integrator needs about 20,000 per round on
-// frame 0 (docs/dynamics.md), which at 20k tags would take a quarter of an
-// hour and say nothing more.
+// at 10,000 steps: forward Euler needs about 20,000 per round on frame 0
+// (docs/dynamics.md), which at 20k tags would take a quarter of an hour and
+// say nothing more.
 #include <algorithm>
 #include <limits>
 #include <vector>
@@ -27,9 +29,15 @@ struct Run {
   double seconds_to_target = std::numeric_limits<double>::quiet_NaN();
 };
 
-FrameFit FitTrackedFrame(const Phantom& phantom, SolverKind kind) {
+// solver: 0 direct, 1 damped, 2 integrator by forward Euler with Jacobi
+// damping, 3 by forward Euler with the model damping, 4 by RKC with it.
+FrameFit FitTrackedFrame(const Phantom& phantom, int solver) {
   FitOptions options;
-  options.solver.kind = kind;
+  options.solver.kind = static_cast<SolverKind>(std::min(solver, 2));
+  options.solver.integrator =
+      solver == 4 ? IntegratorKind::kRkc : IntegratorKind::kEuler;
+  options.solver.damping =
+      solver == 2 ? DampingKind::kJacobi : DampingKind::kModel;
   options.solver.max_steps = 10000;
   options.max_correspondence_rounds = 1;
   return FitSequence(phantom.points, ModelConfig::Paper(17), options).frames[1];
@@ -57,10 +65,10 @@ Run Measure(FrameFit frame, double target) {
 // The median of three direct solves after a warm-up: at 2k tags one takes
 // milliseconds and varies by a factor of two.
 Run DirectReference(const Phantom& phantom) {
-  FitTrackedFrame(phantom, SolverKind::kDirect);
+  FitTrackedFrame(phantom, 0);
   std::vector<Run> runs;
   for (int repeat = 0; repeat < 3; ++repeat) {
-    FrameFit frame = FitTrackedFrame(phantom, SolverKind::kDirect);
+    FrameFit frame = FitTrackedFrame(phantom, 0);
     const double target = frame.trace.back().cost * (1.0 + kEnergyTolerance);
     runs.push_back(Measure(std::move(frame), target));
   }
@@ -70,7 +78,8 @@ Run DirectReference(const Phantom& phantom) {
   return runs[1];
 }
 
-// Args: points, solver (0 direct, 1 damped, 2 integrator).
+// Args: points, solver (0 direct, 1 damped, 2 euler jacobi, 3 euler model,
+// 4 rkc model).
 void BM_Solver(benchmark::State& state) {
   PhantomOptions phantom_options;
   phantom_options.num_points = static_cast<int>(state.range(0));
@@ -81,7 +90,7 @@ void BM_Solver(benchmark::State& state) {
       direct.frame.trace.back().cost * (1.0 + kEnergyTolerance);
   FrameFit frame;
   for (auto _ : state) {
-    frame = FitTrackedFrame(phantom, static_cast<SolverKind>(state.range(1)));
+    frame = FitTrackedFrame(phantom, static_cast<int>(state.range(1)));
   }
   const Run run = Measure(std::move(frame), target);
   state.counters["jacobian_evals_to_rms"] = run.evaluations_to_target;
@@ -103,7 +112,7 @@ void BM_Solver(benchmark::State& state) {
 
 BENCHMARK(BM_Solver)
     ->ArgNames({"points", "solver"})
-    ->ArgsProduct({{2000, 20000}, {0, 1, 2}})
+    ->ArgsProduct({{2000, 20000}, {0, 1, 2, 3, 4}})
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 

@@ -30,7 +30,9 @@ BENCHMARKS = ["fit_benchmark", "cost_function_benchmark", "solvers_benchmark",
 LINEAR_SOLVERS = {0: "DENSE_NORMAL_CHOLESKY", 1: "DENSE_QR",
                   2: "SPARSE_NORMAL_CHOLESKY"}
 SPARSE_LIBRARIES = {0: "SuiteSparse", 1: "CXSparse", 2: "Eigen"}
-SOLVERS = {0: "direct", 1: "damped (dt = 1,000)", 2: "integrator"}
+SOLVERS = {0: "direct", 1: "damped (dt = 1,000)",
+           2: "integrator (euler, jacobi)", 3: "integrator (euler, model)",
+           4: "integrator (rkc, model)"}
 BATCH_CASES = 6
 BATCH_TAGS = 2000
 # As benchmarks/thread_cpu.h's kIdleOthersCores.

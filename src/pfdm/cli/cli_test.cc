@@ -197,7 +197,10 @@ const BadInput kBadInputs[] = {
      "--max_steps must be between 1 and 1000000, got 0"},
     {"unknown damping", "frame,id,x,y,z\n0,1,2,3,4\n",
      "--solver integrator --damping mass",
-     "unknown --damping 'mass' (expected jacobi or unit)"},
+     "unknown --damping 'mass' (expected jacobi, unit or model)"},
+    {"unknown integrator", "frame,id,x,y,z\n0,1,2,3,4\n",
+     "--solver integrator --integrator rk4",
+     "unknown --integrator 'rk4' (expected euler or rkc)"},
     {"bad damping scale", "frame,id,x,y,z\n0,1,2,3,4\n",
      "--solver integrator --damping_scale twist=0",
      "--damping_scale entry 'twist=0' is not group=value with a positive "

@@ -110,6 +110,9 @@ int RunCompareSolvers() {
   const PointSequence points = PointsFromFlags();
   CheckOptionsAgainstPoints(base, points);
 
+  std::printf("integrator: %s, damping %s\n",
+              IntegratorName(base.solver.integrator),
+              DampingName(base.solver.damping));
   std::map<SolverKind, SequenceFit> fits;
   for (SolverKind kind : kSolvers) {
     FitOptions options = base;

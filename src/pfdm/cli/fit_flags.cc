@@ -80,16 +80,21 @@ DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
               "local field's is SPARSE_NORMAL_CHOLESKY)");
 DEFINE_double(time_step, kDefaults.time_step,
               "damped and integrator: pseudo-time step, 1e-6 to 1e12; 0 = "
-              "default (integrator: 0.9 of its stability bound, damped: "
-              "1000)");
+              "default (euler: 0.9 of its stability bound, damped: 1000; "
+              "rkc: its first step, then error-controlled)");
 DEFINE_double(rest_tolerance, kDefaults.rest_tolerance,
               "damped and integrator: at rest when the energy dissipated per "
-              "unit pseudo-time is below rest_tolerance^2 of the initial, "
-              "1e-12 to 0.01");
+              "unit pseudo-time is below rest_tolerance^2 of the initial "
+              "(rkc: and the last step's move below rest_tolerance of its "
+              "square root), 1e-12 to 0.01");
+DEFINE_string(integrator, kDefaults.integrator.c_str(),
+              "integrator: rkc (Runge-Kutta-Chebyshev, error-controlled, "
+              "comes to rest) or euler (forward Euler, the paper's)");
 DEFINE_int32(max_steps, kDefaults.max_steps,
              "damped and integrator: most steps per solve, 1 to 1e6");
-DEFINE_string(damping, kDefaults.damping.c_str(),
-              "integrator: damping D = jacobi (diag J^T J) or unit");
+DEFINE_string(
+    damping, kDefaults.damping.c_str(),
+    "integrator: damping D = jacobi (diag J^T J), unit or model (J^T J)");
 DEFINE_string(damping_scale, "",
               "integrator: multipliers of D per group, e.g. "
               "twist=10,offsets=2 (groups pose shape twist bending offsets)");
@@ -156,6 +161,7 @@ FitSettings FitSettingsFromFlags() {
   s.rest_tolerance = FLAGS_rest_tolerance;
   s.max_steps = FLAGS_max_steps;
   s.damping = FLAGS_damping;
+  s.integrator = FLAGS_integrator;
   s.damping_scale = FLAGS_damping_scale;
   s.jacobian = FLAGS_jacobian;
   s.local = FLAGS_local;

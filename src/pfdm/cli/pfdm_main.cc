@@ -45,7 +45,7 @@ const std::string kFitFlags =
     "format contours model knots wall surface ed_frame smoothness prior "
     "untracked_prior temporal_prior incompressible loss "
     "loss_scale threads apex base linear_solver time_step rest_tolerance "
-    "max_steps damping damping_scale jacobian local local_grid "
+    "max_steps integrator damping damping_scale jacobian local local_grid "
     "local_stiffness uncertainty ";
 
 const Command kCommands[] = {

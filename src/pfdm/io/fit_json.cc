@@ -66,8 +66,8 @@ void AddStepperSettings(const FitOptions& options, json* settings) {
   }
   if (options.solver.kind == SolverKind::kIntegrator) {
     const DampingGroups& g = options.damping_groups;
-    (*settings)["damping"] =
-        options.solver.damping == DampingKind::kJacobi ? "jacobi" : "unit";
+    (*settings)["integrator"] = IntegratorName(options.solver.integrator);
+    (*settings)["damping"] = DampingName(options.solver.damping);
     (*settings)["damping_scale"] = {{"pose", g.pose},
                                     {"shape", g.shape},
                                     {"twist", g.twist},

@@ -106,6 +106,7 @@ void SetSolverOptions(const FitSettings& s, FitOptions* options) {
   // is as long as anyone waits.
   options->solver.max_steps = IntInRange("max_steps", s.max_steps, 1, 1000000);
   options->solver.damping = DampingFromName(s.damping);
+  options->solver.integrator = IntegratorFromName(s.integrator);
   options->damping_groups = DampingGroupsFromText(s.damping_scale);
 }
 
@@ -160,6 +161,8 @@ void CheckSettingsApply(const FitSettings& s, bool every_solver) {
        "--solver damped or integrator", solver},
       {"damping", s.damping != d.damping, integrator, "--solver integrator",
        solver},
+      {"integrator", s.integrator != d.integrator, integrator,
+       "--solver integrator", solver},
       {"damping_scale", s.damping_scale != d.damping_scale, integrator,
        "--solver integrator", solver},
       {"linear_solver", s.linear_solver != d.linear_solver, ceres_solve,

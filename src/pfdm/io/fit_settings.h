@@ -49,7 +49,8 @@ struct FitSettings {
   double time_step = 0.0;
   double rest_tolerance = SolverOptions().rest_tolerance;
   int max_steps = SolverOptions().max_steps;
-  std::string damping = "jacobi";
+  std::string damping = DampingName(SolverOptions().damping);
+  std::string integrator = IntegratorName(SolverOptions().integrator);
   std::string damping_scale;
   std::string jacobian = "analytic";
   // Local deformations (fit/local_fit.h).

@@ -44,6 +44,7 @@ TEST(FitSettingsTest, DefaultsAreTheLibrarys) {
   EXPECT_EQ(options.solver.rest_tolerance, library.solver.rest_tolerance);
   EXPECT_EQ(options.solver.max_steps, library.solver.max_steps);
   EXPECT_EQ(options.solver.damping, library.solver.damping);
+  EXPECT_EQ(options.solver.integrator, library.solver.integrator);
   EXPECT_EQ(options.jacobian, library.jacobian);
   EXPECT_FALSE(options.hint.has_value());
   const ModelConfig config = ModelConfigFrom(settings);
@@ -59,12 +60,14 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   settings.solver = "integrator";
   settings.damping = "unit";
   settings.damping_scale = "twist=2";
+  settings.integrator = "rkc";
   settings.time_step = 0.5;
   settings.apex = "1,2,3";
   settings.base = "4,5,6.5";
   const FitOptions options = FitOptionsFrom(settings);
   EXPECT_EQ(options.solver.kind, SolverKind::kIntegrator);
   EXPECT_EQ(options.solver.damping, DampingKind::kUnit);
+  EXPECT_EQ(options.solver.integrator, IntegratorKind::kRkc);
   EXPECT_EQ(options.damping_groups.twist, 2.0);
   EXPECT_EQ(options.solver.time_step, 0.5);
   ASSERT_TRUE(options.hint.has_value());
@@ -205,6 +208,8 @@ TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
        "--damping applies to --solver integrator, not --solver damped"},
       {[](FitSettings* s) { s->damping_scale = "twist=2"; },
        "--damping_scale applies to --solver integrator, not --solver direct"},
+      {[](FitSettings* s) { s->integrator = "rkc"; },
+       "--integrator applies to --solver integrator, not --solver direct"},
       {[](FitSettings* s) {
          s->solver = "integrator";
          s->linear_solver = "DENSE_QR";

@@ -3,20 +3,18 @@
 // stiffness K q of the regularizers alike), integrated two ways; see
 // docs/dynamics.md.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
 #include <optional>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
-#include "ceres/crs_matrix.h"
 #include "ceres/iteration_callback.h"
-#include "ceres/manifold.h"
 #include "ceres/solver.h"
+#include "pfdm/solvers/damping_matrix.h"
 #include "pfdm/solvers/solver.h"
+#include "pfdm/solvers/tangent_state.h"
 #include "pfdm/util/stopwatch.h"
 
 namespace pfdm {
@@ -26,6 +24,12 @@ namespace {
 // iteration underestimates lambda_max, and at the limit itself the stiffest
 // mode would only oscillate.
 constexpr double kStabilitySafety = 0.9;
+// With the model damping every mode's rate lies in (0, lambda_max] with
+// lambda_max about 1: dt = 1 / lambda_max takes the stiffest mode to rest
+// in one step and keeps each mode's factor 1 - dt lambda in [0, 1), a
+// monotone decay like the continuous dynamics', where 0.9 x 2 / lambda_max
+// would flip the sign of the modes near lambda_max at every step.
+constexpr double kModelStepFraction = 1.0;
 // Pseudo-time step of the damped mode when none is given.  With
 // D = diag(J^T J) the explicit limit is about 1; at 1,000 the slow modes of
 // a frame fit (lambda ~ 1e-4) lose a tenth or more of their amplitude per
@@ -35,225 +39,6 @@ constexpr double kDefaultDampedStep = 1e3;
 constexpr int kMaxRefusals = 50;
 // Relative energy changes this small are the rounding of the sum.
 constexpr double kRounding = 1e-13;
-
-// The problem's free parameter blocks and their places in the tangent
-// vector that Problem::Evaluate returns.
-struct State {
-  std::vector<double*> blocks;
-  std::vector<int> sizes, offsets;
-  int tangent_size = 0;
-};
-
-// The varied blocks in the order the residuals name them.  Not
-// GetParameterBlocks's order, which is by address: the integrator's sums
-// then ran in an order the allocator chose, and its rest test, which can
-// fire on a plateau, fell either way (a 2,000-tag frame after other fits in
-// one process rested at 3,367 steps, 1.2 % above the direct solve's RMS;
-// alone it ran its 10,000).
-State FreeBlocks(const ceres::Problem& problem) {
-  State state;
-  std::vector<ceres::ResidualBlockId> residuals;
-  problem.GetResidualBlocks(&residuals);
-  std::vector<double*> all;
-  std::unordered_set<double*> seen;
-  for (const ceres::ResidualBlockId residual : residuals) {
-    std::vector<double*> blocks;
-    problem.GetParameterBlocksForResidualBlock(residual, &blocks);
-    for (double* block : blocks) {
-      if (seen.insert(block).second) all.push_back(block);
-    }
-  }
-  for (double* block : all) {
-    if (problem.IsParameterBlockConstant(block)) continue;
-    state.blocks.push_back(block);
-    state.sizes.push_back(problem.ParameterBlockSize(block));
-    state.offsets.push_back(state.tangent_size);
-    state.tangent_size += problem.ParameterBlockTangentSize(block);
-  }
-  return state;
-}
-
-struct Evaluation {
-  double cost = 0.0;
-  std::vector<double> gradient;
-  ceres::CRSMatrix jacobian;
-};
-
-// The cost and its tangent-space gradient (and the Jacobian if asked), all
-// finite.  Ceres computes the Jacobian blocks for a gradient anyway; asking
-// for the CRS matrix only adds its assembly.
-bool Evaluate(ceres::Problem* problem, const State& state, int num_threads,
-              bool jacobian, Evaluation* evaluation) {
-  ceres::Problem::EvaluateOptions options;
-  options.parameter_blocks = state.blocks;
-  options.num_threads = num_threads;
-  if (!problem->Evaluate(options, &evaluation->cost, nullptr,
-                         &evaluation->gradient,
-                         jacobian ? &evaluation->jacobian : nullptr)) {
-    return false;
-  }
-  return std::isfinite(evaluation->cost) &&
-         std::all_of(evaluation->gradient.begin(), evaluation->gradient.end(),
-                     [](double g) { return std::isfinite(g); });
-}
-
-double Norm(const std::vector<double>& v) {
-  double sum = 0.0;
-  for (double x : v) sum += x * x;
-  return std::sqrt(sum);
-}
-
-// diag(J^T J), floored so that directions the residuals barely see are
-// weakly damped instead of dividing by zero.
-std::vector<double> JacobiDamping(const ceres::CRSMatrix& j) {
-  std::vector<double> d(j.num_cols, 0.0);
-  for (size_t k = 0; k < j.values.size(); ++k) {
-    d[j.cols[k]] += j.values[k] * j.values[k];
-  }
-  const double largest = *std::max_element(d.begin(), d.end());
-  for (double& x : d) x = std::max(x, 1e-12 * std::max(largest, 1e-300));
-  return d;
-}
-
-// The integrator's D: the chosen base times the caller's per-coordinate
-// scales.  A scale that is not positive and finite would stop or reverse
-// the motion, so it is refused.
-std::optional<std::vector<double>> Damping(const ceres::Problem& problem,
-                                           const State& state,
-                                           const ceres::CRSMatrix& j,
-                                           const SolverOptions& options,
-                                           std::string* error) {
-  std::vector<double> d = options.damping == DampingKind::kJacobi
-                              ? JacobiDamping(j)
-                              : std::vector<double>(j.num_cols, 1.0);
-  for (size_t b = 0; b < state.blocks.size(); ++b) {
-    const auto scale = options.damping_scale.find(state.blocks[b]);
-    if (scale == options.damping_scale.end()) continue;
-    const int tangent_size = problem.ParameterBlockTangentSize(state.blocks[b]);
-    if (static_cast<int>(scale->second.size()) != tangent_size) {
-      *error = "a damping scale lists " + std::to_string(scale->second.size()) +
-               " entries for a block of tangent size " +
-               std::to_string(tangent_size);
-      return std::nullopt;
-    }
-    for (int i = 0; i < tangent_size; ++i) {
-      const double s = scale->second[i];
-      if (!(s > 0.0) || !std::isfinite(s)) {
-        *error = "damping scales must be positive and finite, got " +
-                 std::to_string(s);
-        return std::nullopt;
-      }
-      d[state.offsets[b] + i] *= s;
-    }
-  }
-  return d;
-}
-
-// lambda_max of D^-1/2 J^T J D^-1/2 by power iteration on the CRS Jacobian,
-// from a start vector with no symmetry that could hide the top mode.
-double LargestEigenvalue(const ceres::CRSMatrix& j,
-                         const std::vector<double>& d) {
-  std::vector<double> x(j.num_cols), y(j.num_rows), z(j.num_cols);
-  for (int c = 0; c < j.num_cols; ++c) x[c] = 1.0 + 0.5 * std::sin(c + 1.0);
-  double lambda = 0.0;
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    const double norm = Norm(x);
-    if (norm == 0.0) break;
-    for (int c = 0; c < j.num_cols; ++c) x[c] /= norm * std::sqrt(d[c]);
-    for (int r = 0; r < j.num_rows; ++r) {
-      y[r] = 0.0;
-      for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
-        y[r] += j.values[k] * x[j.cols[k]];
-      }
-    }
-    std::fill(z.begin(), z.end(), 0.0);
-    for (int r = 0; r < j.num_rows; ++r) {
-      for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
-        z[j.cols[k]] += j.values[k] * y[r];
-      }
-    }
-    for (int c = 0; c < j.num_cols; ++c) z[c] /= std::sqrt(d[c]);
-    const double next = Norm(z);
-    const bool settled = std::abs(next - lambda) <= 1e-4 * next;
-    lambda = next;
-    x.swap(z);
-    if (settled) break;
-  }
-  return lambda;
-}
-
-// out = x [+] delta through the block's manifold, then into its bounds, as
-// Ceres moves a block.
-bool PlusInBounds(const ceres::Problem& problem, double* block, int size,
-                  const double* x, const double* delta, double* out) {
-  if (const ceres::Manifold* manifold = problem.GetManifold(block)) {
-    if (!manifold->Plus(x, delta, out)) return false;
-  } else {
-    for (int i = 0; i < size; ++i) out[i] = x[i] + delta[i];
-  }
-  for (int i = 0; i < size; ++i) {
-    out[i] = std::clamp(out[i], problem.GetParameterLowerBound(block, i),
-                        problem.GetParameterUpperBound(block, i));
-  }
-  return true;
-}
-
-// Moves every free block by its part of the tangent step.
-bool Move(ceres::Problem* problem, const State& state,
-          const std::vector<double>& step) {
-  std::vector<double> moved;
-  for (size_t b = 0; b < state.blocks.size(); ++b) {
-    double* x = state.blocks[b];
-    moved.resize(state.sizes[b]);
-    if (!PlusInBounds(*problem, x, state.sizes[b], x,
-                      step.data() + state.offsets[b], moved.data())) {
-      return false;
-    }
-    std::copy(moved.begin(), moved.end(), x);
-  }
-  return true;
-}
-
-// |x - (x [+] -g)| with the bounds applied, Ceres' gradient_norm: the force
-// that is free to move the model, so that the three solvers' traces report
-// the same quantity.
-double ProjectedGradientNorm(const ceres::Problem& problem, const State& state,
-                             const std::vector<double>& gradient) {
-  std::vector<double> minus_g, moved;
-  double sum = 0.0;
-  for (size_t b = 0; b < state.blocks.size(); ++b) {
-    const double* g = gradient.data() + state.offsets[b];
-    const int tangent_size = problem.ParameterBlockTangentSize(state.blocks[b]);
-    minus_g.assign(g, g + tangent_size);
-    for (double& x : minus_g) x = -x;
-    moved.resize(state.sizes[b]);
-    if (!PlusInBounds(problem, state.blocks[b], state.sizes[b], state.blocks[b],
-                      minus_g.data(), moved.data())) {
-      return std::numeric_limits<double>::quiet_NaN();
-    }
-    for (int i = 0; i < state.sizes[b]; ++i) {
-      sum += std::pow(moved[i] - state.blocks[b][i], 2);
-    }
-  }
-  return std::sqrt(sum);
-}
-
-std::vector<double> Snapshot(const State& state) {
-  std::vector<double> values;
-  for (size_t b = 0; b < state.blocks.size(); ++b) {
-    values.insert(values.end(), state.blocks[b],
-                  state.blocks[b] + state.sizes[b]);
-  }
-  return values;
-}
-
-void Restore(const State& state, const std::vector<double>& values) {
-  auto from = values.begin();
-  for (size_t b = 0; b < state.blocks.size(); ++b) {
-    std::copy(from, from + state.sizes[b], state.blocks[b]);
-    from += state.sizes[b];
-  }
-}
 
 // Rest: the power the damping dissipates, dE/dt = -qdot^T D qdot =
 // -|f|^2_{D^-1}, has fallen below rest_tolerance^2 of the initial energy per
@@ -332,21 +117,13 @@ class DampedCallback : public ceres::IterationCallback {
   std::exception_ptr error_;
 };
 
-void Fail(const std::string& message, SolverReport* report) {
-  report->usable = false;
-  report->converged = false;
-  report->termination = "FAILURE";
-  report->message = message;
-}
-
 }  // namespace
 
 // Forward Euler in the tangent space: q_{n+1} = q_n [+] (-dt D^-1 J^T r),
 // projected into the bounds.  A step that raises the energy (the stability
 // bound was estimated once, at the start) or leaves the residuals
 // non-finite is undone and dt halved for good.
-SolverReport SolveIntegrator(ceres::Problem* problem,
-                             const SolverOptions& options) {
+SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
   const Clock::time_point start = Clock::now();
   CheckInterrupt(options);
   SolverReport report;
@@ -359,19 +136,18 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
     return report;
   }
   const RestTest rest_test(now.cost, options.rest_tolerance);
-  std::vector<double> d;
+  std::optional<DampingMatrix> d;
   double dt = options.time_step;
   if (state.tangent_size > 0) {
     std::string error;
-    std::optional<std::vector<double>> damping =
-        Damping(*problem, state, now.jacobian, options, &error);
-    if (!damping) {
+    d = DampingMatrix::Build(*problem, state, now.jacobian, options, &error);
+    if (!d) {
       Fail(error, &report);
       return report;
     }
-    d = std::move(*damping);
     if (dt <= 0.0) {
-      dt = kStabilitySafety * 2.0 / LargestEigenvalue(now.jacobian, d);
+      dt = (d->diagonal() ? kStabilitySafety * 2.0 : kModelStepFraction) /
+           d->LargestRate(now.jacobian);
     }
   }
   now.jacobian = ceres::CRSMatrix();
@@ -386,20 +162,34 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
     report.converged = true;
     return report;
   }
-  std::vector<double> step(state.tangent_size), before;
+  const double first_dt = dt;
+  std::vector<double> velocity, step(state.tangent_size), before;
   Evaluation next;
   int refusals = 0;
   while (report.iterations < options.max_steps) {
     CheckInterrupt(options);  // Refused steps too.
-    for (int i = 0; i < state.tangent_size; ++i) {
-      step[i] = -dt * now.gradient[i] / d[i];
+    // A coordinate a bound holds does not move; with a coupled D the others
+    // then move by the reduced system, so the model rests where the free
+    // force vanishes (for a diagonal D the clipping in Move alone did).
+    if (d->diagonal()) {  // Today's arithmetic, to the last bit.
+      for (int i = 0; i < state.tangent_size; ++i) {
+        step[i] = -dt * now.gradient[i] / d->diagonal_entries()[i];
+      }
+    } else {
+      velocity = d->Velocity(now.gradient,
+                             HeldAtBounds(*problem, state, now.gradient));
+      for (int i = 0; i < state.tangent_size; ++i) step[i] = dt * velocity[i];
     }
     before = Snapshot(state);
     const bool moved = Move(problem, state, step);
     ++report.residual_evaluations;
     ++report.jacobian_evaluations;
+    // The model damping is the paper's D(q) = integral of L(q)^T L(q): taken
+    // at the state each step starts from, as an explicit step takes the
+    // force (docs/dynamics.md).
+    const bool refresh = !d->diagonal();
     const bool finite =
-        moved && Evaluate(problem, state, options.num_threads, false, &next);
+        moved && Evaluate(problem, state, options.num_threads, refresh, &next);
     if (!finite || next.cost > now.cost) {
       Restore(state, before);
       if (finite && next.cost - now.cost <= kRounding * now.cost) {
@@ -422,6 +212,16 @@ SolverReport SolveIntegrator(ceres::Problem* problem,
     time += dt;
     ++report.iterations;
     const bool at_rest = rest_test.AtRest(dt, now.cost, next.cost);
+    if (refresh) {
+      std::string error;
+      std::optional<DampingMatrix> fresh =
+          DampingMatrix::Build(*problem, state, next.jacobian, options, &error);
+      if (fresh) d = std::move(fresh);  // Else the last D, still SPD.
+      next.jacobian = ceres::CRSMatrix();
+      // The fresh D's rates are near 1 again: a step halved on the way
+      // (a rise where the path curved) grows back toward its start.
+      dt = std::min(2.0 * dt, first_dt);
+    }
     std::swap(now, next);
     report.trace.push_back(
         {report.iterations, time, SecondsSince(start), now.cost,

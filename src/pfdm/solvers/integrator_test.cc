@@ -1,5 +1,6 @@
-// The explicit Lagrangian integrator (SolverKind::kIntegrator) on toy
-// problems whose steps can be worked out by hand.
+// The explicit Lagrangian integrator's forward Euler (the paper's method,
+// IntegratorKind::kEuler) on toy problems whose steps can be worked out by
+// hand; RKC's tests are in rkc_test.cc.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -29,6 +30,8 @@ class QuietCeres {
 
 TEST(IntegratorTest, OneStepIsForwardEulerWithJacobiDamping) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kJacobi;
   toy.options.time_step = 0.3;
   toy.options.max_steps = 1;
   const SolverReport report = toy.Solve();
@@ -46,6 +49,8 @@ TEST(IntegratorTest, OneStepIsForwardEulerWithJacobiDamping) {
 
 TEST(IntegratorTest, OneStepUsesTheDampingScales) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kJacobi;
   toy.options.time_step = 0.3;
   toy.options.max_steps = 1;
   toy.options.damping_scale[toy.x] = {2.0, 0.5};
@@ -62,6 +67,7 @@ TEST(IntegratorTest, OneStepUsesTheDampingScales) {
 
 TEST(IntegratorTest, UnitDampingIsPlainGradientFlow) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   toy.options.damping = DampingKind::kUnit;
   toy.options.time_step = 1e-3;
   toy.options.max_steps = 1;
@@ -76,6 +82,7 @@ TEST(IntegratorTest, UnitDampingIsPlainGradientFlow) {
 TEST(IntegratorTest, ScaledAndUnitDampingRestAtTheMinimum) {
   for (const DampingKind kind : {DampingKind::kJacobi, DampingKind::kUnit}) {
     LinearToyProblem toy(SolverKind::kIntegrator);
+    toy.options.integrator = IntegratorKind::kEuler;
     toy.options.damping = kind;
     toy.options.damping_scale[toy.x] = {2.0, 0.5};
     toy.options.rest_tolerance = 1e-9;
@@ -114,6 +121,7 @@ TEST(IntegratorTest, ThePathDoesNotDependOnWhereTheBlocksLie) {
         nullptr, x0, x1);
     SolverOptions options;
     options.kind = SolverKind::kIntegrator;
+    options.integrator = IntegratorKind::kEuler;
     options.damping = DampingKind::kUnit;
     options.on_step = [&](const SolverTracePoint& point) {
       path[layout].push_back(point.cost);
@@ -133,6 +141,7 @@ TEST(IntegratorTest, BadDampingScalesAreRefused) {
       {1.0}, {1.0, 0.0}, {1.0, -2.0}, {std::nan(""), 1.0}};
   for (const std::vector<double>& scale : bad) {
     LinearToyProblem toy(SolverKind::kIntegrator);
+    toy.options.integrator = IntegratorKind::kEuler;
     toy.options.damping_scale[toy.x] = scale;
     const SolverReport report = toy.Solve();
     EXPECT_FALSE(report.usable);
@@ -144,6 +153,8 @@ TEST(IntegratorTest, BadDampingScalesAreRefused) {
 
 TEST(IntegratorTest, ChoosesAStepBelowTheStabilityBound) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kJacobi;
   toy.options.max_steps = 1;
   const SolverReport report = toy.Solve();
   ASSERT_EQ(report.trace.size(), 2u);
@@ -157,6 +168,8 @@ TEST(IntegratorTest, ChoosesAStepBelowTheStabilityBound) {
 // it is stable, and the energy never rises.
 TEST(IntegratorTest, RefusesStepsAboveTheStabilityBound) {
   LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kJacobi;
   toy.options.time_step = 2.5 * LinearStabilityBound();
   toy.options.rest_tolerance = 1e-9;
   const SolverReport report = toy.Solve();
@@ -175,6 +188,7 @@ TEST(IntegratorTest, RefusesStepsAboveTheStabilityBound) {
 TEST(IntegratorTest, StepsIntoNaNAreRefused) {
   const QuietCeres quiet;
   ScalarToyProblem<SquareRootResidual> toy(4.0, SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   toy.options.time_step = 1000.0;  // The first step lands far below x = 0.
   const SolverReport report = toy.Solve();
   EXPECT_TRUE(report.usable) << report.message;
@@ -184,11 +198,81 @@ TEST(IntegratorTest, StepsIntoNaNAreRefused) {
 TEST(IntegratorTest, NaNAtTheStartIsUnusable) {
   const QuietCeres quiet;
   ScalarToyProblem<SquareRootResidual> toy(-1.0, SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
   const SolverReport report = toy.Solve();
   EXPECT_FALSE(report.usable);
   EXPECT_EQ(report.termination, "FAILURE");
   EXPECT_NE(report.message.find("not finite"), std::string::npos);
   EXPECT_EQ(toy.x[0], -1.0);
+}
+
+// The model damping D = J^T J (docs/dynamics.md): on a linear problem
+// D^-1 J^T J = I, so every mode decays at rate 1 and a step dt multiplies
+// the distance to the minimum by 1 - dt, whatever the stiffness ratio
+// (here 100 x 100).
+TEST(IntegratorTest, ModelDampingDecaysEveryModeAtRateOne) {
+  LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kModel;
+  toy.options.time_step = 0.25;
+  toy.options.max_steps = 1;
+  toy.Solve();
+  EXPECT_NEAR(toy.x[0], 1.0 + 0.75 * (5.0 - 1.0), 1e-8);
+  EXPECT_NEAR(toy.x[1], 2.0 + 0.75 * (-3.0 - 2.0), 1e-8);
+}
+
+// The default step 1 / lambda_max takes every mode to rest at once: the
+// next step finds nothing left to dissipate.
+TEST(IntegratorTest, ModelDampingRestsInTwoSteps) {
+  LinearToyProblem toy(SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kModel;
+  toy.options.rest_tolerance = 1e-9;
+  const SolverReport report = toy.Solve();
+  EXPECT_EQ(report.termination, "REST");
+  EXPECT_LE(report.iterations, 2);
+  EXPECT_NEAR(toy.x[0], 1.0, 1e-8);
+  EXPECT_NEAR(toy.x[1], 2.0, 1e-8);
+}
+
+// With x0 <= 0.5 the minimum (1, 2) is out of bounds; the constrained one
+// holds x0 at 0.5 and x1 where the free force vanishes, 100 (x1 - 2) +
+// 0.01 (x1 - 2.5) = 0.  The coupled D (the 0.1 x0 + 0.1 x1 residual) would
+// keep pushing x1 if the held coordinate's force stayed in D^-1 g.
+TEST(IntegratorTest, ModelDampingRestsAtTheBoundedMinimum) {
+  for (const IntegratorKind kind :
+       {IntegratorKind::kEuler, IntegratorKind::kRkc}) {
+    LinearToyProblem toy(SolverKind::kIntegrator);
+    toy.x[0] = 0.0;
+    toy.problem.SetParameterUpperBound(toy.x, 0, 0.5);
+    toy.options.integrator = kind;
+    toy.options.damping = DampingKind::kModel;
+    toy.options.rest_tolerance = 1e-9;
+    const SolverReport report = toy.Solve();
+    EXPECT_EQ(report.termination, "REST") << IntegratorName(kind);
+    // Euler removes the free mode in a step; two RKC stages halve it per
+    // step (R(-1) = 1/2): 30 halvings to 1e-9.
+    EXPECT_LT(report.jacobian_evaluations,
+              kind == IntegratorKind::kEuler ? 10 : 200)
+        << IntegratorName(kind);
+    EXPECT_DOUBLE_EQ(toy.x[0], 0.5) << IntegratorName(kind);
+    EXPECT_NEAR(toy.x[1], 200.025 / 100.01, 1e-8) << IntegratorName(kind);
+  }
+}
+
+// The model damping is D(q) = J(q)^T J(q), taken at each step's start:
+// on r = x^2 - 4 a step of dt = 1 is then Newton's x - (x^2 - 4) / (2x),
+// 3 -> 2.1666667 -> 2.0064103 (a D frozen at x = 3 would give 2.0831).
+TEST(IntegratorTest, ModelDampingIsTakenAtEachStepsStart) {
+  ScalarToyProblem<QuadraticResidual> toy(3.0, SolverKind::kIntegrator);
+  toy.options.integrator = IntegratorKind::kEuler;
+  toy.options.damping = DampingKind::kModel;
+  toy.options.time_step = 1.0;
+  toy.options.max_steps = 2;
+  const SolverReport report = toy.Solve();
+  EXPECT_EQ(report.iterations, 2);
+  const double x1 = 3.0 - 5.0 / 6.0;
+  EXPECT_NEAR(toy.x[0], x1 - (x1 * x1 - 4.0) / (2.0 * x1), 1e-8);
 }
 
 }  // namespace

@@ -30,12 +30,44 @@ const char* SolverName(SolverKind kind) {
 DampingKind DampingFromName(const std::string& name) {
   if (name == "jacobi") return DampingKind::kJacobi;
   if (name == "unit") return DampingKind::kUnit;
+  if (name == "model") return DampingKind::kModel;
   throw InputError("unknown --damping '" + name +
-                   "' (expected jacobi or unit)");
+                   "' (expected jacobi, unit or model)");
+}
+
+const char* DampingName(DampingKind kind) {
+  switch (kind) {
+    case DampingKind::kJacobi:
+      return "jacobi";
+    case DampingKind::kUnit:
+      return "unit";
+    case DampingKind::kModel:
+      return "model";
+  }
+  return "";
+}
+
+IntegratorKind IntegratorFromName(const std::string& name) {
+  if (name == "euler") return IntegratorKind::kEuler;
+  if (name == "rkc") return IntegratorKind::kRkc;
+  throw InputError("unknown --integrator '" + name +
+                   "' (expected euler or rkc)");
+}
+
+const char* IntegratorName(IntegratorKind kind) {
+  return kind == IntegratorKind::kEuler ? "euler" : "rkc";
+}
+
+SolverReport SolveIntegrator(ceres::Problem* problem,
+                             const SolverOptions& options) {
+  return options.integrator == IntegratorKind::kEuler
+             ? SolveEuler(problem, options)
+             : SolveRkc(problem, options);
 }
 
 SolverReport SolveProblem(ceres::Problem* problem,
                           const SolverOptions& options) {
+  if (options.linear) return SolveDirect(problem, options);
   switch (options.kind) {
     case SolverKind::kDirect:
       return SolveDirect(problem, options);

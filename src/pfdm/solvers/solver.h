@@ -18,15 +18,28 @@ enum class SolverKind { kDirect, kDamped, kIntegrator };
 
 // The integrator's damping matrix D before the per-coordinate scales:
 // diag(J^T J) at the start (each parameter moves at the rate the residuals
-// hold it, pseudo-time dimensionless) or the identity (the paper's constant
-// damping; then pseudo-time carries the units of the parameters).
-enum class DampingKind { kJacobi, kUnit };
+// hold it, pseudo-time dimensionless), the identity (a constant damping;
+// then pseudo-time carries the units of the parameters), or the model's
+// coupled damping, J^T J at each step's start (the paper's integral of L^T L
+// over the material, sampled at the data, plus the regularizers' block): every
+// mode then decays at a rate near 1 (docs/dynamics.md).
+enum class DampingKind { kJacobi, kUnit, kModel };
+
+// How the integrator steps D qdot = -J^T r: forward Euler (the paper's
+// method) or second-order Runge-Kutta-Chebyshev with error control (the
+// same ODE and rest point, a stable step that grows with the square of its
+// stage count; docs/dynamics.md).
+enum class IntegratorKind { kEuler, kRkc };
 
 // "direct", "damped" or "integrator"; throws InputError otherwise.
 SolverKind SolverFromName(const std::string& name);
 const char* SolverName(SolverKind kind);
-// "jacobi" or "unit"; throws InputError otherwise.
+// "jacobi", "unit" or "model"; throws InputError otherwise.
 DampingKind DampingFromName(const std::string& name);
+const char* DampingName(DampingKind kind);
+// "euler" or "rkc"; throws InputError otherwise.
+IntegratorKind IntegratorFromName(const std::string& name);
+const char* IntegratorName(IntegratorKind kind);
 
 // One iteration (direct, damped) or step (integrator).
 struct SolverTracePoint {
@@ -49,10 +62,12 @@ struct SolverOptions {
   // a 170-parameter solve's time, spent idle.  Eigen's simplicial LDL^T is
   // single-threaded and does the arithmetic in a fraction of that.
   ceres::SparseLinearAlgebraLibraryType sparse_library = ceres::EIGEN_SPARSE;
-  // The residuals are affine in the parameters (the local field's): the
-  // direct solve takes one undamped Gauss-Newton step, the minimum up to
-  // round-off, instead of a damped one and a second factorization to
-  // confirm it.  The dynamics ignore it.
+  // The residuals are affine in the parameters (the local field's): every
+  // solver takes one undamped Gauss-Newton step, the minimum up to
+  // round-off.  A linear least-squares problem has one rest point, the
+  // same for every damped dynamics, and integrating the field's stiff thin
+  // plate to it only costs time; the global functions still follow the
+  // chosen dynamics (docs/dynamics.md).
   bool linear = false;
   // Dynamics (damped and integrator): pseudo-time step, 0 = the default
   // (integrator: 0.9 of the stability bound; damped: 1,000); rest when the
@@ -65,7 +80,17 @@ struct SolverOptions {
   // multiplier for each tangent coordinate (a block not listed: all 1), so
   // that a caller can make parameter groups move at different rates.  The
   // damped mode's D is Ceres' Levenberg-Marquardt diagonal, diag(J^T J).
-  DampingKind damping = DampingKind::kJacobi;
+  // The model damping by default: with it forward Euler rests in 3-11
+  // steps a tracked frame; with Jacobi damping it needs about lambda_max /
+  // lambda_min (1e4) steps per e-fold of the slowest mode and stops at
+  // max_steps short of rest (docs/dynamics.md).
+  DampingKind damping = DampingKind::kModel;
+  // Integrator only.  Forward Euler by default: with the model damping
+  // nothing is stiff and RKC's two stages per step cost 2.4x Euler's
+  // evaluations; with Jacobi damping RKC follows the same trajectory in
+  // fewer evaluations than Euler.  With RKC, time_step is the first step
+  // only.
+  IntegratorKind integrator = IntegratorKind::kEuler;
   std::unordered_map<const double*, std::vector<double>> damping_scale;
   // Called with each point of SolverReport::trace as it is recorded, while
   // the parameter blocks hold that iterate: lets a caller keep the path.
@@ -110,8 +135,11 @@ SolverReport SolveProblem(ceres::Problem* problem,
 
 SolverReport SolveDirect(ceres::Problem* problem, const SolverOptions& options);
 SolverReport SolveDamped(ceres::Problem* problem, const SolverOptions& options);
+// Dispatches on options.integrator.
 SolverReport SolveIntegrator(ceres::Problem* problem,
                              const SolverOptions& options);
+SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options);
+SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options);
 
 }  // namespace pfdm
 

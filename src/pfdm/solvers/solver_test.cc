@@ -77,6 +77,24 @@ TEST(SolverTest, SolveProblemDispatchesOnTheKind) {
   }
 }
 
+// A linear problem (the local field's) has one rest point, the least-squares
+// solution: every kind takes the direct solve's one Gauss-Newton step to it
+// (no pseudo-time), to 1e-10 of LinearGradient's zero.
+TEST(SolverTest, ALinearProblemIsSolvedDirectlyByEveryKind) {
+  for (SolverKind kind :
+       {SolverKind::kDirect, SolverKind::kDamped, SolverKind::kIntegrator}) {
+    LinearToyProblem toy(kind);
+    toy.options.linear = true;
+    const SolverReport report = toy.Solve();
+    SCOPED_TRACE(SolverName(kind));
+    EXPECT_EQ(report.termination, "CONVERGENCE");
+    EXPECT_EQ(report.iterations, 1);
+    EXPECT_EQ(report.trace.back().pseudo_time, 0.0);
+    EXPECT_LT(LinearGradient(Eigen::Vector2d(toy.x[0], toy.x[1])).norm(),
+              1e-10);
+  }
+}
+
 // What on_step throws stops every kind of solve at the step it was thrown
 // on and reaches the caller (how the Python module's Ctrl-C ends a fit).
 TEST(SolverTest, AnExceptionFromOnStepStopsTheSolveAndReachesTheCaller) {

@@ -127,6 +127,10 @@ double PriorPullMm(const Frame& points, const FrameFit& frame,
   probe.state.local = LocalField();
   FitOptions step = WithLossScale(options, frame.loss_scale_mm);
   step.prior_weight = 0.0;
+  // One Levenberg-Marquardt step whatever the fit's solver: the
+  // integrators count steps by max_steps and, without the prior, would
+  // integrate the modes only the prior held (rates ~1e-9) to their cap.
+  step.solver.kind = SolverKind::kDirect;
   step.solver.max_iterations = 1;
   step.solver.on_step = nullptr;
   std::vector<Eigen::Vector3d> positions;
@@ -261,7 +265,11 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     JudgeUnsettled(frame, median_rms, &frame.verdict);
     JudgeRms(frame, median_rms, spreads.norm(), &frame.verdict);
     JudgeDownWeighted(frame, &frame.verdict);
-    if (frame.tracked && options.prior_weight > 0) {
+    // The pull is what the prior holds back only where the data's pull
+    // balances it: at rest.  A frame short of rest has the solver's warning.
+    const bool at_rest =
+        frame.termination == "CONVERGENCE" || frame.termination == "REST";
+    if (frame.tracked && options.prior_weight > 0 && at_rest) {
       JudgePrior(PriorPullMm(sequence.frames[t], frame, fit->config,
                              fit->frames[0].state, options),
                  frame, &frame.verdict);
