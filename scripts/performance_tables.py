@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Runs pfdm's benchmarks and rewrites docs/performance.md's tables.
+"""Runs pfdm's benchmarks and rewrites the tables in docs/.
 
     /usr/bin/python3 scripts/performance_tables.py            # run, rewrite
     /usr/bin/python3 scripts/performance_tables.py --no-run   # rewrite only
@@ -7,7 +7,8 @@
 Each benchmark writes Google Benchmark JSON (--benchmark_format=json) into
 --results (default build/benchmark_results/); `pfdm batch` is timed on a
 manifest of phantom cases and its numbers saved in the same folder as
-batch.json.  docs/performance.md's text between the markers
+batch.json.  The text of docs/performance.md (docs/solvers.md for the
+solvers' table) between the markers
 <!-- performance-tables:NAME:begin --> and <!-- ...:end --> is then replaced
 by tables made from those files, with the machine, date and load average
 each run recorded, so the tables never drift from the code.  Timings on a
@@ -373,7 +374,7 @@ def replace(readme, name, text):
                          r"(<!-- performance-tables:%s:end -->)" % (name, name),
                          re.S)
     if not pattern.search(readme):
-        sys.exit("docs/performance.md has no performance-tables:%s markers" % name)
+        sys.exit("no performance-tables:%s markers in its page" % name)
     return pattern.sub(lambda m: m.group(1) + text + "\n" + m.group(2),
                        readme)
 
@@ -383,7 +384,8 @@ def main():
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
     parser.add_argument("--results", default=None,
                         help="JSON folder (default BUILD/benchmark_results)")
-    parser.add_argument("--readme", default=os.path.join(ROOT, "docs", "performance.md"))
+    parser.add_argument("--docs", default=os.path.join(ROOT, "docs"),
+                        help="the folder of performance.md and solvers.md")
     parser.add_argument("--no-run", action="store_true",
                         help="only rewrite the tables from saved JSON")
     parser.add_argument("--only", nargs="*", default=None,
@@ -399,25 +401,36 @@ def main():
         if "batch" in names:
             run_batch(options.build, results)
 
-    with open(options.readme) as f:
-        readme = f.read()
-    sections = {"fit": ("fit_benchmark", fit_table),
-                "cost": ("cost_function_benchmark", cost_table),
-                "solvers": ("solvers_benchmark", solvers_table),
-                "local": ("local_benchmark", local_table),
-                "wall": ("wall_benchmark", wall_table)}
-    for name, (benchmark, make) in sections.items():
+    # Each table's page: the solvers' beside the solvers' description.
+    sections = {"fit": ("fit_benchmark", fit_table, "performance.md"),
+                "cost": ("cost_function_benchmark", cost_table,
+                         "performance.md"),
+                "solvers": ("solvers_benchmark", solvers_table, "solvers.md"),
+                "local": ("local_benchmark", local_table, "performance.md"),
+                "wall": ("wall_benchmark", wall_table, "performance.md")}
+    pages = {}
+
+    def page(name):
+        if name not in pages:
+            with open(os.path.join(options.docs, name)) as f:
+                pages[name] = f.read()
+        return pages[name]
+
+    for name, (benchmark, make, page_name) in sections.items():
         document = load(results, benchmark)
         if document:
-            readme = replace(readme, name, describe(document, benchmark) +
-                             ":\n\n" + make(document))
+            pages[page_name] = replace(
+                page(page_name), name,
+                describe(document, benchmark) + ":\n\n" + make(document))
     job = load(results, "job_benchmark")
     if job:
-        readme = replace(readme, "job", describe(job, "job_benchmark") +
-                         ":\n\n" + job_table(job, load(results, "batch")))
-    with open(options.readme, "w") as f:
-        f.write(readme)
-    print("rewrote", options.readme, "from", results, file=sys.stderr)
+        pages["performance.md"] = replace(
+            page("performance.md"), "job", describe(job, "job_benchmark") +
+            ":\n\n" + job_table(job, load(results, "batch")))
+    for name, text in pages.items():
+        with open(os.path.join(options.docs, name), "w") as f:
+            f.write(text)
+        print("rewrote", name, "from", results, file=sys.stderr)
 
 
 if __name__ == "__main__":
