@@ -4,24 +4,13 @@
 
 #include "ceres/jet.h"
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 #include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
 
 constexpr double kHalfPi = 0.5 * kPi;
-
-// A spherical shell, mid-wall radius 30 mm, wall 10 mm (25 to 35 mm), on a
-// solid of `num_knots` knots.
-Model Shell(int num_knots) {
-  ModelConfig config = ModelConfig::Paper(num_knots);
-  config.MakeSolid();
-  FunctionValues f = DefaultFunctionValues();
-  f[kA0] = 60.0;
-  f[kA1] = f[kA2] = f[kA3] = 0.5;
-  f[kH] = 10.0;
-  return Model::Uniform(config, f);
-}
 
 // The shell between latitudes u0 and u1: (2 pi / 3)(R^3 - r^3)(sin u1 -
 // sin u0), mm^3.
@@ -31,7 +20,7 @@ double ShellZone(double outer, double inner, double u0, double u1) {
 }
 
 TEST(WallVolumeTest, SphericalShellZoneFromTheApex) {
-  const Model shell = Shell(5);
+  const Model shell = TestShell(5);
   const FunctionValues f = shell.FunctionsAt(0.0);
   const double exact = ShellZone(35.0, 25.0, -kHalfPi, 0.4);
   // Fine: chords and polygon sides cut the curved walls by under 0.1 %.
@@ -46,7 +35,7 @@ TEST(WallVolumeTest, SphericalShellZoneFromTheApex) {
 }
 
 TEST(WallVolumeTest, SpansAddUpToTheModelsWall) {
-  const Model shell = Shell(9);
+  const Model shell = TestShell(9);
   const ModelConfig& config = shell.config;
   const double exact = ShellZone(35.0, 25.0, config.u_min, config.u_max);
   EXPECT_NEAR(ModelWallVolume(shell, config.u_min, config.u_max, 8, 256), exact,
@@ -64,7 +53,7 @@ TEST(WallVolumeTest, SpansAddUpToTheModelsWall) {
 // (36^3 - 26^3) / (35^3 - 25^3) = 1.06716.  The 16-gon's ratios agree
 // with the exact ones within 1e-3.
 TEST(WallVolumeTest, ThickeningAndShiftChangeItAsTheShellsDo) {
-  Model shell = Shell(5);
+  Model shell = TestShell(5);
   const double before = ModelWallVolume(shell, -0.6, 0.3, 1, 16);
   for (FunctionValues& knot : shell.state.knots) knot[kH] = 12.0;
   EXPECT_NEAR(ModelWallVolume(shell, -0.6, 0.3, 1, 16) / before, 1.20484, 1e-3);
@@ -82,7 +71,7 @@ TEST(WallVolumeTest, ThickeningAndShiftChangeItAsTheShellsDo) {
 // difference, at the apex pole included.
 TEST(WallVolumeTest, JetDerivativeMatchesCentralDifference) {
   using Jet = ceres::Jet<double, 1>;
-  const Model shell = Shell(5);
+  const Model shell = TestShell(5);
   const FunctionValues f = shell.FunctionsAt(0.0);
   Jet low[kNumFunctions], high[kNumFunctions];
   for (int n = 0; n < kNumFunctions; ++n) low[n] = high[n] = Jet(f[n]);

@@ -3,23 +3,13 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 #include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
 
 constexpr double kHalfPi = 0.5 * kPi;
-
-// A spherical shell: mid-wall radius 30 mm, wall 10 mm (25 to 35 mm).
-Model Shell() {
-  ModelConfig config = ModelConfig::Paper(5);
-  config.MakeSolid();
-  FunctionValues f = DefaultFunctionValues();
-  f[kA0] = 60.0;
-  f[kA1] = f[kA2] = f[kA3] = 0.5;
-  f[kH] = 10.0;
-  return Model::Uniform(config, f);
-}
 
 // The shell between latitudes u0 and u1: (2 pi / 3)(R^3 - r^3)(sin u1 -
 // sin u0), ml.
@@ -29,7 +19,7 @@ double ShellZoneMl(double u0, double u1) {
 }
 
 TEST(MaterialMyocardiumTest, SphericalShellZonesAndTheWholeCup) {
-  const Model shell = Shell();
+  const Model shell = TestShell(5);
   // Triangulated: within 0.5 % of the exact zone (chords cut the curve).
   const double zone = ShellZoneMl(-0.5, 0.4);
   EXPECT_NEAR(MaterialMyocardiumMl(shell, -0.5, 0.4), zone, 0.005 * zone);
@@ -41,7 +31,7 @@ TEST(MaterialMyocardiumTest, SphericalShellZonesAndTheWholeCup) {
 // squeeze (layers moved inside the wall, walls held) does not either, and
 // a thicker wall holds more.
 TEST(MaterialMyocardiumTest, RigidMotionAndSqueezeKeepItThickeningAddsToIt) {
-  Model shell = Shell();
+  Model shell = TestShell(5);
   const double before = MaterialMyocardiumMl(shell, -0.8, 0.5);
   shell.state.center = {10.0, -4.0, 7.0};
   const double norm = std::sqrt(0.81 + 0.01 + 0.09 + 0.04);

@@ -21,6 +21,18 @@ inline Model TestSpheroid(int num_knots) {
   return Model::Uniform(ModelConfig::Paper(num_knots), values);
 }
 
+// A solid spherical shell: mid-wall radius 30 mm, wall 10 mm (25 to 35
+// mm), no twist, bending or offsets, at the identity pose.
+inline Model TestShell(int num_knots) {
+  ModelConfig config = ModelConfig::Paper(num_knots);
+  config.MakeSolid();
+  FunctionValues f = DefaultFunctionValues();
+  f[kA0] = 60.0;
+  f[kA1] = f[kA2] = f[kA3] = 0.5;
+  f[kH] = 10.0;
+  return Model::Uniform(config, f);
+}
+
 // A local field's grid of rows x cols nodes over the model's u range.
 inline LocalGrid GridOver(const ModelConfig& config, int rows, int cols) {
   LocalGrid grid;
