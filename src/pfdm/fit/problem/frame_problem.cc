@@ -77,9 +77,9 @@ void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
 }
 
 // One frame's ceres::Problem as it is built up, term by term, and solved.
-// The terms go in a fixed order (data, smoothness, rim, gauges, prior):
-// Ceres sums in the order residual blocks were added, so the order is part
-// of the result to the last bit.
+// The terms go in a fixed order (data, smoothness, rim, gauges, prior, the
+// wall's volume): Ceres sums in the order residual blocks were added, so
+// the order is part of the result to the last bit.
 class FrameProblem {
  public:
   FrameProblem(FrameKind kind, const FitOptions& options, Model* model)
