@@ -152,10 +152,8 @@ SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
   }
   now.jacobian = ceres::CRSMatrix();
   double time = 0.0;
-  report.trace.push_back(
-      {0, 0.0, SecondsSince(start), now.cost,
-       ProjectedGradientNorm(*problem, state, now.gradient)});
-  if (options.on_step) options.on_step(report.trace.back());
+  RecordStep(*problem, state, now, 0, 0.0, SecondsSince(start), options,
+             &report);
   report.termination = "NO_CONVERGENCE";
   if (state.tangent_size == 0 || Norm(now.gradient) == 0.0) {
     report.termination = "REST";
@@ -223,10 +221,8 @@ SolverReport SolveEuler(ceres::Problem* problem, const SolverOptions& options) {
       dt = std::min(2.0 * dt, first_dt);
     }
     std::swap(now, next);
-    report.trace.push_back(
-        {report.iterations, time, SecondsSince(start), now.cost,
-         ProjectedGradientNorm(*problem, state, now.gradient)});
-    if (options.on_step) options.on_step(report.trace.back());
+    RecordStep(*problem, state, now, report.iterations, time,
+               SecondsSince(start), options, &report);
     if (at_rest) {
       report.termination = "REST";
       report.converged = true;

@@ -280,10 +280,8 @@ SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options) {
   if (!Start(problem, state, options, &now, &d, &rho, &estimate, &report)) {
     return report;
   }
-  report.trace.push_back(
-      {0, 0.0, SecondsSince(start), now.cost,
-       ProjectedGradientNorm(*problem, state, now.gradient)});
-  if (options.on_step) options.on_step(report.trace.back());
+  RecordStep(*problem, state, now, 0, 0.0, SecondsSince(start), options,
+             &report);
   if (state.tangent_size == 0 || Norm(now.gradient) == 0.0) {
     report.termination = "REST";
     report.converged = true;
@@ -329,10 +327,8 @@ SolverReport SolveRkc(ceres::Problem* problem, const SolverOptions& options) {
                                 stepper.d(), h, rest);
     std::swap(now, next);
     f0.swap(f1);
-    report.trace.push_back(
-        {report.iterations, time, SecondsSince(start), now.cost,
-         ProjectedGradientNorm(*problem, state, now.gradient)});
-    if (options.on_step) options.on_step(report.trace.back());
+    RecordStep(*problem, state, now, report.iterations, time,
+               SecondsSince(start), options, &report);
     if (at_rest) {
       report.termination = "REST";
       report.converged = true;

@@ -285,4 +285,14 @@ void Fail(const std::string& message, SolverReport* report) {
   report->message = message;
 }
 
+void RecordStep(const ceres::Problem& problem, const State& state,
+                const Evaluation& now, int iteration, double time,
+                double wall_seconds, const SolverOptions& options,
+                SolverReport* report) {
+  report->trace.push_back(
+      {iteration, time, wall_seconds, now.cost,
+       ProjectedGradientNorm(problem, state, now.gradient)});
+  if (options.on_step) options.on_step(report->trace.back());
+}
+
 }  // namespace pfdm

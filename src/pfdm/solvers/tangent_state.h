@@ -67,6 +67,13 @@ void HoldAtBounds(const ceres::Problem& problem, const State& state,
 std::vector<double> Snapshot(const State& state);
 void Restore(const State& state, const std::vector<double>& values);
 void Fail(const std::string& message, SolverReport* report);
+// Adds where the integrator is (step `iteration`, pseudo-time `time`) to
+// the report's trace, with Ceres' projected gradient norm, and shows it to
+// options.on_step.
+void RecordStep(const ceres::Problem& problem, const State& state,
+                const Evaluation& now, int iteration, double time,
+                double wall_seconds, const SolverOptions& options,
+                SolverReport* report);
 
 }  // namespace pfdm
 
