@@ -153,7 +153,7 @@ double PriorPullMm(const Frame& points, const FrameFit& frame,
 
 void JudgePrior(double pull_mm, const FrameFit& frame, Verdict* verdict) {
   const double share = pull_mm / JudgedRmsMm(frame);
-  if (!(share > kPriorPullWarn)) return;
+  if (!(share > kPriorPullWarn) || !(pull_mm > kPriorPullFloorMm)) return;
   const std::string text = Format(
       "without the prior (--prior) one step would move the points by "
       "%.2f mm (RMS), %.0f %% of the frame's RMS: the prior, not the "
