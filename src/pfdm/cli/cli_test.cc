@@ -98,7 +98,8 @@ TEST(CliTest, FitWithTheIntegratorRecordsItsSettings) {
   EXPECT_EQ(settings["rest_tolerance"], 1e-5);
   const nlohmann::json frames =
       nlohmann::json::parse(ReadText(dir + "/fit/fit.json"))["frames"];
-  EXPECT_LE(frames[0]["iterations"].get<int>(), 50 * 10);  // 50 per round.
+  // 50 per round; rounds that do not settle run to 20 (mixed).
+  EXPECT_LE(frames[0]["iterations"].get<int>(), 50 * 20);
 }
 
 struct BadInput {

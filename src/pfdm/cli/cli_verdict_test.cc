@@ -170,8 +170,11 @@ TEST(CliVerdictTest, ASegmentWithoutApexSaysTheApexIsExtrapolated) {
 
   // The same data told that the apex is the centre of their lowest ring
   // (the data's own 5 % lowest along the axis the fit found): the hint is
-  // taken, and frame 0 cannot settle on it (once RMS 5.5 mm, closest points
-  // moving by 22.6 mm, "CONVERGENCE" and exit 0).  It fails, and says why.
+  // taken, and frame 0 does not settle on it.  Once that was RMS 5.5 mm,
+  // closest points moving by 22.6 mm, "CONVERGENCE" and exit 0, later a
+  // failed verdict; with the mixed rounds tags' first frame now gets
+  // (global_rounds.cc), it ends on its best round, as close to the data as
+  // the fit without the hint, and still says that its points move.
   const nlohmann::json& pose = fit["frames"][0]["pose"]["quaternion_wxyz"];
   const Eigen::Vector3d axis =
       Eigen::Quaterniond(pose[0], pose[1], pose[2], pose[3]) *
@@ -198,16 +201,18 @@ TEST(CliVerdictTest, ASegmentWithoutApexSaysTheApexIsExtrapolated) {
   };
   run = RunPfdm("fit --points " + dir + "/segment.csv --out " + dir +
                 "/hinted/fit --apex=" + text(apex) + " --base=" + text(base));
-  EXPECT_EQ(run.exit_code, 3) << run.error;
+  EXPECT_EQ(run.exit_code, 0) << run.error;
   const nlohmann::json hinted = FitJsonOf(dir + "/hinted");
-  EXPECT_EQ(hinted["frames"][0]["quality"], "failed");
+  EXPECT_EQ(hinted["frames"][0]["quality"], "warning");
+  EXPECT_NEAR(hinted["frames"][0]["rms_mm"].get<double>(),
+              fit["frames"][0]["rms_mm"].get<double>(), 0.1);
   bool unsettled = false;
   for (const auto& reason : hinted["frames"][0]["quality_reasons"]) {
     unsettled = unsettled || reason["code"] == "unsettled";
   }
   EXPECT_TRUE(unsettled) << hinted["frames"][0]["quality_reasons"];
   EXPECT_GT(hinted["frames"][0]["correspondence_unsettled_mm"].get<double>(),
-            5.0);
+            1.0);
 }
 
 }  // namespace

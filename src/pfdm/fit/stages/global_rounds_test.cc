@@ -1,8 +1,10 @@
 #include "pfdm/fit/stages/global_rounds.h"
 
 #include "gtest/gtest.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/fit/stages/start.h"
+#include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -68,6 +70,24 @@ TEST(GlobalRoundsTest, SayHowFarUnsettledPointsMoved) {
   rounds.Run(&recorder);
   EXPECT_EQ(frame.fit.correspondence_rounds, 1);
   EXPECT_GT(frame.fit.unsettled_mm, options.correspondence_tolerance_mm);
+}
+
+// Tags on their first frame get the contours' extra rounds: the LV
+// phantom's noise-free tags of seed 1004 swing frame 0's spin by 0.1 rad a
+// round (a tag's closest point by 5.3 mm), and plain rounds ended on the
+// worse of the two states, RMS 0.42 mm; the best round is 0.004 mm.
+TEST(GlobalRoundsTest, TagsFirstFrameEndsOnItsBestRound) {
+  LvPhantomOptions lv;
+  lv.num_frames = 2;
+  lv.num_tags = 400;
+  lv.noise_mm = 0.0;
+  lv.seed = 1004;
+  const SequenceFit fit = FitSequence(MakeLvPhantom(lv).points,
+                                      ModelConfig::Paper(9), FitOptions());
+  EXPECT_GT(fit.frames[0].correspondence_rounds,
+            FitOptions().max_correspondence_rounds);
+  EXPECT_LT(fit.frames[0].rms_mm, 0.02);
+  EXPECT_LT(fit.frames[1].rms_mm, 0.1);
 }
 
 }  // namespace
