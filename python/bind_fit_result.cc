@@ -138,10 +138,12 @@ void DefFitJson(FitClass& fit) {
           "What the volumes enclose: 'cavity', 'midwall' or 'epicardial'.")
       .def_property_readonly(
           "intervals", &Intervals,
-          "dict of arrays, every derived number's value, sd and 95 % "
-          "interval (ci95, value -+ 1.96 sd by the delta method), with "
-          "uncertainty='on': 'frames' {name: {'value', 'sd', 'ci95'}} per "
-          "frame, 'segments' the same per (frame, segment), "
+          "dict of arrays, every derived number's value, sd, bias and 95 "
+          "% interval (ci95: value - bias -+ 1.96 sd; sd by the delta "
+          "method and the local field's noise draws, bias the local "
+          "field's noise's, NaN without a local field), with "
+          "uncertainty='on': 'frames' {name: {'value', 'sd', 'bias', "
+          "'ci95'}} per frame, 'segments' the same per (frame, segment), "
           "'ejection_fraction' of (ratio, edv_ml, esv_ml); None without.")
       .def_property_readonly(
           "dyssynchrony",

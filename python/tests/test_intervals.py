@@ -1,4 +1,4 @@
-"""Fit.intervals: every derived number's value, sd and 95 % interval."""
+"""Fit.intervals: every derived number's value, sd, bias and 95 % interval."""
 import json
 
 import numpy as np
@@ -16,8 +16,12 @@ def test_intervals_are_arrays_beside_the_values_and_fit_json():
     assert gcs["value"].shape == (2,) and gcs["ci95"].shape == (2, 2)
     # ED against itself: no strain, no spread; ES spreads.
     assert gcs["sd"][0] < 1e-9 and gcs["sd"][1] > 0.01
-    np.testing.assert_allclose(gcs["ci95"][:, 1] - gcs["value"],
-                               1.959963984540054 * gcs["sd"])
+    # Centred on the value minus the local field's noise bias.
+    assert gcs["bias"].shape == (2,) and abs(gcs["bias"][0]) < 1e-9
+    np.testing.assert_allclose(gcs["ci95"][:, 1] - gcs["value"] + gcs["bias"],
+                               1.959963984540054 * gcs["sd"], atol=1e-12)
+    np.testing.assert_allclose(gcs["ci95"].mean(axis=1),
+                               gcs["value"] - gcs["bias"], atol=1e-12)
     ecc = got["segments"]["ecc_percent"]
     assert ecc["value"].shape == (2, 17) and ecc["ci95"].shape == (2, 17, 2)
     # The same numbers as fit.json's.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pfdm/model/model_surface.h"
+#include "pfdm/report/local_field_noise.h"
 #include "pfdm/report/number_uncertainty.h"
 #include "pfdm/report/plausibility.h"
 
@@ -186,6 +187,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
                                               : std::vector<double>(),
       ed);
   analysis.sd = PropagateUncertainty(fit, analysis);
+  analysis.noise_bias = AddLocalFieldNoise(fit, analysis, &analysis.sd);
   return analysis;
 }
 

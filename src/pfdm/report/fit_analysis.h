@@ -78,6 +78,10 @@ struct FitAnalysis {
   // frames' covariances (report/number_uncertainty.h); computed false
   // without them (--uncertainty off).
   NumberSd sd;
+  // Each number's bias from the local field's noise, in sd's layout
+  // (report/local_field_noise.h): the 95 % interval is centred on the
+  // number minus it.  computed false without the field's draws.
+  NumberSd noise_bias;
   // The label map the points came from (pfdm fit --segmentation), else
   // nullopt.  Set by the caller (AttachSegmentation).
   std::optional<SegmentationRecord> segmentation;

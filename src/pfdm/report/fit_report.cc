@@ -190,7 +190,8 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
     auto pm = [&](double ClinicalSummary::*field, int digits,
                   Calibration calibration = Calibration::kCalibrated) {
       return Fixed(c.*field, digits) +
-             PlusMinus(ClinicalSd(analysis, t, field), digits, calibration);
+             PlusMinus(ClinicalSd(analysis, t, field), digits, calibration,
+                       ClinicalBias(analysis, t, field));
     };
     // EDV's interval is too narrow (frame 0's scale is held); later
     // volumes, at frame 0's rim, are calibrated as ESV is.
@@ -200,7 +201,8 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
       return t < analysis.strain.size()
                  ? Fixed(analysis.strain[t].*field, 1) +
                        PlusMinus(StrainSd(analysis, t, field), 1,
-                                 Calibration::kNotCalibrated)
+                                 Calibration::kNotCalibrated,
+                                 StrainBias(analysis, t, field))
                  : "";
     };
     h << "<tr><td>" << f.frame
@@ -246,7 +248,8 @@ std::string RegionRow(const FitAnalysis& analysis, size_t r, bool solid) {
   const double peak_ecc = PeakRegionEcc(analysis.region_motion)[r];
   auto pm = [&](double RegionMotion::*field, size_t t = 0) {
     return PlusMinus(RegionSd(analysis, t ? t : es, r, field), 1,
-                     Calibration::kNotCalibrated);
+                     Calibration::kNotCalibrated,
+                     RegionBias(analysis, t ? t : es, r, field));
   };
   std::ostringstream h;
   h << "<tr><td>" << region.segment << "</td><td class=\"l\">" << region.Name()

@@ -1,40 +1,82 @@
 #include "pfdm/report/interval_text.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace pfdm {
 
-std::string PlusMinus(double sd, int digits, Calibration calibration) {
+std::string PlusMinus(double sd, int digits, Calibration calibration,
+                      double bias) {
   if (!Measured(sd)) return "";
-  char text[64];
+  char text[160];
   std::snprintf(text, sizeof(text), " &plusmn; %.*f", digits, HalfWidth95(sd));
-  if (calibration == Calibration::kCalibrated) return text;
-  return std::string(text) +
-         "<sup title=\"not calibrated: read as a lower bound\">*</sup>";
+  std::string out = text;
+  if (Measured(bias) && std::abs(bias) > 0.1 * HalfWidth95(sd)) {
+    std::snprintf(text, sizeof(text),
+                  "<sup title=\"95 %% interval about the value %s %.*f: the "
+                  "bias the noise puts into it\">b</sup>",
+                  bias > 0 ? "-" : "+", digits + 1, std::abs(bias));
+    out += text;
+  }
+  if (calibration == Calibration::kCalibrated) return out;
+  return out + "<sup title=\"not calibrated: read as a lower bound\">*</sup>";
 }
+
+namespace {
+
+double ClinicalOf(const NumberSd& numbers, size_t t,
+                  double ClinicalSummary::*field) {
+  return numbers.computed && t < numbers.clinical.size()
+             ? numbers.clinical[t].*field
+             : kNotMeasured;
+}
+
+double StrainOf(const NumberSd& numbers, size_t t,
+                double GlobalStrain::*field) {
+  return numbers.computed && t < numbers.strain.size()
+             ? numbers.strain[t].*field
+             : kNotMeasured;
+}
+
+double RegionOf(const NumberSd& numbers, size_t t, size_t r,
+                double RegionMotion::*field) {
+  if (!numbers.computed || t >= numbers.region_motion.size() ||
+      r >= numbers.region_motion[t].size()) {
+    return kNotMeasured;
+  }
+  return numbers.region_motion[t][r].*field;
+}
+
+}  // namespace
 
 double ClinicalSd(const FitAnalysis& analysis, size_t t,
                   double ClinicalSummary::*field) {
-  const NumberSd& sd = analysis.sd;
-  return sd.computed && t < sd.clinical.size() ? sd.clinical[t].*field
-                                               : kNotMeasured;
+  return ClinicalOf(analysis.sd, t, field);
 }
 
 double StrainSd(const FitAnalysis& analysis, size_t t,
                 double GlobalStrain::*field) {
-  const NumberSd& sd = analysis.sd;
-  return sd.computed && t < sd.strain.size() ? sd.strain[t].*field
-                                             : kNotMeasured;
+  return StrainOf(analysis.sd, t, field);
 }
 
 double RegionSd(const FitAnalysis& analysis, size_t t, size_t r,
                 double RegionMotion::*field) {
-  const NumberSd& sd = analysis.sd;
-  if (!sd.computed || t >= sd.region_motion.size() ||
-      r >= sd.region_motion[t].size()) {
-    return kNotMeasured;
-  }
-  return sd.region_motion[t][r].*field;
+  return RegionOf(analysis.sd, t, r, field);
+}
+
+double ClinicalBias(const FitAnalysis& analysis, size_t t,
+                    double ClinicalSummary::*field) {
+  return ClinicalOf(analysis.noise_bias, t, field);
+}
+
+double StrainBias(const FitAnalysis& analysis, size_t t,
+                  double GlobalStrain::*field) {
+  return StrainOf(analysis.noise_bias, t, field);
+}
+
+double RegionBias(const FitAnalysis& analysis, size_t t, size_t r,
+                  double RegionMotion::*field) {
+  return RegionOf(analysis.noise_bias, t, r, field);
 }
 
 std::string IntervalNoteHtml(const FitAnalysis& analysis) {

@@ -74,7 +74,8 @@ std::string KeyNumbersHtml(const SequenceFit& fit,
   const size_t e = ef.es_frame;
   auto pm = [&](double ClinicalSummary::*field, int digits,
                 Calibration c = Calibration::kCalibrated) {
-    return PlusMinus(ClinicalSd(analysis, e, field), digits, c);
+    return PlusMinus(ClinicalSd(analysis, e, field), digits, c,
+                     ClinicalBias(analysis, e, field));
   };
   std::ostringstream h;
   h << "<div class=\"key\">" << VolumeCard(analysis);
@@ -105,11 +106,13 @@ std::string KeyNumbersHtml(const SequenceFit& fit,
     << "apex to base-rim centroid</div>"
     << "<div>peak GCS<b>" << Fixed(gcs.percent, 1)
     << PlusMinus(StrainSd(analysis, gcs.frame, &GlobalStrain::gcs_percent), 1,
-                 Calibration::kNotCalibrated)
+                 Calibration::kNotCalibrated,
+                 StrainBias(analysis, gcs.frame, &GlobalStrain::gcs_percent))
     << " %</b>frame " << gcs.frame << ", circumferential</div>"
     << "<div>peak GLS<b>" << Fixed(gls.percent, 1)
     << PlusMinus(StrainSd(analysis, gls.frame, &GlobalStrain::gls_percent), 1,
-                 Calibration::kNotCalibrated)
+                 Calibration::kNotCalibrated,
+                 StrainBias(analysis, gls.frame, &GlobalStrain::gls_percent))
     << " %</b>frame " << gls.frame << ", longitudinal</div></div>\n";
   return h.str();
 }

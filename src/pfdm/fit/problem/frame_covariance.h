@@ -74,6 +74,10 @@ struct FrameCovariance {
   std::vector<CovarianceEntry> entries;
   Eigen::MatrixXd covariance;
   double seconds = 0.0;  // What computing it took.
+  // The local field, fitted after this, is not in `covariance`: these are
+  // draws of the field the frame's noise alone fits (fit/stages/
+  // local_noise.h), each LocalField::values' layout; empty without a field.
+  std::vector<std::vector<double>> local_noise;
 
   // Index of (kind, knot, function) in entries, or -1 (held, or absent).
   int IndexOf(CovarianceEntry::Kind kind, int knot, int function) const;

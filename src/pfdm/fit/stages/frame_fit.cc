@@ -5,6 +5,7 @@
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/fit/stages/frame_uncertainty.h"
 #include "pfdm/fit/stages/global_rounds.h"
+#include "pfdm/fit/stages/local_noise.h"
 #include "pfdm/fit/stages/local_stage.h"
 #include "pfdm/fit/stages/loss_scale.h"
 #include "pfdm/fit/stages/temporal_prior.h"
@@ -148,8 +149,14 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   }
   CheckInterrupt(options.solver);
   if (options.local.enabled) {
-    FitLocalStage(points, WithLossScale(options, fit.loss_scale_mm), source,
-                  &model, &fit, &carried->local_solver, &carried->surface_grid);
+    const FitOptions local_options = WithLossScale(options, fit.loss_scale_mm);
+    const Model global = model;
+    FitLocalStage(points, local_options, source, &model, &fit,
+                  &carried->local_solver, &carried->surface_grid);
+    if (fit.covariance.computed) {
+      fit.covariance.local_noise = LocalNoiseDraws(
+          points, fit.material, local_options, global, fit.covariance.sigma_mm);
+    }
   }
   Summarize(model, points.positions, &fit);
   CheckFinite(source, fit);

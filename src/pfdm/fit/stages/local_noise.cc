@@ -1,0 +1,69 @@
+#include "pfdm/fit/stages/local_noise.h"
+
+#include <random>
+
+#include "pfdm/fit/problem/local_fit.h"
+
+namespace pfdm {
+namespace {
+
+// The local stage's rule: contour points (untracked, not tags) slide.
+std::vector<bool> Sliding(const FramePoints& points) {
+  std::vector<bool> sliding(points.positions.size(), false);
+  for (size_t i : points.untracked) sliding[i] = !points.is_tag[i];
+  return sliding;
+}
+
+// `surface` moved by one draw of noise: a point along_normal along its
+// normal, the others in every coordinate.
+std::vector<Eigen::Vector3d> Noisy(const std::vector<Eigen::Vector3d>& surface,
+                                   const std::vector<Eigen::Vector3d>& normals,
+                                   const std::vector<bool>& along_normal,
+                                   double sigma_mm, std::mt19937* random) {
+  std::normal_distribution<double> noise(0.0, sigma_mm);
+  std::vector<Eigen::Vector3d> out = surface;
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (along_normal[i]) {
+      out[i] += noise(*random) * normals[i];
+    } else {
+      out[i] += Eigen::Vector3d(noise(*random), noise(*random), noise(*random));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> LocalNoiseDraws(
+    const FramePoints& points, const std::vector<MaterialPoint>& material,
+    const FitOptions& options, const Model& global, double sigma_mm,
+    int draws) {
+  std::vector<std::vector<double>> fields;
+  if (!options.local.enabled || !(sigma_mm > 0.0) || material.empty()) {
+    return fields;
+  }
+  const std::vector<bool> sliding = Sliding(points);
+  // A point whose material point was searched on this frame (contours,
+  // and tags on their first) keeps only its noise along the normal: the
+  // search moved it along the surface by the rest.
+  const std::vector<bool>& searched = points.sliding;
+  std::vector<Eigen::Vector3d> surface;
+  const std::vector<Eigen::Vector3d> normals =
+      SurfaceNormals(global, material, &surface);
+  std::mt19937 random(1000003u + static_cast<unsigned>(points.index));
+  // One solver for every draw: their points, weights and grid are the
+  // same, so it factorizes once.
+  LocalDirectSolver direct;
+  for (int k = 0; k < draws; ++k) {
+    Model model = global;
+    model.state.local = LocalField();
+    const SolverReport report =
+        FitLocalField(Noisy(surface, normals, searched, sigma_mm, &random),
+                      material, sliding, options, &model, &direct);
+    if (!report.usable) return {};
+    fields.push_back(model.state.local.values);
+  }
+  return fields;
+}
+
+}  // namespace pfdm

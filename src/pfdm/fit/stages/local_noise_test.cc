@@ -1,0 +1,127 @@
+#include "pfdm/fit/stages/local_noise.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/problem/local_fit.h"
+#include "pfdm/testing/test_models.h"
+
+namespace pfdm {
+namespace {
+
+// 400 tracked tags spread over the test spheroid's wall, and the frame's
+// points as the fit would have them.
+struct TrackedFrame {
+  TrackedFrame() : model(TestSpheroid(9)) {
+    for (int i = 0; i < 20; ++i) {
+      for (int j = 0; j < 20; ++j) {
+        const double u =
+            model.config.u_min +
+            (i + 0.5) / 20 * (model.config.u_max - model.config.u_min);
+        material.push_back({u, -M_PI + (j + 0.5) / 20 * 2 * M_PI, 0.0});
+      }
+    }
+    points.index = 1;
+    points.kind = FrameKind::kTracked;
+    points.positions.resize(material.size());
+    points.layer_w.assign(material.size(), 0.0);
+    points.is_tag.assign(material.size(), true);
+    points.sliding.assign(material.size(), false);
+    points.assign_depth.assign(material.size(), false);
+    for (size_t i = 0; i < material.size(); ++i) points.tracked.push_back(i);
+  }
+  Model model;
+  std::vector<MaterialPoint> material;
+  FramePoints points;
+};
+
+// The field is a linear fit of the noise: twice the noise, with the same
+// seed, is exactly twice every draw; and the seed is the frame's, so a
+// second call gives the same draws.
+TEST(LocalNoiseTest, DrawsAreLinearInTheNoiseAndRepeatable) {
+  const TrackedFrame frame;
+  const FitOptions options;
+  const auto one = LocalNoiseDraws(frame.points, frame.material, options,
+                                   frame.model, 0.5, 3);
+  const auto two = LocalNoiseDraws(frame.points, frame.material, options,
+                                   frame.model, 1.0, 3);
+  const auto again = LocalNoiseDraws(frame.points, frame.material, options,
+                                     frame.model, 0.5, 3);
+  ASSERT_EQ(one.size(), 3u);
+  double square = 0.0;
+  size_t count = 0;
+  for (size_t k = 0; k < one.size(); ++k) {
+    ASSERT_EQ(one[k].size(), two[k].size());
+    for (size_t i = 0; i < one[k].size(); ++i) {
+      EXPECT_NEAR(two[k][i], 2.0 * one[k][i], 1e-9);
+      EXPECT_EQ(again[k][i], one[k][i]);
+      square += one[k][i] * one[k][i];
+      ++count;
+    }
+  }
+  // The stiffness damps the noise (0.5 mm a coordinate) but does not
+  // remove it: the nodes' rms displacement is a fraction of it.
+  const double rms = std::sqrt(square / count);
+  EXPECT_GT(rms, 0.05);
+  EXPECT_LT(rms, 0.5);
+}
+
+// Without a local field, or without noise, there is nothing to draw.
+TEST(LocalNoiseTest, NoFieldNoDraws) {
+  const TrackedFrame frame;
+  FitOptions options;
+  EXPECT_TRUE(
+      LocalNoiseDraws(frame.points, frame.material, options, frame.model, 0.0)
+          .empty());
+  options.local.enabled = false;
+  EXPECT_TRUE(
+      LocalNoiseDraws(frame.points, frame.material, options, frame.model, 0.5)
+          .empty());
+}
+
+// A point searched on this frame (a contour's, a tag's on its first) gets
+// noise along the normal only: the search took the rest.  Its field then
+// moves the surface mostly along the normal, where tracked points' noise
+// moves it in every direction.
+TEST(LocalNoiseTest, SearchedPointsGetNoiseAlongTheNormal) {
+  TrackedFrame frame;
+  FitOptions options;
+  frame.points.kind = FrameKind::kReference;
+  frame.points.sliding.assign(frame.material.size(), true);
+  frame.points.untracked = frame.points.tracked;
+  frame.points.tracked.clear();
+  const auto searched = LocalNoiseDraws(frame.points, frame.material, options,
+                                        frame.model, 0.5, 4);
+  const TrackedFrame tracked;
+  const auto free = LocalNoiseDraws(tracked.points, tracked.material, options,
+                                    tracked.model, 0.5, 4);
+  // The grid the local fit makes (the draws are its values).
+  Model fitted = frame.model;
+  FitLocalField(WorldPoints(frame.model, frame.material), frame.material,
+                std::vector<bool>(frame.material.size(), false), options,
+                &fitted);
+  std::vector<Eigen::Vector3d> at;
+  const std::vector<Eigen::Vector3d> normals =
+      SurfaceNormals(frame.model, frame.material, &at);
+  // The share of the fields' displacement along the normal at the points.
+  auto normal_share = [&](const std::vector<std::vector<double>>& draws) {
+    double along = 0.0, total = 0.0;
+    for (const std::vector<double>& draw : draws) {
+      Model moved = fitted;
+      moved.state.local.values = draw;
+      const std::vector<Eigen::Vector3d> now =
+          WorldPoints(moved, frame.material);
+      for (size_t i = 0; i < at.size(); ++i) {
+        const Eigen::Vector3d d = now[i] - at[i];
+        along += std::pow(d.dot(normals[i]), 2);
+        total += d.squaredNorm();
+      }
+    }
+    return along / total;
+  };
+  EXPECT_GT(normal_share(searched), 0.8);
+  EXPECT_LT(normal_share(free), 0.6);
+}
+
+}  // namespace
+}  // namespace pfdm

@@ -1,0 +1,158 @@
+#include "pfdm/report/local_field_noise.h"
+
+#include <cmath>
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/report/number_uncertainty.h"
+
+namespace pfdm {
+namespace {
+
+// Every frame's numbers (Flatten's order) with these models, against the
+// ED frame's, and the ejection fraction's (ratio, EDV, ESV) last.
+std::vector<Eigen::VectorXd> MeasureAll(const FitAnalysis& analysis,
+                                        const std::vector<Model>& models,
+                                        size_t ed) {
+  const ReferenceSamples samples = SampleReference(models[ed], analysis.layout);
+  std::vector<Eigen::VectorXd> out;
+  for (size_t t = 0; t < models.size(); ++t) {
+    const BasePlane* plane =
+        analysis.base_planes.empty() ? nullptr : &analysis.base_planes[t];
+    const std::vector<double> values = Flatten(
+        MeasureFrame(models[ed], samples, analysis.regions, models[t], plane));
+    out.push_back(
+        Eigen::Map<const Eigen::VectorXd>(values.data(), values.size()));
+  }
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  if (ef.ed_frame >= 0 && ef.es_frame >= 0 &&
+      static_cast<size_t>(std::max(ef.ed_frame, ef.es_frame)) < models.size()) {
+    FrameNumbers ed_numbers, es_numbers;
+    ed_numbers.regions.resize(analysis.regions.size());
+    es_numbers.regions = ed_numbers.regions;
+    Unflatten(out[ef.ed_frame].data(), &ed_numbers);
+    Unflatten(out[ef.es_frame].data(), &es_numbers);
+    const double edv = ed_numbers.clinical.volume_ml;
+    const double esv = es_numbers.clinical.volume_ml;
+    out.push_back(Eigen::Vector3d((edv - esv) / edv, edv, esv));
+  }
+  return out;
+}
+
+// `model` with `draw` added to its local field's values.
+Model WithDraw(const Model& model, const std::vector<double>& draw) {
+  Model out = model;
+  std::vector<double>& values = out.state.local.values;
+  for (size_t i = 0; i < values.size() && i < draw.size(); ++i) {
+    values[i] += draw[i];
+  }
+  return out;
+}
+
+// The draws' mean shift from `at` and their variance, per number.
+struct Moments {
+  std::vector<Eigen::VectorXd> bias, variance;
+};
+
+Moments Sample(const SequenceFit& fit, const FitAnalysis& analysis,
+               size_t draws) {
+  const size_t ed = static_cast<size_t>(fit.ed_frame);
+  const std::vector<Eigen::VectorXd> at =
+      MeasureAll(analysis, analysis.models, ed);
+  Moments m;
+  std::vector<Eigen::VectorXd> sum, square;
+  for (const Eigen::VectorXd& v : at) {
+    sum.push_back(Eigen::VectorXd::Zero(v.size()));
+    square.push_back(Eigen::VectorXd::Zero(v.size()));
+  }
+  for (size_t k = 0; k < draws; ++k) {
+    std::vector<Model> models;
+    for (size_t t = 0; t < fit.frames.size(); ++t) {
+      models.push_back(WithDraw(analysis.models[t],
+                                fit.frames[t].covariance.local_noise[k]));
+    }
+    const std::vector<Eigen::VectorXd> y = MeasureAll(analysis, models, ed);
+    for (size_t i = 0; i < y.size(); ++i) {
+      const Eigen::VectorXd shift = y[i] - at[i];
+      sum[i] += shift;
+      square[i] += shift.cwiseProduct(shift);
+    }
+  }
+  const double n = static_cast<double>(draws);
+  for (size_t i = 0; i < at.size(); ++i) {
+    const Eigen::VectorXd mean = sum[i] / n;
+    m.bias.push_back(mean);
+    m.variance.push_back(
+        ((square[i] - n * mean.cwiseProduct(mean)) / (n - 1.0)).cwiseMax(0.0));
+  }
+  return m;
+}
+
+// sd's frame t with `variance` added, and the bias in its layout, NaN
+// where sd's is.
+void StoreFrame(size_t t, const Eigen::VectorXd& variance,
+                const Eigen::VectorXd& bias, NumberSd* sd, NumberSd* out) {
+  FrameNumbers sds{sd->clinical[t], sd->region_motion[t], sd->strain[t]};
+  std::vector<double> values = Flatten(sds);
+  std::vector<double> shifts(values.size(), kNotMeasured);
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (!Measured(values[i])) continue;
+    values[i] = std::sqrt(values[i] * values[i] + variance[i]);
+    shifts[i] = bias[i];
+  }
+  Unflatten(values.data(), &sds);
+  FrameNumbers biases = sds;
+  Unflatten(shifts.data(), &biases);
+  sd->clinical[t] = sds.clinical;
+  sd->region_motion[t] = sds.regions;
+  sd->strain[t] = sds.strain;
+  out->clinical[t] = biases.clinical;
+  out->region_motion[t] = biases.regions;
+  out->strain[t] = biases.strain;
+}
+
+void StoreEjection(const Eigen::VectorXd& variance, const Eigen::VectorXd& bias,
+                   NumberSd* sd, NumberSd* out) {
+  EjectionFraction& ef = sd->ejection_fraction;
+  out->ejection_fraction = ef;
+  double* sds[] = {&ef.ratio, &ef.edv_ml, &ef.esv_ml};
+  double* shifts[] = {&out->ejection_fraction.ratio,
+                      &out->ejection_fraction.edv_ml,
+                      &out->ejection_fraction.esv_ml};
+  for (int i = 0; i < 3; ++i) {
+    if (!Measured(*sds[i])) {
+      *shifts[i] = kNotMeasured;
+      continue;
+    }
+    *sds[i] = std::sqrt(*sds[i] * *sds[i] + variance[i]);
+    *shifts[i] = bias[i];
+  }
+}
+
+}  // namespace
+
+NumberSd AddLocalFieldNoise(const SequenceFit& fit, const FitAnalysis& analysis,
+                            NumberSd* sd) {
+  NumberSd bias;
+  if (!sd->computed || fit.frames.empty()) return bias;
+  const size_t draws = fit.frames[0].covariance.local_noise.size();
+  if (draws < 2) return bias;
+  for (const FrameFit& frame : fit.frames) {
+    if (frame.covariance.local_noise.size() != draws) return bias;
+  }
+  const Moments m = Sample(fit, analysis, draws);
+  const size_t frames = fit.frames.size();
+  bias.clinical.resize(frames);
+  bias.region_motion.resize(frames);
+  bias.strain.resize(frames);
+  for (size_t t = 0; t < frames; ++t) {
+    StoreFrame(t, m.variance[t], m.bias[t], sd, &bias);
+  }
+  if (m.bias.size() > frames) {
+    StoreEjection(m.variance[frames], m.bias[frames], sd, &bias);
+  }
+  bias.computed = true;
+  return bias;
+}
+
+}  // namespace pfdm

@@ -1,0 +1,37 @@
+// What the local field's noise does to each derived number, by sampling
+// (the fit's draws: fit/stages/local_noise.h).  Each draw adds one noise
+// field to every frame's fitted field, and every frame's numbers are
+// measured again against ED's model with its draw:
+//
+//   spread:  var_local y = the draws' sample variance of y,
+//   bias:    b y = mean over draws of y - y at the fit.
+//
+// A fitted field already holds one draw of the noise; adding a second
+// moves a number that is quadratic in the field (Green-Lagrange strain,
+// a ring's length) by the same mean, to second order, so b estimates the
+// bias the noise put into the fitted number.  The spread is added to the
+// delta method's variance (the global fit's, number_uncertainty.h; the
+// field fits what the global fit leaves, so the two are taken as
+// independent), and the 95 % interval is centred on y - b.  The local
+// field enters every number through the model's points, so this covers all
+// of them; for most b is far under the sd, for strains it is not.
+#ifndef PFDM_REPORT_LOCAL_FIELD_NOISE_H_
+#define PFDM_REPORT_LOCAL_FIELD_NOISE_H_
+
+#include "pfdm/fit/stages/sequence_fit.h"
+#include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/number_sd.h"
+
+namespace pfdm {
+
+// Adds the local field's spread to *sd (PropagateUncertainty's, computed)
+// and returns each number's bias in the same layout (NaN where *sd is NaN;
+// the ejection fraction's ratio, edv_ml and esv_ml biases in
+// ejection_fraction); computed false, *sd unchanged, when some frame has no
+// draws (no local field, --uncertainty off).
+NumberSd AddLocalFieldNoise(const SequenceFit& fit, const FitAnalysis& analysis,
+                            NumberSd* sd);
+
+}  // namespace pfdm
+
+#endif  // PFDM_REPORT_LOCAL_FIELD_NOISE_H_
