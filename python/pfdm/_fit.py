@@ -70,7 +70,7 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         smoothness=1.0, prior=0.001, untracked_prior=0.01,
         temporal_prior=0.05, incompressible=0.0, loss="none",
         loss_scale="auto", threads=1, apex=None, base=None, solver="direct",
-        linear_solver="SPARSE_NORMAL_CHOLESKY", time_step=0.0,
+        linear_solver="DENSE_SCHUR", time_step=0.0,
         rest_tolerance=1e-6, max_steps=20000, damping="model",
         damping_scale="", jacobian="analytic", local=True,
         local_grid=(13, 24), local_stiffness=0.02, uncertainty=False):

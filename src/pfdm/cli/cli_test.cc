@@ -44,7 +44,7 @@ TEST(CliTest, SimulateThenFitWritesEveryOutput) {
   ASSERT_EQ(fit["frames"].size(), 3u);
   EXPECT_EQ(fit["model"]["knots"], 17);
   EXPECT_EQ(fit["settings"]["solver"], "direct");
-  EXPECT_EQ(fit["settings"]["linear_solver"], "SPARSE_NORMAL_CHOLESKY");
+  EXPECT_EQ(fit["settings"]["linear_solver"], "DENSE_SCHUR");
   EXPECT_EQ(fit["settings"]["jacobian"], "analytic");
   EXPECT_FALSE(fit["settings"].contains("damping"));
   EXPECT_EQ(fit["model"]["functions"]["tau"]["mode"], "free");

@@ -76,7 +76,7 @@ DEFINE_string(solver, kDefaults.solver.c_str(), "direct, damped or integrator");
 DEFINE_string(linear_solver, kDefaults.linear_solver.c_str(),
               "direct and damped: Ceres linear solver of the global "
               "functions' solve, e.g. "
-              "SPARSE_NORMAL_CHOLESKY, DENSE_NORMAL_CHOLESKY, DENSE_QR (the "
+              "DENSE_SCHUR, SPARSE_NORMAL_CHOLESKY, DENSE_QR (the "
               "local field's is SPARSE_NORMAL_CHOLESKY)");
 DEFINE_double(time_step, kDefaults.time_step,
               "damped and integrator: pseudo-time step, 1e-6 to 1e12; 0 = "

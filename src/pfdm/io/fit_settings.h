@@ -45,7 +45,7 @@ struct FitSettings {
   std::string apex;  // "x,y,z" in mm, with base; empty: from the data.
   std::string base;
   std::string solver = "direct";
-  std::string linear_solver = "SPARSE_NORMAL_CHOLESKY";
+  std::string linear_solver = "DENSE_SCHUR";
   double time_step = 0.0;
   double rest_tolerance = SolverOptions().rest_tolerance;
   int max_steps = SolverOptions().max_steps;

@@ -54,7 +54,17 @@ struct SolverOptions {
   SolverKind kind = SolverKind::kDirect;
   int max_iterations = 100;
   int num_threads = 1;
-  ceres::LinearSolverType linear_solver = ceres::SPARSE_NORMAL_CHOLESKY;
+  // A frame's global problem has 75-313 parameters whatever its number of
+  // points, and the axis gauge ties every knot to every other, so its J^T J
+  // is dense: DENSE_SCHUR eliminates one 3-parameter pose block (Ceres'
+  // choice) and factorizes the rest with Eigen's blocked dense LLT, built
+  // from the same block products as SPARSE_NORMAL_CHOLESKY's J^T J.
+  // Eigen's simplicial LDL^T of the same dense matrix, one scalar at a time
+  // through its sparse index, took 3x as long: 0.49 against 0.16 s of
+  // biv-me patient 1's cavity job, the same 687 iterations
+  // (docs/performance.md).  DENSE_NORMAL_CHOLESKY forms the dense Jacobian,
+  // a row per point: 1.1 s.
+  ceres::LinearSolverType linear_solver = ceres::DENSE_SCHUR;
   // The sparse Cholesky behind SPARSE_NORMAL_CHOLESKY.  Not SuiteSparse:
   // Debian's CHOLMOD runs its supernodal factorization in OpenMP teams of a
   // fixed size (4, whatever OMP_NUM_THREADS says), and on a 2-core machine

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -61,21 +62,27 @@ DotFunction ChooseDot() {
 }  // namespace
 
 bool BandCholesky::Compute(const Eigen::SparseMatrix<double>& k) {
-  size_ = static_cast<int>(k.rows());
-  bandwidth_ = 0;
+  int b = 0;
   for (int j = 0; j < k.outerSize(); ++j) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(k, j); it; ++it) {
-      bandwidth_ = std::max(bandwidth_, std::abs(it.index() - j));
+      b = std::max(b, std::abs(it.index() - j));
     }
   }
-  const int b = bandwidth_;
-  band_ = RowMajorMatrix::Zero(size_, b + 1);
+  RowMajorMatrix lower = RowMajorMatrix::Zero(k.rows(), b + 1);
   for (int j = 0; j < k.outerSize(); ++j) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(k, j); it; ++it) {
       const int i = it.index();
-      if (i >= j) band_(i, j - i + b) += it.value();
+      if (i >= j) lower(i, j - i + b) += it.value();
     }
   }
+  return ComputeBand(std::move(lower));
+}
+
+bool BandCholesky::ComputeBand(RowMajorMatrix lower) {
+  size_ = static_cast<int>(lower.rows());
+  bandwidth_ = static_cast<int>(lower.cols()) - 1;
+  const int b = bandwidth_;
+  band_ = std::move(lower);
   static const DotFunction dot = ChooseDot();
   for (int i = 0; i < size_; ++i) {
     const int first = std::max(0, i - b);

@@ -22,6 +22,11 @@ class BandCholesky {
   // Factorizes k (its lower triangle is read); returns false when k is not
   // positive definite (a pivot <= 0).
   bool Compute(const Eigen::SparseMatrix<double>& k);
+  // The same from K's lower band, K(i, j) at lower(i, j - i + b) for j in
+  // [i - b, i], b = lower.cols() - 1 (taken as the bandwidth): for a caller
+  // that sums K in place, where a sparse K's triplets and their sorting
+  // cost more than the factorization.
+  bool ComputeBand(RowMajorMatrix lower);
   // K^{-1} b, column by column.
   RowMajorMatrix Solve(RowMajorMatrix b) const;
 

@@ -82,20 +82,26 @@ void ForEachScalarTerm(const LocalDirectData& data,
   }
 }
 
+// The largest node distance within one term (of K, and of A in nodes).
+int NodeSpan(const LocalDirectData& data, const LocalRegularizer& regularizer) {
+  int span = 0;
+  ForEachScalarTerm(
+      data, regularizer,
+      [&span](double, int count, const int* nodes, const double*) {
+        if (count == 0) return;
+        const auto [low, high] = std::minmax_element(nodes, nodes + count);
+        span = std::max(span, *high - *low);
+      });
+  return span;
+}
+
 // K: each term's scalar rows' outer products, summed.  Summed in place in
 // K's band, in the terms' order, as Eigen's setFromTriplets sums repeated
 // entries (the same K to the bit): a triplet per product, 320,000 at
 // 20,000 tags, and their sorting were most of frame 0's local field.
 SparseMatrix ScalarMatrix(const LocalDirectData& data,
                           const LocalRegularizer& regularizer, int num_nodes) {
-  int band = 0;
-  ForEachScalarTerm(
-      data, regularizer,
-      [&band](double, int count, const int* nodes, const double*) {
-        if (count == 0) return;
-        const auto [low, high] = std::minmax_element(nodes, nodes + count);
-        band = std::max(band, *high - *low);
-      });
+  const int band = NodeSpan(data, regularizer);
   // Column c's entry in row r at c * width + r - c + band.
   const size_t width = 2 * band + 1;
   std::vector<double> values(num_nodes * width, 0.0);
@@ -209,18 +215,58 @@ double GradientNorm(const SparseMatrix& k, const RingColumns& u,
   return std::sqrt(sum);
 }
 
-// The whole A and b, 3 unknowns per node (index 3 node + coordinate).
+// A symmetric matrix summed in place in its lower band: A(i, j), j <= i,
+// at lower(i, j - i + width), width a bound on the bandwidth from the
+// terms' node spans; used, the largest i - j of an entry added.
+struct LowerBand {
+  LowerBand(int size, int width_bound)
+      : lower(BandCholesky::RowMajorMatrix::Zero(size, width_bound + 1)),
+        width(width_bound) {}
+
+  // Entries above the diagonal are A's by symmetry: left out.
+  void Add(int i, int j, double value) {
+    if (j > i) return;
+    lower(i, j - i + width) += value;
+    used = std::max(used, i - j);
+  }
+  // The band as wide as A's entries reach, as BandCholesky takes it.
+  BandCholesky::RowMajorMatrix Trimmed() const {
+    return lower.rightCols(used + 1);
+  }
+  // A x, each row summed in its columns' order, as a sparse A's product.
+  Eigen::VectorXd Times(const Eigen::VectorXd& x) const {
+    const int n = static_cast<int>(lower.rows());
+    Eigen::VectorXd y(n);
+    for (int i = 0; i < n; ++i) {
+      double sum = 0.0;
+      for (int j = std::max(0, i - used); j <= i; ++j) {
+        sum += lower(i, j - i + width) * x[j];
+      }
+      for (int j = i + 1; j <= std::min(n - 1, i + used); ++j) {
+        sum += lower(j, i - j + width) * x[j];
+      }
+      y[i] = sum;
+    }
+    return y;
+  }
+
+  BandCholesky::RowMajorMatrix lower;
+  int width;
+  int used = 0;
+};
+
+// The whole A and b, 3 unknowns per node (index 3 node + coordinate).  A is
+// summed in place in its band, in the terms' order, as Eigen's
+// setFromTriplets summed a triplet per entry (the same A to the bit): the
+// triplets and their sorting took as long as A's factorization.
 void WholeSystem(const LocalDirectData& data,
                  const LocalRegularizer& regularizer, int num_nodes,
-                 SparseMatrix* a, Eigen::VectorXd* b) {
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(9 * 16 * data.shapes.size());
-  auto add = [&entries](int row_node, int col_node, const Eigen::Matrix3d& m) {
+                 LowerBand* a, Eigen::VectorXd* b) {
+  *a = LowerBand(3 * num_nodes, 3 * NodeSpan(data, regularizer) + 2);
+  auto add = [a](int row_node, int col_node, const Eigen::Matrix3d& m) {
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) {
-        if (m(r, c) != 0.0) {
-          entries.emplace_back(3 * row_node + r, 3 * col_node + c, m(r, c));
-        }
+        if (m(r, c) != 0.0) a->Add(3 * row_node + r, 3 * col_node + c, m(r, c));
       }
     }
   };
@@ -260,8 +306,6 @@ void WholeSystem(const LocalDirectData& data,
       }
     }
   }
-  *a = SparseMatrix(3 * num_nodes, 3 * num_nodes);
-  a->setFromTriplets(entries.begin(), entries.end());
 }
 
 void FillReport(double seconds, const SolverTracePoint& before,
@@ -286,18 +330,18 @@ bool SolveWhole(const LocalDirectData& data,
                 SolverReport* report) {
   const auto start = Clock::now();
   const int num_nodes = field->grid.NumNodes();
-  SparseMatrix a;
+  LowerBand a(0, 0);
   Eigen::VectorXd b;
   WholeSystem(data, regularizer, num_nodes, &a, &b);
   BandCholesky cholesky;
-  if (!cholesky.Compute(a)) return false;
+  if (!cholesky.ComputeBand(a.Trimmed())) return false;
   Eigen::Map<Eigen::VectorXd> values(field->values.data(), 3 * num_nodes);
   const Eigen::Map<const NodeMatrix> q(field->values.data(), num_nodes, 3);
   const SolverTracePoint before{0, 0.0, 0.0, Cost(data, regularizer, q),
-                                (a * values - b).norm()};
+                                (a.Times(values) - b).norm()};
   values = cholesky.Solve(b);
   const SolverTracePoint after{1, 0.0, 0.0, Cost(data, regularizer, q),
-                               (a * values - b).norm()};
+                               (a.Times(values) - b).norm()};
   FillReport(SecondsSince(start), before, after, report);
   return true;
 }

@@ -4,6 +4,42 @@
 
 namespace pfdm {
 
+bool SmoothnessResidual::Evaluate(double const* const* parameters,
+                                  double* residuals, double** jacobians) const {
+  const double* previous = parameters[0];
+  const double* knot = parameters[1];
+  const double* next = parameters[2];
+  for (int f = 0; f < kNumFunctions; ++f) {
+    residuals[f] =
+        sqrt_weight_ * scales_[f] * (previous[f] - 2.0 * knot[f] + next[f]);
+  }
+  if (jacobians == nullptr) return true;
+  const double along[3] = {1.0, -2.0, 1.0};
+  for (int b = 0; b < 3; ++b) {
+    if (jacobians[b] == nullptr) continue;
+    std::fill(jacobians[b], jacobians[b] + kNumFunctions * kNumFunctions, 0.0);
+    for (int f = 0; f < kNumFunctions; ++f) {
+      jacobians[b][f * kNumFunctions + f] =
+          sqrt_weight_ * scales_[f] * along[b];
+    }
+  }
+  return true;
+}
+
+bool PriorResidual::Evaluate(double const* const* parameters, double* residuals,
+                             double** jacobians) const {
+  const double* values = parameters[0];
+  for (int f = 0; f < kNumFunctions; ++f) {
+    residuals[f] = sqrt_weight_ * scales_[f] * (values[f] - prior_[f]);
+  }
+  if (jacobians == nullptr || jacobians[0] == nullptr) return true;
+  std::fill(jacobians[0], jacobians[0] + kNumFunctions * kNumFunctions, 0.0);
+  for (int f = 0; f < kNumFunctions; ++f) {
+    jacobians[0][f * kNumFunctions + f] = sqrt_weight_ * scales_[f];
+  }
+  return true;
+}
+
 AxisGaugeResidual::AxisGaugeResidual(int num_knots, double sqrt_weight) {
   set_num_residuals(4);
   for (int k = 0; k < num_knots; ++k) {

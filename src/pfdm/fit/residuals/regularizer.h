@@ -7,6 +7,7 @@
 
 #include "ceres/autodiff_cost_function.h"
 #include "ceres/cost_function.h"
+#include "ceres/sized_cost_function.h"
 #include "pfdm/model/parameter_function.h"
 
 namespace pfdm {
@@ -14,27 +15,24 @@ namespace pfdm {
 // r_f = sqrt(w) s_f (k_{j-1,f} - 2 k_{j,f} + k_{j+1,f}) for the functions
 // with s_f != 0: the second difference, so that a linear trend in u costs
 // nothing.  s_f converts function f to mm.
-class SmoothnessResidual {
+//
+// The residuals are linear, so the Jacobians are the constant diagonals
+// sqrt(w) s_f (1, -2, 1): written out, not taken by autodiff, whose
+// 54-derivative Jets at every iteration of every knot were 2-3 % of a
+// contour job.  The same values to the bit (autodiff's are these products).
+class SmoothnessResidual
+    : public ceres::SizedCostFunction<kNumFunctions, kNumFunctions,
+                                      kNumFunctions, kNumFunctions> {
  public:
   SmoothnessResidual(double sqrt_weight, const FunctionValues& scales)
       : sqrt_weight_(sqrt_weight), scales_(scales) {}
 
-  template <typename T>
-  bool operator()(const T* previous, const T* knot, const T* next,
-                  T* residual) const {
-    for (int f = 0; f < kNumFunctions; ++f) {
-      residual[f] =
-          sqrt_weight_ * scales_[f] * (previous[f] - 2.0 * knot[f] + next[f]);
-    }
-    return true;
-  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override;
 
   static ceres::CostFunction* Create(double sqrt_weight,
                                      const FunctionValues& scales) {
-    return new ceres::AutoDiffCostFunction<SmoothnessResidual, kNumFunctions,
-                                           kNumFunctions, kNumFunctions,
-                                           kNumFunctions>(
-        new SmoothnessResidual(sqrt_weight, scales));
+    return new SmoothnessResidual(sqrt_weight, scales);
   }
 
  private:
@@ -43,27 +41,22 @@ class SmoothnessResidual {
 };
 
 // r_f = sqrt(w) s_f (x_f - prior_f): holds directions the data leave free
-// (b1 while b0 = 0, a1 at the apex) near the previous frame.
-class PriorResidual {
+// (b1 while b0 = 0, a1 at the apex) near the previous frame.  Its Jacobian
+// is the constant diagonal sqrt(w) s_f (as SmoothnessResidual's).
+class PriorResidual
+    : public ceres::SizedCostFunction<kNumFunctions, kNumFunctions> {
  public:
   PriorResidual(double sqrt_weight, const FunctionValues& scales,
                 const FunctionValues& prior)
       : sqrt_weight_(sqrt_weight), scales_(scales), prior_(prior) {}
 
-  template <typename T>
-  bool operator()(const T* values, T* residual) const {
-    for (int f = 0; f < kNumFunctions; ++f) {
-      residual[f] = sqrt_weight_ * scales_[f] * (values[f] - prior_[f]);
-    }
-    return true;
-  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override;
 
   static ceres::CostFunction* Create(double sqrt_weight,
                                      const FunctionValues& scales,
                                      const FunctionValues& prior) {
-    return new ceres::AutoDiffCostFunction<PriorResidual, kNumFunctions,
-                                           kNumFunctions>(
-        new PriorResidual(sqrt_weight, scales, prior));
+    return new PriorResidual(sqrt_weight, scales, prior);
   }
 
  private:

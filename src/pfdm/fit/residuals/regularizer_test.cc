@@ -3,6 +3,7 @@
 #include <memory>
 #include <vector>
 
+#include "ceres/autodiff_cost_function.h"
 #include "ceres/gradient_checker.h"
 #include "gtest/gtest.h"
 #include "pfdm/model/model.h"
@@ -78,6 +79,72 @@ TEST(AxisGaugeResidualTest, JacobianMatchesNumericDifferences) {
   ceres::GradientChecker::ProbeResults results;
   EXPECT_TRUE(checker.Probe(parameters.data(), 1e-9, &results))
       << results.error_log;
+}
+
+// SmoothnessResidual as it was, for autodiff (sqrt(w) = 1.7).
+struct TemplatedSmoothness {
+  template <typename T>
+  bool operator()(const T* p, const T* k, const T* n, T* r) const {
+    for (int f = 0; f < kNumFunctions; ++f) {
+      r[f] = 1.7 * scales[f] * (p[f] - 2.0 * k[f] + n[f]);
+    }
+    return true;
+  }
+  FunctionValues scales;
+};
+
+// The written-out Jacobians against numeric differences, every function
+// scaled (one by 0, as a held function is), and bit for bit the values
+// ceres::AutoDiffCostFunction took from the templated residuals before.
+TEST(SmoothnessResidualTest, JacobiansMatchNumericAndAutodiff) {
+  FunctionValues scales{}, a = DefaultFunctionValues(), b = a, c = a;
+  for (int f = 0; f < kNumFunctions; ++f) {
+    scales[f] = f == kTau ? 0.0 : 0.5 + 0.25 * f;
+    b[f] += 0.01 * f;
+    c[f] -= 0.02 * f * f;
+  }
+  std::unique_ptr<ceres::CostFunction> cost(
+      SmoothnessResidual::Create(1.7, scales));
+  const double* parameters[] = {a.data(), b.data(), c.data()};
+  const std::vector<const ceres::Manifold*> manifolds(3, nullptr);
+  ceres::GradientChecker checker(cost.get(), &manifolds,
+                                 ceres::NumericDiffOptions());
+  ceres::GradientChecker::ProbeResults results;
+  EXPECT_TRUE(checker.Probe(parameters, 1e-9, &results)) << results.error_log;
+
+  ceres::AutoDiffCostFunction<TemplatedSmoothness, kNumFunctions, kNumFunctions,
+                              kNumFunctions, kNumFunctions>
+      autodiff(new TemplatedSmoothness{scales});
+  std::vector<double> r1(kNumFunctions), r2(kNumFunctions);
+  std::vector<std::vector<double>> j1(3), j2(3);
+  double* jac1[3];
+  double* jac2[3];
+  for (int i = 0; i < 3; ++i) {
+    j1[i].assign(kNumFunctions * kNumFunctions, 1.0);
+    j2[i].assign(kNumFunctions * kNumFunctions, 2.0);
+    jac1[i] = j1[i].data();
+    jac2[i] = j2[i].data();
+  }
+  ASSERT_TRUE(cost->Evaluate(parameters, r1.data(), jac1));
+  ASSERT_TRUE(autodiff.Evaluate(parameters, r2.data(), jac2));
+  EXPECT_EQ(r1, r2);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(j1[i], j2[i]);
+}
+
+TEST(PriorResidualTest, JacobianMatchesNumericDifferences) {
+  FunctionValues scales{}, prior = DefaultFunctionValues(), values = prior;
+  for (int f = 0; f < kNumFunctions; ++f) {
+    scales[f] = 1.0 + f;
+    values[f] += 0.03 * f;
+  }
+  std::unique_ptr<ceres::CostFunction> cost(
+      PriorResidual::Create(0.4, scales, prior));
+  const double* parameters[] = {values.data()};
+  const std::vector<const ceres::Manifold*> manifolds(1, nullptr);
+  ceres::GradientChecker checker(cost.get(), &manifolds,
+                                 ceres::NumericDiffOptions());
+  ceres::GradientChecker::ProbeResults results;
+  EXPECT_TRUE(checker.Probe(parameters, 1e-9, &results)) << results.error_log;
 }
 
 }  // namespace
