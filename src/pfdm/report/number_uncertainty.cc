@@ -316,9 +316,13 @@ Eigen::VectorXd EdVariances(const SequenceFit& fit,
     frames.emplace_back(fitted_ed, fitted_samples, analysis.regions,
                         analysis.models[t], PlaneOf(analysis, t));
   }
+  // Moved samples, taken again only where a step of a knot moves ED and
+  // set back after each step (assigned, not copied anew: no allocation).
+  ReferenceSamples samples = fitted_samples;
   const MovedNumbersOf numbers = [&](const Model& ed_model,
                                      const MovedU& range) {
-    const ReferenceSamples samples = SampleReference(ed_model, analysis.layout);
+    ResampleReference(ed_model, analysis.layout, range.low, range.high,
+                      &samples);
     const bool spun = EdSpin(fitted_ed, ed_model) != 0.0;
     std::vector<double> all;
     for (size_t t = 0; t < fit.frames.size(); ++t) {
@@ -336,6 +340,7 @@ Eigen::VectorXd EdVariances(const SequenceFit& fit,
       const std::vector<double> values = Flatten(measured);
       all.insert(all.end(), values.begin(), values.end());
     }
+    samples = fitted_samples;
     return all;
   };
   const FrameCovariance& covariance = fit.frames[ed].covariance;

@@ -125,6 +125,28 @@ int AssignRegion(const Model& reference, double u, double v,
   return first + sector;
 }
 
+namespace {
+
+// Row i of SampleReference: the samples of latitude u.
+void SampleReferenceRow(const Model& reference, const RegionLayout& layout,
+                        double u, ReferenceSamples::Sample* row) {
+  const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
+  const RingFunctions ring(reference, u);
+  for (int j = 0; j < kLongitudeSamples; ++j) {
+    const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
+    ReferenceSamples::Sample& sample = row[j];
+    sample.region = AssignRegion(reference, u, v, layout);
+    sample.weight = AreaWeight(reference, u, v);
+    sample.from = before.points[j] - before.centroid;
+    SurfaceTangents(reference, ring, v, &sample.xu, &sample.xv);
+    if (reference.config.Solid()) {
+      sample.thickness = WallThickness(reference, u, v);
+    }
+  }
+}
+
+}  // namespace
+
 ReferenceSamples SampleReference(const Model& reference,
                                  const RegionLayout& layout) {
   ReferenceSamples out;
@@ -134,25 +156,26 @@ ReferenceSamples SampleReference(const Model& reference,
   out.s_min = std::sin(reference.config.u_min);
   out.s_max = std::sin(reference.config.u_max);
   out.axis = LongAxis(reference);
-  out.samples.reserve(kLatitudeSamples * kLongitudeSamples);
+  out.samples.resize(kLatitudeSamples * kLongitudeSamples);
   for (int i = 0; i < kLatitudeSamples; ++i) {
-    const double u = RowU(out.s_min, out.s_max, i);
-    const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
-    const RingFunctions ring(reference, u);
-    for (int j = 0; j < kLongitudeSamples; ++j) {
-      const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
-      ReferenceSamples::Sample sample;
-      sample.region = AssignRegion(reference, u, v, layout);
-      sample.weight = AreaWeight(reference, u, v);
-      sample.from = before.points[j] - before.centroid;
-      SurfaceTangents(reference, ring, v, &sample.xu, &sample.xv);
-      if (reference.config.Solid()) {
-        sample.thickness = WallThickness(reference, u, v);
-      }
-      out.samples.push_back(sample);
-    }
+    SampleReferenceRow(reference, layout, RowU(out.s_min, out.s_max, i),
+                       &out.samples[i * kLongitudeSamples]);
   }
   return out;
+}
+
+void ResampleReference(const Model& reference, const RegionLayout& layout,
+                       double u_low, double u_high, ReferenceSamples* samples) {
+  if (u_low <= reference.config.u_min || u_high >= reference.config.u_max) {
+    *samples = SampleReference(reference, layout);
+    return;
+  }
+  for (int i = 0; i < kLatitudeSamples; ++i) {
+    const double u = RowU(samples->s_min, samples->s_max, i);
+    if (u < u_low || u > u_high) continue;
+    SampleReferenceRow(reference, layout, u,
+                       &samples->samples[i * kLongitudeSamples]);
+  }
 }
 
 namespace {

@@ -121,6 +121,13 @@ struct ReferenceSamples {
 };
 ReferenceSamples SampleReference(const Model& reference,
                                  const RegionLayout& layout);
+// Samples taken on a model that `reference` differs from only for u in
+// [u_low, u_high] (a step of one knot of end-diastole's, for the delta
+// method, number_uncertainty.h), made SampleReference(reference, layout):
+// the rows in the range taken again, or every row when the range reaches
+// the apex or the base rim, whose heights cut the levels.
+void ResampleReference(const Model& reference, const RegionLayout& layout,
+                       double u_low, double u_high, ReferenceSamples* samples);
 std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
                                            const Model& current);
 
