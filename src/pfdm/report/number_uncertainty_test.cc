@@ -1,6 +1,8 @@
 #include "pfdm/report/number_uncertainty.h"
 
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <random>
 
 #include "Eigen/Eigenvalues"
@@ -203,8 +205,15 @@ std::vector<Eigen::VectorXd> StraightforwardVariances(const SequenceFit& fit,
 // the round-off of the volumes' batched trigonometry (1e-9 allowed).
 TEST(NumberUncertaintyTest, SdsAreTheStraightforwardOnes) {
   const Fitted& f = LvFit();
+  const std::clock_t start = std::clock();
   const std::vector<Eigen::VectorXd> variance =
       StraightforwardVariances(f.fit, f.analysis);
+  const std::clock_t middle = std::clock();
+  const NumberSd again = PropagateUncertainty(f.fit, f.analysis);
+  std::printf("CPU s: from scratch %.2f, PropagateUncertainty %.2f\n",
+              double(middle - start) / CLOCKS_PER_SEC,
+              double(std::clock() - middle) / CLOCKS_PER_SEC);
+  ASSERT_TRUE(again.computed);
   int compared = 0;
   for (size_t t = 0; t < 2; ++t) {
     FrameNumbers sds{f.analysis.sd.clinical[t], f.analysis.sd.region_motion[t],
