@@ -64,8 +64,10 @@ double Wrapped(double angle) {
 
 // Surface area per unit of sin u and v at (u, v) on the model: the
 // weight of a sample on a grid equally spaced in sin u and v.
+constexpr double kAreaStep = 1e-5;  // AreaWeight's difference step in u, v.
+
 double AreaWeight(const Model& model, double u, double v) {
-  constexpr double h = 1e-5;
+  constexpr double h = kAreaStep;
   const Eigen::Vector3d xu =
       (model.ModelPoint(u + h, v) - model.ModelPoint(u - h, v)) / (2 * h);
   const Eigen::Vector3d xv =
@@ -172,7 +174,8 @@ void ResampleReference(const Model& reference, const RegionLayout& layout,
   }
   for (int i = 0; i < kLatitudeSamples; ++i) {
     const double u = RowU(samples->s_min, samples->s_max, i);
-    if (u < u_low || u > u_high) continue;
+    // A row just outside the range still differences into it (AreaWeight).
+    if (u < u_low - kAreaStep || u > u_high + kAreaStep) continue;
     SampleReferenceRow(reference, layout, u,
                        &samples->samples[i * kLongitudeSamples]);
   }
