@@ -38,6 +38,10 @@ FrameNumbers MeasureFrame(const Model& ed, const ReferenceSamples& samples,
 struct MovedU {
   double low = -std::numeric_limits<double>::infinity();
   double high = std::numeric_limits<double>::infinity();
+  // Whether the move may change the apex's or the base rim's height, by
+  // which the segments' levels are cut (ResampleReference): a3 or e3o at
+  // the first or the last knot, or anything but a knot.
+  bool heights = true;
 };
 
 // MeasureFrame of one frame's model `current`, kept.  `ed`, `samples`,

@@ -130,6 +130,12 @@ TEST(MovedRangeTest, IsTheKnotsSpan) {
   EXPECT_TRUE(std::isinf(MovedRange(model, {Kind::kKnot, 8, kA1}).high));
   const MovedU pose = MovedRange(model, {Kind::kCenter, -1, 0});
   EXPECT_TRUE(std::isinf(pose.low) && std::isinf(pose.high));
+  // Only a3 and e3o at an end knot move the apex's or the rim's height.
+  EXPECT_TRUE(pose.heights);
+  EXPECT_TRUE(MovedRange(model, {Kind::kKnot, 0, kA3}).heights);
+  EXPECT_TRUE(MovedRange(model, {Kind::kKnot, 8, kE3o}).heights);
+  EXPECT_FALSE(MovedRange(model, {Kind::kKnot, 0, kA1}).heights);
+  EXPECT_FALSE(MovedRange(model, {Kind::kKnot, 4, kA3}).heights);
 }
 
 }  // namespace

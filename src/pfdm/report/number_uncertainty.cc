@@ -1,5 +1,6 @@
 #include "pfdm/report/number_uncertainty.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "Eigen/Geometry"
@@ -127,6 +128,9 @@ MovedU MovedRange(const Model& model, const CovarianceEntry& entry) {
   if (entry.knot + 1 < grid.num_knots()) {
     range.high = grid.KnotU(entry.knot + 1);
   }
+  // RingHeight: a0 a3(u) sin u + e3o(u) at the apex and the rim.
+  const bool end = entry.knot == 0 || entry.knot + 1 == grid.num_knots();
+  range.heights = end && (entry.function == kA3 || entry.function == kE3o);
   return range;
 }
 
@@ -321,8 +325,18 @@ Eigen::VectorXd EdVariances(const SequenceFit& fit,
   ReferenceSamples samples = fitted_samples;
   const MovedNumbersOf numbers = [&](const Model& ed_model,
                                      const MovedU& range) {
-    ResampleReference(ed_model, analysis.layout, range.low, range.high,
-                      &samples);
+    // A step at an end knot that keeps the apex's and the rim's heights
+    // keeps every row's level: only its span's rows move (all rows lie
+    // strictly between u_min and u_max).
+    const ModelConfig& config = ed_model.config;
+    const bool keep_levels = !range.heights;
+    ResampleReference(
+        ed_model, analysis.layout,
+        keep_levels ? std::max(range.low, std::nextafter(config.u_min, 0.0))
+                    : range.low,
+        keep_levels ? std::min(range.high, std::nextafter(config.u_max, 0.0))
+                    : range.high,
+        &samples);
     const bool spun = EdSpin(fitted_ed, ed_model) != 0.0;
     std::vector<double> all;
     for (size_t t = 0; t < fit.frames.size(); ++t) {

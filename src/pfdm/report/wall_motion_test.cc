@@ -211,6 +211,15 @@ TEST(WallMotionTest, ResampleReferenceTakesWhatAStepMoves) {
     EXPECT_GT(moved_samples, 0u);
     if (knot > 0) EXPECT_LT(moved_samples, samples.samples.size() / 2);
   }
+  // A step of the first knot that keeps the apex's height (a1, not a3)
+  // keeps every row's level: its span's rows alone, strictly inside u's
+  // range, give the samples taken from scratch.
+  Model widened = model;
+  widened.state.knots[0][kA1] *= 1.2;
+  ReferenceSamples samples = before;
+  ResampleReference(widened, layout, std::nextafter(model.config.u_min, 0.0),
+                    grid.KnotU(1), &samples);
+  ExpectSameSamples(samples, SampleReference(widened, layout));
 }
 
 }  // namespace
