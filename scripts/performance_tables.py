@@ -27,7 +27,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCHMARKS = ["fit_benchmark", "cost_function_benchmark", "solvers_benchmark",
-              "job_benchmark", "local_benchmark", "wall_benchmark"]
+              "job_benchmark", "local_benchmark", "wall_benchmark",
+              "uncertainty_benchmark"]
 LINEAR_SOLVERS = {0: "DENSE_NORMAL_CHOLESKY", 1: "DENSE_QR",
                   2: "SPARSE_NORMAL_CHOLESKY"}
 SPARSE_LIBRARIES = {0: "SuiteSparse", 1: "CXSparse", 2: "Eigen"}
@@ -369,6 +370,22 @@ def wall_table(document):
                  [r[-1] for r in rows])
 
 
+def uncertainty_table(document):
+    rows = []
+    for key, b in medians(document).items():
+        a = args(key)
+        rows.append((a["points"], [
+            "{:,}".format(a["points"]), number(b["fit_ms"], 1),
+            number(b["covariance_ms"], 1),
+            "%.0f %%" % (100.0 * b["covariance_share"]),
+            number(b["numbers_ms"], 0),
+            "%.0f %%" % (100.0 * b["numbers_share"])]))
+    rows.sort(key=lambda r: r[0])
+    return table(["tags", "fit ms per frame", "covariance ms per frame",
+                  "covariance / fit", "numbers' sds ms per frame",
+                  "numbers' sds / fit"], [r[-1] for r in rows])
+
+
 def replace(readme, name, text):
     pattern = re.compile(r"(<!-- performance-tables:%s:begin -->\n).*?"
                          r"(<!-- performance-tables:%s:end -->)" % (name, name),
@@ -407,7 +424,9 @@ def main():
                          "performance.md"),
                 "solvers": ("solvers_benchmark", solvers_table, "solvers.md"),
                 "local": ("local_benchmark", local_table, "performance.md"),
-                "wall": ("wall_benchmark", wall_table, "performance.md")}
+                "wall": ("wall_benchmark", wall_table, "performance.md"),
+                "uncertainty": ("uncertainty_benchmark", uncertainty_table,
+                                "performance.md")}
     pages = {}
 
     def page(name):

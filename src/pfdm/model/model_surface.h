@@ -39,6 +39,20 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
 double CavityVolumeMl(const Model& model, const BasePlane* base = nullptr,
                       double w = 0.0);
 
+// CavityVolumeMl in two steps, for a model measured again after a move
+// confined to a range of u (the delta method's knot steps,
+// report/number_uncertainty.h): the surface CavityVolumeMl closes, whose
+// vertices in a range of u ReplaceVertices re-places on a moved model.
+ModelSurface CavitySurface(const Model& model, const BasePlane* base,
+                           double w = 0.0);
+// The vertices with u in [u_low, u_high] (the base plane's continuation
+// past u_max has the functions at u_max), placed on `model`.
+void ReplaceVertices(const Model& model, double u_low, double u_high, double w,
+                     ModelSurface* surface);
+// CavityVolumeMl(model, base, w) for surface = CavitySurface(model, base, w).
+double CavityVolumeMl(const Model& model, const ModelSurface& surface,
+                      const BasePlane* base);
+
 }  // namespace pfdm
 
 #endif  // PFDM_MODEL_MODEL_SURFACE_H_

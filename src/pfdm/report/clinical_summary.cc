@@ -181,9 +181,10 @@ ClinicalSummary Summarize(int frame, ReferenceRings& rings,
 }  // namespace
 
 ClinicalSummary SummarizeFrame(int frame, const Model& reference,
-                               const Model& current, const RingSpan& span) {
+                               const Model& current, const RingSpan& span,
+                               bool flat_lid_volumes) {
   ReferenceRings rings(reference);
-  return Summarize(frame, rings, current, span, /*flat_lid_volumes=*/true);
+  return Summarize(frame, rings, current, span, flat_lid_volumes);
 }
 
 void LeaveOutRotation(ClinicalSummary* summary) {

@@ -128,10 +128,12 @@ void LeaveOutRotation(ClinicalSummary* summary);
 // angle; the base ring's rotations stay.
 void LeaveOutApexRing(ClinicalSummary* summary);
 
-// reference is frame 0's model, current the frame's.
+// reference is frame 0's model, current the frame's; flat_lid_volumes as
+// SummarizeSequence's.
 ClinicalSummary SummarizeFrame(int frame, const Model& reference,
                                const Model& current,
-                               const RingSpan& span = RingSpan());
+                               const RingSpan& span = RingSpan(),
+                               bool flat_lid_volumes = true);
 
 // SummarizeFrame of every frame against frames[reference] (end-diastole).
 // Without flat_lid_volumes the volumes closed by a flat lid (volume_ml and,

@@ -1,5 +1,6 @@
 #include "pfdm/report/number_uncertainty.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "Eigen/Geometry"
@@ -119,11 +120,25 @@ Model Nudged(const Model& model, const std::vector<CovarianceEntry>& entries,
   return nudged;
 }
 
+MovedU MovedRange(const Model& model, const CovarianceEntry& entry) {
+  MovedU range;
+  if (entry.kind != CovarianceEntry::Kind::kKnot) return range;
+  const KnotGrid& grid = model.config.Grid();
+  if (entry.knot > 0) range.low = grid.KnotU(entry.knot - 1);
+  if (entry.knot + 1 < grid.num_knots()) {
+    range.high = grid.KnotU(entry.knot + 1);
+  }
+  // RingHeight: a0 a3(u) sin u + e3o(u) at the apex and the rim.
+  const bool end = entry.knot == 0 || entry.knot + 1 == grid.num_knots();
+  range.heights = end && (entry.function == kA3 || entry.function == kE3o);
+  return range;
+}
+
 Eigen::MatrixXd NumberJacobian(const Model& model,
                                const FrameCovariance& covariance,
-                               const NumbersOf& numbers) {
+                               const MovedNumbersOf& numbers) {
   const int n = static_cast<int>(covariance.entries.size());
-  const std::vector<double> at = numbers(model);
+  const std::vector<double> at = numbers(model, MovedU());
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(at.size(), n);
   for (int j = 0; j < n; ++j) {
     const double sd = std::sqrt(std::max(0.0, covariance.covariance(j, j)));
@@ -131,10 +146,11 @@ Eigen::MatrixXd NumberJacobian(const Model& model,
     const double step = kStepSd * sd;
     Eigen::VectorXd delta = Eigen::VectorXd::Zero(n);
     delta[j] = step;
+    const MovedU range = MovedRange(model, covariance.entries[j]);
     const std::vector<double> up =
-        numbers(Nudged(model, covariance.entries, delta));
+        numbers(Nudged(model, covariance.entries, delta), range);
     const std::vector<double> down =
-        numbers(Nudged(model, covariance.entries, -delta));
+        numbers(Nudged(model, covariance.entries, -delta), range);
     for (size_t i = 0; i < at.size(); ++i) {
       jacobian(i, j) = (up[i] - down[i]) / (2.0 * step);
     }
@@ -142,29 +158,17 @@ Eigen::MatrixXd NumberJacobian(const Model& model,
   return jacobian;
 }
 
+Eigen::MatrixXd NumberJacobian(const Model& model,
+                               const FrameCovariance& covariance,
+                               const NumbersOf& numbers) {
+  return NumberJacobian(
+      model, covariance,
+      [&](const Model& moved, const MovedU&) { return numbers(moved); });
+}
+
 Eigen::VectorXd Variances(const Eigen::MatrixXd& jacobian,
                           const Eigen::MatrixXd& covariance) {
   return (jacobian * covariance).cwiseProduct(jacobian).rowwise().sum();
-}
-
-FrameNumbers MeasureFrame(const Model& ed, const ReferenceSamples& samples,
-                          const std::vector<WallRegion>& regions,
-                          const Model& current, const BasePlane* plane) {
-  FrameNumbers numbers;
-  ClinicalSummary& c = numbers.clinical;
-  c = SummarizeFrame(0, ed, current);
-  if (plane != nullptr) {  // As AnalyzeFit with base planes.
-    const bool solid = current.config.Solid();
-    c.volume_ml = CavityVolumeMl(current, plane, solid ? -1.0 : 0.0);
-    if (solid) {
-      c.myocardial_volume_ml =
-          CavityVolumeMl(current, plane, 1.0) - c.volume_ml;
-      c.lv_mass_g = kMyocardialDensity * c.myocardial_volume_ml;
-    }
-  }
-  numbers.regions = SummarizeRegions(samples, current);
-  numbers.strain = SummarizeStrain(regions, numbers.regions);
-  return numbers;
 }
 
 std::vector<double> Flatten(const FrameNumbers& numbers) {
@@ -257,9 +261,11 @@ std::vector<Eigen::VectorXd> OwnVariances(const SequenceFit& fit,
   std::vector<Eigen::VectorXd> variance(fit.frames.size());
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (t == ed) continue;
-    const NumbersOf numbers = [&](const Model& model) {
-      return Flatten(MeasureFrame(ed_model, samples, analysis.regions, model,
-                                  PlaneOf(analysis, t)));
+    const FrameMeasurer frame(ed_model, samples, analysis.regions,
+                              analysis.models[t], PlaneOf(analysis, t));
+    const MovedNumbersOf numbers = [&](const Model& model,
+                                       const MovedU& range) {
+      return Flatten(frame.Moved(model, range));
     };
     const FrameCovariance& covariance = fit.frames[t].covariance;
     variance[t] =
@@ -271,10 +277,18 @@ std::vector<Eigen::VectorXd> OwnVariances(const SequenceFit& fit,
 
 }  // namespace
 
-Model SpunWith(const Model& ed, const Model& moved_ed, const Model& model) {
+double EdSpin(const Model& ed, const Model& moved_ed) {
+  // Exactly 0 for a step that did not turn ED, which R' R^T's round-off
+  // would not give.
+  if (moved_ed.state.quaternion == ed.state.quaternion) return 0.0;
   const Eigen::Vector3d axis = ed.Rotation().col(2);
   const Eigen::AngleAxisd turn(moved_ed.Rotation() * ed.Rotation().transpose());
-  const double spin = turn.angle() * turn.axis().dot(axis);
+  return turn.angle() * turn.axis().dot(axis);
+}
+
+Model SpunWith(const Model& ed, const Model& moved_ed, const Model& model) {
+  const Eigen::Vector3d axis = ed.Rotation().col(2);
+  const double spin = EdSpin(ed, moved_ed);
   if (spin == 0.0) return model;
   const Eigen::AngleAxisd about(spin, axis);
   const Eigen::Vector3d pivot(ed.state.center.data());
@@ -292,25 +306,59 @@ Model SpunWith(const Model& ed, const Model& moved_ed, const Model& model) {
 namespace {
 
 // Every frame's numbers' variance from ED's parameters, in frame order; a
-// spin of ED about its axis turns the other frames with it (SpunWith).
+// spin of ED about its axis turns the other frames with it (SpunWith).  A
+// step that does not spin ED leaves the other frames' models as they are
+// (FrameMeasurer::Against).
 Eigen::VectorXd EdVariances(const SequenceFit& fit,
                             const FitAnalysis& analysis) {
   const size_t ed = static_cast<size_t>(fit.ed_frame);
-  const NumbersOf numbers = [&](const Model& ed_model) {
-    const ReferenceSamples samples = SampleReference(ed_model, analysis.layout);
+  const Model& fitted_ed = analysis.models[ed];
+  const ReferenceSamples fitted_samples =
+      SampleReference(fitted_ed, analysis.layout);
+  std::vector<FrameMeasurer> frames;
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    frames.emplace_back(fitted_ed, fitted_samples, analysis.regions,
+                        analysis.models[t], PlaneOf(analysis, t));
+  }
+  // Moved samples, taken again only where a step of a knot moves ED and
+  // set back after each step (assigned, not copied anew: no allocation).
+  ReferenceSamples samples = fitted_samples;
+  const MovedNumbersOf numbers = [&](const Model& ed_model,
+                                     const MovedU& range) {
+    // A step at an end knot that keeps the apex's and the rim's heights
+    // keeps every row's level: only its span's rows move (all rows lie
+    // strictly between u_min and u_max).
+    const ModelConfig& config = ed_model.config;
+    const bool keep_levels = !range.heights;
+    ResampleReference(
+        ed_model, analysis.layout,
+        keep_levels ? std::max(range.low, std::nextafter(config.u_min, 0.0))
+                    : range.low,
+        keep_levels ? std::min(range.high, std::nextafter(config.u_max, 0.0))
+                    : range.high,
+        &samples);
+    const bool spun = EdSpin(fitted_ed, ed_model) != 0.0;
     std::vector<double> all;
     for (size_t t = 0; t < fit.frames.size(); ++t) {
-      const Model current =
-          t == ed ? ed_model
-                  : SpunWith(analysis.models[ed], ed_model, analysis.models[t]);
-      const std::vector<double> values = Flatten(MeasureFrame(
-          ed_model, samples, analysis.regions, current, PlaneOf(analysis, t)));
+      FrameNumbers measured;
+      if (t == ed) {
+        measured = frames[t].Moved(ed_model, range, ed_model, samples);
+      } else if (!spun) {
+        measured = frames[t].Against(ed_model, samples);
+      } else {
+        measured =
+            MeasureFrame(ed_model, samples, analysis.regions,
+                         SpunWith(fitted_ed, ed_model, analysis.models[t]),
+                         PlaneOf(analysis, t));
+      }
+      const std::vector<double> values = Flatten(measured);
       all.insert(all.end(), values.begin(), values.end());
     }
+    samples = fitted_samples;
     return all;
   };
   const FrameCovariance& covariance = fit.frames[ed].covariance;
-  return Variances(NumberJacobian(analysis.models[ed], covariance, numbers),
+  return Variances(NumberJacobian(fitted_ed, covariance, numbers),
                    covariance.covariance);
 }
 

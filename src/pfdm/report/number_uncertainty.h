@@ -31,6 +31,7 @@
 #include "pfdm/model/base_plane.h"
 #include "pfdm/model/model.h"
 #include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/frame_numbers.h"
 #include "pfdm/report/number_sd.h"
 
 namespace pfdm {
@@ -52,21 +53,21 @@ Eigen::MatrixXd NumberJacobian(const Model& model,
                                const FrameCovariance& covariance,
                                const NumbersOf& numbers);
 
+// NumberJacobian for numbers that are told where each step moved the model
+// (MovedRange): FrameMeasurer measures again only there.
+using MovedNumbersOf =
+    std::function<std::vector<double>(const Model&, const MovedU&)>;
+Eigen::MatrixXd NumberJacobian(const Model& model,
+                               const FrameCovariance& covariance,
+                               const MovedNumbersOf& numbers);
+// Where a step along `entry` moves `model`: a knot's between its
+// neighbours, the pose's and the globals' everywhere.
+MovedU MovedRange(const Model& model, const CovarianceEntry& entry);
+
 // diag(D C D'): each number's variance.
 Eigen::VectorXd Variances(const Eigen::MatrixXd& jacobian,
                           const Eigen::MatrixXd& covariance);
 
-// One frame's numbers as AnalyzeFit measures them (before it leaves any
-// out): against end-diastole's model `ed` and its samples, the volume
-// closed by `plane` when given (a solid's cavity and myocardium).
-struct FrameNumbers {
-  ClinicalSummary clinical;
-  std::vector<RegionMotion> regions;
-  GlobalStrain strain;
-};
-FrameNumbers MeasureFrame(const Model& ed, const ReferenceSamples& samples,
-                          const std::vector<WallRegion>& regions,
-                          const Model& current, const BasePlane* plane);
 std::vector<double> Flatten(const FrameNumbers& numbers);
 // numbers' fields set from values, in Flatten's order.
 void Unflatten(const double* values, FrameNumbers* numbers);
@@ -81,6 +82,8 @@ void Unflatten(const double* values, FrameNumbers* numbers);
 // independent it would read as a turn of every segment (on the LV phantom,
 // segment rotation sd 3.8 degrees against a spread of 0.4).
 Model SpunWith(const Model& ed, const Model& moved_ed, const Model& model);
+// The angle of that turn (0: `model` is returned unchanged).
+double EdSpin(const Model& ed, const Model& moved_ed);
 
 // Every number's sd in `analysis` (AnalyzeFit(fit, ...)): computed false
 // unless every frame has its covariance (--uncertainty on).

@@ -1,6 +1,8 @@
 #include "pfdm/report/number_uncertainty.h"
 
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <random>
 
 #include "Eigen/Eigenvalues"
@@ -168,6 +170,68 @@ TEST(NumberUncertaintyTest, SpinOfEdTurnsEveryFrameAlike) {
     EXPECT_NEAR(spun[i], original[i], 1e-6 * (1.0 + std::abs(original[i])))
         << i;
   }
+}
+
+// The sds as first written (before FrameMeasurer): every step measures
+// every number of every frame again from scratch.
+std::vector<Eigen::VectorXd> StraightforwardVariances(const SequenceFit& fit,
+                                                      const FitAnalysis& a) {
+  const Model& ed = a.models[0];
+  const ReferenceSamples samples = SampleReference(ed, a.layout);
+  std::vector<Eigen::VectorXd> variance(fit.frames.size());
+  const NumbersOf own = [&](const Model& model) {
+    return Flatten(MeasureFrame(ed, samples, a.regions, model, nullptr));
+  };
+  const FrameCovariance& c1 = fit.frames[1].covariance;
+  variance[1] = Variances(NumberJacobian(a.models[1], c1, own), c1.covariance);
+  const NumbersOf of_ed = [&](const Model& moved) {
+    const ReferenceSamples moved_samples = SampleReference(moved, a.layout);
+    std::vector<double> all =
+        Flatten(MeasureFrame(moved, moved_samples, a.regions, moved, nullptr));
+    const std::vector<double> es =
+        Flatten(MeasureFrame(moved, moved_samples, a.regions,
+                             SpunWith(ed, moved, a.models[1]), nullptr));
+    all.insert(all.end(), es.begin(), es.end());
+    return all;
+  };
+  const FrameCovariance& c0 = fit.frames[0].covariance;
+  const Eigen::VectorXd from_ed =
+      Variances(NumberJacobian(ed, c0, of_ed), c0.covariance);
+  const Eigen::Index size = from_ed.size() / 2;
+  variance[0] = from_ed.head(size);
+  variance[1] += from_ed.tail(size);
+  return variance;
+}
+
+// PropagateUncertainty measures again only what each step moves
+// (FrameMeasurer); its sds are those of measuring everything again, to
+// the round-off of the volumes' batched trigonometry (1e-9 allowed).
+TEST(NumberUncertaintyTest, SdsAreTheStraightforwardOnes) {
+  const Fitted& f = LvFit();
+  const std::clock_t start = std::clock();
+  const std::vector<Eigen::VectorXd> variance =
+      StraightforwardVariances(f.fit, f.analysis);
+  const std::clock_t middle = std::clock();
+  const NumberSd again = PropagateUncertainty(f.fit, f.analysis);
+  std::printf("CPU s: from scratch %.2f, PropagateUncertainty %.2f\n",
+              double(middle - start) / CLOCKS_PER_SEC,
+              double(std::clock() - middle) / CLOCKS_PER_SEC);
+  ASSERT_TRUE(again.computed);
+  int compared = 0;
+  for (size_t t = 0; t < 2; ++t) {
+    FrameNumbers sds{f.analysis.sd.clinical[t], f.analysis.sd.region_motion[t],
+                     f.analysis.sd.strain[t]};
+    const std::vector<double> kept = Flatten(sds);
+    ASSERT_EQ(kept.size(), static_cast<size_t>(variance[t].size()));
+    for (size_t i = 0; i < kept.size(); ++i) {
+      if (!Measured(kept[i])) continue;  // Left out by the analysis.
+      const double straightforward = std::sqrt(std::max(0.0, variance[t][i]));
+      EXPECT_NEAR(kept[i], straightforward, 1e-9 * (1.0 + straightforward))
+          << t << " " << i;
+      compared += straightforward > 0.0;
+    }
+  }
+  EXPECT_GT(compared, 100);
 }
 
 TEST(NumberUncertaintyTest, NotMeasuredNumbersHaveNoSd) {

@@ -52,6 +52,11 @@ std::string RegionName(const RegionLayout& layout, RegionLevel level,
   return prefix + std::to_string(sector + 1);
 }
 
+// Row i's latitude, cells equally spaced in sin u between s_min and s_max.
+double RowU(double s_min, double s_max, int i) {
+  return std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudeSamples);
+}
+
 // Wraps an angle into [-pi, pi).
 double Wrapped(double angle) {
   return angle - 2.0 * kPi * std::floor((angle + kPi) / (2.0 * kPi));
@@ -59,8 +64,10 @@ double Wrapped(double angle) {
 
 // Surface area per unit of sin u and v at (u, v) on the model: the
 // weight of a sample on a grid equally spaced in sin u and v.
+constexpr double kAreaStep = 1e-5;  // AreaWeight's difference step in u, v.
+
 double AreaWeight(const Model& model, double u, double v) {
-  constexpr double h = 1e-5;
+  constexpr double h = kAreaStep;
   const Eigen::Vector3d xu =
       (model.ModelPoint(u + h, v) - model.ModelPoint(u - h, v)) / (2 * h);
   const Eigen::Vector3d xv =
@@ -120,6 +127,28 @@ int AssignRegion(const Model& reference, double u, double v,
   return first + sector;
 }
 
+namespace {
+
+// Row i of SampleReference: the samples of latitude u.
+void SampleReferenceRow(const Model& reference, const RegionLayout& layout,
+                        double u, ReferenceSamples::Sample* row) {
+  const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
+  const RingFunctions ring(reference, u);
+  for (int j = 0; j < kLongitudeSamples; ++j) {
+    const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
+    ReferenceSamples::Sample& sample = row[j];
+    sample.region = AssignRegion(reference, u, v, layout);
+    sample.weight = AreaWeight(reference, u, v);
+    sample.from = before.points[j] - before.centroid;
+    SurfaceTangents(reference, ring, v, &sample.xu, &sample.xv);
+    if (reference.config.Solid()) {
+      sample.thickness = WallThickness(reference, u, v);
+    }
+  }
+}
+
+}  // namespace
+
 ReferenceSamples SampleReference(const Model& reference,
                                  const RegionLayout& layout) {
   ReferenceSamples out;
@@ -129,66 +158,95 @@ ReferenceSamples SampleReference(const Model& reference,
   out.s_min = std::sin(reference.config.u_min);
   out.s_max = std::sin(reference.config.u_max);
   out.axis = LongAxis(reference);
-  out.samples.reserve(kLatitudeSamples * kLongitudeSamples);
+  out.samples.resize(kLatitudeSamples * kLongitudeSamples);
   for (int i = 0; i < kLatitudeSamples; ++i) {
-    const double u = std::asin(out.s_min + (out.s_max - out.s_min) * (i + 0.5) /
-                                               kLatitudeSamples);
-    const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
-    const RingFunctions ring(reference, u);
-    for (int j = 0; j < kLongitudeSamples; ++j) {
-      const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
-      ReferenceSamples::Sample sample;
-      sample.region = AssignRegion(reference, u, v, layout);
-      sample.weight = AreaWeight(reference, u, v);
-      sample.from = before.points[j] - before.centroid;
-      SurfaceTangents(reference, ring, v, &sample.xu, &sample.xv);
-      if (reference.config.Solid()) {
-        sample.thickness = WallThickness(reference, u, v);
-      }
-      out.samples.push_back(sample);
-    }
+    SampleReferenceRow(reference, layout, RowU(out.s_min, out.s_max, i),
+                       &out.samples[i * kLongitudeSamples]);
   }
   return out;
 }
 
-std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
-                                           const Model& current) {
+void ResampleReference(const Model& reference, const RegionLayout& layout,
+                       double u_low, double u_high, ReferenceSamples* samples) {
+  if (u_low <= reference.config.u_min || u_high >= reference.config.u_max) {
+    *samples = SampleReference(reference, layout);
+    return;
+  }
+  for (int i = 0; i < kLatitudeSamples; ++i) {
+    const double u = RowU(samples->s_min, samples->s_max, i);
+    // A row just outside the range still differences into it (AreaWeight).
+    if (u < u_low - kAreaStep || u > u_high + kAreaStep) continue;
+    SampleReferenceRow(reference, layout, u,
+                       &samples->samples[i * kLongitudeSamples]);
+  }
+}
+
+namespace {
+
+void SampleRow(const Model& current, double u, CurrentSamples::Sample* row) {
+  const MaterialRing after = SampleRing(current, u, kLongitudeSamples);
+  const RingFunctions ring(current, u);
+  const bool solid = current.config.Solid();
+  for (int j = 0; j < kLongitudeSamples; ++j) {
+    const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
+    CurrentSamples::Sample& sample = row[j];
+    sample.to = after.points[j] - after.centroid;
+    SurfaceTangents(current, ring, v, &sample.xu, &sample.xv);
+    if (solid) sample.thickness = WallThickness(current, u, v);
+  }
+}
+
+}  // namespace
+
+CurrentSamples SampleCurrent(const ReferenceSamples& reference,
+                             const Model& current) {
+  CurrentSamples out;
+  out.solid = current.config.Solid();
+  out.samples.resize(kLatitudeSamples * kLongitudeSamples);
+  for (int i = 0; i < kLatitudeSamples; ++i) {
+    out.row_u.push_back(RowU(reference.s_min, reference.s_max, i));
+    SampleRow(current, out.row_u[i], &out.samples[i * kLongitudeSamples]);
+  }
+  return out;
+}
+
+void ResampleRows(const Model& current, double u_low, double u_high,
+                  CurrentSamples* samples) {
+  for (size_t i = 0; i < samples->row_u.size(); ++i) {
+    const double u = samples->row_u[i];
+    if (u < u_low || u > u_high) continue;
+    SampleRow(current, u, &samples->samples[i * kLongitudeSamples]);
+  }
+}
+
+std::vector<RegionMotion> CompareRegions(const ReferenceSamples& reference,
+                                         const CurrentSamples& current) {
   const size_t count = reference.num_regions;
   std::vector<RegionMotion> motion(count);
   std::vector<double> weight(count, 0.0);
-  const double s_min = reference.s_min, s_max = reference.s_max;
-  const ReferenceSamples::Sample* sample = reference.samples.data();
-  for (int i = 0; i < kLatitudeSamples; ++i) {
-    const double u =
-        std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudeSamples);
-    const MaterialRing after = SampleRing(current, u, kLongitudeSamples);
-    const RingFunctions ring(current, u);
-    const bool solid = current.config.Solid();
-    for (int j = 0; j < kLongitudeSamples; ++j, ++sample) {
-      const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
-      const int r = sample->region;
-      const double w = sample->weight;
-      const Eigen::Vector3d& from = sample->from;
-      const Eigen::Vector3d to = after.points[j] - after.centroid;
-      motion[r].rotation_deg +=
-          w * AngleAbout(from, to, reference.axis) * kDegreesPerRadian;
-      motion[r].radial_contraction_percent +=
-          w * 100.0 * (1.0 - to.norm() / from.norm());
-      Eigen::Vector3d xu, xv;
-      SurfaceTangents(current, ring, v, &xu, &xv);
-      const SurfaceStrain strain =
-          PlaneStrain(sample->xu, sample->xv, xu, xv, sample->xv, sample->xu);
-      motion[r].ecc_percent += w * 100.0 * strain.ecc;
-      motion[r].ell_percent += w * 100.0 * strain.ell;
-      motion[r].ecl_percent += w * 100.0 * strain.ecl;
-      if (solid) {
-        motion[r].thickening_percent +=
-            w * 100.0 *
-            (WallThickness(current, u, v) / sample->thickness - 1.0);
-      }
-      weight[r] += w;
+  const CurrentSamples::Sample* now = current.samples.data();
+  for (const ReferenceSamples::Sample& sample : reference.samples) {
+    const int r = sample.region;
+    const double w = sample.weight;
+    const Eigen::Vector3d& from = sample.from;
+    const Eigen::Vector3d& to = now->to;
+    motion[r].rotation_deg +=
+        w * AngleAbout(from, to, reference.axis) * kDegreesPerRadian;
+    motion[r].radial_contraction_percent +=
+        w * 100.0 * (1.0 - to.norm() / from.norm());
+    const SurfaceStrain strain = PlaneStrain(sample.xu, sample.xv, now->xu,
+                                             now->xv, sample.xv, sample.xu);
+    motion[r].ecc_percent += w * 100.0 * strain.ecc;
+    motion[r].ell_percent += w * 100.0 * strain.ell;
+    motion[r].ecl_percent += w * 100.0 * strain.ecl;
+    if (current.solid) {
+      motion[r].thickening_percent +=
+          w * 100.0 * (now->thickness / sample.thickness - 1.0);
     }
+    weight[r] += w;
+    ++now;
   }
+  const double s_min = reference.s_min, s_max = reference.s_max;
   for (size_t r = 0; r < count; ++r) {
     if (weight[r] == 0.0) continue;
     motion[r].rotation_deg /= weight[r];
@@ -203,6 +261,11 @@ std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
                          kPi / kLongitudeSamples;
   }
   return motion;
+}
+
+std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
+                                           const Model& current) {
+  return CompareRegions(reference, SampleCurrent(reference, current));
 }
 
 std::vector<RegionMotion> SummarizeRegions(const Model& reference,

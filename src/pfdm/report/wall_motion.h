@@ -121,8 +121,37 @@ struct ReferenceSamples {
 };
 ReferenceSamples SampleReference(const Model& reference,
                                  const RegionLayout& layout);
+// Samples taken on a model that `reference` differs from only for u in
+// [u_low, u_high] (a step of one knot of end-diastole's, for the delta
+// method, number_uncertainty.h), made SampleReference(reference, layout):
+// the rows in the range taken again, or every row when the range reaches
+// the apex or the base rim, whose heights cut the levels.
+void ResampleReference(const Model& reference, const RegionLayout& layout,
+                       double u_low, double u_high, ReferenceSamples* samples);
 std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,
                                            const Model& current);
+
+// SummarizeRegions in two steps, what the current model gives at the
+// samples' material points and its comparison with the reference's, so
+// that the delta method (number_uncertainty.h) re-measures only the rows a
+// step moves: a knot's step moves the model only between its neighbours.
+struct CurrentSamples {
+  struct Sample {
+    Eigen::Vector3d to = Eigen::Vector3d::Zero();  // From its ring's centroid.
+    Eigen::Vector3d xu = Eigen::Vector3d::Zero(), xv = Eigen::Vector3d::Zero();
+    double thickness = 0.0;  // A solid's WallThickness; 0 otherwise.
+  };
+  bool solid = false;
+  std::vector<double> row_u;    // The latitudes' u.
+  std::vector<Sample> samples;  // Latitude by latitude, as the reference's.
+};
+CurrentSamples SampleCurrent(const ReferenceSamples& reference,
+                             const Model& current);
+// Re-measures on `current` the rows whose u lies in [u_low, u_high].
+void ResampleRows(const Model& current, double u_low, double u_high,
+                  CurrentSamples* samples);
+std::vector<RegionMotion> CompareRegions(const ReferenceSamples& reference,
+                                         const CurrentSamples& current);
 
 }  // namespace pfdm
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 #include "pfdm/util/angles.h"
 
 namespace pfdm {
@@ -161,6 +162,64 @@ TEST(WallMotionTest, UniformContractionAndLinearTwistPerSegment) {
     EXPECT_NEAR(m.ecc_percent, 0.0, 1e-9);
     EXPECT_NEAR(m.ell_percent, 0.0, 1e-9);
   }
+}
+
+}  // namespace
+}  // namespace pfdm
+
+namespace pfdm {
+namespace {
+
+void ExpectSameSamples(const ReferenceSamples& a, const ReferenceSamples& b) {
+  ASSERT_EQ(a.samples.size(), b.samples.size());
+  EXPECT_EQ(a.axis, b.axis);
+  for (size_t i = 0; i < a.samples.size(); ++i) {
+    const ReferenceSamples::Sample &x = a.samples[i], &y = b.samples[i];
+    ASSERT_TRUE(x.region == y.region && x.weight == y.weight &&
+                x.from == y.from && x.xu == y.xu && x.xv == y.xv &&
+                x.thickness == y.thickness)
+        << i;
+  }
+}
+
+// A knot's step taken again only between its neighbours gives the samples
+// taken on the moved model from scratch, row for row; a step of the first
+// knot (the apex's height, which cuts the levels) takes every row again.
+TEST(WallMotionTest, ResampleReferenceTakesWhatAStepMoves) {
+  Model model = TestSpheroid(9);
+  for (size_t k = 0; k < model.state.knots.size(); ++k) {
+    model.state.knots[k][kA1] *= 1.0 + 0.05 * std::sin(1.3 * k);
+    model.state.knots[k][kTau] = 0.02 * k;
+  }
+  const RegionLayout layout;
+  const ReferenceSamples before = SampleReference(model, layout);
+  const KnotGrid& grid = model.config.Grid();
+  for (int knot : {0, 4}) {
+    Model moved = model;
+    moved.state.knots[knot][kA3] *= 1.1;
+    ReferenceSamples samples = before;
+    ResampleReference(moved, layout, knot == 0 ? -1e300 : grid.KnotU(knot - 1),
+                      grid.KnotU(knot + 1), &samples);
+    SCOPED_TRACE(knot);
+    ExpectSameSamples(samples, SampleReference(moved, layout));
+    // The step moved some samples, and an inner knot's not all: the rows
+    // kept are compared too.
+    size_t moved_samples = 0;
+    for (size_t i = 0; i < samples.samples.size(); ++i) {
+      moved_samples += samples.samples[i].from != before.samples[i].from;
+    }
+    EXPECT_GT(moved_samples, 0u);
+    if (knot > 0) EXPECT_LT(moved_samples, samples.samples.size() / 2);
+  }
+  // A step of the first knot that keeps the apex's height (a1, not a3)
+  // keeps every row's level: its span's rows alone, strictly inside u's
+  // range, give the samples taken from scratch.
+  Model widened = model;
+  widened.state.knots[0][kA1] *= 1.2;
+  ReferenceSamples samples = before;
+  ResampleReference(widened, layout, std::nextafter(model.config.u_min, 0.0),
+                    grid.KnotU(1), &samples);
+  ExpectSameSamples(samples, SampleReference(widened, layout));
 }
 
 }  // namespace

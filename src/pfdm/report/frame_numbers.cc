@@ -1,0 +1,97 @@
+#include "pfdm/report/frame_numbers.h"
+
+namespace pfdm {
+namespace {
+
+// The surfaces whose volumes a frame reports: the cavity's (a solid's
+// endocardium, w = -1, or the mid-wall) and a solid's epicardium.
+std::vector<double> VolumeSurfaces(const Model& model) {
+  if (model.config.Solid()) return {-1.0, 1.0};
+  return {0.0};
+}
+
+// The volumes closed by `plane` (the flat lid at the rim without one), as
+// SummarizeFrame's with flat lids or AnalyzeFit's with base planes.
+void SetVolumes(const Model& current, const std::vector<ModelSurface>& surfaces,
+                const BasePlane* plane, ClinicalSummary* c) {
+  c->volume_ml = CavityVolumeMl(current, surfaces[0], plane);
+  if (surfaces.size() > 1) {
+    c->myocardial_volume_ml =
+        CavityVolumeMl(current, surfaces[1], plane) - c->volume_ml;
+    c->lv_mass_g = kMyocardialDensity * c->myocardial_volume_ml;
+  }
+}
+
+}  // namespace
+
+FrameMeasurer::FrameMeasurer(const Model& ed, const ReferenceSamples& samples,
+                             const std::vector<WallRegion>& regions,
+                             const Model& current, const BasePlane* plane)
+    : ed_(ed),
+      samples_(samples),
+      regions_(regions),
+      plane_(plane),
+      current_(current),
+      current_samples_(SampleCurrent(samples, current)) {
+  for (double w : VolumeSurfaces(current)) {
+    surfaces_.push_back(CavitySurface(current, plane, w));
+  }
+  numbers_.clinical =
+      SummarizeFrame(0, ed, current, RingSpan(), /*flat_lid_volumes=*/false);
+  SetVolumes(current, surfaces_, plane, &numbers_.clinical);
+  numbers_.regions = CompareRegions(samples, current_samples_);
+  numbers_.strain = SummarizeStrain(regions, numbers_.regions);
+}
+
+FrameNumbers FrameMeasurer::Moved(const Model& moved,
+                                  const MovedU& range) const {
+  return Moved(moved, range, ed_, samples_);
+}
+
+FrameNumbers FrameMeasurer::Moved(const Model& moved, const MovedU& range,
+                                  const Model& ed,
+                                  const ReferenceSamples& samples) const {
+  if (moved_samples_.samples.empty()) {  // The first step.
+    moved_samples_ = current_samples_;
+    moved_surfaces_ = surfaces_;
+  }
+  FrameNumbers numbers;
+  numbers.clinical =
+      SummarizeFrame(0, ed, moved, RingSpan(), /*flat_lid_volumes=*/false);
+  const std::vector<double> ws = VolumeSurfaces(moved);
+  for (size_t i = 0; i < moved_surfaces_.size(); ++i) {
+    ReplaceVertices(moved, range.low, range.high, ws[i], &moved_surfaces_[i]);
+  }
+  SetVolumes(moved, moved_surfaces_, plane_, &numbers.clinical);
+  ResampleRows(moved, range.low, range.high, &moved_samples_);
+  numbers.regions = CompareRegions(samples, moved_samples_);
+  numbers.strain = SummarizeStrain(regions_, numbers.regions);
+  // Back to current's (same sizes: no allocation).
+  for (size_t i = 0; i < moved_surfaces_.size(); ++i) {
+    moved_surfaces_[i].mesh.points = surfaces_[i].mesh.points;
+  }
+  moved_samples_.samples = current_samples_.samples;
+  return numbers;
+}
+
+FrameNumbers FrameMeasurer::Against(const Model& ed,
+                                    const ReferenceSamples& samples) const {
+  FrameNumbers numbers;
+  numbers.clinical =
+      SummarizeFrame(0, ed, current_, RingSpan(), /*flat_lid_volumes=*/false);
+  const ClinicalSummary& kept = numbers_.clinical;
+  numbers.clinical.volume_ml = kept.volume_ml;
+  numbers.clinical.myocardial_volume_ml = kept.myocardial_volume_ml;
+  numbers.clinical.lv_mass_g = kept.lv_mass_g;
+  numbers.regions = CompareRegions(samples, current_samples_);
+  numbers.strain = SummarizeStrain(regions_, numbers.regions);
+  return numbers;
+}
+
+FrameNumbers MeasureFrame(const Model& ed, const ReferenceSamples& samples,
+                          const std::vector<WallRegion>& regions,
+                          const Model& current, const BasePlane* plane) {
+  return FrameMeasurer(ed, samples, regions, current, plane).numbers();
+}
+
+}  // namespace pfdm

@@ -1,0 +1,142 @@
+#include "pfdm/report/frame_numbers.h"
+
+#include <cmath>
+
+#include "gtest/gtest.h"
+#include "pfdm/report/number_uncertainty.h"
+#include "pfdm/testing/test_models.h"
+
+namespace pfdm {
+namespace {
+
+// A frame's model and end-diastole's, each knot of its own (a1, a3 and the
+// twist vary along u), a local field, and a pose off the identity.
+Model Uneven(Model model, double scale, double twist) {
+  for (size_t k = 0; k < model.state.knots.size(); ++k) {
+    FunctionValues& f = model.state.knots[k];
+    f[kA1] *= scale * (1.0 + 0.05 * std::sin(1.3 * k));
+    f[kA2] *= scale * (1.0 + 0.04 * std::cos(0.7 * k));
+    f[kA3] *= 1.0 + 0.03 * std::sin(0.9 * k);
+    f[kTau] = twist * k;
+  }
+  AddTestLocalField(0.8, &model);
+  model.state.center = {1.0, -2.0, 3.0};
+  const Eigen::Quaterniond q(
+      Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 0.5).normalized()));
+  model.state.quaternion = {q.w(), q.x(), q.y(), q.z()};
+  return model;
+}
+
+void ExpectSameNumbers(const FrameNumbers& a, const FrameNumbers& b) {
+  const std::vector<double> x = Flatten(a), y = Flatten(b);
+  ASSERT_EQ(x.size(), y.size());
+  for (size_t i = 0; i < x.size(); ++i) {
+    if (std::isnan(y[i])) {
+      EXPECT_TRUE(std::isnan(x[i])) << i;
+      continue;
+    }
+    EXPECT_NEAR(x[i], y[i], 1e-11 * (1.0 + std::abs(y[i]))) << i;
+  }
+}
+
+class FrameMeasurerTest : public ::testing::TestWithParam<bool> {
+ protected:
+  // Midwall (false) or solid (true), 9 knots.
+  Model Base() const { return GetParam() ? TestShell(9) : TestSpheroid(9); }
+};
+
+// A step of each knot (the first, the last, inner ones), of a global and
+// of the pose, measured again only where it moves the model, gives what
+// measuring the moved model from scratch gives, with the flat lid and with
+// a tilted base plane.
+TEST_P(FrameMeasurerTest, MovedMeasuresWhatMeasureFrameMeasures) {
+  const Model ed = Uneven(Base(), 1.0, 0.01);
+  const Model current = Uneven(Base(), 0.85, 0.03);
+  const ReferenceSamples samples = SampleReference(ed, RegionLayout());
+  const std::vector<WallRegion> regions = Regions(RegionLayout());
+  BasePlane plane;
+  plane.point = current.WorldPoint(0.4, 0.0);
+  plane.normal =
+      (current.Rotation().col(2) + Eigen::Vector3d(0.1, 0, 0)).normalized();
+  using Kind = CovarianceEntry::Kind;
+  const std::vector<CovarianceEntry> entries = {
+      {Kind::kKnot, 0, kA1}, {Kind::kKnot, 4, kA3},  {Kind::kKnot, 7, kTau},
+      {Kind::kKnot, 8, kA2}, {Kind::kCenter, -1, 2}, {Kind::kRotation, -1, 0}};
+  for (const BasePlane* base : {static_cast<const BasePlane*>(nullptr),
+                                static_cast<const BasePlane*>(&plane)}) {
+    const FrameMeasurer measurer(ed, samples, regions, current, base);
+    ExpectSameNumbers(measurer.numbers(),
+                      MeasureFrame(ed, samples, regions, current, base));
+    for (size_t j = 0; j < entries.size(); ++j) {
+      Eigen::VectorXd delta = Eigen::VectorXd::Zero(entries.size());
+      delta[j] = entries[j].kind == Kind::kCenter ? 0.5 : 0.02;
+      const Model moved = Nudged(current, entries, delta);
+      SCOPED_TRACE(j);
+      const FrameNumbers kept =
+          measurer.Moved(moved, MovedRange(current, entries[j]));
+      const FrameNumbers fresh =
+          MeasureFrame(ed, samples, regions, moved, base);
+      ExpectSameNumbers(kept, fresh);
+      // A knot's step does move the numbers: the test would see a row or
+      // a vertex left as it was.
+      if (entries[j].kind != Kind::kKnot) continue;
+      EXPECT_GT(std::abs(Flatten(kept)[7] - Flatten(measurer.numbers())[7]) +
+                    std::abs(kept.regions[0].ecc_percent -
+                             measurer.numbers().regions[0].ecc_percent) +
+                    std::abs(kept.regions[15].ecc_percent -
+                             measurer.numbers().regions[15].ecc_percent) +
+                    std::abs(kept.regions[8].ecc_percent -
+                             measurer.numbers().regions[8].ecc_percent),
+                1e-6);
+    }
+  }
+}
+
+// Measured against another end-diastole, the frame's kept samples and
+// volumes give what measuring from scratch gives.
+TEST_P(FrameMeasurerTest, AgainstMeasuresWhatMeasureFrameMeasures) {
+  const Model ed = Uneven(Base(), 1.0, 0.01);
+  const Model other_ed = Uneven(Base(), 1.02, 0.015);
+  const Model current = Uneven(Base(), 0.85, 0.03);
+  const ReferenceSamples samples = SampleReference(ed, RegionLayout());
+  const ReferenceSamples other = SampleReference(other_ed, RegionLayout());
+  const std::vector<WallRegion> regions = Regions(RegionLayout());
+  const FrameMeasurer measurer(ed, samples, regions, current, nullptr);
+  ExpectSameNumbers(measurer.Against(other_ed, other),
+                    MeasureFrame(other_ed, other, regions, current, nullptr));
+  // End-diastole's own frame, moved with its reference by a knot's step.
+  const FrameMeasurer own(ed, samples, regions, ed, nullptr);
+  const std::vector<CovarianceEntry> knot = {
+      {CovarianceEntry::Kind::kKnot, 5, kA1}};
+  const Model moved = Nudged(ed, knot, Eigen::VectorXd::Constant(1, 0.02));
+  const ReferenceSamples moved_samples = SampleReference(moved, RegionLayout());
+  ExpectSameNumbers(
+      own.Moved(moved, MovedRange(ed, knot[0]), moved, moved_samples),
+      MeasureFrame(moved, moved_samples, regions, moved, nullptr));
+}
+
+INSTANTIATE_TEST_SUITE_P(Walls, FrameMeasurerTest, ::testing::Bool());
+
+// A knot's step moves the model between its neighbours only; the first and
+// the last knot's to the ends, the pose's everywhere.
+TEST(MovedRangeTest, IsTheKnotsSpan) {
+  const Model model = TestSpheroid(9);
+  const KnotGrid& grid = model.config.Grid();
+  using Kind = CovarianceEntry::Kind;
+  const MovedU inner = MovedRange(model, {Kind::kKnot, 3, kA1});
+  EXPECT_EQ(inner.low, grid.KnotU(2));
+  EXPECT_EQ(inner.high, grid.KnotU(4));
+  EXPECT_TRUE(std::isinf(MovedRange(model, {Kind::kKnot, 0, kA1}).low));
+  EXPECT_TRUE(std::isinf(MovedRange(model, {Kind::kKnot, 8, kA1}).high));
+  const MovedU pose = MovedRange(model, {Kind::kCenter, -1, 0});
+  EXPECT_TRUE(std::isinf(pose.low) && std::isinf(pose.high));
+  // Only a3 and e3o at an end knot move the apex's or the rim's height.
+  EXPECT_TRUE(pose.heights);
+  EXPECT_TRUE(MovedRange(model, {Kind::kKnot, 0, kA3}).heights);
+  EXPECT_TRUE(MovedRange(model, {Kind::kKnot, 8, kE3o}).heights);
+  EXPECT_FALSE(MovedRange(model, {Kind::kKnot, 0, kA1}).heights);
+  EXPECT_FALSE(MovedRange(model, {Kind::kKnot, 4, kA3}).heights);
+}
+
+}  // namespace
+}  // namespace pfdm
