@@ -73,7 +73,7 @@ TEST(IntervalsJsonTest, BesideEveryNumberWithUncertainty) {
   EXPECT_TRUE(json.contains("uncertainty_definition"));
   ASSERT_TRUE(json.contains("uncertainty_calibrated"));
   EXPECT_EQ(json["uncertainty_calibrated"]["keys"][0], "ratio");
-  EXPECT_EQ(json["uncertainty_calibrated"]["keys"].size(), 5u);
+  EXPECT_EQ(json["uncertainty_calibrated"]["keys"].size(), 11u);
   // Keys that are no number with an sd get none.
   EXPECT_FALSE(json["frames"][1].contains("rms_mm_ci95"));
   EXPECT_FALSE(json["regions"][3].contains("area_mm2_ci95"));

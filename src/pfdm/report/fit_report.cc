@@ -193,15 +193,14 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
              PlusMinus(ClinicalSd(analysis, t, field), digits, calibration,
                        ClinicalBias(analysis, t, field));
     };
-    // EDV's interval is too narrow (frame 0's scale is held); later
-    // volumes, at frame 0's rim, are calibrated as ESV is.
-    const Calibration volume =
-        t == 0 ? Calibration::kNotCalibrated : Calibration::kCalibrated;
+    // EDV's and ESV's intervals are too narrow (frame 0's length is held
+    // at its noisy extreme points).
+    const Calibration volume = Calibration::kNotCalibrated;
     auto strain = [&](double GlobalStrain::*field) {
       return t < analysis.strain.size()
                  ? Fixed(analysis.strain[t].*field, 1) +
                        PlusMinus(StrainSd(analysis, t, field), 1,
-                                 Calibration::kNotCalibrated,
+                                 Calibration::kCalibrated,
                                  StrainBias(analysis, t, field))
                  : "";
     };
@@ -246,10 +245,16 @@ std::string RegionRow(const FitAnalysis& analysis, size_t r, bool solid) {
   const RegionMotion& motion = analysis.region_motion[es][r];
   const int peak = PeakEccFrame(analysis, r);
   const double peak_ecc = PeakRegionEcc(analysis.region_motion)[r];
+  // Calibrated on the LV phantom: rotation, radial contraction and Ecc.
   auto pm = [&](double RegionMotion::*field, size_t t = 0) {
-    return PlusMinus(RegionSd(analysis, t ? t : es, r, field), 1,
-                     Calibration::kNotCalibrated,
-                     RegionBias(analysis, t ? t : es, r, field));
+    const bool calibrated =
+        field == &RegionMotion::rotation_deg ||
+        field == &RegionMotion::radial_contraction_percent ||
+        field == &RegionMotion::ecc_percent;
+    return PlusMinus(
+        RegionSd(analysis, t ? t : es, r, field), 1,
+        calibrated ? Calibration::kCalibrated : Calibration::kNotCalibrated,
+        RegionBias(analysis, t ? t : es, r, field));
   };
   std::ostringstream h;
   h << "<tr><td>" << region.segment << "</td><td class=\"l\">" << region.Name()

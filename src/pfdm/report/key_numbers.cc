@@ -22,13 +22,14 @@ std::string VolumeCard(const FitAnalysis& analysis) {
       << "EDV " << Fixed(ef.edv_ml, 1)
       << (with_sd ? PlusMinus(sd.edv_ml, 1, Calibration::kNotCalibrated) : "")
       << " ml, ESV " << Fixed(ef.esv_ml, 1)
-      << (with_sd ? PlusMinus(sd.esv_ml, 1) : "") << " ml</div>";
+      << (with_sd ? PlusMinus(sd.esv_ml, 1, Calibration::kNotCalibrated) : "")
+      << " ml</div>";
   } else {
     h << "<div>" << VolumeName(analysis) << "<b>" << Fixed(ef.edv_ml, 1)
       << (with_sd ? PlusMinus(sd.edv_ml, 1, Calibration::kNotCalibrated) : "")
       << " ml</b>"
       << "at ED, " << Fixed(ef.esv_ml, 1)
-      << (with_sd ? PlusMinus(sd.esv_ml, 1) : "")
+      << (with_sd ? PlusMinus(sd.esv_ml, 1, Calibration::kNotCalibrated) : "")
       << " ml at ES: not the cavity, no ejection fraction</div>";
   }
   return h.str();
@@ -106,12 +107,12 @@ std::string KeyNumbersHtml(const SequenceFit& fit,
     << "apex to base-rim centroid</div>"
     << "<div>peak GCS<b>" << Fixed(gcs.percent, 1)
     << PlusMinus(StrainSd(analysis, gcs.frame, &GlobalStrain::gcs_percent), 1,
-                 Calibration::kNotCalibrated,
+                 Calibration::kCalibrated,
                  StrainBias(analysis, gcs.frame, &GlobalStrain::gcs_percent))
     << " %</b>frame " << gcs.frame << ", circumferential</div>"
     << "<div>peak GLS<b>" << Fixed(gls.percent, 1)
     << PlusMinus(StrainSd(analysis, gls.frame, &GlobalStrain::gls_percent), 1,
-                 Calibration::kNotCalibrated,
+                 Calibration::kCalibrated,
                  StrainBias(analysis, gls.frame, &GlobalStrain::gls_percent))
     << " %</b>frame " << gls.frame << ", longitudinal</div></div>\n";
   return h.str();

@@ -219,8 +219,10 @@ TEST(NumberUncertaintyTest, SdsAreTheStraightforwardOnes) {
   ASSERT_TRUE(again.computed);
   int compared = 0;
   for (size_t t = 0; t < 2; ++t) {
-    FrameNumbers sds{f.analysis.sd.clinical[t], f.analysis.sd.region_motion[t],
-                     f.analysis.sd.strain[t]};
+    // PropagateUncertainty's own: the analysis's add the local field's
+    // spread (local_field_noise.h).
+    FrameNumbers sds{again.clinical[t], again.region_motion[t],
+                     again.strain[t]};
     const std::vector<double> kept = Flatten(sds);
     ASSERT_EQ(kept.size(), static_cast<size_t>(variance[t].size()));
     for (size_t i = 0; i < kept.size(); ++i) {
