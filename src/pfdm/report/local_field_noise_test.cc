@@ -10,8 +10,8 @@
 namespace pfdm {
 namespace {
 
-FitAnalysis FitLv(int seed, double noise_mm, bool uncertainty,
-                  bool local = true) {
+SequenceFit FitLvSequence(int seed, double noise_mm, bool uncertainty,
+                          bool local = true) {
   LvPhantomOptions lv;
   lv.num_frames = 2;
   lv.num_tags = 400;
@@ -20,8 +20,12 @@ FitAnalysis FitLv(int seed, double noise_mm, bool uncertainty,
   FitOptions options;
   options.uncertainty = uncertainty;
   options.local.enabled = local;
-  return AnalyzeFit(
-      FitSequence(MakeLvPhantom(lv).points, ModelConfig::Paper(9), options));
+  return FitSequence(MakeLvPhantom(lv).points, ModelConfig::Paper(9), options);
+}
+
+FitAnalysis FitLv(int seed, double noise_mm, bool uncertainty,
+                  bool local = true) {
+  return AnalyzeFit(FitLvSequence(seed, noise_mm, uncertainty, local));
 }
 
 // The bias measured a second way: the noisy fit's GCS minus the same
@@ -53,14 +57,7 @@ TEST(LocalFieldNoiseTest, TheGcsBiasIsTheNoisesAndTheIntervalHoldsTheTruth) {
 // tenth of its sd, and the field's spread adds little to the delta
 // method's (the global fit carries the volumes).
 TEST(LocalFieldNoiseTest, ANearLinearNumberHasNoBias) {
-  LvPhantomOptions lv;
-  lv.num_frames = 2;
-  lv.num_tags = 400;
-  lv.seed = 1000;
-  FitOptions options;
-  options.uncertainty = true;
-  const SequenceFit fit =
-      FitSequence(MakeLvPhantom(lv).points, ModelConfig::Paper(9), options);
+  const SequenceFit fit = FitLvSequence(1000, 0.5, true);
   const FitAnalysis a = AnalyzeFit(fit);
   const NumberSd global = PropagateUncertainty(fit, a);
   const double sd = a.sd.ejection_fraction.ratio;

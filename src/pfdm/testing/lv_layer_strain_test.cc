@@ -174,9 +174,12 @@ INSTANTIATE_TEST_SUITE_P(
         // Ecc 3.60, Ell 6.08 (epicardium), thirds 16.5, Err 5.6.
         Case{LvGeometry::kCylinder, LvThickeningLaw::kDesigned, 0.5, 4.0, 6.5,
              18.0, 6.5},
-        // Ecc 3.54, Ell 5.53, thirds 17.1, Err 5.5.
+        // Ecc 3.54, Ell 5.53, thirds 17.1, Err 5.5-7.1: the tags' depth
+        // ranks are found again each round from the model, so the path
+        // matters; the linear solver alone (DENSE_SCHUR, the default, vs
+        // SPARSE_NORMAL_CHOLESKY) moves Err from 6.0 to 7.1.
         Case{LvGeometry::kCylinder, LvThickeningLaw::kIncompressible, 0.5, 4.0,
-             6.5, 18.5, 6.5},
+             6.5, 18.5, 7.5},
         // Both walls' contours on 9 short-axis slices, untracked: Ecc 4.9 /
         // 7.7 / 4.8, Ell 13.1 (the slices see no material move along the
         // axis), Err 11.3; the thirds n/a.
