@@ -150,12 +150,11 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   CheckInterrupt(options.solver);
   if (options.local.enabled) {
     const FitOptions local_options = WithLossScale(options, fit.loss_scale_mm);
-    const Model global = model;
     FitLocalStage(points, local_options, source, &model, &fit,
                   &carried->local_solver, &carried->surface_grid);
     if (fit.covariance.computed) {
       fit.covariance.local_noise = LocalNoiseDraws(
-          points, fit.material, local_options, global, fit.covariance.sigma_mm);
+          points, fit.material, local_options, model, fit.covariance.sigma_mm);
     }
   }
   Summarize(model, points.positions, &fit);

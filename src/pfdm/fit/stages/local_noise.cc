@@ -36,12 +36,13 @@ std::vector<Eigen::Vector3d> Noisy(const std::vector<Eigen::Vector3d>& surface,
 
 std::vector<std::vector<double>> LocalNoiseDraws(
     const FramePoints& points, const std::vector<MaterialPoint>& material,
-    const FitOptions& options, const Model& global, double sigma_mm,
-    int draws) {
+    const FitOptions& options, const Model& model, double sigma_mm, int draws) {
   std::vector<std::vector<double>> fields;
   if (!options.local.enabled || !(sigma_mm > 0.0) || material.empty()) {
     return fields;
   }
+  Model global = model;
+  global.state.local = LocalField();
   const std::vector<bool> sliding = Sliding(points);
   // A point whose material point was searched on this frame (contours,
   // and tags on their first) keeps only its noise along the normal: the
@@ -55,13 +56,12 @@ std::vector<std::vector<double>> LocalNoiseDraws(
   // same, so it factorizes once.
   LocalDirectSolver direct;
   for (int k = 0; k < draws; ++k) {
-    Model model = global;
-    model.state.local = LocalField();
+    Model fitted = global;
     const SolverReport report =
         FitLocalField(Noisy(surface, normals, searched, sigma_mm, &random),
-                      material, sliding, options, &model, &direct);
+                      material, sliding, options, &fitted, &direct);
     if (!report.usable) return {};
-    fields.push_back(model.state.local.values);
+    fields.push_back(fitted.state.local.values);
   }
   return fields;
 }

@@ -28,15 +28,15 @@ namespace pfdm {
 inline constexpr int kLocalNoiseDraws = 12;
 
 // `draws` local fields (their values, LocalField::values' layout) fitted to
-// noise of sd sigma_mm per residual coordinate about `global` (a model
-// without a local field) at `material`: tracked points in every
+// noise of sd sigma_mm per residual coordinate about `model`'s global
+// surface (its local field left out) at `material`: tracked points in every
 // coordinate, points searched on this frame (contours, tags on their first
 // frame) along the surface's normal, fitted as the local stage fits them.
 // Seeded by the frame's index, so a fit's outputs do not change from run to
 // run.
 std::vector<std::vector<double>> LocalNoiseDraws(
     const FramePoints& points, const std::vector<MaterialPoint>& material,
-    const FitOptions& options, const Model& global, double sigma_mm,
+    const FitOptions& options, const Model& model, double sigma_mm,
     int draws = kLocalNoiseDraws);
 
 }  // namespace pfdm
