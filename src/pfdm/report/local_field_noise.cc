@@ -1,5 +1,6 @@
 #include "pfdm/report/local_field_noise.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -8,6 +9,13 @@
 
 namespace pfdm {
 namespace {
+
+// Where Flatten puts the volume: the clinical fields come first.
+size_t VolumeIndex() {
+  ClinicalSummary c;
+  const std::vector<double*> fields = ClinicalFields(&c);
+  return std::find(fields.begin(), fields.end(), &c.volume_ml) - fields.begin();
+}
 
 // Every frame's numbers (Flatten's order) with these models, against the
 // ED frame's, and the ejection fraction's (ratio, EDV, ESV) last.
@@ -27,13 +35,8 @@ std::vector<Eigen::VectorXd> MeasureAll(const FitAnalysis& analysis,
   const EjectionFraction& ef = analysis.ejection_fraction;
   if (ef.ed_frame >= 0 && ef.es_frame >= 0 &&
       static_cast<size_t>(std::max(ef.ed_frame, ef.es_frame)) < models.size()) {
-    FrameNumbers ed_numbers, es_numbers;
-    ed_numbers.regions.resize(analysis.regions.size());
-    es_numbers.regions = ed_numbers.regions;
-    Unflatten(out[ef.ed_frame].data(), &ed_numbers);
-    Unflatten(out[ef.es_frame].data(), &es_numbers);
-    const double edv = ed_numbers.clinical.volume_ml;
-    const double esv = es_numbers.clinical.volume_ml;
+    const double edv = out[ef.ed_frame][VolumeIndex()];
+    const double esv = out[ef.es_frame][VolumeIndex()];
     out.push_back(Eigen::Vector3d((edv - esv) / edv, edv, esv));
   }
   return out;
