@@ -1,5 +1,6 @@
 // Python's Fit.intervals: every derived number's values, standard
 // deviations and 95 % intervals as arrays (report/number_uncertainty.h).
+#include <array>
 #include <string>
 #include <vector>
 
@@ -24,9 +25,10 @@ py::dict Arrays(const std::vector<double>& values,
     value.mutable_data()[i] = values[i];
     sd.mutable_data()[i] = sds[i];
     bias.mutable_data()[i] = biases[i];
-    const double centre = values[i] - (Measured(biases[i]) ? biases[i] : 0.0);
-    ci95.mutable_data()[2 * i] = centre - HalfWidth95(sds[i]);
-    ci95.mutable_data()[2 * i + 1] = centre + HalfWidth95(sds[i]);
+    const std::array<double, 2> interval =
+        Interval95(values[i], sds[i], biases[i]);
+    ci95.mutable_data()[2 * i] = interval[0];
+    ci95.mutable_data()[2 * i + 1] = interval[1];
   }
   py::dict out;
   out["value"] = value;

@@ -1,6 +1,7 @@
 #include "pfdm/io/intervals_json.h"
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -36,9 +37,8 @@ using json = nlohmann::ordered_json;
 // value or sd is NaN; centred on value - bias (a NaN bias: none).
 json Interval(double value, double sd, double bias) {
   if (!Measured(value) || !Measured(sd)) return json();
-  const double half = HalfWidth95(sd);
-  const double centre = value - (Measured(bias) ? bias : 0.0);
-  return json::array({centre - half, centre + half});
+  const std::array<double, 2> interval = Interval95(value, sd, bias);
+  return json::array({interval[0], interval[1]});
 }
 
 // In `numbers` (the sds, or the biases), the entry of the number under

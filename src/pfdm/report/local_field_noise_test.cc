@@ -4,23 +4,19 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/fitter.h"
-#include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/number_uncertainty.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
 
 SequenceFit FitLvSequence(int seed, double noise_mm, bool uncertainty,
                           bool local = true) {
-  LvPhantomOptions lv;
-  lv.num_frames = 2;
-  lv.num_tags = 400;
-  lv.seed = seed;
-  lv.noise_mm = noise_mm;
   FitOptions options;
   options.uncertainty = uncertainty;
   options.local.enabled = local;
-  return FitSequence(MakeLvPhantom(lv).points, ModelConfig::Paper(9), options);
+  return FitSequence(LvTwoFrameTags(400, seed, noise_mm), ModelConfig::Paper(9),
+                     options);
 }
 
 FitAnalysis FitLv(int seed, double noise_mm, bool uncertainty,

@@ -4,6 +4,7 @@
 #ifndef PFDM_REPORT_NUMBER_SD_H_
 #define PFDM_REPORT_NUMBER_SD_H_
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -32,6 +33,13 @@ struct NumberSd {
 
 // kZ95 sd: the 95 % interval is value +- this; NaN for a NaN sd.
 inline double HalfWidth95(double sd) { return kZ95 * sd; }
+
+// The 95 % interval {low, high} of `value`: HalfWidth95(sd) about value
+// minus its noise bias (report/local_field_noise.h; NaN: none).
+inline std::array<double, 2> Interval95(double value, double sd, double bias) {
+  const double centre = value - (std::isnan(bias) ? 0.0 : bias);
+  return {centre - HalfWidth95(sd), centre + HalfWidth95(sd)};
+}
 
 // The scalar fields that carry a number (and so an sd), in a fixed order:
 // what the delta method varies and NumberSd fills.

@@ -6,6 +6,7 @@
 
 #include "pfdm/model/local_field.h"
 #include "pfdm/model/model.h"
+#include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/phantom/phantom.h"
 
 namespace pfdm {
@@ -62,6 +63,16 @@ inline Phantom MakeTestPhantom(int num_points, int num_frames) {
 
 // The default phantom's frame 3: twisted, offset and contracted.
 inline Model TwistedTestModel() { return MakeTestPhantom(1, 5).truth[3]; }
+
+// The independent LV phantom's mid-wall tags at ED and ES.
+inline PointSequence LvTwoFrameTags(int num_tags, int seed, double noise_mm) {
+  LvPhantomOptions lv;
+  lv.num_frames = 2;
+  lv.num_tags = num_tags;
+  lv.seed = seed;
+  lv.noise_mm = noise_mm;
+  return MakeLvPhantom(lv).points;
+}
 
 }  // namespace pfdm
 

@@ -4,7 +4,6 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/fitter.h"
-#include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -145,12 +144,7 @@ TEST(FrameVerdictTest, NamesAPriorThatHoldsTheModel) {
 // the floor such frames read "the prior, not the data, holds the model",
 // the tracked one at 2,000 tags "failed".
 TEST(FrameVerdictTest, ATinyPullOnNoiseFreeTagsIsNoReason) {
-  LvPhantomOptions lv;
-  lv.num_frames = 2;
-  lv.num_tags = 2000;
-  lv.noise_mm = 0.0;
-  lv.seed = 1000;
-  const SequenceFit fit = FitSequence(MakeLvPhantom(lv).points,
+  const SequenceFit fit = FitSequence(LvTwoFrameTags(2000, 1000, 0.0),
                                       ModelConfig::Paper(9), FitOptions());
   for (const FrameFit& frame : fit.frames) {
     EXPECT_LT(frame.rms_mm, 0.1);

@@ -4,7 +4,6 @@
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/fit/stages/start.h"
-#include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -77,12 +76,7 @@ TEST(GlobalRoundsTest, SayHowFarUnsettledPointsMoved) {
 // round (a tag's closest point by 5.3 mm), and plain rounds ended on the
 // worse of the two states, RMS 0.42 mm; the best round is 0.004 mm.
 TEST(GlobalRoundsTest, TagsFirstFrameEndsOnItsBestRound) {
-  LvPhantomOptions lv;
-  lv.num_frames = 2;
-  lv.num_tags = 400;
-  lv.noise_mm = 0.0;
-  lv.seed = 1004;
-  const SequenceFit fit = FitSequence(MakeLvPhantom(lv).points,
+  const SequenceFit fit = FitSequence(LvTwoFrameTags(400, 1004, 0.0),
                                       ModelConfig::Paper(9), FitOptions());
   EXPECT_GT(fit.frames[0].correspondence_rounds,
             FitOptions().max_correspondence_rounds);

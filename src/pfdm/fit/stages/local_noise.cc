@@ -3,16 +3,10 @@
 #include <random>
 
 #include "pfdm/fit/problem/local_fit.h"
+#include "pfdm/fit/stages/local_stage.h"
 
 namespace pfdm {
 namespace {
-
-// The local stage's rule: contour points (untracked, not tags) slide.
-std::vector<bool> Sliding(const FramePoints& points) {
-  std::vector<bool> sliding(points.positions.size(), false);
-  for (size_t i : points.untracked) sliding[i] = !points.is_tag[i];
-  return sliding;
-}
 
 // `surface` moved by one draw of noise: a point along_normal along its
 // normal, the others in every coordinate.
@@ -43,7 +37,7 @@ std::vector<std::vector<double>> LocalNoiseDraws(
   }
   Model global = model;
   global.state.local = LocalField();
-  const std::vector<bool> sliding = Sliding(points);
+  const std::vector<bool> sliding = LocalSlidingPoints(points);
   // A point whose material point was searched on this frame (contours,
   // and tags on their first) keeps only its noise along the normal: the
   // search moved it along the surface by the rest.

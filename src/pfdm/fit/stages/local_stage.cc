@@ -57,15 +57,19 @@ bool MixField(Eigen::VectorXd change, RoundAcceleration* acceleration,
 
 }  // namespace
 
+std::vector<bool> LocalSlidingPoints(const FramePoints& frame) {
+  std::vector<bool> sliding(frame.positions.size(), false);
+  for (size_t i : frame.untracked) sliding[i] = !frame.is_tag[i];
+  return sliding;
+}
+
 void FitLocalStage(const FramePoints& frame, const FitOptions& options,
                    const std::string& source, Model* model, FrameFit* fit,
                    LocalDirectSolver* direct, SurfaceGrid* grid) {
+  const std::vector<bool> sliding = LocalSlidingPoints(frame);
   std::vector<size_t> contours;
-  std::vector<bool> sliding(frame.positions.size(), false);
   for (size_t i : frame.untracked) {
-    if (frame.is_tag[i]) continue;
-    contours.push_back(i);
-    sliding[i] = true;
+    if (sliding[i]) contours.push_back(i);
   }
   const auto start = Clock::now();
   const std::vector<MaterialPoint> probes = Listed(fit->material, contours);

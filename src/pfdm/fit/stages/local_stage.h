@@ -6,6 +6,7 @@
 #define PFDM_FIT_STAGES_LOCAL_STAGE_H_
 
 #include <string>
+#include <vector>
 
 #include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/fit_options.h"
@@ -15,6 +16,11 @@
 #include "pfdm/model/model.h"
 
 namespace pfdm {
+
+// Which points pull along the normal in the local field: contours
+// (untracked, not tags).  Tags, on their first frame too, pull with the
+// whole vector.
+std::vector<bool> LocalSlidingPoints(const FramePoints& frame);
 
 // Points seen in one frame only (contours) pull along the normal and then
 // find their closest points on the whole model, as they did on the global

@@ -41,5 +41,16 @@ TEST(LocalStageTest, TakesUpWhatTheGlobalFitLeaves) {
   }
 }
 
+// Contours slide; tags, tracked or on their first frame, do not.
+TEST(LocalStageTest, OnlyContoursSlide) {
+  FramePoints frame;
+  frame.positions.resize(4);
+  frame.is_tag = {true, false, false, true};
+  frame.untracked = {0, 1, 2};  // A tag's first frame, two contour points.
+  frame.tracked = {3};
+  EXPECT_EQ(LocalSlidingPoints(frame),
+            std::vector<bool>({false, true, true, false}));
+}
+
 }  // namespace
 }  // namespace pfdm
