@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "fit_intervals.h"
+#include "pfdm/report/interval_calibration.h"
 #include "pfdm/report/number_sd.h"
+#include "pybind11/stl.h"
 
 namespace pfdm::python {
 namespace {
@@ -121,6 +123,8 @@ py::object Intervals(const FitResult& result) {
   out["frames"] = PerFrame(a);
   out["segments"] = PerSegment(a);
   out["ejection_fraction"] = Ejection(a);
+  out["data"] = IntervalDataName(a.interval_data);
+  out["calibrated"] = CalibratedIntervalKeys(a.interval_data);
   return out;
 }
 

@@ -11,7 +11,9 @@ namespace pfdm::python {
 // {"value": (frames,), "sd": (frames,), "ci95": (frames, 2)}} for every
 // clinical and strain number, "segments": the same with (frames, regions)
 // for each segment number, "ejection_fraction": {"value", "sd", "ci95"}
-// of (ratio, edv_ml, esv_ml)}.  NaN where a number is not measured.
+// of (ratio, edv_ml, esv_ml), "data": the kind of data fitted,
+// "calibrated": the names calibrated on it (interval_calibration.h)}.  NaN
+// where a number is not measured.
 py::object Intervals(const FitResult& result);
 
 }  // namespace pfdm::python

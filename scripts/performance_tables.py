@@ -30,7 +30,8 @@ BENCHMARKS = ["fit_benchmark", "cost_function_benchmark", "solvers_benchmark",
               "job_benchmark", "local_benchmark", "wall_benchmark",
               "uncertainty_benchmark"]
 LINEAR_SOLVERS = {0: "DENSE_NORMAL_CHOLESKY", 1: "DENSE_QR",
-                  2: "SPARSE_NORMAL_CHOLESKY"}
+                  2: "SPARSE_NORMAL_CHOLESKY", 3: "DENSE_SCHUR"}
+DEFAULT_LINEAR_SOLVER = 3  # SolverOptions' (solvers/solver.h).
 SPARSE_LIBRARIES = {0: "SuiteSparse", 1: "CXSparse", 2: "Eigen"}
 SOLVERS = {0: "direct", 1: "damped (dt = 1,000)",
            2: "integrator (euler, jacobi)", 3: "integrator (euler, model)",
@@ -206,7 +207,8 @@ def fit_table(document):
         if not key.startswith("BM_FitFrame"):
             continue
         a = args(key)
-        rows.append((a["points"], a["autodiff"], a["solver"] != 2,
+        rows.append((a["points"], a["autodiff"],
+                     a["solver"] != DEFAULT_LINEAR_SOLVER,
                      a["sparse"] != 2, a["solver"], a["threads"], [
             "{:,}".format(a["points"]), str(a["threads"]),
             LINEAR_SOLVERS.get(a["solver"], str(a["solver"])),

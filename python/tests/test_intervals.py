@@ -32,3 +32,8 @@ def test_intervals_are_arrays_beside_the_values_and_fit_json():
                                ecc["ci95"][1, 4])
     ef = got["ejection_fraction"]
     assert ef["value"].shape == (3,) and np.all(ef["sd"][1:] > 0.0)
+    # Which intervals are calibrated on this kind of data, as fit.json says.
+    assert got["data"] == "midwall tags"
+    assert got["calibrated"] == document["uncertainty_calibrated"]["keys"]
+    assert "gcs_percent" in got["calibrated"]
+    assert "esv_ml" not in got["calibrated"]

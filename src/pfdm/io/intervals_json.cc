@@ -170,8 +170,11 @@ void AddStrain(const FitAnalysis& analysis, json* strain) {
 void AddIntervals(const FitAnalysis& analysis, json* document) {
   if (!analysis.sd.computed) return;
   (*document)["uncertainty_definition"] = kUncertaintyDefinition;
-  (*document)["uncertainty_calibrated"] = {{"keys", CalibratedIntervalKeys()},
-                                           {"note", kCalibrationNote}};
+  const IntervalData data = analysis.interval_data;
+  (*document)["uncertainty_calibrated"] = {
+      {"data", IntervalDataName(data)},
+      {"keys", CalibratedIntervalKeys(data)},
+      {"note", CalibrationNote(data)}};
   for (const char* key : {"ejection_fraction", "midwall_volume_fraction",
                           "epicardial_volume_fraction"}) {
     if (document->contains(key)) AddEjection(analysis, &(*document)[key]);

@@ -6,6 +6,7 @@
 #include "gtest/gtest.h"
 #include "nlohmann/json.hpp"
 #include "pfdm/io/fit_json.h"
+#include "pfdm/report/interval_calibration.h"
 #include "pfdm/testing/small_phantom_fit.h"
 
 namespace pfdm {
@@ -72,8 +73,9 @@ TEST(IntervalsJsonTest, BesideEveryNumberWithUncertainty) {
   EXPECT_EQ(json["strain"]["levels"]["mid"]["ell_percent_ci95"].size(), 3u);
   EXPECT_TRUE(json.contains("uncertainty_definition"));
   ASSERT_TRUE(json.contains("uncertainty_calibrated"));
-  EXPECT_EQ(json["uncertainty_calibrated"]["keys"][0], "ratio");
-  EXPECT_EQ(json["uncertainty_calibrated"]["keys"].size(), 11u);
+  EXPECT_EQ(json["uncertainty_calibrated"]["data"], "midwall tags");
+  EXPECT_EQ(json["uncertainty_calibrated"]["keys"],
+            nlohmann::json(CalibratedIntervalKeys(IntervalData::kMidwallTags)));
   // Keys that are no number with an sd get none.
   EXPECT_FALSE(json["frames"][1].contains("rms_mm_ci95"));
   EXPECT_FALSE(json["regions"][3].contains("area_mm2_ci95"));

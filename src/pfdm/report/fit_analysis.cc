@@ -134,6 +134,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
     }
   }
   analysis.volume_surface = VolumeSurfaceName(fit);
+  analysis.interval_data = IntervalDataOf(fit);
   if (planes) {
     analysis.base_planes = base_planes;
     const bool solid = fit.config.Solid();

@@ -12,6 +12,7 @@
 #include "pfdm/model/model.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
+#include "pfdm/report/interval_calibration.h"
 #include "pfdm/report/layer_strain.h"
 #include "pfdm/report/number_sd.h"
 #include "pfdm/report/segment_timing.h"
@@ -82,6 +83,9 @@ struct FitAnalysis {
   // (report/local_field_noise.h): the 95 % interval is centred on the
   // number minus it.  computed false without the field's draws.
   NumberSd noise_bias;
+  // The kind of data fitted, which says which intervals are calibrated
+  // (interval_calibration.h).
+  IntervalData interval_data = IntervalData::kOther;
   // The label map the points came from (pfdm fit --segmentation), else
   // nullopt.  Set by the caller (AttachSegmentation).
   std::optional<SegmentationRecord> segmentation;

@@ -187,20 +187,17 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const FrameFit& f = fit.frames[t];
     const ClinicalSummary& c = analysis.clinical[t];
-    auto pm = [&](double ClinicalSummary::*field, int digits,
-                  Calibration calibration = Calibration::kCalibrated) {
+    auto pm = [&](double ClinicalSummary::*field, int digits, const char* key) {
       return Fixed(c.*field, digits) +
-             PlusMinus(ClinicalSd(analysis, t, field), digits, calibration,
+             PlusMinus(ClinicalSd(analysis, t, field), digits,
+                       KeyCalibration(analysis.interval_data, key),
                        ClinicalBias(analysis, t, field));
     };
-    // EDV's and ESV's intervals are too narrow (frame 0's length is held
-    // at its noisy extreme points).
-    const Calibration volume = Calibration::kNotCalibrated;
-    auto strain = [&](double GlobalStrain::*field) {
+    auto strain = [&](double GlobalStrain::*field, const char* key) {
       return t < analysis.strain.size()
                  ? Fixed(analysis.strain[t].*field, 1) +
                        PlusMinus(StrainSd(analysis, t, field), 1,
-                                 Calibration::kCalibrated,
+                                 KeyCalibration(analysis.interval_data, key),
                                  StrainBias(analysis, t, field))
                  : "";
     };
@@ -211,18 +208,21 @@ std::string FrameTable(const SequenceFit& fit, const FitAnalysis& analysis) {
       << "</td><td>" << f.residuals.size() << "</td><td>" << Fixed(f.rms_mm, 2)
       << "</td><td>" << Fixed(f.mean_distance_mm, 2) << "</td><td>"
       << Fixed(f.max_distance_mm, 2) << "</td><td>"
-      << pm(&ClinicalSummary::volume_ml, 1, volume) << "</td><td>"
-      << pm(&ClinicalSummary::net_twist_deg, 1) << "</td><td>"
-      << pm(&ClinicalSummary::apex_rotation_deg, 1, Calibration::kNotCalibrated)
+      << pm(&ClinicalSummary::volume_ml, 1, "volume_ml") << "</td><td>"
+      << pm(&ClinicalSummary::net_twist_deg, 1, "net_twist_deg") << "</td><td>"
+      << pm(&ClinicalSummary::apex_rotation_deg, 1, "apex_rotation_deg")
       << "</td><td>"
-      << pm(&ClinicalSummary::base_rotation_deg, 1, Calibration::kNotCalibrated)
+      << pm(&ClinicalSummary::base_rotation_deg, 1, "base_rotation_deg")
       << "</td><td>"
-      << pm(&ClinicalSummary::torsion_deg_per_cm, 2,
-            Calibration::kNotCalibrated)
-      << "</td><td>" << pm(&ClinicalSummary::radial_contraction_percent, 1)
-      << "</td><td>" << pm(&ClinicalSummary::longitudinal_shortening_percent, 1)
-      << "</td><td>" << strain(&GlobalStrain::gcs_percent) << "</td><td>"
-      << strain(&GlobalStrain::gls_percent)
+      << pm(&ClinicalSummary::torsion_deg_per_cm, 2, "torsion_deg_per_cm")
+      << "</td><td>"
+      << pm(&ClinicalSummary::radial_contraction_percent, 1,
+            "radial_contraction_percent")
+      << "</td><td>"
+      << pm(&ClinicalSummary::longitudinal_shortening_percent, 1,
+            "longitudinal_shortening_percent")
+      << "</td><td>" << strain(&GlobalStrain::gcs_percent, "gcs_percent")
+      << "</td><td>" << strain(&GlobalStrain::gls_percent, "gls_percent")
       << (solid ? "</td><td>" + Fixed(c.myocardial_volume_change_percent, 1)
                 : "")
       << "</td><td class=\"l\">"
@@ -245,37 +245,36 @@ std::string RegionRow(const FitAnalysis& analysis, size_t r, bool solid) {
   const RegionMotion& motion = analysis.region_motion[es][r];
   const int peak = PeakEccFrame(analysis, r);
   const double peak_ecc = PeakRegionEcc(analysis.region_motion)[r];
-  // Calibrated on the LV phantom: rotation, radial contraction and Ecc.
-  auto pm = [&](double RegionMotion::*field, size_t t = 0) {
-    const bool calibrated =
-        field == &RegionMotion::rotation_deg ||
-        field == &RegionMotion::radial_contraction_percent ||
-        field == &RegionMotion::ecc_percent;
-    return PlusMinus(
-        RegionSd(analysis, t ? t : es, r, field), 1,
-        calibrated ? Calibration::kCalibrated : Calibration::kNotCalibrated,
-        RegionBias(analysis, t ? t : es, r, field));
+  auto pm = [&](double RegionMotion::*field, const char* key, size_t t = 0) {
+    return PlusMinus(RegionSd(analysis, t ? t : es, r, field), 1,
+                     KeyCalibration(analysis.interval_data, key),
+                     RegionBias(analysis, t ? t : es, r, field));
   };
   std::ostringstream h;
   h << "<tr><td>" << region.segment << "</td><td class=\"l\">" << region.Name()
     << "</td><td>" << Fixed(region.v_begin * kDegrees, 0) << " to "
     << Fixed(region.v_end * kDegrees, 0) << "</td><td"
     << Tint(motion.rotation_deg, 15.0) << ">" << Fixed(motion.rotation_deg, 1)
-    << pm(&RegionMotion::rotation_deg) << "</td><td"
+    << pm(&RegionMotion::rotation_deg, "rotation_deg") << "</td><td"
     << Tint(motion.radial_contraction_percent, 40.0) << ">"
     << Fixed(motion.radial_contraction_percent, 1)
-    << pm(&RegionMotion::radial_contraction_percent) << "</td><td"
-    << Tint(-motion.ecc_percent, 30.0) << ">" << Fixed(motion.ecc_percent, 1)
-    << pm(&RegionMotion::ecc_percent) << "</td><td"
+    << pm(&RegionMotion::radial_contraction_percent,
+          "radial_contraction_percent")
+    << "</td><td" << Tint(-motion.ecc_percent, 30.0) << ">"
+    << Fixed(motion.ecc_percent, 1)
+    << pm(&RegionMotion::ecc_percent, "ecc_percent") << "</td><td"
     << Tint(-motion.ell_percent, 30.0) << ">" << Fixed(motion.ell_percent, 1)
-    << pm(&RegionMotion::ell_percent) << "</td><td>"
-    << Fixed(motion.ecl_percent, 1) << pm(&RegionMotion::ecl_percent)
-    << "</td><td" << Tint(-peak_ecc, 30.0) << ">" << Fixed(peak_ecc, 1)
-    << (peak > 0 ? pm(&RegionMotion::ecc_percent, peak) : "") << "</td>";
+    << pm(&RegionMotion::ell_percent, "ell_percent") << "</td><td>"
+    << Fixed(motion.ecl_percent, 1)
+    << pm(&RegionMotion::ecl_percent, "ecl_percent") << "</td><td"
+    << Tint(-peak_ecc, 30.0) << ">" << Fixed(peak_ecc, 1)
+    << (peak > 0 ? pm(&RegionMotion::ecc_percent, "peak_ecc_percent", peak)
+                 : "")
+    << "</td>";
   if (solid) {
     h << "<td" << Tint(motion.thickening_percent, 60.0) << ">"
       << Fixed(motion.thickening_percent, 1)
-      << pm(&RegionMotion::thickening_percent) << "</td>";
+      << pm(&RegionMotion::thickening_percent, "thickening_percent") << "</td>";
   }
   h << "</tr>\n";
   return h.str();

@@ -8,41 +8,88 @@
 namespace pfdm {
 namespace {
 
-bool Has(const std::string& key) {
-  const std::vector<std::string>& keys = CalibratedIntervalKeys();
-  return std::find(keys.begin(), keys.end(), key) != keys.end();
+bool Has(IntervalData data, const std::string& key) {
+  return KeyCalibration(data, key) == Calibration::kCalibrated;
 }
 
-// The numbers of docs/uncertainty_calibration.md that covered, under the
-// names fit.json gives them; EDV and ESV, which did not, absent.
-TEST(IntervalCalibrationTest, TheCalibratedUnderFitJsonsNames) {
-  EXPECT_EQ(CalibratedIntervalKeys().size(), 11u);
-  const std::vector<std::string>& clinical = ClinicalFieldNames();
-  const std::vector<std::string>& strain = StrainFieldNames();
-  const std::vector<std::string>& region = RegionFieldNames();
-  for (const char* key : {"net_twist_deg", "longitudinal_shortening_percent",
-                          "radial_contraction_percent"}) {
-    EXPECT_TRUE(Has(key)) << key;
-    EXPECT_NE(std::find(clinical.begin(), clinical.end(), key), clinical.end())
-        << key << " is no clinical field";
+bool In(const std::vector<std::string>& names, const std::string& key) {
+  return std::find(names.begin(), names.end(), key) != names.end();
+}
+
+constexpr IntervalData kAll[] = {IntervalData::kMidwallTags,
+                                 IntervalData::kWallTags,
+                                 IntervalData::kContours, IntervalData::kOther};
+
+// Every calibrated key names a number fit.json gives an interval: a
+// frame's clinical or strain number, a segment's, the ejection's ratio,
+// EDV or ESV, or a peak of those.
+TEST(IntervalCalibrationTest, KeysAreFitJsonsNames) {
+  for (IntervalData data : kAll) {
+    for (const std::string& key : CalibratedIntervalKeys(data)) {
+      const std::string name = key.rfind("peak_", 0) == 0 ? key.substr(5) : key;
+      EXPECT_TRUE(In(ClinicalFieldNames(), name) ||
+                  In(StrainFieldNames(), name) ||
+                  In(RegionFieldNames(), name) || name == "ratio" ||
+                  name == "edv_ml" || name == "esv_ml")
+          << IntervalDataName(data) << ": " << key;
+    }
   }
-  for (const char* key : {"gcs_percent", "gls_percent"}) {
-    EXPECT_TRUE(Has(key)) << key;
-    EXPECT_NE(std::find(strain.begin(), strain.end(), key), strain.end())
-        << key << " is no strain field";
+}
+
+// What docs/uncertainty_calibration.md measured, kind by kind.
+TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
+  using D = IntervalData;
+  // Tags on the mid-wall: the global numbers and the segments'.
+  for (const char* key :
+       {"ratio", "net_twist_deg", "gcs_percent", "gls_percent", "ecc_percent",
+        "rotation_deg", "longitudinal_shortening_percent"}) {
+    EXPECT_TRUE(Has(D::kMidwallTags, key)) << key;
   }
-  for (const char* key : {"ecc_percent", "rotation_deg"}) {
-    EXPECT_TRUE(Has(key)) << key;
-    EXPECT_NE(std::find(region.begin(), region.end(), key), region.end())
-        << key << " is no segment field";
+  // Tags through the wall: twist and shortening's intervals held the
+  // noise-free fit in every draw (too wide), GCS's in a third.
+  EXPECT_TRUE(Has(D::kWallTags, "thickening_percent"));
+  EXPECT_TRUE(Has(D::kWallTags, "wall_thickening_percent"));
+  EXPECT_FALSE(Has(D::kWallTags, "net_twist_deg"));
+  EXPECT_FALSE(Has(D::kWallTags, "gcs_percent"));
+  // Contours: no turn about the axis is seen; GLS and shortening missed.
+  EXPECT_TRUE(Has(D::kContours, "gcs_percent"));
+  EXPECT_TRUE(Has(D::kContours, "ecc_percent"));
+  EXPECT_FALSE(Has(D::kContours, "rotation_deg"));
+  EXPECT_FALSE(Has(D::kContours, "gls_percent"));
+  EXPECT_FALSE(Has(D::kContours, "longitudinal_shortening_percent"));
+  // Frame 0's length draws brought EDV to 0.90 on mid-wall tags and
+  // contours; ESV stayed at 0.88-0.89 there.
+  EXPECT_TRUE(Has(D::kMidwallTags, "edv_ml"));
+  EXPECT_FALSE(Has(D::kMidwallTags, "esv_ml"));
+  EXPECT_TRUE(Has(D::kContours, "lv_mass_g"));
+  EXPECT_FALSE(Has(D::kWallTags, "lv_mass_g"));
+  // No kind's apex rotation or shear angle was shown calibrated, and
+  // nothing on data of another kind.
+  for (IntervalData data : kAll) {
+    for (const char* key :
+         {"apex_rotation_deg", "shear_angle_deg", "volume_ml"}) {
+      EXPECT_FALSE(Has(data, key)) << IntervalDataName(data) << ": " << key;
+    }
   }
-  EXPECT_TRUE(Has("ratio"));
-  // EDV and ESV held the noise-free fit in 53 and 82 % of draws; the rest
-  // were not measured.
-  for (const char* key : {"edv_ml", "esv_ml", "lv_mass_g", "ell_percent",
-                          "wall_thickening_percent", "torsion_deg_per_cm"}) {
-    EXPECT_FALSE(Has(key)) << key;
-  }
+  EXPECT_TRUE(CalibratedIntervalKeys(D::kOther).empty());
+}
+
+// The kind from the fit: tags where every frame is tracked, contours where
+// none is, by whether the model is a solid; a mix is neither.
+TEST(IntervalCalibrationTest, KindOfTheFitsData) {
+  SequenceFit fit;
+  fit.config = ModelConfig::Paper(9);
+  fit.frames.resize(3);
+  ASSERT_FALSE(fit.config.Solid());
+  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kMidwallTags);
+  fit.config.MakeSolid();
+  ASSERT_TRUE(fit.config.Solid());
+  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kWallTags);
+  for (FrameFit& f : fit.frames) f.tracked = false;
+  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kContours);
+  fit.frames[0].tracked = true;
+  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kOther);
+  EXPECT_EQ(IntervalDataName(IntervalData::kContours), "contours");
 }
 
 }  // namespace

@@ -19,7 +19,9 @@ std::string PlusMinus(double sd, int digits, Calibration calibration,
     out += text;
   }
   if (calibration == Calibration::kCalibrated) return out;
-  return out + "<sup title=\"not calibrated: read as a lower bound\">*</sup>";
+  return out +
+         "<sup title=\"not calibrated on this kind of data "
+         "(docs/uncertainty_calibration.md)\">*</sup>";
 }
 
 namespace {
@@ -85,11 +87,13 @@ std::string IntervalNoteHtml(const FitAnalysis& analysis) {
          "95 % interval from the fit's noise (--uncertainty on): 1.96 "
          "standard deviations by the delta method over each frame's "
          "parameter covariance, ED's and the frame's added, with the spread "
-         "the local field's noise adds; error bars on the curves and bands "
+         "the local field's noise and frame 0's length (set by its highest "
+         "noisy points) add; error bars on the curves and bands "
          "on the parameter functions likewise. <b>b</b>: the interval is "
          "centred not on the value but on the value minus the bias the "
-         "local field's noise puts into it (strain reads less contracted "
-         "when the field fits noise); its tooltip gives the shift. It "
+         "noise puts into it (strain reads less contracted when the local "
+         "field fits noise; the highest of many noisy points lies too "
+         "high); its tooltip gives the shift. It "
          "covers the noise of the data, not a bias of the model or of the "
          "points' correspondences. On the bull's-eyes a value marked "
          "<b>?</b> is uncertain: its half-width exceeds a quarter of the "
@@ -97,12 +101,8 @@ std::string IntervalNoteHtml(const FitAnalysis& analysis) {
          "contraction 5.5 %, rotation 2&deg;), too wide to tell a normal "
          "segment from a hypokinetic one; unmarked values are reliable by "
          "that rule (docs/uncertainty.md). <b>*</b>: an interval not "
-         "calibrated, to be read as a lower bound. On 120 noise draws of "
-         "the LV phantom the volume fraction's, net twist's, shortening's, "
-         "radial contraction's, GCS's, GLS's and the segments' Ecc, radial "
-         "contraction and rotation held the noise-free number in 93-98 % "
-         "of draws; EDV's in 53 % and ESV's in 82 % "
-         "(docs/uncertainty_calibration.md).</p>\n";
+         "calibrated on this kind of data. " +
+         CalibrationNote(analysis.interval_data) + "</p>\n";
 }
 
 int PeakEccFrame(const FitAnalysis& analysis, size_t r) {

@@ -9,8 +9,8 @@ TEST(IntervalTextTest, PlusMinusIsTheHalfWidth) {
   EXPECT_EQ(PlusMinus(1.0, 2), " &plusmn; 1.96");
   EXPECT_EQ(PlusMinus(0.5, 1), " &plusmn; 1.0");
   EXPECT_EQ(PlusMinus(0.5, 1, Calibration::kNotCalibrated),
-            " &plusmn; 1.0<sup title=\"not calibrated: read as a lower "
-            "bound\">*</sup>");
+            " &plusmn; 1.0<sup title=\"not calibrated on this kind of data "
+            "(docs/uncertainty_calibration.md)\">*</sup>");
   EXPECT_EQ(PlusMinus(kNotMeasured, 1), "");
 }
 

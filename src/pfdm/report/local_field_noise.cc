@@ -52,22 +52,32 @@ Model WithDraw(const Model& model, const std::vector<double>& draw) {
   return out;
 }
 
+// `model` made longer by the fraction `stretch` along its axis, its radii
+// kept: a3 (the half-length, of every knot) scaled.
+void Stretch(double stretch, Model* model) {
+  model->state.globals[kA3] *= 1.0 + stretch;
+  for (FunctionValues& knot : model->state.knots) knot[kA3] *= 1.0 + stretch;
+}
+
 // The draws' mean shift from `at` and their variance, per number.
 struct Moments {
   std::vector<Eigen::VectorXd> bias, variance;
 };
 
-Moments Sample(const SequenceFit& fit, const FitAnalysis& analysis,
-               size_t draws) {
-  const size_t ed = static_cast<size_t>(fit.ed_frame);
-  const std::vector<Eigen::VectorXd> at =
-      MeasureAll(analysis, analysis.models, ed);
+Moments ZeroMoments(const std::vector<Eigen::VectorXd>& at) {
   Moments m;
-  std::vector<Eigen::VectorXd> sum, square;
   for (const Eigen::VectorXd& v : at) {
-    sum.push_back(Eigen::VectorXd::Zero(v.size()));
-    square.push_back(Eigen::VectorXd::Zero(v.size()));
+    m.bias.push_back(Eigen::VectorXd::Zero(v.size()));
+    m.variance.push_back(Eigen::VectorXd::Zero(v.size()));
   }
+  return m;
+}
+
+// The local field's draws: each frame's k-th added to its field.
+Moments SampleLocalField(const SequenceFit& fit, const FitAnalysis& analysis,
+                         const std::vector<Eigen::VectorXd>& at, size_t draws) {
+  const size_t ed = static_cast<size_t>(fit.ed_frame);
+  Moments sum = ZeroMoments(at);  // Of the shifts and their squares.
   for (size_t k = 0; k < draws; ++k) {
     std::vector<Model> models;
     for (size_t t = 0; t < fit.frames.size(); ++t) {
@@ -77,17 +87,58 @@ Moments Sample(const SequenceFit& fit, const FitAnalysis& analysis,
     const std::vector<Eigen::VectorXd> y = MeasureAll(analysis, models, ed);
     for (size_t i = 0; i < y.size(); ++i) {
       const Eigen::VectorXd shift = y[i] - at[i];
-      sum[i] += shift;
-      square[i] += shift.cwiseProduct(shift);
+      sum.bias[i] += shift;
+      sum.variance[i] += shift.cwiseProduct(shift);
     }
   }
+  Moments m;
   const double n = static_cast<double>(draws);
   for (size_t i = 0; i < at.size(); ++i) {
-    const Eigen::VectorXd mean = sum[i] / n;
+    const Eigen::VectorXd mean = sum.bias[i] / n;
     m.bias.push_back(mean);
     m.variance.push_back(
-        ((square[i] - n * mean.cwiseProduct(mean)) / (n - 1.0)).cwiseMax(0.0));
+        ((sum.variance[i] - n * mean.cwiseProduct(mean)) / (n - 1.0))
+            .cwiseMax(0.0));
   }
+  return m;
+}
+
+// Frame 0's length draws, taken as linear: each number's derivative by the
+// length's relative change (from one measurement with the frames stretched
+// by the draws' sd) times the draws' mean and sd.  Stretched are frame 0
+// and the tracked frames, whose material points frame 0's length placed;
+// an untracked frame searches its own.
+void AddLengthNoise(const SequenceFit& fit, const FitAnalysis& analysis,
+                    const std::vector<Eigen::VectorXd>& at, Moments* m) {
+  const std::vector<double>& draws = fit.frames[0].covariance.length_noise;
+  if (draws.size() < 2) return;
+  const Eigen::Map<const Eigen::VectorXd> f(draws.data(), draws.size());
+  const double mean = f.mean();
+  const double variance =
+      (f.array() - mean).square().sum() / (static_cast<double>(f.size()) - 1);
+  const double step = std::sqrt(variance);
+  if (!(step > 0.0)) return;
+  std::vector<Model> models = analysis.models;
+  for (size_t t = 0; t < models.size(); ++t) {
+    if (t == 0 || fit.frames[t].tracked) Stretch(step, &models[t]);
+  }
+  const std::vector<Eigen::VectorXd> y =
+      MeasureAll(analysis, models, static_cast<size_t>(fit.ed_frame));
+  for (size_t i = 0; i < y.size(); ++i) {
+    const Eigen::VectorXd slope = (y[i] - at[i]) / step;
+    m->bias[i] += mean * slope;
+    m->variance[i] += variance * slope.cwiseProduct(slope);
+  }
+}
+
+Moments Sample(const SequenceFit& fit, const FitAnalysis& analysis,
+               size_t local_draws) {
+  const std::vector<Eigen::VectorXd> at =
+      MeasureAll(analysis, analysis.models, static_cast<size_t>(fit.ed_frame));
+  Moments m = local_draws >= 2
+                  ? SampleLocalField(fit, analysis, at, local_draws)
+                  : ZeroMoments(at);
+  AddLengthNoise(fit, analysis, at, &m);
   return m;
 }
 
@@ -132,18 +183,27 @@ void StoreEjection(const Eigen::VectorXd& variance, const Eigen::VectorXd& bias,
   }
 }
 
+// Every frame's local field draws' count, or 0 where some frame has none
+// or another count.
+size_t LocalDraws(const SequenceFit& fit) {
+  const size_t draws = fit.frames[0].covariance.local_noise.size();
+  for (const FrameFit& frame : fit.frames) {
+    if (frame.covariance.local_noise.size() != draws) return 0;
+  }
+  return draws;
+}
+
 }  // namespace
 
 NumberSd AddLocalFieldNoise(const SequenceFit& fit, const FitAnalysis& analysis,
                             NumberSd* sd) {
   NumberSd bias;
   if (!sd->computed || fit.frames.empty()) return bias;
-  const size_t draws = fit.frames[0].covariance.local_noise.size();
-  if (draws < 2) return bias;
-  for (const FrameFit& frame : fit.frames) {
-    if (frame.covariance.local_noise.size() != draws) return bias;
+  const size_t local_draws = LocalDraws(fit);
+  if (local_draws < 2 && fit.frames[0].covariance.length_noise.size() < 2) {
+    return bias;
   }
-  const Moments m = Sample(fit, analysis, draws);
+  const Moments m = Sample(fit, analysis, local_draws);
   const size_t frames = fit.frames.size();
   bias.clinical.resize(frames);
   bias.region_motion.resize(frames);

@@ -15,6 +15,13 @@
 // independent), and the 95 % interval is centred on y - b.  The local
 // field enters every number through the model's points, so this covers all
 // of them; for most b is far under the sd, for strains it is not.
+//
+// Frame 0's length is sampled too (fit/stages/local_noise.h,
+// LengthNoiseDraws): its a0 is set by the highest noisy points and held,
+// which moves every volume.  Taken as linear, each number's derivative by
+// a stretch along the axis (frame 0's and the tracked frames' a3, one more
+// measurement) times the draws' mean and variance is added to b and var.
+// Without a local field only this is added.
 #ifndef PFDM_REPORT_LOCAL_FIELD_NOISE_H_
 #define PFDM_REPORT_LOCAL_FIELD_NOISE_H_
 
@@ -27,8 +34,8 @@ namespace pfdm {
 // Adds the local field's spread to *sd (PropagateUncertainty's, computed)
 // and returns each number's bias in the same layout (NaN where *sd is NaN;
 // the ejection fraction's ratio, edv_ml and esv_ml biases in
-// ejection_fraction); computed false, *sd unchanged, when some frame has no
-// draws (no local field, --uncertainty off).
+// ejection_fraction); computed false, *sd unchanged, without draws of
+// either kind (--uncertainty off).
 NumberSd AddLocalFieldNoise(const SequenceFit& fit, const FitAnalysis& analysis,
                             NumberSd* sd);
 

@@ -62,11 +62,26 @@ TEST(LocalFieldNoiseTest, ANearLinearNumberHasNoBias) {
   EXPECT_LT(sd, 1.1 * global.ejection_fraction.ratio);
 }
 
-// Without a local field nothing is drawn: no bias, the delta method's sd.
-TEST(LocalFieldNoiseTest, WithoutALocalFieldNothingIsAdded) {
-  const FitAnalysis a = FitLv(1000, 0.5, true, /*local=*/false);
-  EXPECT_TRUE(a.sd.computed);
-  EXPECT_FALSE(a.noise_bias.computed);
+// Without a local field only frame 0's length is drawn
+// (LengthNoiseDraws): the volumes widen and take a bias, the same relative
+// one at ED and ES, so the volume fraction barely moves; GCS, which a
+// stretch along the axis does not change, keeps the delta method's sd.
+TEST(LocalFieldNoiseTest, WithoutALocalFieldOnlyTheLengthIsDrawn) {
+  const SequenceFit fit = FitLvSequence(1000, 0.5, true, /*local=*/false);
+  const FitAnalysis a = AnalyzeFit(fit);
+  ASSERT_TRUE(a.sd.computed);
+  ASSERT_TRUE(a.noise_bias.computed);
+  const NumberSd global = PropagateUncertainty(fit, a);
+  const EjectionFraction& sd = a.sd.ejection_fraction;
+  const EjectionFraction& bias = a.noise_bias.ejection_fraction;
+  const EjectionFraction& value = a.ejection_fraction;
+  EXPECT_GT(sd.edv_ml, 1.2 * global.ejection_fraction.edv_ml);
+  EXPECT_GT(bias.edv_ml, 0.0);  // The highest noisy point lies too high.
+  EXPECT_NEAR(bias.esv_ml / value.esv_ml, bias.edv_ml / value.edv_ml,
+              0.2 * bias.edv_ml / value.edv_ml);
+  EXPECT_LT(std::abs(bias.ratio), 0.1 * sd.ratio);
+  EXPECT_NEAR(a.sd.strain[1].gcs_percent, global.strain[1].gcs_percent,
+              1e-3 * global.strain[1].gcs_percent);
 }
 
 }  // namespace

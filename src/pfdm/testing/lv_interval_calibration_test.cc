@@ -30,6 +30,7 @@
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/fit_analysis.h"
+#include "pfdm/report/interval_calibration.h"
 #include "pfdm/report/number_uncertainty.h"
 
 namespace pfdm {
@@ -38,14 +39,15 @@ namespace {
 constexpr int kEs = 1;       // Frames: ED and ES.
 constexpr int kSegment = 8;  // 0-based: segment 9, mid.
 
-// calibrated: the noise-free fit is what its interval should hold; false
-// for a number that noise itself biases (see the top of the test).
-// value is the interval's centre: the number minus its noise bias
+// key: fit.json's name of the number, which says whether pfdm claims its
+// interval calibrated on the data fitted (interval_calibration.h); value
+// is the interval's centre: the number minus its noise bias
 // (report/local_field_noise.h).
 struct Judged {
   const char* name;
+  const char* key;
   double value, sd, truth;  // truth NaN: none defined like the fit's.
-  bool calibrated = true;
+  bool calibrated = false;  // Set from key.
 };
 
 double MidSegmentTruth(const LvFrameTruth& truth) {
@@ -59,7 +61,8 @@ double MidSegmentTruth(const LvFrameTruth& truth) {
   return count > 0 ? sum / count : kNotMeasured;
 }
 
-// a's numbers at ES moved to their intervals' centres: minus the bias.
+// a's numbers at ED (the mass) and ES moved to their intervals' centres: minus
+// the bias.
 void CentreOnBias(FitAnalysis* a) {
   const NumberSd& b = a->noise_bias;
   auto shift = [](std::vector<double*> values, std::vector<double*> biases) {
@@ -68,6 +71,7 @@ void CentreOnBias(FitAnalysis* a) {
     }
   };
   NumberSd bias = b;
+  shift(ClinicalFields(&a->clinical[0]), ClinicalFields(&bias.clinical[0]));
   shift(ClinicalFields(&a->clinical[kEs]), ClinicalFields(&bias.clinical[kEs]));
   shift(StrainFields(&a->strain[kEs]), StrainFields(&bias.strain[kEs]));
   for (size_t r = 0; r < a->region_motion[kEs].size(); ++r) {
@@ -99,37 +103,64 @@ std::vector<Judged> Numbers(FitAnalysis a, const LvPhantom& phantom) {
   const LvLayerRings& rings = t1.midwall;
   const double twist = LvRingValueAt(rings.rotation_deg, kBasalRingFraction) -
                        LvRingValueAt(rings.rotation_deg, kApicalRingFraction);
+  // A solid's volumes are the cavity's, a surface's the mid-wall's.
+  const bool cavity = a.volume_surface == "cavity";
+  const double edv = cavity ? t0.endo_volume_ml : t0.volume_ml;
+  const double esv = cavity ? t1.endo_volume_ml : t1.volume_ml;
   std::vector<Judged> judged = {
-      {"volume fraction", a.ejection_fraction.ratio,
-       a.sd.ejection_fraction.ratio,
-       (t0.volume_ml - t1.volume_ml) / t0.volume_ml},
-      {"EDV ml", a.ejection_fraction.edv_ml, a.sd.ejection_fraction.edv_ml,
-       t0.volume_ml, false},
-      {"ESV ml", a.ejection_fraction.esv_ml, a.sd.ejection_fraction.esv_ml,
-       t1.volume_ml, false},
-      {"net twist deg", es.net_twist_deg, sd.net_twist_deg, twist},
-      {"shortening %", es.longitudinal_shortening_percent,
-       sd.longitudinal_shortening_percent, t1.longitudinal_shortening_percent},
-      {"radial contraction %", es.radial_contraction_percent,
-       sd.radial_contraction_percent, kNotMeasured},
-      {"GCS %", a.strain[kEs].gcs_percent, strain_sd.gcs_percent, kNotMeasured},
-      {"GLS %", a.strain[kEs].gls_percent, strain_sd.gls_percent, kNotMeasured},
-      {"seg 9 Ecc %", seg.ecc_percent, seg_sd.ecc_percent, kNotMeasured, false},
-      {"seg 9 radial %", seg.radial_contraction_percent,
-       seg_sd.radial_contraction_percent, MidSegmentTruth(t1)},
-      {"seg 9 rotation deg", seg.rotation_deg, seg_sd.rotation_deg,
+      {"volume fraction", "ratio", a.ejection_fraction.ratio,
+       a.sd.ejection_fraction.ratio, (edv - esv) / edv},
+      {"EDV ml", "edv_ml", a.ejection_fraction.edv_ml,
+       a.sd.ejection_fraction.edv_ml, edv},
+      {"ESV ml", "esv_ml", a.ejection_fraction.esv_ml,
+       a.sd.ejection_fraction.esv_ml, esv},
+      {"net twist deg", "net_twist_deg", es.net_twist_deg, sd.net_twist_deg,
+       twist},
+      {"shortening %", "longitudinal_shortening_percent",
+       es.longitudinal_shortening_percent, sd.longitudinal_shortening_percent,
+       t1.longitudinal_shortening_percent},
+      {"radial contraction %", "radial_contraction_percent",
+       es.radial_contraction_percent, sd.radial_contraction_percent,
        kNotMeasured},
+      {"GCS %", "gcs_percent", a.strain[kEs].gcs_percent, strain_sd.gcs_percent,
+       kNotMeasured},
+      {"GLS %", "gls_percent", a.strain[kEs].gls_percent, strain_sd.gls_percent,
+       kNotMeasured},
+      {"torsion deg/cm", "torsion_deg_per_cm", es.torsion_deg_per_cm,
+       sd.torsion_deg_per_cm, kNotMeasured},
+      {"wall thickening %", "wall_thickening_percent",
+       es.wall_thickening_percent, sd.wall_thickening_percent, kNotMeasured},
+      {"LV mass g", "lv_mass_g", a.clinical[0].lv_mass_g,
+       with_sd ? a.sd.clinical[0].lv_mass_g : a.clinical[0].lv_mass_g,
+       kNotMeasured},
+      {"seg 9 Ecc %", "ecc_percent", seg.ecc_percent, seg_sd.ecc_percent,
+       kNotMeasured},
+      {"seg 9 radial %", "radial_contraction_percent",
+       seg.radial_contraction_percent, seg_sd.radial_contraction_percent,
+       MidSegmentTruth(t1)},
+      {"seg 9 rotation deg", "rotation_deg", seg.rotation_deg,
+       seg_sd.rotation_deg, kNotMeasured},
   };
   // Every segment's, pooled in one row each.
   for (size_t r = 0; r < a.region_motion[kEs].size(); ++r) {
     const RegionMotion& m = a.region_motion[kEs][r];
     const RegionMotion& m_sd = with_sd ? a.sd.region_motion[kEs][r] : m;
-    judged.push_back({"segments Ecc %", m.ecc_percent, m_sd.ecc_percent,
-                      kNotMeasured, false});
-    judged.push_back({"segments radial %", m.radial_contraction_percent,
+    judged.push_back({"segments Ecc %", "ecc_percent", m.ecc_percent,
+                      m_sd.ecc_percent, kNotMeasured});
+    judged.push_back({"segments radial %", "radial_contraction_percent",
+                      m.radial_contraction_percent,
                       m_sd.radial_contraction_percent, kNotMeasured});
-    judged.push_back({"segments rotation deg", m.rotation_deg,
+    judged.push_back({"segments rotation deg", "rotation_deg", m.rotation_deg,
                       m_sd.rotation_deg, kNotMeasured});
+    judged.push_back({"segments Ell %", "ell_percent", m.ell_percent,
+                      m_sd.ell_percent, kNotMeasured});
+    judged.push_back({"segments thickening %", "thickening_percent",
+                      m.thickening_percent, m_sd.thickening_percent,
+                      kNotMeasured});
+  }
+  for (Judged& j : judged) {
+    j.calibrated =
+        KeyCalibration(a.interval_data, j.key) == Calibration::kCalibrated;
   }
   return judged;
 }
@@ -156,24 +187,41 @@ int Seeds() {
   return text != nullptr ? std::max(1, std::atoi(text)) : 3;
 }
 
-TEST(LvIntervalCalibrationTest, IntervalsCoverNoiseOnTheLvPhantom) {
-  const int seeds = Seeds();
-  std::vector<std::string> names;  // In the table's order.
+// The data a case draws: ED and ES of the LV phantom, 0.5 mm noise.
+struct Case {
+  LvTagLayer layer = LvTagLayer::kMidwall;
+  LvSampling sampling = LvSampling::kTags;
+};
+
+LvPhantomOptions PhantomOptions(const Case& c, int seed) {
+  LvPhantomOptions options;
+  options.num_frames = 2;
+  options.num_tags = 400;
+  options.tags = c.layer;
+  options.sampling = c.sampling;
+  // biv-me's views: short-axis slices and 3 long-axis planes.
+  if (c.sampling == LvSampling::kSaxSlices) options.num_long_axis_planes = 3;
+  options.seed = 1000 + seed;
+  return options;
+}
+
+// Over Seeds() noise draws of c: per number, in the table's order.
+std::vector<std::pair<std::string, Tally>> Calibrate(const Case& c) {
+  std::vector<std::string> names;
   std::map<std::string, Tally> tally;
-  for (int s = 0; s < seeds; ++s) {
-    LvPhantomOptions options;
-    options.num_frames = 2;
-    options.num_tags = 400;
-    options.seed = 1000 + s;
+  for (int s = 0; s < Seeds(); ++s) {
+    LvPhantomOptions options = PhantomOptions(c, s);
     const LvPhantom phantom = MakeLvPhantom(options);
     const FitAnalysis noisy = FitLv(options, true);
-    ASSERT_TRUE(noisy.sd.computed);
+    EXPECT_TRUE(noisy.sd.computed);
     options.noise_mm = 0.0;
     const FitAnalysis clean = FitLv(options, false);
     const std::vector<Judged> got = Numbers(noisy, phantom);
     const std::vector<Judged> reference = Numbers(clean, phantom);
     for (size_t i = 0; i < got.size(); ++i) {
-      if (!Measured(got[i].value) || !Measured(got[i].sd)) continue;
+      // A surface has no wall: its thickening and mass read 0 +- 0.
+      if (!Measured(got[i].value) || !(got[i].sd > 0.0)) continue;
+      if (!Measured(reference[i].value)) continue;
       if (tally.count(got[i].name) == 0) names.push_back(got[i].name);
       Tally& t = tally[got[i].name];
       t.calibrated = got[i].calibrated;
@@ -191,19 +239,40 @@ TEST(LvIntervalCalibrationTest, IntervalsCoverNoiseOnTheLvPhantom) {
       }
     }
   }
+  std::vector<std::pair<std::string, Tally>> rows;
+  for (const std::string& name : names) rows.push_back({name, tally[name]});
+  return rows;
+}
+
+// Over 100 seeds and more, a number whose interval pfdm claims calibrated
+// (interval_calibration.h, where coverage read 0.90-0.99) holds the
+// noise-free fit in 88-99 % of draws: the binomial's sd at 100 draws is
+// 2.2 points.  Segment 9 alone is shown, not asserted (the claim is the
+// pooled segments'; it read 0.87 for Ecc on mid-wall tags).
+void ExpectCoverageClaimed(const std::string& name, const Tally& t) {
+  if (Seeds() < 100 || name.rfind("seg 9", 0) == 0) return;
+  const double coverage = t.inside_fit / static_cast<double>(t.draws);
+  EXPECT_GE(coverage, 0.88) << name;
+  EXPECT_LE(coverage, 0.99) << name;
+}
+
+// Prints the table (scripts/interval_calibration.sh copies it into docs/)
+// and returns the rms of the calibrated numbers' errors in their sds.
+double PrintTable(const std::string& title,
+                  const std::vector<std::pair<std::string, Tally>>& rows) {
+  std::printf("## %s\n\n", title.c_str());
   std::printf(
-      "| number | coverage of the noise-free fit | mean sd | "
+      "| number | claimed | coverage of the noise-free fit | mean sd | "
       "rms error | mean error | coverage of the truth | mean bias |\n"
-      "| --- | --- | --- | --- | --- | --- | --- |\n");
+      "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
   int pooled = 0, total = 0, calibrated = 0;
   double z_square = 0.0;
-  for (const std::string& name : names) {
-    const Tally& t = tally[name];
+  for (const auto& [name, t] : rows) {
     pooled += t.inside_fit;
     total += t.draws;
-    std::printf("| %s | %.3f | %.4g | %.4g | %.3g | ", name.c_str(),
-                t.inside_fit / double(t.draws), t.MeanSd(), t.RmsError(),
-                t.MeanError());
+    std::printf("| %s | %s | %.3f | %.4g | %.4g | %.3g | ", name.c_str(),
+                t.calibrated ? "yes" : "", t.inside_fit / double(t.draws),
+                t.MeanSd(), t.RmsError(), t.MeanError());
     if (t.truths > 0) {
       std::printf("%.3f | %.4g |\n", t.inside_truth / double(t.truths),
                   t.bias / t.truths);
@@ -213,21 +282,55 @@ TEST(LvIntervalCalibrationTest, IntervalsCoverNoiseOnTheLvPhantom) {
     if (t.calibrated) {
       z_square += std::pow(t.RmsError() / t.MeanSd(), 2);
       ++calibrated;
+      ExpectCoverageClaimed(name, t);
     }
   }
-  // The calibrated numbers' errors in sds: their rms about 1 (0.5 to 2
-  // over 3 seeds and correlated numbers; the 120-seed table in docs/).
-  const double z_rms = std::sqrt(z_square / calibrated);
-  std::printf("rms error / sd of the calibrated numbers: %.3f\n", z_rms);
+  std::printf("\npooled coverage of the noise-free fit: %.3f over %d seeds\n\n",
+              pooled / static_cast<double>(total), Seeds());
+  return std::sqrt(z_square / calibrated);
+}
+
+const Tally& Row(const std::vector<std::pair<std::string, Tally>>& rows,
+                 const std::string& name) {
+  for (const auto& row : rows) {
+    if (row.first == name) return row.second;
+  }
+  static const Tally none;
+  ADD_FAILURE() << "no row " << name;
+  return none;
+}
+
+// The calibrated numbers' errors in sds: their rms about 1 (0.5 to 2 over
+// 3 seeds and correlated numbers; the 120-seed table in docs/).
+TEST(LvIntervalCalibrationTest, MidwallTags) {
+  const auto rows = Calibrate(Case());
+  const double z_rms = PrintTable("400 mid-wall tags", rows);
   EXPECT_GT(z_rms, 0.5);
   EXPECT_LT(z_rms, 2.0);
-  std::printf("pooled coverage of the noise-free fit: %.3f over %d seeds\n",
-              pooled / static_cast<double>(total), seeds);
   // The bias the local field's noise puts into GCS (0.7 points, 5 of its
   // delta-method sds, before local_field_noise.h) is taken out of the
   // interval's centre: the centre's mean error is now under the sd.
-  const Tally& gcs = tally["GCS %"];
+  const Tally& gcs = Row(rows, "GCS %");
   EXPECT_LT(std::abs(gcs.MeanError()), gcs.MeanSd());
+}
+
+TEST(LvIntervalCalibrationTest, WallTags) {
+  Case c;
+  c.layer = LvTagLayer::kWall;
+  const auto rows = Calibrate(c);
+  const double z_rms = PrintTable("400 tags through the wall", rows);
+  EXPECT_GT(z_rms, 0.5);
+  EXPECT_LT(z_rms, 2.0);
+}
+
+TEST(LvIntervalCalibrationTest, WallContours) {
+  Case c;
+  c.layer = LvTagLayer::kWall;
+  c.sampling = LvSampling::kSaxSlices;
+  const auto rows = Calibrate(c);
+  const double z_rms = PrintTable("both walls' contours", rows);
+  EXPECT_GT(z_rms, 0.5);
+  EXPECT_LT(z_rms, 2.0);
 }
 
 }  // namespace

@@ -146,6 +146,11 @@ FrameFit FitFrame(const Frame& frame, bool reference,
     fit.covariance = MeasureFrameCovariance(
         points, fit.material, prior, carried->reference,
         WithLossScale(options, fit.loss_scale_mm), model);
+    if (fit.covariance.computed && reference) {
+      fit.covariance.length_noise = LengthNoiseDraws(
+          points, fit.material, WithLossScale(options, fit.loss_scale_mm),
+          model, fit.covariance.sigma_mm);
+    }
   }
   CheckInterrupt(options.solver);
   if (options.local.enabled) {

@@ -1,8 +1,11 @@
 #include "pfdm/fit/stages/local_noise.h"
 
+#include <cmath>
 #include <random>
 
+#include "pfdm/fit/problem/gauge.h"
 #include "pfdm/fit/problem/local_fit.h"
+#include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/fit/stages/local_stage.h"
 
 namespace pfdm {
@@ -24,6 +27,33 @@ std::vector<Eigen::Vector3d> Noisy(const std::vector<Eigen::Vector3d>& surface,
     }
   }
   return out;
+}
+
+// Height of the model's apex pole along its axis, from its centre.
+double ApexHeight(const Model& model) {
+  const double u = model.config.u_min;
+  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u);
+}
+
+// The points that can be the highest or hold it up (TopHeight's support
+// below it) in a draw of noise of sd sigma_mm: within 8 sigma and the
+// outlier band of `top`.  The rest cannot change it, and with a robust
+// loss each draw searches its points' closest points.
+std::vector<Eigen::Vector3d> NearTheTop(
+    const std::vector<Eigen::Vector3d>& points, double top, double sigma_mm,
+    const FitOptions& options, const Model& model) {
+  const double band = options.loss != "none"
+                          ? OutlierBandMm(options.loss, options.loss_scale_mm)
+                          : 0.0;
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  const Eigen::Vector3d center(model.state.center.data());
+  std::vector<Eigen::Vector3d> near;
+  for (const Eigen::Vector3d& p : points) {
+    if ((p - center).dot(axis) >= top - 8.0 * sigma_mm - band) {
+      near.push_back(p);
+    }
+  }
+  return near;
 }
 
 }  // namespace
@@ -58,6 +88,33 @@ std::vector<std::vector<double>> LocalNoiseDraws(
     fields.push_back(fitted.state.local.values);
   }
   return fields;
+}
+
+std::vector<double> LengthNoiseDraws(const FramePoints& points,
+                                     const std::vector<MaterialPoint>& material,
+                                     const FitOptions& options,
+                                     const Model& model, double sigma_mm,
+                                     int draws) {
+  std::vector<double> stretches;
+  if (!(sigma_mm > 0.0) || material.empty()) return stretches;
+  std::vector<Eigen::Vector3d> all;
+  SurfaceNormals(model, material, &all);
+  const double top = TopHeight(all, options, model);
+  const double length = top - ApexHeight(model);
+  if (!std::isfinite(top) || !(length > 0.0)) return stretches;
+  const std::vector<Eigen::Vector3d> surface =
+      NearTheTop(all, top, sigma_mm, options, model);
+  const std::vector<Eigen::Vector3d> no_normals(surface.size());
+  const std::vector<bool> every_coordinate(surface.size(), false);
+  std::mt19937 random(2000003u + static_cast<unsigned>(points.index));
+  for (int k = 0; k < draws; ++k) {
+    const double moved = TopHeight(
+        Noisy(surface, no_normals, every_coordinate, sigma_mm, &random),
+        options, model);
+    if (!std::isfinite(moved)) return {};
+    stretches.push_back((moved - top) / length);
+  }
+  return stretches;
 }
 
 }  // namespace pfdm
