@@ -10,7 +10,10 @@ IntervalData IntervalDataOf(const SequenceFit& fit) {
     return fit.config.Solid() ? IntervalData::kWallTags
                               : IntervalData::kMidwallTags;
   }
-  if (std::none_of(fit.frames.begin(), fit.frames.end(), tracked)) {
+  // Contours of one surface (biv-me's lv-cavity: the endocardium alone)
+  // were not calibrated: only both walls' contours fitted as a solid were.
+  if (std::none_of(fit.frames.begin(), fit.frames.end(), tracked) &&
+      fit.config.Solid()) {
     return IntervalData::kContours;
   }
   return IntervalData::kOther;
@@ -23,7 +26,7 @@ std::string IntervalDataName(IntervalData data) {
     case IntervalData::kWallTags:
       return "wall tags";
     case IntervalData::kContours:
-      return "contours";
+      return "wall contours";
     case IntervalData::kOther:
       break;
   }

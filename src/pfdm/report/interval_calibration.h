@@ -19,14 +19,16 @@ namespace pfdm {
 enum class Calibration { kCalibrated, kNotCalibrated };
 
 // The kinds of data calibrated: tags on one surface (a mid-wall fit), tags
-// through the wall (a solid), contours (no frame tracked); kOther: none.
+// through the wall (a solid), both walls' contours (no frame tracked, a
+// solid); kOther: none (contours of one surface among them).
 enum class IntervalData { kMidwallTags, kWallTags, kContours, kOther };
 
-// The fit's kind: tags where every frame is tracked, contours where none
-// is (FrameFit::tracked), by whether the model is a solid.
+// The fit's kind: tags where every frame is tracked, by whether the model
+// is a solid; wall contours where none is (FrameFit::tracked) and the
+// model is a solid; else kOther.
 IntervalData IntervalDataOf(const SequenceFit& fit);
 
-// "midwall tags", "wall tags", "contours" or "other".
+// "midwall tags", "wall tags", "wall contours" or "other".
 std::string IntervalDataName(IntervalData data);
 
 // fit.json keys of data's calibrated numbers: a key holds wherever it

@@ -74,8 +74,9 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
   EXPECT_TRUE(CalibratedIntervalKeys(D::kOther).empty());
 }
 
-// The kind from the fit: tags where every frame is tracked, contours where
-// none is, by whether the model is a solid; a mix is neither.
+// The kind from the fit: tags where every frame is tracked, by whether the
+// model is a solid; contours where none is and the model is a solid; a mix,
+// or one surface's contours, is neither.
 TEST(IntervalCalibrationTest, KindOfTheFitsData) {
   SequenceFit fit;
   fit.config = ModelConfig::Paper(9);
@@ -89,7 +90,11 @@ TEST(IntervalCalibrationTest, KindOfTheFitsData) {
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kContours);
   fit.frames[0].tracked = true;
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kOther);
-  EXPECT_EQ(IntervalDataName(IntervalData::kContours), "contours");
+  // Contours of one surface (the endocardium alone) were not calibrated.
+  fit.config = ModelConfig::Paper(9);
+  for (FrameFit& f : fit.frames) f.tracked = false;
+  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kOther);
+  EXPECT_EQ(IntervalDataName(IntervalData::kContours), "wall contours");
 }
 
 }  // namespace
