@@ -1,14 +1,19 @@
 // What --uncertainty costs (docs/uncertainty.md, Cost): the default
 // phantom's end-diastole and one tracked frame (N tags, K = 17, the local
-// field on, one thread) fitted with the covariances, then every number's sd
-// (PropagateUncertainty).  Per frame, CPU time of this thread: "fit_ms"
-// the fit without the covariances, "covariance_ms" the frames'
-// covariances (FrameCovariance::seconds, wall time of one thread),
-// "numbers_ms" the numbers' sds; "*_share" each over fit_ms.  The numbers'
-// cost does not grow with N (they are measured on the model, not the
-// data); it grows with the frames, as each of ED's steps measures every
-// frame again.  Each configuration runs three times; read the medians.
+// field on, one thread) fitted and analysed (every clinical, strain and
+// segment number) without and with it.  Per frame, CPU time of this
+// thread: "fit_ms" and "analysis_ms" without it; "covariance_ms" the
+// frames' covariances (FrameCovariance::seconds, wall time of one thread),
+// "draws_ms" the rest it adds to the fit (the local field's and the
+// length's noise draws), "numbers_ms" what it adds to the analysis (the
+// delta method and the draws' measurements); "share" all three over
+// fit_ms + analysis_ms, the job's own work.  The numbers' cost does not
+// grow with N (they are measured on the model, not the data); it grows
+// with the frames, as each of ED's steps measures every frame again.
+// Each configuration runs three times; read the medians.
 #include <time.h>
+
+#include <algorithm>
 
 #include "benchmark/benchmark.h"
 #include "benchmark_util.h"
@@ -16,7 +21,6 @@
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/report/fit_analysis.h"
-#include "pfdm/report/number_uncertainty.h"
 
 namespace pfdm {
 namespace {
@@ -27,43 +31,52 @@ double ThreadCpuSeconds() {
   return now.tv_sec + 1e-9 * now.tv_nsec;
 }
 
+// CPU seconds of one fit and of its analysis.
+struct JobSeconds {
+  double fit = 0.0, analysis = 0.0, covariance = 0.0;
+  size_t frames = 0;
+};
+
+JobSeconds TimeJob(const Phantom& phantom, bool uncertainty) {
+  FitOptions options;
+  options.uncertainty = uncertainty;
+  JobSeconds seconds;
+  const double start = ThreadCpuSeconds();
+  const SequenceFit fit =
+      FitSequence(phantom.points, ModelConfig::Paper(17), options);
+  const double fitted = ThreadCpuSeconds();
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  benchmark::DoNotOptimize(analysis.sd.computed);
+  seconds.fit = fitted - start;
+  seconds.analysis = ThreadCpuSeconds() - fitted;
+  for (const FrameFit& frame : fit.frames) {
+    seconds.covariance += frame.covariance.seconds;
+  }
+  seconds.frames = fit.frames.size();
+  return seconds;
+}
+
 // Args: tags.
 void BM_Uncertainty(benchmark::State& state) {
   PhantomOptions phantom_options;
   phantom_options.num_points = static_cast<int>(state.range(0));
   phantom_options.num_frames = 2;
   const Phantom phantom = MakePhantom(phantom_options);
-  FitOptions options;
-  options.uncertainty = true;
-  double fit_seconds = 0.0, numbers_seconds = 0.0, covariance_seconds = 0.0;
-  size_t frames = 0;
+  JobSeconds off, on;
   for (auto _ : state) {
-    const double start = ThreadCpuSeconds();
-    SequenceFit fit =
-        FitSequence(phantom.points, ModelConfig::Paper(17), options);
-    const double fitted = ThreadCpuSeconds();
-    // The analysis without the sds (a frame without its covariance), then
-    // the sds alone.
-    SequenceFit without = fit;
-    without.frames.back().covariance.computed = false;
-    const FitAnalysis analysis = AnalyzeFit(without);
-    const double analyzed = ThreadCpuSeconds();
-    const NumberSd sd = PropagateUncertainty(fit, analysis);
-    numbers_seconds = ThreadCpuSeconds() - analyzed;
-    benchmark::DoNotOptimize(sd.computed);
-    covariance_seconds = 0.0;
-    for (const FrameFit& frame : fit.frames) {
-      covariance_seconds += frame.covariance.seconds;
-    }
-    fit_seconds = fitted - start - covariance_seconds;
-    frames = fit.frames.size();
+    off = TimeJob(phantom, false);
+    on = TimeJob(phantom, true);
   }
-  const double per_frame = 1e3 / frames;
-  state.counters["fit_ms"] = fit_seconds * per_frame;
-  state.counters["covariance_ms"] = covariance_seconds * per_frame;
-  state.counters["numbers_ms"] = numbers_seconds * per_frame;
-  state.counters["covariance_share"] = covariance_seconds / fit_seconds;
-  state.counters["numbers_share"] = numbers_seconds / fit_seconds;
+  const double per_frame = 1e3 / off.frames;
+  const double draws = std::max(0.0, on.fit - on.covariance - off.fit);
+  const double numbers = std::max(0.0, on.analysis - off.analysis);
+  state.counters["fit_ms"] = off.fit * per_frame;
+  state.counters["analysis_ms"] = off.analysis * per_frame;
+  state.counters["covariance_ms"] = on.covariance * per_frame;
+  state.counters["draws_ms"] = draws * per_frame;
+  state.counters["numbers_ms"] = numbers * per_frame;
+  state.counters["share"] =
+      (on.covariance + draws + numbers) / (off.fit + off.analysis);
 }
 BENCHMARK(BM_Uncertainty)
     ->ArgNames({"points"})

@@ -5,7 +5,8 @@
 # writes its tables into docs/uncertainty_calibration.md.
 #   scripts/interval_calibration.sh [build dir] [seeds] [log]
 # Per seed about 3.5 s of one core for the mid-wall tags, 8 s for the wall's
-# tags and 7 s for the contours (two fits each, noisy and noise-free).
+# tags and 7 s for the contours (two fits each, noisy and noise-free), and
+# one dense noise-free fit per kind.
 # Given a log of that test already run with PFDM_CALIBRATION_SEEDS=seeds,
 # the table is taken from it instead.
 set -euo pipefail
@@ -36,10 +37,13 @@ fi
   echo "interval (value - noise bias -+ 1.96 sd) holds the same data's"
   echo "noise-free fit (what it promises: 0.95; the 'segments' rows pool the"
   echo "17 segments), the mean sd, the rms and mean of the error against the"
-  echo "noise-free fit, and, where the phantom's truth is defined as the"
-  echo "fit's number is, how often the interval holds it and the mean bias"
-  echo "(fit minus truth).  What the tables show is read in"
-  echo "docs/uncertainty.md, Calibration."
+  echo "noise-free fit, the mean error of the number itself (not less its"
+  echo "bias), how often the interval holds the noise-free fit of ten times"
+  echo "the points (4,000, seed 0: the model's answer with little of the"
+  echo "sampling's own error) and the mean error against it, and, where the"
+  echo "phantom's truth is defined as the fit's number is, how often the"
+  echo "interval holds it and the mean bias (fit minus truth).  What the"
+  echo "tables show is read in docs/uncertainty.md, Calibration."
   echo
   grep -E '^(\||## |$|pooled)' "$log" | sed 's/^pooled/Pooled/' | cat -s
 } >"$out"

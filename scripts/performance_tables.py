@@ -378,14 +378,13 @@ def uncertainty_table(document):
         a = args(key)
         rows.append((a["points"], [
             "{:,}".format(a["points"]), number(b["fit_ms"], 1),
-            number(b["covariance_ms"], 1),
-            "%.0f %%" % (100.0 * b["covariance_share"]),
-            number(b["numbers_ms"], 0),
-            "%.0f %%" % (100.0 * b["numbers_share"])]))
+            number(b["analysis_ms"], 1), number(b["covariance_ms"], 1),
+            number(b["draws_ms"], 1), number(b["numbers_ms"], 0),
+            "%.0f %%" % (100.0 * b["share"])]))
     rows.sort(key=lambda r: r[0])
-    return table(["tags", "fit ms per frame", "covariance ms per frame",
-                  "covariance / fit", "numbers' sds ms per frame",
-                  "numbers' sds / fit"], [r[-1] for r in rows])
+    return table(["tags", "fit ms per frame", "analysis ms per frame",
+                  "covariance ms", "noise draws ms", "numbers' sds ms",
+                  "added / (fit + analysis)"], [r[-1] for r in rows])
 
 
 def replace(readme, name, text):

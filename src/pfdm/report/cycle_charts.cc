@@ -49,6 +49,24 @@ std::vector<double> Bars(const FitAnalysis& analysis,
   return bars;
 }
 
+// The noise's bias of a clinical number per frame (the bars' centres are
+// the value minus it), empty where it was not sampled.
+std::vector<double> Biases(const FitAnalysis& analysis,
+                           double ClinicalSummary::*value) {
+  const NumberSd& bias = analysis.noise_bias;
+  if (!bias.computed || bias.clinical.size() != analysis.clinical.size()) {
+    return {};
+  }
+  return Column(bias.clinical, value);
+}
+
+// A clinical number's 95 % bars on `series`: half-widths and centres.
+void SetBars(const FitAnalysis& analysis, double ClinicalSummary::*value,
+             ChartSeries* series) {
+  series->half_width = Bars(analysis, value);
+  series->bias = Biases(analysis, value);
+}
+
 std::string VolumeCharts(const FitAnalysis& analysis, const Axis& axis) {
   const std::vector<double> volume =
       Column(analysis.clinical, &ClinicalSummary::volume_ml);
@@ -69,7 +87,7 @@ std::string VolumeCharts(const FitAnalysis& analysis, const Axis& axis) {
   }
   Chart v = ChartOf(axis, title, "ml", false);
   v.series.push_back({"volume (ml)", volume, "#1f3f8f", 2.0});
-  v.series.back().half_width = Bars(analysis, &ClinicalSummary::volume_ml);
+  SetBars(analysis, &ClinicalSummary::volume_ml, &v.series.back());
   Chart dv = ChartOf(axis, "dV/dt", unit, true);
   dv.series.push_back({std::string("dV/dt (") + unit + ")", rate, "#1f3f8f"});
   std::ostringstream h;
@@ -102,10 +120,8 @@ std::string MotionCharts(const FitAnalysis& analysis, const Axis& axis) {
     torsion.series = {{"torsion",
                        Column(c, &ClinicalSummary::torsion_deg_per_cm),
                        "#6c3483", 2.0}};
-    rotation.series[2].half_width =
-        Bars(analysis, &ClinicalSummary::net_twist_deg);
-    torsion.series[0].half_width =
-        Bars(analysis, &ClinicalSummary::torsion_deg_per_cm);
+    SetBars(analysis, &ClinicalSummary::net_twist_deg, &rotation.series[2]);
+    SetBars(analysis, &ClinicalSummary::torsion_deg_per_cm, &torsion.series[0]);
     h << ChartSvg(rotation) << ChartSvg(torsion);
   }
   Chart contraction = ChartOf(axis, "contraction", "percent", true);
@@ -115,10 +131,10 @@ std::string MotionCharts(const FitAnalysis& analysis, const Axis& axis) {
       {"longitudinal",
        Column(c, &ClinicalSummary::longitudinal_shortening_percent),
        "#2471a3"}};
-  contraction.series[0].half_width =
-      Bars(analysis, &ClinicalSummary::radial_contraction_percent);
-  contraction.series[1].half_width =
-      Bars(analysis, &ClinicalSummary::longitudinal_shortening_percent);
+  SetBars(analysis, &ClinicalSummary::radial_contraction_percent,
+          &contraction.series[0]);
+  SetBars(analysis, &ClinicalSummary::longitudinal_shortening_percent,
+          &contraction.series[1]);
   h << ChartSvg(contraction);
   return h.str();
 }
@@ -147,6 +163,12 @@ std::string StrainCharts(const FitAnalysis& analysis, const Axis& axis) {
       for (const GlobalStrain& g : sd) {
         global.half_width.push_back(
             HalfWidth95(circumferential ? g.gcs_percent : g.gls_percent));
+      }
+    }
+    const std::vector<GlobalStrain>& bias = analysis.noise_bias.strain;
+    if (analysis.noise_bias.computed && bias.size() == analysis.strain.size()) {
+      for (const GlobalStrain& g : bias) {
+        global.bias.push_back(circumferential ? g.gcs_percent : g.gls_percent);
       }
     }
     chart.series = {global, levels[0], levels[1], levels[2]};

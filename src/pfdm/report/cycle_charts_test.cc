@@ -5,6 +5,7 @@
 
 #include "gtest/gtest.h"
 #include "pfdm/phantom/phantom.h"
+#include "pfdm/report/report_text.h"
 #include "pfdm/testing/test_util.h"
 #include "pfdm/testing/truth_as_fit.h"
 #include "pfdm/util/angles.h"
@@ -75,6 +76,35 @@ TEST(CycleChartsTest, ChartsAgainstTimeWhereKnown) {
   EXPECT_NE(timed.find("torsion, time from the trigger (ms) 200: "),
             std::string::npos);
   EXPECT_EQ(timed.find("nan"), std::string::npos);
+}
+
+// With --uncertainty on, each bar is centred on the value minus its noise
+// bias, as fit.json's ci95 is: frame 1's volume V with sd 1 and bias 2 has
+// the bar V - 2 -+ 1.96.
+TEST(CycleChartsTest, BarsAreCentredOnTheValueLessItsBias) {
+  PhantomOptions options;
+  options.num_points = 20;
+  FitAnalysis analysis = AnalyzeFit(TruthAsFit(MakePhantom(options)));
+  analysis.sd.computed = analysis.noise_bias.computed = true;
+  analysis.sd.clinical = analysis.noise_bias.clinical = analysis.clinical;
+  analysis.sd.strain = analysis.noise_bias.strain = analysis.strain;
+  for (size_t t = 0; t < analysis.clinical.size(); ++t) {
+    analysis.sd.clinical[t].volume_ml = 1.0;
+    analysis.noise_bias.clinical[t].volume_ml = 2.0;
+    analysis.sd.strain[t].gcs_percent = 0.5;
+    analysis.noise_bias.strain[t].gcs_percent = 0.0;
+  }
+  const double v = analysis.clinical[1].volume_ml;
+  const std::string html = CycleChartsHtml(analysis);
+  const std::string volume = "volume (ml), frame 1: " + Fixed(v, 2) +
+                             ", 95 %: " + Fixed(v - 2.0 - 1.96, 2) + " to " +
+                             Fixed(v - 2.0 + 1.96, 2);
+  EXPECT_NE(html.find(volume), std::string::npos) << volume;
+  // No bias: +- about the value.
+  EXPECT_NE(html.find("GCS (global), frame 1: " +
+                      Fixed(analysis.strain[1].gcs_percent, 2) +
+                      " &#177; 0.98 (95 %)"),
+            std::string::npos);
 }
 
 }  // namespace

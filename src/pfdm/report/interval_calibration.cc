@@ -60,11 +60,16 @@ const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
       "rotation_deg",
       "thickening_percent"};
   static const std::vector<std::string> contours = {
+      "ratio",
       "edv_ml",
+      "esv_ml",
       "lv_mass_g",
+      "longitudinal_shortening_percent",
       "radial_contraction_percent",
       "gcs_percent",
+      "gls_percent",
       "peak_gcs_percent",
+      "peak_gls_percent",
       "wall_thickening_percent",
       "ecc_percent",
       "peak_ecc_percent",

@@ -17,28 +17,55 @@ size_t VolumeIndex() {
   return std::find(fields.begin(), fields.end(), &c.volume_ml) - fields.begin();
 }
 
-// Every frame's numbers (Flatten's order) with these models, against the
-// ED frame's, and the ejection fraction's (ratio, EDV, ESV) last.
+// Frame t's numbers (Flatten's order) against the ED frame's samples.
+Eigen::VectorXd MeasureOne(const FitAnalysis& analysis,
+                           const std::vector<Model>& models, size_t ed,
+                           const ReferenceSamples& samples, size_t t) {
+  const BasePlane* plane =
+      analysis.base_planes.empty() ? nullptr : &analysis.base_planes[t];
+  const std::vector<double> values = Flatten(
+      MeasureFrame(models[ed], samples, analysis.regions, models[t], plane));
+  return Eigen::Map<const Eigen::VectorXd>(values.data(), values.size());
+}
+
+// The ejection fraction's (ratio, EDV, ESV) after the frames' numbers.
+void AppendEjection(const FitAnalysis& analysis,
+                    std::vector<Eigen::VectorXd>* out) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  if (ef.ed_frame >= 0 && ef.es_frame >= 0 &&
+      static_cast<size_t>(std::max(ef.ed_frame, ef.es_frame)) < out->size()) {
+    const double edv = (*out)[ef.ed_frame][VolumeIndex()];
+    const double esv = (*out)[ef.es_frame][VolumeIndex()];
+    out->push_back(Eigen::Vector3d((edv - esv) / edv, edv, esv));
+  }
+}
+
+// Every frame's numbers with these models, against the ED frame's, and the
+// ejection fraction's last.
 std::vector<Eigen::VectorXd> MeasureAll(const FitAnalysis& analysis,
                                         const std::vector<Model>& models,
                                         size_t ed) {
   const ReferenceSamples samples = SampleReference(models[ed], analysis.layout);
   std::vector<Eigen::VectorXd> out;
   for (size_t t = 0; t < models.size(); ++t) {
-    const BasePlane* plane =
-        analysis.base_planes.empty() ? nullptr : &analysis.base_planes[t];
-    const std::vector<double> values = Flatten(
-        MeasureFrame(models[ed], samples, analysis.regions, models[t], plane));
-    out.push_back(
-        Eigen::Map<const Eigen::VectorXd>(values.data(), values.size()));
+    out.push_back(MeasureOne(analysis, models, ed, samples, t));
   }
-  const EjectionFraction& ef = analysis.ejection_fraction;
-  if (ef.ed_frame >= 0 && ef.es_frame >= 0 &&
-      static_cast<size_t>(std::max(ef.ed_frame, ef.es_frame)) < models.size()) {
-    const double edv = out[ef.ed_frame][VolumeIndex()];
-    const double esv = out[ef.es_frame][VolumeIndex()];
-    out.push_back(Eigen::Vector3d((edv - esv) / edv, edv, esv));
+  AppendEjection(analysis, &out);
+  return out;
+}
+
+// MeasureAll's, where only the `changed` frames' models differ from those
+// that measured `at`: the others' numbers are at's, unless ED changed.
+std::vector<Eigen::VectorXd> MeasureChanged(
+    const FitAnalysis& analysis, const std::vector<Model>& models, size_t ed,
+    const std::vector<bool>& changed, const std::vector<Eigen::VectorXd>& at) {
+  if (changed[ed]) return MeasureAll(analysis, models, ed);
+  const ReferenceSamples samples = SampleReference(models[ed], analysis.layout);
+  std::vector<Eigen::VectorXd> out(at.begin(), at.begin() + models.size());
+  for (size_t t = 0; t < models.size(); ++t) {
+    if (changed[t]) out[t] = MeasureOne(analysis, models, ed, samples, t);
   }
+  AppendEjection(analysis, &out);
   return out;
 }
 
@@ -103,14 +130,22 @@ Moments SampleLocalField(const SequenceFit& fit, const FitAnalysis& analysis,
   return m;
 }
 
-// Frame 0's length draws, taken as linear: each number's derivative by the
-// length's relative change (from one measurement with the frames stretched
-// by the draws' sd) times the draws' mean and sd.  Stretched are frame 0
-// and the tracked frames, whose material points frame 0's length placed;
-// an untracked frame searches its own.
-void AddLengthNoise(const SequenceFit& fit, const FitAnalysis& analysis,
-                    const std::vector<Eigen::VectorXd>& at, Moments* m) {
-  const std::vector<double>& draws = fit.frames[0].covariance.length_noise;
+// Whether frame t's length moves with frame `source`'s length draws: frame
+// 0's places the material points of frame 0 and of the tracked frames; an
+// untracked later frame's (contours) holds its own base rim alone.
+bool StretchedWith(size_t source, size_t t, const SequenceFit& fit) {
+  if (source == 0) return t == 0 || fit.frames[t].tracked;
+  return t == source;
+}
+
+// Frame `source`'s length draws, taken as linear: each number's derivative
+// by the length's relative change (from one measurement with the frames it
+// moves stretched by the draws' sd) times the draws' mean and sd.  Draws of
+// different frames are of different points' noise: independent.
+void AddLengthNoiseOf(size_t source, const SequenceFit& fit,
+                      const FitAnalysis& analysis,
+                      const std::vector<Eigen::VectorXd>& at, Moments* m) {
+  const std::vector<double>& draws = fit.frames[source].covariance.length_noise;
   if (draws.size() < 2) return;
   const Eigen::Map<const Eigen::VectorXd> f(draws.data(), draws.size());
   const double mean = f.mean();
@@ -119,16 +154,32 @@ void AddLengthNoise(const SequenceFit& fit, const FitAnalysis& analysis,
   const double step = std::sqrt(variance);
   if (!(step > 0.0)) return;
   std::vector<Model> models = analysis.models;
+  std::vector<bool> stretched(models.size(), false);
   for (size_t t = 0; t < models.size(); ++t) {
-    if (t == 0 || fit.frames[t].tracked) Stretch(step, &models[t]);
+    stretched[t] = StretchedWith(source, t, fit);
+    if (stretched[t]) Stretch(step, &models[t]);
   }
-  const std::vector<Eigen::VectorXd> y =
-      MeasureAll(analysis, models, static_cast<size_t>(fit.ed_frame));
+  const std::vector<Eigen::VectorXd> y = MeasureChanged(
+      analysis, models, static_cast<size_t>(fit.ed_frame), stretched, at);
   for (size_t i = 0; i < y.size(); ++i) {
     const Eigen::VectorXd slope = (y[i] - at[i]) / step;
     m->bias[i] += mean * slope;
     m->variance[i] += variance * slope.cwiseProduct(slope);
   }
+}
+
+void AddLengthNoise(const SequenceFit& fit, const FitAnalysis& analysis,
+                    const std::vector<Eigen::VectorXd>& at, Moments* m) {
+  for (size_t source = 0; source < fit.frames.size(); ++source) {
+    AddLengthNoiseOf(source, fit, analysis, at, m);
+  }
+}
+
+bool HasLengthDraws(const SequenceFit& fit) {
+  for (const FrameFit& frame : fit.frames) {
+    if (frame.covariance.length_noise.size() >= 2) return true;
+  }
+  return false;
 }
 
 Moments Sample(const SequenceFit& fit, const FitAnalysis& analysis,
@@ -200,9 +251,7 @@ NumberSd AddLocalFieldNoise(const SequenceFit& fit, const FitAnalysis& analysis,
   NumberSd bias;
   if (!sd->computed || fit.frames.empty()) return bias;
   const size_t local_draws = LocalDraws(fit);
-  if (local_draws < 2 && fit.frames[0].covariance.length_noise.size() < 2) {
-    return bias;
-  }
+  if (local_draws < 2 && !HasLengthDraws(fit)) return bias;
   const Moments m = Sample(fit, analysis, local_draws);
   const size_t frames = fit.frames.size();
   bias.clinical.resize(frames);

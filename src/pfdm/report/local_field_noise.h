@@ -18,9 +18,12 @@
 //
 // Frame 0's length is sampled too (fit/stages/local_noise.h,
 // LengthNoiseDraws): its a0 is set by the highest noisy points and held,
-// which moves every volume.  Taken as linear, each number's derivative by
-// a stretch along the axis (frame 0's and the tracked frames' a3, one more
-// measurement) times the draws' mean and variance is added to b and var.
+// which moves every volume; so is each untracked later frame's, whose base
+// rim its own highest points hold.  Taken as linear, each number's
+// derivative by a stretch along the axis (frame 0's draws: frame 0's and
+// the tracked frames' a3; an untracked frame's: its own; one more
+// measurement each) times the draws' mean and variance is added to b and
+// var, the frames' draws independent.
 // Without a local field only this is added.
 #ifndef PFDM_REPORT_LOCAL_FIELD_NOISE_H_
 #define PFDM_REPORT_LOCAL_FIELD_NOISE_H_

@@ -2,8 +2,11 @@
 
 #include <cmath>
 
+#include "Eigen/Core"
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/stages/local_noise.h"
+#include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/number_uncertainty.h"
 #include "pfdm/testing/test_models.h"
 
@@ -82,6 +85,43 @@ TEST(LocalFieldNoiseTest, WithoutALocalFieldOnlyTheLengthIsDrawn) {
   EXPECT_LT(std::abs(bias.ratio), 0.1 * sd.ratio);
   EXPECT_NEAR(a.sd.strain[1].gcs_percent, global.strain[1].gcs_percent,
               1e-3 * global.strain[1].gcs_percent);
+}
+
+// Contours: each frame's base rim is held at its own highest points, so
+// frame 1 has length draws of its own, independent of frame 0's.
+// Shortening s = 100 (1 - L1 / L0) moves by -(100 - s) per unit of frame
+// 1's relative stretch: its variance grows by (100 - s)^2 var(draws), to
+// the linearisation's accuracy.
+TEST(LocalFieldNoiseTest, AnUntrackedFramesLengthIsDrawnToo) {
+  LvPhantomOptions options;
+  options.num_frames = 2;
+  options.num_tags = 400;
+  options.tags = LvTagLayer::kWall;
+  options.sampling = LvSampling::kSaxSlices;
+  options.num_long_axis_planes = 3;
+  options.seed = 1000;
+  FitOptions fit_options;
+  fit_options.uncertainty = true;
+  const SequenceFit fit = FitSequence(MakeLvPhantom(options).points,
+                                      ModelConfig::Paper(9), fit_options);
+  ASSERT_FALSE(fit.frames[1].tracked);
+  const std::vector<double>& draws = fit.frames[1].covariance.length_noise;
+  ASSERT_EQ(draws.size(), static_cast<size_t>(kLengthNoiseDraws));
+  const Eigen::Map<const Eigen::VectorXd> f(draws.data(), draws.size());
+  const double variance =
+      (f.array() - f.mean()).square().sum() / (f.size() - 1.0);
+  SequenceFit frame_0_only = fit;
+  frame_0_only.frames[1].covariance.length_noise.clear();
+  const FitAnalysis with = AnalyzeFit(fit);
+  const FitAnalysis without = AnalyzeFit(frame_0_only);
+  const double s = with.clinical[1].longitudinal_shortening_percent;
+  const double sd_with = with.sd.clinical[1].longitudinal_shortening_percent;
+  const double sd_without =
+      without.sd.clinical[1].longitudinal_shortening_percent;
+  const double added = sd_with * sd_with - sd_without * sd_without;
+  const double expected = (100.0 - s) * (100.0 - s) * variance;
+  EXPECT_GT(expected, 0.1 * sd_without * sd_without);  // Not negligible.
+  EXPECT_NEAR(added, expected, 0.1 * expected);
 }
 
 }  // namespace

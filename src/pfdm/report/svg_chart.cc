@@ -38,6 +38,20 @@ void Range(const std::vector<double>& values, double* low, double* high) {
   }
 }
 
+// Where value i's error bar is centred: on the value minus its bias.
+double BarCentre(const ChartSeries& s, size_t i) {
+  const double bias = i < s.bias.size() ? s.bias[i] : NAN;
+  return std::isfinite(bias) ? s.y[i] - bias : s.y[i];
+}
+
+// The hover's interval: "+- w" about the value, or, when the bias moved
+// its centre, the interval's ends.
+std::string BarText(double y, double centre, double w) {
+  if (centre == y) return " &#177; " + Fixed(w, 2) + " (95 %)";
+  return ", 95 %: " + Fixed(centre - w, 2) + " to " + Fixed(centre + w, 2) +
+         " (less the noise's bias)";
+}
+
 PlotArea PlotFrame(const Chart& chart, int legend_rows) {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   Range(chart.x, &x0, &x1);
@@ -45,7 +59,8 @@ PlotArea PlotFrame(const Chart& chart, int legend_rows) {
     Range(s.y, &y0, &y1);
     for (size_t i = 0; i < s.y.size() && i < s.half_width.size(); ++i) {
       if (!std::isfinite(s.half_width[i])) continue;
-      Range({s.y[i] - s.half_width[i], s.y[i] + s.half_width[i]}, &y0, &y1);
+      const double centre = BarCentre(s, i);
+      Range({centre - s.half_width[i], centre + s.half_width[i]}, &y0, &y1);
     }
   }
   if (chart.zero_line) Range({0.0}, &y0, &y1);
@@ -132,16 +147,16 @@ void Curve(const Chart& chart, const ChartSeries& s, const PlotArea& f,
     if (std::isnan(s.y[i])) continue;
     const double w = i < s.half_width.size() ? s.half_width[i] : 0.0;
     const bool bar = std::isfinite(w) && w > 0;
+    const double centre = BarCentre(s, i);
     if (bar) {
       *out << "<line x1='" << f.X(chart.x[i]) << "' x2='" << f.X(chart.x[i])
-           << "' y1='" << f.Y(s.y[i] - w) << "' y2='" << f.Y(s.y[i] + w)
+           << "' y1='" << f.Y(centre - w) << "' y2='" << f.Y(centre + w)
            << "' stroke='" << s.color << "'/>";
     }
     *out << "<circle cx='" << f.X(chart.x[i]) << "' cy='" << f.Y(s.y[i])
          << "' r='2.6' fill='" << s.color << "'><title>" << EscapeMarkup(s.name)
          << ", " << EscapeMarkup(chart.x_label) << ' ' << Fixed(chart.x[i], 0)
-         << ": " << Fixed(s.y[i], 2)
-         << (bar ? " &#177; " + Fixed(w, 2) + " (95 %)" : "")
+         << ": " << Fixed(s.y[i], 2) << (bar ? BarText(s.y[i], centre, w) : "")
          << "</title></circle>";
   }
   *out << "</g>";

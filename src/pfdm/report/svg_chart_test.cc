@@ -57,6 +57,15 @@ TEST(SvgChartTest, DotsWithValuesOnHover) {
   EXPECT_NE(bars.find("80: -17.25 &#177; 2.00 (95 %)</title>"),
             std::string::npos);
   EXPECT_EQ(CountOf(bars, "(95 %)"), 2);
+
+  // A bias moves the bar's centre off the value, as fit.json's ci95 is
+  // centred: -17.25 - 0.5 -+ 2.
+  chart.series[0].bias = {0.0, NAN, 0.5, 0.1};
+  const std::string shifted = ChartSvg(chart);
+  EXPECT_NE(shifted.find("80: -17.25, 95 %: -19.75 to -15.75 (less the "
+                         "noise's bias)</title>"),
+            std::string::npos);
+  EXPECT_EQ(CountOf(shifted, "(95 %)"), 1);  // The unbiased one.
 }
 
 }  // namespace

@@ -78,9 +78,10 @@ struct FrameCovariance {
   // draws of the field the frame's noise alone fits (fit/stages/
   // local_noise.h), each LocalField::values' layout; empty without a field.
   std::vector<std::vector<double>> local_noise;
-  // The reference frame's: draws of its length's relative error, which the
-  // noise of its highest points puts into the held a0 (fit/stages/
-  // local_noise.h, LengthNoiseDraws); empty on the other frames.
+  // Draws of the length's relative error that the noise of the frame's
+  // highest points puts into the reference frame's held a0, or into an
+  // untracked later frame's base rim (fit/stages/local_noise.h,
+  // LengthNoiseDraws); empty on tracked frames.
   std::vector<double> length_noise;
 
   // Index of (kind, knot, function) in entries, or -1 (held, or absent).

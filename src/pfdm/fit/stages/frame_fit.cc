@@ -146,7 +146,9 @@ FrameFit FitFrame(const Frame& frame, bool reference,
     fit.covariance = MeasureFrameCovariance(
         points, fit.material, prior, carried->reference,
         WithLossScale(options, fit.loss_scale_mm), model);
-    if (fit.covariance.computed && reference) {
+    // Frame 0's length is set by its highest points and held; an untracked
+    // later frame's base rim is held at its own highest (contours).
+    if (fit.covariance.computed && (reference || !fit.tracked)) {
       fit.covariance.length_noise = LengthNoiseDraws(
           points, fit.material, WithLossScale(options, fit.loss_scale_mm),
           model, fit.covariance.sigma_mm);
