@@ -38,33 +38,44 @@ std::vector<double> Column(const std::vector<ClinicalSummary>& clinical,
   return column;
 }
 
-// The 95 % half-widths of a clinical number per frame, empty without the
-// frames' covariances (--uncertainty off).
-std::vector<double> Bars(const FitAnalysis& analysis,
-                         double ClinicalSummary::*value) {
-  const NumberSd& sd = analysis.sd;
-  if (!sd.computed || sd.clinical.size() != analysis.clinical.size()) return {};
-  std::vector<double> bars = Column(sd.clinical, value);
-  for (double& b : bars) b = HalfWidth95(b);
-  return bars;
-}
-
-// The noise's bias of a clinical number per frame (the bars' centres are
-// the value minus it), empty where it was not sampled.
-std::vector<double> Biases(const FitAnalysis& analysis,
-                           double ClinicalSummary::*value) {
-  const NumberSd& bias = analysis.noise_bias;
-  if (!bias.computed || bias.clinical.size() != analysis.clinical.size()) {
+// A clinical number per frame from `numbers` (the sds or the noise's
+// biases), empty unless they were computed for every frame
+// (--uncertainty off: never).
+std::vector<double> ComputedColumn(const NumberSd& numbers,
+                                   const FitAnalysis& analysis,
+                                   double ClinicalSummary::*value) {
+  if (!numbers.computed ||
+      numbers.clinical.size() != analysis.clinical.size()) {
     return {};
   }
-  return Column(bias.clinical, value);
+  return Column(numbers.clinical, value);
 }
 
-// A clinical number's 95 % bars on `series`: half-widths and centres.
+// GCS's or GLS's per frame from `numbers`, likewise.
+std::vector<double> ComputedGlobalStrain(const NumberSd& numbers,
+                                         const FitAnalysis& analysis,
+                                         bool circumferential) {
+  std::vector<double> column;
+  if (!numbers.computed || numbers.strain.size() != analysis.strain.size()) {
+    return column;
+  }
+  for (const GlobalStrain& g : numbers.strain) {
+    column.push_back(circumferential ? g.gcs_percent : g.gls_percent);
+  }
+  return column;
+}
+
+std::vector<double> HalfWidths(std::vector<double> sds) {
+  for (double& sd : sds) sd = HalfWidth95(sd);
+  return sds;
+}
+
+// A clinical number's 95 % bars on `series`: half-widths, and centres the
+// value minus its bias.
 void SetBars(const FitAnalysis& analysis, double ClinicalSummary::*value,
              ChartSeries* series) {
-  series->half_width = Bars(analysis, value);
-  series->bias = Biases(analysis, value);
+  series->half_width = HalfWidths(ComputedColumn(analysis.sd, analysis, value));
+  series->bias = ComputedColumn(analysis.noise_bias, analysis, value);
 }
 
 std::string VolumeCharts(const FitAnalysis& analysis, const Axis& axis) {
@@ -158,19 +169,10 @@ std::string StrainCharts(const FitAnalysis& analysis, const Axis& axis) {
                                               : g.level_ell_percent[l]);
       }
     }
-    const std::vector<GlobalStrain>& sd = analysis.sd.strain;
-    if (analysis.sd.computed && sd.size() == analysis.strain.size()) {
-      for (const GlobalStrain& g : sd) {
-        global.half_width.push_back(
-            HalfWidth95(circumferential ? g.gcs_percent : g.gls_percent));
-      }
-    }
-    const std::vector<GlobalStrain>& bias = analysis.noise_bias.strain;
-    if (analysis.noise_bias.computed && bias.size() == analysis.strain.size()) {
-      for (const GlobalStrain& g : bias) {
-        global.bias.push_back(circumferential ? g.gcs_percent : g.gls_percent);
-      }
-    }
+    global.half_width = HalfWidths(
+        ComputedGlobalStrain(analysis.sd, analysis, circumferential));
+    global.bias =
+        ComputedGlobalStrain(analysis.noise_bias, analysis, circumferential);
     chart.series = {global, levels[0], levels[1], levels[2]};
     h << ChartSvg(chart);
   }

@@ -180,13 +180,16 @@ struct Tally {
   int draws = 0, inside_fit = 0, inside_truth = 0, truths = 0;
   double sd = 0.0, error_square = 0.0, error = 0.0, bias = 0.0;
   double uncentred_error = 0.0;  // Of the number itself, not minus its bias.
-  int inside_dense = 0;
+  int dense_draws = 0, inside_dense = 0;  // Where the dense fit measured it.
   double dense_error = 0.0;
   double MeanSd() const { return sd / draws; }
   double RmsError() const { return std::sqrt(error_square / draws); }
   double MeanError() const { return error / draws; }
   double MeanUncentredError() const { return uncentred_error / draws; }
-  double MeanDenseError() const { return dense_error / draws; }
+  double MeanDenseError() const { return dense_error / dense_draws; }
+  double DenseCoverage() const {
+    return inside_dense / static_cast<double>(dense_draws);
+  }
 };
 
 int Seeds() {
@@ -244,7 +247,6 @@ std::vector<std::pair<std::string, Tally>> Calibrate(const Case& c) {
       // A surface has no wall: its thickening and mass read 0 +- 0.
       if (!Measured(got[i].value) || !(got[i].sd > 0.0)) continue;
       if (!Measured(reference[i].value)) continue;
-      if (i >= dense.size() || !Measured(dense[i].value)) continue;
       if (tally.count(got[i].name) == 0) names.push_back(got[i].name);
       Tally& t = tally[got[i].name];
       t.calibrated = got[i].calibrated;
@@ -256,9 +258,12 @@ std::vector<std::pair<std::string, Tally>> Calibrate(const Case& c) {
       t.error_square += error * error;
       t.error += error;
       t.uncentred_error += uncentred[i].value - reference[i].value;
-      const double dense_error = got[i].value - dense[i].value;
-      t.inside_dense += std::abs(dense_error) <= half;
-      t.dense_error += dense_error;
+      if (i < dense.size() && Measured(dense[i].value)) {
+        const double dense_error = got[i].value - dense[i].value;
+        ++t.dense_draws;
+        t.inside_dense += std::abs(dense_error) <= half;
+        t.dense_error += dense_error;
+      }
       if (Measured(got[i].truth)) {
         ++t.truths;
         t.inside_truth += std::abs(got[i].value - got[i].truth) <= half;
@@ -302,8 +307,8 @@ double PrintTable(const std::string& title,
     std::printf("| %s | %s | %.3f | %.4g | %.4g | %.3g | %.3g | %.3f | %.3g | ",
                 name.c_str(), t.calibrated ? "yes" : "",
                 t.inside_fit / double(t.draws), t.MeanSd(), t.RmsError(),
-                t.MeanError(), t.MeanUncentredError(),
-                t.inside_dense / double(t.draws), t.MeanDenseError());
+                t.MeanError(), t.MeanUncentredError(), t.DenseCoverage(),
+                t.MeanDenseError());
     if (t.truths > 0) {
       std::printf("%.3f | %.4g |\n", t.inside_truth / double(t.truths),
                   t.bias / t.truths);
