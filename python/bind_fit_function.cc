@@ -152,7 +152,7 @@ std::shared_ptr<FitResult> FitWithFlags(
     int max_steps, const std::string& damping, const std::string& damping_scale,
     const std::string& jacobian, const std::string& local,
     const std::string& local_grid, double local_stiffness,
-    const std::string& uncertainty) {
+    const std::string& local_transmural, const std::string& uncertainty) {
   FitSettings s;
   s.format = format;
   s.contours = contours;
@@ -184,6 +184,7 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.local = local;
   s.local_grid = local_grid;
   s.local_stiffness = local_stiffness;
+  s.local_transmural = local_transmural;
   s.uncertainty = uncertainty;
   return FitPoints(points, segmentation, labels, s);
 }
@@ -222,6 +223,7 @@ void BindFitFunction(py::module_& m) {
         py::arg("local") = fit_defaults.local,
         py::arg("local_grid") = fit_defaults.local_grid,
         py::arg("local_stiffness") = fit_defaults.local_stiffness,
+        py::arg("local_transmural") = fit_defaults.local_transmural,
         py::arg("uncertainty") = fit_defaults.uncertainty,
         "pfdm.fit's compiled part, its keywords the CLI's strings.  Fits every "
         "frame, as `pfdm fit` does "

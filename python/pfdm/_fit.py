@@ -73,7 +73,8 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         linear_solver="DENSE_SCHUR", time_step=0.0,
         rest_tolerance=1e-6, max_steps=20000, damping="model",
         damping_scale="", jacobian="analytic", local=True,
-        local_grid=(13, 24), local_stiffness=0.02, uncertainty=False):
+        local_grid=(13, 24), local_stiffness=0.02, local_transmural=False,
+        uncertainty=False):
     """Fits every frame, as ``pfdm fit`` does with the flags of the same names.
 
     Parameters
@@ -152,6 +153,10 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         The local field's (rings, sectors).
     local_stiffness : float
         The local field's thin-plate weight.
+    local_transmural : bool
+        A solid's local field varies through the wall (the endocardium's
+        apart from the epicardium's) and its tags' depths are ranked among
+        their neighbours: regional defects through the wall show.
     uncertainty : bool
         Each knot value's standard deviation, from the frame's covariance
         (``write`` puts it in parameters.csv's sd column).
@@ -178,6 +183,8 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         arguments[name] = _number(name, arguments[name], float)
     arguments["contours"] = _names("contours", contours)
     arguments["local"] = _on_off("local", local)
+    arguments["local_transmural"] = _on_off("local_transmural",
+                                            local_transmural)
     arguments["uncertainty"] = _on_off("uncertainty", uncertainty)
     arguments["local_grid"] = _grid(local_grid)
     if isinstance(damping_scale, dict):

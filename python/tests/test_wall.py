@@ -122,3 +122,31 @@ def test_incompressible_holds_the_wall(wall_tags):
     assert all(cost > 0.0 for cost in costs[1:])
     with pytest.raises(pfdm.InputError, match="incompressible"):
         pfdm.fit(str(csv), local=False, incompressible=-1.0)
+
+
+def test_local_transmural_as_a_keyword(wall_tags):
+    """--local_transmural as a keyword: in the settings, and a solid's layers
+    then move apart (its endocardium's Ecc differs from the plain field's);
+    a bad value names the keyword."""
+    folder, csv = wall_tags
+    plain = pfdm.fit(str(csv))
+    layered = pfdm.fit(str(csv), local_transmural=True)
+    assert plain.to_dict()["settings"]["local_transmural"] is False
+    assert layered.to_dict()["settings"]["local_transmural"] is True
+    endo = [region["layers"]["endocardium"]["ecc_percent"][-1]
+            for region in layered.to_dict()["regions"][:16]]
+    endo_plain = [region["layers"]["endocardium"]["ecc_percent"][-1]
+                  for region in plain.to_dict()["regions"][:16]]
+    assert max(abs(a - b) for a, b in zip(endo, endo_plain)) > 0.1
+    # The CLI's flag gives the same fit.
+    code, _, err = run_cli("fit", "--local_transmural", "on", "--points", csv,
+                           "--out", folder / "cli_transmural")
+    assert code == 0, err
+    cli = json.loads((folder / "cli_transmural" / "fit.json").read_text())
+    ours = layered.to_dict()
+    for document in (ours, cli):
+        for frame in document["frames"]:
+            frame.pop("solve_seconds")
+    assert ours == cli
+    with pytest.raises(pfdm.InputError, match="local_transmural"):
+        pfdm.fit(str(csv), local=False, local_transmural=True)

@@ -108,6 +108,9 @@ DEFINE_string(local_grid, kDefaults.local_grid.c_str(),
 DEFINE_double(local_stiffness, kDefaults.local_stiffness,
               "local deformations' membrane and thin-plate weight, relative "
               "to one node's data, 1e-4 to 1e6 (--local off: none)");
+DEFINE_string(local_transmural, kDefaults.local_transmural.c_str(),
+              "a solid's local deformations vary through the wall (the "
+              "endocardium's apart from the epicardium's): on or off");
 DEFINE_string(uncertainty, kDefaults.uncertainty.c_str(),
               "each frame's parameter covariance, a standard deviation per "
               "knot value in parameters.csv: on or off");
@@ -167,6 +170,7 @@ FitSettings FitSettingsFromFlags() {
   s.local = FLAGS_local;
   s.local_grid = FLAGS_local_grid;
   s.local_stiffness = FLAGS_local_stiffness;
+  s.local_transmural = FLAGS_local_transmural;
   s.uncertainty = FLAGS_uncertainty;
   s.vtk_format = FLAGS_vtk_format;
   s.vtk_precision = FLAGS_vtk_precision;

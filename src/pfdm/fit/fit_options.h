@@ -36,6 +36,15 @@ struct LocalOptions {
   // 5) and keeps the normal phantom's segments uniform within 2 points
   // (0.01: 2.1, noise shows).
   double stiffness = 0.02;
+  // A solid's field varies linearly through the wall, d(u, v, w) = S (q +
+  // w q_w) (local_field.h), so that a segment's endocardium can move
+  // unlike its epicardium, and its tags' depths are ranked among their
+  // nearest tags rather than their ring (NeighbourhoodDepths), so that a
+  // segment moving unlike its ring keeps them.  Off by default: the local
+  // ranks are noisier, and on the phantoms' normal walls and biv-me's
+  // contours the ring's ranks and d(u, v) read closer to the truth
+  // (docs/local_deformations.md).
+  bool transmural = false;
 };
 
 // Which wall the points lie on, as the user declares it (--surface): kAuto

@@ -125,6 +125,7 @@ json Settings(const PointSequence& points, const SequenceFit& fit,
       {"local_grid", std::to_string(options.local.rows) + "x" +
                          std::to_string(options.local.cols)},
       {"local_stiffness", options.local.stiffness},
+      {"local_transmural", options.local.transmural},
       {"uncertainty", options.uncertainty}};
   if (!points.contour_types.empty()) {
     settings["contour_types"] = points.contour_types;

@@ -112,6 +112,7 @@ void SetSolverOptions(const FitSettings& s, FitOptions* options) {
 
 void SetLocalOptions(const FitSettings& s, FitOptions* options) {
   options->local.enabled = s.local == "on";
+  options->local.transmural = s.local_transmural == "on";
   const LocalGrid grid = ParseLocalGrid(Clip(s.local_grid));
   options->local.rows = grid.rows;
   options->local.cols = grid.cols;
@@ -173,6 +174,8 @@ void CheckSettingsApply(const FitSettings& s, bool every_solver) {
        "--local on", "--local " + s.local},
       {"local_stiffness", s.local_stiffness != d.local_stiffness,
        s.local == "on", "--local on", "--local " + s.local},
+      {"local_transmural", s.local_transmural != d.local_transmural,
+       s.local == "on", "--local on", "--local " + s.local},
   };
   for (const Use& use : uses) {
     if (use.given && !use.applies) {
@@ -222,6 +225,10 @@ FitOptions OptionsFrom(const FitSettings& s, bool every_solver) {
   SolverFromName(s.solver);
   if (s.local != "on" && s.local != "off") {
     throw InputError("--local must be on or off, got '" + Clip(s.local) + "'");
+  }
+  if (s.local_transmural != "on" && s.local_transmural != "off") {
+    throw InputError("--local_transmural must be on or off, got '" +
+                     Clip(s.local_transmural) + "'");
   }
   if (s.uncertainty != "on" && s.uncertainty != "off") {
     throw InputError("--uncertainty must be on or off, got '" +

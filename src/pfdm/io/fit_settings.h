@@ -57,6 +57,8 @@ struct FitSettings {
   std::string local = FitOptions().local.enabled ? "on" : "off";
   std::string local_grid = "13x24";  // LocalOptions' rows x cols.
   double local_stiffness = FitOptions().local.stiffness;
+  // A solid's field through the wall (LocalOptions::transmural): on or off.
+  std::string local_transmural = FitOptions().local.transmural ? "on" : "off";
   // Each frame's parameter covariance (FitOptions::uncertainty): on or off.
   std::string uncertainty = FitOptions().uncertainty ? "on" : "off";
   // The outputs.

@@ -81,6 +81,9 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   settings.rest_tolerance = 0.01;
   settings.max_steps = 1000000;
   settings.local_stiffness = 1e-4;
+  settings.local_transmural = "on";
+  EXPECT_TRUE(FitOptionsFrom(settings).local.transmural);
+  EXPECT_FALSE(FitOptionsFrom(FitSettings()).local.transmural);
   EXPECT_EQ(FitOptionsFrom(settings).solver.linear_solver, ceres::DENSE_QR);
   EXPECT_EQ(FitOptionsFrom(settings).solver.rest_tolerance, 0.01);
   EXPECT_EQ(FitOptionsFrom(settings).solver.max_steps, 1000000);
@@ -115,6 +118,9 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   s = FitSettings();
   s.local = "yes";
   EXPECT_EQ(ErrorOf(s), "--local must be on or off, got 'yes'");
+  s = FitSettings();
+  s.local_transmural = "1";
+  EXPECT_EQ(ErrorOf(s), "--local_transmural must be on or off, got '1'");
   s = FitSettings();
   s.local_grid = "9x100";
   EXPECT_EQ(ErrorOf(s),
@@ -228,6 +234,11 @@ TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
          s->local_stiffness = 1.0;
        },
        "--local_stiffness applies to --local on, not --local off"},
+      {[](FitSettings* s) {
+         s->local = "off";
+         s->local_transmural = "on";
+       },
+       "--local_transmural applies to --local on, not --local off"},
   };
   for (const Case& c : cases) {
     FitSettings s;

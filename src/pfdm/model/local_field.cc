@@ -64,15 +64,32 @@ ShapeWeights ShapeAt(const LocalGrid& grid, double u, double v) {
   return shape;
 }
 
-LocalField LocalField::Zero(const LocalGrid& grid) {
+LocalField LocalField::Zero(const LocalGrid& grid, bool transmural) {
   LocalField field;
   field.grid = grid;
   field.values.assign(3 * grid.NumNodes(), 0.0);
+  if (transmural) field.slope = field.values;
   return field;
 }
 
-Eigen::Vector3d LocalField::Displacement(double u, double v) const {
-  return LocalDisplacement(*this, u, v);
+Eigen::Vector3d LocalField::Displacement(double u, double v, double w) const {
+  return LocalDisplacement(*this, u, v, w);
+}
+
+std::vector<double> LocalField::Coefficients() const {
+  std::vector<double> all = values;
+  all.insert(all.end(), slope.begin(), slope.end());
+  return all;
+}
+
+void LocalField::AddCoefficients(const std::vector<double>& change) {
+  for (size_t i = 0; i < change.size(); ++i) {
+    if (i < values.size()) {
+      values[i] += change[i];
+    } else if (i - values.size() < slope.size()) {
+      slope[i - values.size()] += change[i];
+    }
+  }
 }
 
 }  // namespace pfdm

@@ -8,9 +8,12 @@
 // pole, is ONE node: every v meets there, so the surface stays closed.  The
 // elements are bilinear in (u, v) between rows 1 .. rows - 1, and in the
 // first row the pole's value blends linearly in u with the bilinear ring of
-// row 1: a point touches 4 nodes (pole row: the pole and 2).  d is the same
-// for every transmural position: it moves the mid-wall and any surface
-// offset from it alike.
+// row 1: a point touches 4 nodes (pole row: the pole and 2).  In a solid
+// the field may vary linearly through the wall, d(u, v, w) = S (q + w q_w)
+// with w in [-1, 1] (transmural.h): q moves the mid-wall, q_w half the
+// epicardium's displacement less the endocardium's, so that a segment's
+// inner layers can contract unlike its outer ones.  Without q_w (a surface,
+// or a solid fitted so) d moves every layer alike.
 #ifndef PFDM_MODEL_LOCAL_FIELD_H_
 #define PFDM_MODEL_LOCAL_FIELD_H_
 
@@ -74,19 +77,26 @@ ShapeWeights ShapeAt(const LocalGrid& grid, double u, double v);
 
 struct LocalField {
   LocalGrid grid;
-  std::vector<double> values;  // 3 per node, model frame, mm.
+  std::vector<double> values;  // q: 3 per node, model frame, mm.
+  // q_w, the change per unit w: 3 per node, or empty (no transmural part).
+  std::vector<double> slope;
 
   bool empty() const { return values.empty(); }
-  // A field of zeros on `grid`.
-  static LocalField Zero(const LocalGrid& grid);
-  Eigen::Vector3d Displacement(double u, double v) const;
+  bool transmural() const { return !slope.empty(); }
+  // A field of zeros on `grid` (with a zero slope when `transmural`).
+  static LocalField Zero(const LocalGrid& grid, bool transmural = false);
+  Eigen::Vector3d Displacement(double u, double v, double w = 0.0) const;
+  // q then q_w in one vector, as the noise draws perturb them; and the
+  // inverse, adding such a vector (a shorter one adds to q alone).
+  std::vector<double> Coefficients() const;
+  void AddCoefficients(const std::vector<double>& change);
 };
 
-// d(u, v) for any scalar type (a Jet when u and v are differentiated, as the
-// closest-point search does); zero for an empty field.
+// d(u, v, w) for any scalar type (a Jet when u and v are differentiated, as
+// the closest-point search does); zero for an empty field.
 template <typename T>
 Eigen::Matrix<T, 3, 1> LocalDisplacement(const LocalField& field, const T& u,
-                                         const T& v) {
+                                         const T& v, double w = 0.0) {
   Eigen::Matrix<T, 3, 1> d(T(0.0), T(0.0), T(0.0));
   if (field.empty()) return d;
   double u_value, v_value;
@@ -105,9 +115,14 @@ Eigen::Matrix<T, 3, 1> LocalDisplacement(const LocalField& field, const T& u,
               : u_value <= grid.u_min ? T(0.0)
                                       : (u - e.u0) / e.du;
   const T t = (v - e.v0) / e.dv;
+  const bool layered = field.transmural() && w != 0.0;
   auto node = [&](int row, int col) -> Eigen::Matrix<T, 3, 1> {
-    const double* q = &field.values[3 * grid.Node(row, col)];
-    return Eigen::Matrix<T, 3, 1>(T(q[0]), T(q[1]), T(q[2]));
+    const int at = 3 * grid.Node(row, col);
+    const double* q = &field.values[at];
+    if (!layered) return Eigen::Matrix<T, 3, 1>(T(q[0]), T(q[1]), T(q[2]));
+    const double* q_w = &field.slope[at];
+    return Eigen::Matrix<T, 3, 1>(T(q[0] + w * q_w[0]), T(q[1] + w * q_w[1]),
+                                  T(q[2] + w * q_w[2]));
   };
   const Eigen::Matrix<T, 3, 1> upper =
       (T(1.0) - t) * node(e.row + 1, e.col) + t * node(e.row + 1, e.col + 1);

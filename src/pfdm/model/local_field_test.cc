@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "ceres/jet.h"
 #include "gtest/gtest.h"
@@ -166,6 +167,56 @@ TEST(LocalFieldTest, ModelPointsCarryTheField) {
   EXPECT_LT(
       (model.WorldPoint(-0.3, 1.1) - before - model.Rotation() * d).norm(),
       1e-12);
+}
+
+// d(u, v, w) = S (q + w q_w): the slope's field, measured as the change
+// from w = 0 to w = 1 (and linear: half that at w = 0.5, its negative at
+// w = -1), in doubles and Jets alike; w = 0 is the field without it.
+TEST(LocalFieldTest, ATransmuralFieldIsLinearInW) {
+  const LocalGrid grid = Grid(5, 8);
+  LocalField field = Numbered(grid);
+  const LocalField plain = field;
+  field.slope.assign(field.values.size(), 0.0);
+  for (size_t i = 0; i < field.slope.size(); ++i) {
+    field.slope[i] = 0.3 * std::cos(0.7 * i);
+  }
+  LocalField slope_only = LocalField::Zero(grid);
+  slope_only.values = field.slope;
+  EXPECT_TRUE(field.transmural());
+  EXPECT_FALSE(plain.transmural());
+  for (double u : {-kPi / 2, -0.9, 0.2}) {
+    for (double v : {-kPi, 0.4, 2.9}) {
+      const Eigen::Vector3d mid = field.Displacement(u, v);
+      EXPECT_LT((mid - plain.Displacement(u, v)).norm(), 1e-12);
+      const Eigen::Vector3d per_w = slope_only.Displacement(u, v);
+      EXPECT_LT((field.Displacement(u, v, 1.0) - mid - per_w).norm(), 1e-12);
+      EXPECT_LT((field.Displacement(u, v, 0.5) - mid - 0.5 * per_w).norm(),
+                1e-12);
+      EXPECT_LT((field.Displacement(u, v, -1.0) - mid + per_w).norm(), 1e-12);
+      using Jet2 = ceres::Jet<double, 2>;
+      const Eigen::Matrix<Jet2, 3, 1> jet =
+          LocalDisplacement(field, Jet2(u, 0), Jet2(v, 1), -0.4);
+      const Eigen::Vector3d value = field.Displacement(u, v, -0.4);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(jet[k].a, value[k], 1e-12);
+    }
+  }
+}
+
+// The noise draws perturb q and q_w as one vector: values first, then the
+// slope; a shorter vector moves q alone.
+TEST(LocalFieldTest, CoefficientsAreTheValuesThenTheSlope) {
+  const LocalGrid grid = Grid(4, 6);
+  LocalField field = LocalField::Zero(grid, /*transmural=*/true);
+  ASSERT_EQ(field.slope.size(), field.values.size());
+  std::vector<double> change(2 * field.values.size());
+  for (size_t i = 0; i < change.size(); ++i) change[i] = i + 1.0;
+  field.AddCoefficients(change);
+  EXPECT_EQ(field.Coefficients(), change);
+  EXPECT_EQ(field.slope.front(), field.values.size() + 1.0);
+  LocalField plain = LocalField::Zero(grid);
+  plain.AddCoefficients(change);
+  EXPECT_EQ(plain.Coefficients().size(), plain.values.size());
+  EXPECT_EQ(plain.values.back(), static_cast<double>(plain.values.size()));
 }
 
 }  // namespace

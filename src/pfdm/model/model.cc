@@ -130,7 +130,7 @@ Eigen::Vector3d Model::WorldPoint(double u, double v, double w) const {
 Eigen::Vector3d Model::ModelPointWith(const FunctionValues& f, double u,
                                       double v, double w) const {
   return ReferenceShape(f.data(), MakeAngles(u, v), UnitExponents(), w) +
-         state.local.Displacement(u, v);
+         state.local.Displacement(u, v, w);
 }
 
 Eigen::Vector3d Model::WorldPointWith(const FunctionValues& f, double u,

@@ -31,16 +31,17 @@ void WorldPoints(const Model& model, size_t n, const double* u, const double* v,
       angles[i] = {uv_cosines[2 * i], uv_sines[2 * i], uv_cosines[2 * i + 1],
                    uv_sines[2 * i + 1]};
     }
-    ShapesOfBatch(
-        count, f, angles, point_w, unit_exponents, false,
-        [&](int i, const Eigen::Vector3d& s, const ShapeJacobian&) {
-          Eigen::Vector3d p = s;
-          if (local) {
-            p += model.state.local.Displacement(uv[2 * i], uv[2 * i + 1]);
-          }
-          out[first + i] = WorldFromModel(model.state.center.data(),
-                                          model.state.quaternion.data(), p);
-        });
+    ShapesOfBatch(count, f, angles, point_w, unit_exponents, false,
+                  [&](int i, const Eigen::Vector3d& s, const ShapeJacobian&) {
+                    Eigen::Vector3d p = s;
+                    if (local) {
+                      p += model.state.local.Displacement(
+                          uv[2 * i], uv[2 * i + 1], point_w[i]);
+                    }
+                    out[first + i] =
+                        WorldFromModel(model.state.center.data(),
+                                       model.state.quaternion.data(), p);
+                  });
   }
 }
 

@@ -50,12 +50,18 @@ double DesignedRotationDeg(const LvDeformation& design, double h) {
          (design.base_rotation_deg - design.apex_rotation_deg) * h;
 }
 
-double LesionWeight(const LvDeformation& design, double h, double lambda_deg) {
+double LesionWeight(const LvDeformation& design, double h, double lambda_deg,
+                    double w) {
   // Longitude from the lesion's centre, in [-180, 180).
   const double from = lambda_deg - design.lesion_center_deg;
   const double off = from - 360.0 * std::floor((from + 180.0) / 360.0);
+  const double depth =
+      design.lesion_outer_w >= 1.0
+          ? 1.0
+          : SmoothStep((design.lesion_outer_w - w) / design.lesion_edge_w +
+                       0.5);
   return Window(h, 1.0 / 3.0, 2.0 / 3.0, design.lesion_edge_h) *
-         Window(off, -30.0, 30.0, design.lesion_edge_deg);
+         Window(off, -30.0, 30.0, design.lesion_edge_deg) * depth;
 }
 
 LvMaterialPoint MaterialPointAt(const LvShape& shape,
@@ -110,8 +116,8 @@ Eigen::Vector3d DeformedBodyPoint(const LvDeformation& design,
   if (design.lesion) {
     // Longitude from -x, counter-clockwise about +z.
     const double lambda_deg = (point.phi + kPi) / kRadians;
-    contraction *=
-        1.0 - design.lesion_loss * LesionWeight(design, point.h, lambda_deg);
+    contraction *= 1.0 - design.lesion_loss *
+                             LesionWeight(design, point.h, lambda_deg, point.w);
   }
   const double radius = (1.0 - contraction) * point.radius;
   const double turned =

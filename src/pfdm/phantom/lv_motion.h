@@ -18,7 +18,9 @@
 // lesion_center_deg (default [60, 120] degrees: AHA segment 8, "mid 2").
 // g is 1 inside and falls to 0 at the segment's edges over lesion_edge_h
 // of height and lesion_edge_deg of longitude (smoothstep), so no other
-// segment is touched.
+// segment is touched.  Through the wall the lesion reaches from the
+// endocardium (w = -1) to lesion_outer_w: 1 transmural, 0 the inner half
+// (subendocardial, its edge smooth over lesion_edge_w about w = 0).
 #ifndef PFDM_PHANTOM_LV_MOTION_H_
 #define PFDM_PHANTOM_LV_MOTION_H_
 
@@ -52,6 +54,8 @@ struct LvDeformation {
   // The lesion spans 60 degrees of longitude about this one (90: segment
   // 8's middle); a test may move it to where a fit's sectors put segment 8.
   double lesion_center_deg = 90.0;
+  double lesion_outer_w = 1.0;
+  double lesion_edge_w = 0.4;
 };
 
 // How the contraction varies across the wall.  kDesigned: c(h, w) above, a
@@ -86,8 +90,10 @@ double RadialFactor(const LvDeformation& design, LvThickeningLaw law,
 double DesignedRadialContraction(const LvDeformation& design, double h,
                                  double w);
 double DesignedRotationDeg(const LvDeformation& design, double h);
-// The lesion's weight g(h, lambda) in [0, 1], lambda in degrees.
-double LesionWeight(const LvDeformation& design, double h, double lambda_deg);
+// The lesion's weight g(h, lambda, w) in [0, 1], lambda in degrees (the
+// endocardium's when w is left out).
+double LesionWeight(const LvDeformation& design, double h, double lambda_deg,
+                    double w = -1.0);
 
 // A material point's labels, from its ED body position X.
 struct LvMaterialPoint {

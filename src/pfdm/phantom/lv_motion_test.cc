@@ -80,6 +80,22 @@ TEST(LvPhantomMotionTest, LesionCoversMidSegmentTwoOnly) {
   }
 }
 
+// A subendocardial lesion (outer w 0): whole at the endocardium, half at
+// the mid-wall (its edge's middle), none at the epicardium; transmural
+// (the default) whole at every depth.
+TEST(LvPhantomMotionTest, ASubendocardialLesionHoldsTheInnerHalf) {
+  LvDeformation design;
+  for (double w : {-1.0, 0.0, 1.0}) {
+    EXPECT_NEAR(LesionWeight(design, 0.5, 90.0, w), 1.0, 1e-12) << w;
+  }
+  design.lesion_outer_w = 0.0;
+  EXPECT_NEAR(LesionWeight(design, 0.5, 90.0, -1.0), 1.0, 1e-12);
+  EXPECT_NEAR(LesionWeight(design, 0.5, 90.0, -0.2), 1.0, 1e-12);
+  EXPECT_NEAR(LesionWeight(design, 0.5, 90.0, 0.0), 0.5, 1e-12);
+  EXPECT_NEAR(LesionWeight(design, 0.5, 90.0, 0.2), 0.0, 1e-12);
+  EXPECT_NEAR(LesionWeight(design, 0.5, 90.0, 1.0), 0.0, 1e-12);
+}
+
 TEST(LvPhantomMotionTest, ScenarioFrames) {
   LvFrameMotion last = ScenarioMotion(LvKinematics::kSystole, 4, 5, true);
   EXPECT_EQ(last.progress, 1.0);

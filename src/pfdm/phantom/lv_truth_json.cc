@@ -101,7 +101,9 @@ std::string LvTruthJson(const LvPhantom& phantom) {
                     {"lesion_loss", design.lesion_loss},
                     {"lesion_edge_h", design.lesion_edge_h},
                     {"lesion_edge_deg", design.lesion_edge_deg},
-                    {"lesion_center_deg", design.lesion_center_deg}};
+                    {"lesion_center_deg", design.lesion_center_deg},
+                    {"lesion_outer_w", design.lesion_outer_w},
+                    {"lesion_edge_w", design.lesion_edge_w}};
   json["ring_heights"] = LvRingHeights();
   const Eigen::Vector3d& a = phantom.rv_anterior;
   const Eigen::Vector3d& b = phantom.rv_inferior;

@@ -72,10 +72,7 @@ std::vector<Eigen::VectorXd> MeasureChanged(
 // `model` with `draw` added to its local field's values.
 Model WithDraw(const Model& model, const std::vector<double>& draw) {
   Model out = model;
-  std::vector<double>& values = out.state.local.values;
-  for (size_t i = 0; i < values.size() && i < draw.size(); ++i) {
-    values[i] += draw[i];
-  }
+  out.state.local.AddCoefficients(draw);
   return out;
 }
 

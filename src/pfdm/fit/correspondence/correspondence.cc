@@ -251,7 +251,7 @@ Eigen::Matrix<T, 3, 1> WorldPointAt(const Model& model, const T& u, const T& v,
       center, quaternion,
       Eigen::Matrix<T, 3, 1>(
           ReferenceShape(f, MakeAngles(u, v), model.UnitExponents(), w) +
-          LocalDisplacement(model.state.local, u, v)));
+          LocalDisplacement(model.state.local, u, v, w)));
 }
 
 template Eigen::Vector3d WorldPointAt(const Model&, const double&,

@@ -9,22 +9,30 @@
 namespace pfdm {
 namespace {
 
-// QuantileDepths of the points, among those within the wall widened by
-// outlier_band_mm when that is positive.
+// The points' depth ranks (QuantileDepths' bands or NeighbourhoodDepths),
+// among those within the wall widened by the outlier band when that is
+// positive.
 std::vector<double> RankedDepths(const Model& model,
                                  const std::vector<Eigen::Vector3d>& points,
                                  const std::vector<MaterialPoint>& material,
-                                 const std::vector<double>& u,
-                                 double outlier_band_mm) {
+                                 const DepthRanking& ranking) {
+  std::vector<Eigen::Vector3d> midwall;
   const std::vector<double> distances =
-      MidwallDistances(model, points, material);
-  if (!(outlier_band_mm > 0.0)) return QuantileDepths(u, distances);
-  return QuantileDepths(
-      u, distances, WithinWall(model, material, distances, outlier_band_mm));
+      MidwallDistances(model, points, material, &midwall);
+  const std::vector<bool> ranked =
+      ranking.outlier_band_mm > 0.0
+          ? WithinWall(model, material, distances, ranking.outlier_band_mm)
+          : std::vector<bool>(points.size(), true);
+  if (ranking.neighbourhoods) {
+    return NeighbourhoodDepths(midwall, distances, ranked);
+  }
+  std::vector<double> u;
+  for (const MaterialPoint& m : material) u.push_back(m.u);
+  return QuantileDepths(u, distances, ranked);
 }
 
 // In a solid, each listed point's surface: its contour's wall (layer_w), or
-// for a tag whose depth is assigned, its QuantileDepths rank among the
+// for a tag whose depth is assigned, its RankedDepths rank among the
 // listed tags; 0, the mid-wall, for the rest.
 std::vector<double> SurfacesOf(const Model& model,
                                const std::vector<Eigen::Vector3d>& subset,
@@ -32,22 +40,20 @@ std::vector<double> SurfacesOf(const Model& model,
                                const std::vector<double>& layer_w,
                                const std::vector<bool>& assign_depth,
                                const std::vector<MaterialPoint>& closest,
-                               double outlier_band_mm) {
+                               const DepthRanking& ranking) {
   std::vector<double> surfaces(which.size(), 0.0);
   std::vector<size_t> tags;
   std::vector<Eigen::Vector3d> tag_points;
   std::vector<MaterialPoint> tag_material;
-  std::vector<double> tag_u;
   for (size_t j = 0; j < which.size(); ++j) {
     surfaces[j] = layer_w[which[j]];
     if (!assign_depth[which[j]]) continue;
     tags.push_back(j);
     tag_points.push_back(subset[j]);
     tag_material.push_back(closest[j]);
-    tag_u.push_back(closest[j].u);
   }
   const std::vector<double> depths =
-      RankedDepths(model, tag_points, tag_material, tag_u, outlier_band_mm);
+      RankedDepths(model, tag_points, tag_material, ranking);
   for (size_t t = 0; t < tags.size(); ++t) surfaces[tags[t]] = depths[t];
   return surfaces;
 }
@@ -111,8 +117,8 @@ void UpdateClosest(const Model& model,
                    const std::vector<bool>& assign_depth, bool warm,
                    std::vector<MaterialPoint>* material,
                    std::vector<Eigen::Vector3d>* normals,
-                   std::vector<Eigen::Vector3d>* found, double outlier_band_mm,
-                   SurfaceGrid* grid) {
+                   std::vector<Eigen::Vector3d>* found,
+                   const DepthRanking& ranking, SurfaceGrid* grid) {
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
   // One grid for the mid-wall search and, in a solid, the walls' after it:
@@ -133,7 +139,7 @@ void UpdateClosest(const Model& model,
       *grid, model, subset, correspondence, found, &found_normals);
   if (model.config.Solid()) {
     const std::vector<double> surfaces = SurfacesOf(
-        model, subset, which, layer_w, assign_depth, closest, outlier_band_mm);
+        model, subset, which, layer_w, assign_depth, closest, ranking);
     RefineOnSurfaces(*grid, model, subset, which, surfaces, correspondence,
                      warm, *material, &closest, found, &found_normals);
   }
@@ -149,17 +155,15 @@ double RerankDepths(const Model& model,
                     const std::vector<Eigen::Vector3d>& points,
                     const std::vector<size_t>& which,
                     std::vector<MaterialPoint>* material,
-                    double outlier_band_mm) {
+                    const DepthRanking& ranking) {
   std::vector<Eigen::Vector3d> subset;
   std::vector<MaterialPoint> subset_material;
-  std::vector<double> u;
   for (size_t i : which) {
     subset.push_back(points[i]);
     subset_material.push_back((*material)[i]);
-    u.push_back((*material)[i].u);
   }
   const std::vector<double> depths =
-      RankedDepths(model, subset, subset_material, u, outlier_band_mm);
+      RankedDepths(model, subset, subset_material, ranking);
   double moved = 0.0;
   for (size_t j = 0; j < which.size(); ++j) {
     MaterialPoint& m = (*material)[which[j]];

@@ -23,27 +23,34 @@ std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
 double MaxDistance(const std::vector<Eigen::Vector3d>& a,
                    const std::vector<Eigen::Vector3d>& b);
 
+// How tags through a wall get their depth w (transmural.h): ranked in their
+// band of latitude (QuantileDepths), or among their nearest tags
+// (NeighbourhoodDepths: a solid with a transmural local field, where a
+// segment may move unlike its ring); with a robust loss, only the tags
+// within the wall widened by outlier_band_mm (WithinWall) are ranked.
+struct DepthRanking {
+  double outlier_band_mm = 0.0;  // 0: every tag ranked.
+  bool neighbourhoods = false;
+};
+
 // Fills material[i] for the listed points with their closest material
 // points, normals[i] with the normals they pull along (zero where they do
 // not: PullsAlongNormal) and found[j] with their model points, in the
 // listed order.  In a solid, a point is sought on its surface: layer_w[i]
 // for a contour of one wall, or, when depths are assigned (frame 0's tags),
-// QuantileDepths' w, among the tags within the wall widened by
-// outlier_band_mm when that is positive (a robust loss: WithinWall).
+// their ranked depth (DepthRanking).
 // `warm` starts each search from the point's current material point.
 // `grid` (may be null: one is built for the search) follows `model` and
 // keeps its tree for the next search (SurfaceGrid::Follow).
-void UpdateClosest(const Model& model,
-                   const std::vector<Eigen::Vector3d>& points,
-                   const std::vector<size_t>& which, int num_threads,
-                   const std::vector<double>& layer_w,
-                   const std::vector<bool>& assign_depth, bool warm,
-                   std::vector<MaterialPoint>* material,
-                   std::vector<Eigen::Vector3d>* normals,
-                   std::vector<Eigen::Vector3d>* found,
-                   double outlier_band_mm = 0.0, SurfaceGrid* grid = nullptr);
+void UpdateClosest(
+    const Model& model, const std::vector<Eigen::Vector3d>& points,
+    const std::vector<size_t>& which, int num_threads,
+    const std::vector<double>& layer_w, const std::vector<bool>& assign_depth,
+    bool warm, std::vector<MaterialPoint>* material,
+    std::vector<Eigen::Vector3d>* normals, std::vector<Eigen::Vector3d>* found,
+    const DepthRanking& ranking = DepthRanking(), SurfaceGrid* grid = nullptr);
 
-// Sets the listed points' w to their QuantileDepths on `model` and returns
+// Sets the listed points' w to their ranked depths on `model` and returns
 // how far (mm) the farthest one's model point moved.  Why each frame ranks
 // its tags afresh rather than keeping frame 0's w: a w read from noisy
 // distances regresses every later frame's thickness toward zero (errors in
@@ -51,12 +58,12 @@ void UpdateClosest(const Model& model,
 // 0's own h comes out inflated by as much; ranked in every frame, h is
 // biased alike in all of them and the thickening (a ratio) is not.  A tag's
 // place in the order across the wall is material; its rank changes only by
-// noise.  outlier_band_mm as for UpdateClosest.
+// noise.
 double RerankDepths(const Model& model,
                     const std::vector<Eigen::Vector3d>& points,
                     const std::vector<size_t>& which,
                     std::vector<MaterialPoint>* material,
-                    double outlier_band_mm = 0.0);
+                    const DepthRanking& ranking = DepthRanking());
 
 }  // namespace pfdm
 

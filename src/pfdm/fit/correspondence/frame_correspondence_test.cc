@@ -142,7 +142,7 @@ TEST(FrameCorrespondenceTest, RanksLeaveOutTagsOutsideTheWall) {
     }
   }
   EXPECT_NEAR(outermost, 1.0 - 3.0 / kMinBand, 1e-9);
-  RerankDepths(model, points, which, &material, 1.0);
+  RerankDepths(model, points, which, &material, DepthRanking{1.0});
   for (size_t i = 0; i < points.size(); ++i) {
     const double expected = std::abs(depth[i]) < 1.0 ? depth[i]
                             : depth[i] < 0.0         ? -1.0

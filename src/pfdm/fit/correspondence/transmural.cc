@@ -221,6 +221,43 @@ std::vector<double> QuantileDepths(const std::vector<double>& u,
   return depths;
 }
 
+std::vector<double> NeighbourhoodDepths(
+    const std::vector<Eigen::Vector3d>& midwall_points,
+    const std::vector<double>& distances, const std::vector<bool>& ranked) {
+  std::vector<double> depths(distances.size(), 0.0);
+  std::vector<size_t> members;
+  PointCloud cloud;
+  for (size_t i = 0; i < distances.size(); ++i) {
+    if (ranked[i]) {
+      members.push_back(i);
+      cloud.points.push_back(midwall_points[i]);
+    } else {
+      depths[i] = distances[i] < 0.0 ? -1.0 : 1.0;
+    }
+  }
+  if (members.empty()) return depths;
+  PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  const size_t wanted = std::min(
+      members.size(),
+      std::max<size_t>(kMinBand, members.size() / kDepthNeighbourhoods));
+  std::vector<unsigned int> nearest(wanted);
+  std::vector<double> distance_squared(wanted);
+  for (size_t i : members) {
+    const size_t found =
+        tree.knnSearch(midwall_points[i].data(), wanted, nearest.data(),
+                       distance_squared.data());
+    // Its rank among them, ties (itself one) counted half.
+    double below = 0.0;
+    for (size_t k = 0; k < found; ++k) {
+      const double d = distances[members[nearest[k]]];
+      below += d < distances[i] ? 1.0 : d == distances[i] ? 0.5 : 0.0;
+    }
+    depths[i] = 2.0 * below / static_cast<double>(found) - 1.0;
+  }
+  return depths;
+}
+
 std::vector<bool> InsideTheWall(const std::vector<double>& u,
                                 const std::vector<double>& distances) {
   std::vector<bool> inside(u.size(), true);

@@ -120,6 +120,21 @@ std::vector<double> QuantileDepths(const std::vector<double>& u,
                                    const std::vector<double>& distances,
                                    const std::vector<bool>& ranked);
 
+// The same ranks taken among each tag's nearest ranked tags along the
+// mid-wall (midwall_points: MidwallDistances'), kDepthNeighbourhoods'
+// share of them and at least kMinBand, instead of its band of latitude.
+// Why: a band is a whole ring, so where one sector of it moves unlike the
+// rest (a hypokinetic segment stays out while the ring contracts) its tags
+// took the band's outer ranks, the depth absorbed the sector's motion and
+// the local field saw none (the LV phantom's lesion through the wall read
+// 20.6 % radial contraction, as its neighbours, against 15.9 % true).  A
+// neighbourhood moves as one; its ranks hold where the wall's centre and
+// thickness vary from one segment to the next.
+constexpr size_t kDepthNeighbourhoods = 128;
+std::vector<double> NeighbourhoodDepths(
+    const std::vector<Eigen::Vector3d>& midwall_points,
+    const std::vector<double>& distances, const std::vector<bool>& ranked);
+
 // Whether each distance (MidwallDistances') lies within the wall of the
 // model (a solid) at its material point's (u, v), widened by band_mm on
 // either side.

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "Eigen/Cholesky"
 #include "pfdm/util/band_cholesky.h"
@@ -182,25 +183,8 @@ double Cost(const LocalDirectData& data, const LocalRegularizer& regularizer,
         normal.isZero(0.0) ? r.squaredNorm() : std::pow(r.dot(normal), 2);
     sum += Weight(data, i) * squared;
   }
-  for (const NodeDifference& term : regularizer.differences) {
-    Eigen::RowVector3d r = Eigen::RowVector3d::Zero();
-    for (size_t k = 0; k < term.nodes.size(); ++k) {
-      r += term.coefficients[k] * q.row(term.nodes[k]);
-    }
-    sum += term.sqrt_weight * term.sqrt_weight * r.squaredNorm();
-  }
-  for (const RingMean& ring : regularizer.rings) {
-    Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-    double radial = 0.0, tangential = 0.0;
-    for (size_t k = 0; k < ring.nodes.size(); ++k) {
-      mean += q.row(ring.nodes[k]);
-      radial += q.row(ring.nodes[k]).dot(ring.radial[k]);
-      tangential += q.row(ring.nodes[k]).dot(ring.tangential[k]);
-    }
-    sum += ring.scale * ring.scale *
-           (mean.squaredNorm() + radial * radial + tangential * tangential);
-  }
-  return 0.5 * sum;
+  const std::vector<double> values(q.data(), q.data() + q.size());
+  return 0.5 * sum + RegularizerCost(regularizer, values);
 }
 
 // |A q - b|, the cost's gradient.
@@ -360,26 +344,41 @@ LocalDirectSolver::~LocalDirectSolver() = default;
 LocalDirectSolver::LocalDirectSolver(LocalDirectSolver&&) = default;
 LocalDirectSolver& LocalDirectSolver::operator=(LocalDirectSolver&&) = default;
 
+const LocalDirectSolver::Factor* LocalDirectSolver::FactorFor(
+    const LocalDirectData& data, const LocalRegularizer& regularizer,
+    int num_nodes) {
+  constexpr size_t kKept = 2;
+  std::vector<double> signature = Signature(data, regularizer, num_nodes);
+  for (size_t i = 0; i < factors_.size(); ++i) {
+    if (factors_[i]->signature == signature) {
+      std::rotate(factors_.begin(), factors_.begin() + i,
+                  factors_.begin() + i + 1);
+      return factors_.front().get();
+    }
+  }
+  auto factor = std::make_unique<Factor>();
+  factor->k = ScalarMatrix(data, regularizer, num_nodes);
+  if (!factor->cholesky.Compute(factor->k)) return nullptr;
+  factor->signature = std::move(signature);
+  factors_.insert(factors_.begin(), std::move(factor));
+  if (factors_.size() > kKept) factors_.pop_back();
+  ++factorizations_;
+  return factors_.front().get();
+}
+
 bool LocalDirectSolver::Solve(const LocalDirectData& data,
                               const LocalRegularizer& regularizer,
                               LocalField* field, SolverReport* report) {
   if (HasNormals(data)) return SolveWhole(data, regularizer, field, report);
   const auto start = Clock::now();
   const int num_nodes = field->grid.NumNodes();
-  std::vector<double> signature = Signature(data, regularizer, num_nodes);
-  if (factor_ == nullptr || factor_->signature != signature) {
-    auto factor = std::make_unique<Factor>();
-    factor->k = ScalarMatrix(data, regularizer, num_nodes);
-    if (!factor->cholesky.Compute(factor->k)) return false;
-    factor->signature = std::move(signature);
-    factor_ = std::move(factor);
-    ++factorizations_;
-  }
+  const Factor* factor = FactorFor(data, regularizer, num_nodes);
+  if (factor == nullptr) return false;
   const RingColumns u = MakeRingColumns(regularizer, num_nodes);
   const NodeMatrix b = RightHandSide(data, num_nodes);
   Eigen::Map<NodeMatrix> q(field->values.data(), num_nodes, 3);
   const double cost_before = Cost(data, regularizer, q);
-  const double gradient_before = GradientNorm(factor_->k, u, b, q);
+  const double gradient_before = GradientNorm(factor->k, u, b, q);
 
   // Woodbury: b and the rings' columns through K in one solve (the rings'
   // directions lie in the model's xy plane: no z columns), then the
@@ -390,7 +389,7 @@ bool LocalDirectSolver::Solve(const LocalDirectData& data,
   rhs.leftCols<3>() = b;
   for (int c = 0; c < coordinates; ++c) rhs.middleCols(3 + c * m, m) = u[c];
   const BandCholesky::RowMajorMatrix solved =
-      factor_->cholesky.Solve(std::move(rhs));
+      factor->cholesky.Solve(std::move(rhs));
   Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(m, m);
   Eigen::VectorXd along = Eigen::VectorXd::Zero(m);
   for (int c = 0; c < coordinates; ++c) {
@@ -404,7 +403,7 @@ bool LocalDirectSolver::Solve(const LocalDirectData& data,
   }
 
   const SolverTracePoint after{1, 0.0, 0.0, Cost(data, regularizer, q),
-                               GradientNorm(factor_->k, u, b, q)};
+                               GradientNorm(factor->k, u, b, q)};
   FillReport(SecondsSince(start), {0, 0.0, 0.0, cost_before, gradient_before},
              after, report);
   return true;

@@ -19,7 +19,8 @@
 // depends only on the points' nodes and shape weights, their loss weights
 // and the stiffness terms, not on the frame: a solver kept across frames
 // factorizes it again only when one of those changed (tracked frames keep
-// frame 0's material points).
+// frame 0's material points).  It keeps the last two K: a solid's
+// transmural field solves two parts in turn (local_fit.h), each its own K.
 //
 // Points with a normal make the data's Gram blocks w s_a s_b m m^T, no
 // multiple of the identity: then the whole A (3 unknowns per node, node by
@@ -69,7 +70,12 @@ class LocalDirectSolver {
 
  private:
   struct Factor;
-  std::unique_ptr<Factor> factor_;
+  // The factor of this K, made (and kept, the older of two dropped) when
+  // neither kept one is; null when K is not positive definite.
+  const Factor* FactorFor(const LocalDirectData& data,
+                          const LocalRegularizer& regularizer, int num_nodes);
+
+  std::vector<std::unique_ptr<Factor>> factors_;  // Most recent first.
   int factorizations_ = 0;
 };
 

@@ -20,9 +20,16 @@ namespace {
 constexpr int kMaxReweightings = 10;
 constexpr double kReweightTolerance = 0.01;
 
+// A solid's two parts are solved in turn until a pass moves no nodal value
+// by this much (mm), or kMaxPasses passes.
+constexpr double kPassTolerance = 1e-4;
+constexpr int kMaxPasses = 8;
+
 // The local field's data: each point's rows at its element
 // (LocalPointRows), scaled by the square root of its weight when the loss
-// weighs the points.
+// weighs the points.  For one part of a solid's field (SolveParts) each
+// point's shape weights are scaled by its share of that part and the other
+// part's displacement is held in its global point.
 class LocalData {
  public:
   LocalData(const std::vector<Eigen::Vector3d>& points,
@@ -41,23 +48,44 @@ class LocalData {
   LocalElement Element(size_t i) const {
     return ElementAt(grid_, material_[i].u, material_[i].v);
   }
-  ShapeWeights Shape(size_t i) const {
+  // Point i's shape weights on the whole field.
+  ShapeWeights BareShape(size_t i) const {
     return ShapeAt(grid_, material_[i].u, material_[i].v);
+  }
+  // ... and on the part being solved.
+  ShapeWeights Shape(size_t i) const {
+    ShapeWeights shape = BareShape(i);
+    if (!part_scales_.empty()) {
+      for (int k = 0; k < shape.count; ++k) shape.weight[k] *= part_scales_[i];
+    }
+    return shape;
   }
   // Point i's rows, weighed by sqrt_weights (empty: all 1).
   LocalRows Rows(size_t i) const {
     const bool plane = normals_[i] != Eigen::Vector3d::Zero();
-    LocalRows rows = LocalPointRows(globals_[i], rotation_, Shape(i),
-                                    points_[i], plane ? &normals_[i] : nullptr);
+    LocalRows rows = LocalPointRows(Global(i), rotation_, Shape(i), points_[i],
+                                    plane ? &normals_[i] : nullptr);
     if (!sqrt_weights_.empty()) rows *= sqrt_weights_[i];
     return rows;
   }
   // The points as the direct solve takes them, the weights included.
   LocalDirectData DirectData() const;
-  // Each point's residual (its rows' size) under `field`, unweighted.
+  // Each point's residual (its rows' size) under the whole `field` (both
+  // parts of a solid's), unweighted; the part's scales and held
+  // displacements left out.
   std::vector<Eigen::Vector3d> Residuals(const LocalField& field) const;
+  // 1/2 the weighted squared residuals under the whole `field`.
+  double Cost(const LocalField& field) const;
   void set_sqrt_weights(std::vector<double> sqrt_weights) {
     sqrt_weights_ = std::move(sqrt_weights);
+  }
+  double w(size_t i) const { return material_[i].w; }
+  // One part of a solid's field: point i's shape weights scaled by
+  // scales[i], held[i] (model frame) added to its global point.  Empty:
+  // the whole field.
+  void set_part(std::vector<double> scales, std::vector<Eigen::Vector3d> held) {
+    part_scales_ = std::move(scales);
+    part_held_ = std::move(held);
   }
 
  private:
@@ -68,6 +96,14 @@ class LocalData {
   const std::vector<Eigen::Vector3d> globals_;
   const std::vector<Eigen::Vector3d> normals_;
   std::vector<double> sqrt_weights_;
+  std::vector<double> part_scales_;
+  std::vector<Eigen::Vector3d> part_held_;
+
+  Eigen::Vector3d Global(size_t i) const {
+    return part_held_.empty()
+               ? globals_[i]
+               : Eigen::Vector3d(globals_[i] + rotation_ * part_held_[i]);
+  }
 };
 
 std::vector<Eigen::Vector3d> LocalData::Residuals(
@@ -75,18 +111,33 @@ std::vector<Eigen::Vector3d> LocalData::Residuals(
   std::vector<Eigen::Vector3d> residuals(size(), Eigen::Vector3d::Zero());
   for (size_t i = 0; i < size(); ++i) {
     const bool plane = normals_[i] != Eigen::Vector3d::Zero();
-    const ShapeWeights shape = Shape(i);
+    const ShapeWeights shape = BareShape(i);
     const LocalRows rows =
         LocalPointRows(globals_[i], rotation_, shape, points_[i],
                        plane ? &normals_[i] : nullptr);
     const int n = 3 * shape.count;
     Eigen::VectorXd q(n);
     for (int k = 0; k < shape.count; ++k) {
-      q.segment<3>(3 * k) = Eigen::Vector3d(&field.values[3 * shape.node[k]]);
+      const int at = 3 * shape.node[k];
+      q.segment<3>(3 * k) = Eigen::Vector3d(&field.values[at]);
+      if (field.transmural()) {
+        q.segment<3>(3 * k) += w(i) * Eigen::Vector3d(&field.slope[at]);
+      }
     }
     residuals[i].head(rows.rows()) = rows.leftCols(n) * q + rows.col(n);
   }
   return residuals;
+}
+
+double LocalData::Cost(const LocalField& field) const {
+  const std::vector<Eigen::Vector3d> residuals = Residuals(field);
+  double sum = 0.0;
+  for (size_t i = 0; i < size(); ++i) {
+    const double weight =
+        sqrt_weights_.empty() ? 1.0 : sqrt_weights_[i] * sqrt_weights_[i];
+    sum += weight * residuals[i].squaredNorm();
+  }
+  return 0.5 * sum;
 }
 
 LocalDirectData LocalData::DirectData() const {
@@ -95,7 +146,7 @@ LocalDirectData LocalData::DirectData() const {
   data.offsets.reserve(size());
   for (size_t i = 0; i < size(); ++i) {
     data.shapes.push_back(Shape(i));
-    data.offsets.push_back(rotation_.transpose() * (globals_[i] - points_[i]));
+    data.offsets.push_back(rotation_.transpose() * (Global(i) - points_[i]));
     data.normals.push_back(rotation_.transpose() * normals_[i]);
   }
   for (double w : sqrt_weights_) data.weights.push_back(w * w);
@@ -160,15 +211,14 @@ void AddLocalData(const LocalData& data, LocalField* field,
   }
 }
 
-// One linear solve of the field for the data's current weights, from
-// *field's values: the direct solver's without Ceres where it can
-// (local_direct.h), the same minimum to round-off.
-SolverReport SolveLocal(const LocalData& data, const Model& model,
-                        const FitOptions& options, LocalDirectSolver* direct,
-                        LocalField* field) {
-  const LocalRegularizer regularizer =
-      MakeLocalRegularizer(model, field->grid, static_cast<int>(data.size()),
-                           options.local.stiffness);
+// One linear solve of the field (its values; a part of a solid's, as the
+// data hold it) for the data's current weights, from *field's values: the
+// direct solver's without Ceres where it can (local_direct.h), the same
+// minimum to round-off.
+SolverReport SolveOne(const LocalData& data,
+                      const LocalRegularizer& regularizer,
+                      const FitOptions& options, LocalDirectSolver* direct,
+                      LocalField* field) {
   if (options.solver.kind == SolverKind::kDirect) {
     CheckInterrupt(options.solver);
     SolverReport report;
@@ -188,6 +238,125 @@ SolverReport SolveLocal(const LocalData& data, const Model& model,
   // of regularizer rows by 867 columns, for a third of a second a frame.
   solver.linear_solver = ceres::SPARSE_NORMAL_CHOLESKY;
   return SolveProblem(&problem, solver);
+}
+
+// A solid's field d_i = S_i (q + w_i q_w) as two parts A and B with
+// d_i = a_i S_i A + b_i S_i B.  When every point lies on a wall (|w| = 1:
+// both walls' contours) A and B are the endocardium's and the epicardium's
+// fields, a = (1 - w) / 2, b = (1 + w) / 2, q = (A + B) / 2, q_w = (B - A)
+// / 2: their points are apart, and with half the regularizer each (the
+// parallelogram law: R(q) + R(q_w) = (R(A) + R(B)) / 2) so are their
+// costs, and one pass is the minimum.  Otherwise (tags through the wall)
+// A = q and B = q_w, a = 1, b = w: tags spread about the mid-wall keep the
+// parts nearly apart, and a few passes converge.
+struct Parts {
+  bool layers = false;
+  std::vector<double> a, b;
+  LocalField first, second;  // Values only.
+};
+
+Parts SplitParts(const LocalData& data, const LocalField& field) {
+  Parts parts;
+  parts.layers = true;
+  for (size_t i = 0; i < data.size(); ++i) {
+    parts.layers = parts.layers && std::abs(data.w(i)) == 1.0;
+  }
+  for (size_t i = 0; i < data.size(); ++i) {
+    parts.a.push_back(parts.layers ? 0.5 * (1.0 - data.w(i)) : 1.0);
+    parts.b.push_back(parts.layers ? 0.5 * (1.0 + data.w(i)) : data.w(i));
+  }
+  parts.first = LocalField::Zero(field.grid);
+  parts.second = parts.first;
+  for (size_t k = 0; k < field.values.size(); ++k) {
+    const double q = field.values[k], q_w = field.slope[k];
+    parts.first.values[k] = parts.layers ? q - q_w : q;
+    parts.second.values[k] = parts.layers ? q + q_w : q_w;
+  }
+  return parts;
+}
+
+void JoinParts(const Parts& parts, LocalField* field) {
+  for (size_t k = 0; k < field->values.size(); ++k) {
+    const double a = parts.first.values[k], b = parts.second.values[k];
+    field->values[k] = parts.layers ? 0.5 * (a + b) : a;
+    field->slope[k] = parts.layers ? 0.5 * (b - a) : b;
+  }
+}
+
+// Each point's displacement by `part` scaled by its share `scales`.
+std::vector<Eigen::Vector3d> Held(const LocalData& data,
+                                  const std::vector<double>& scales,
+                                  const LocalField& part) {
+  std::vector<Eigen::Vector3d> held(data.size());
+  for (size_t i = 0; i < data.size(); ++i) {
+    const ShapeWeights shape = data.BareShape(i);
+    held[i].setZero();
+    for (int k = 0; k < shape.count; ++k) {
+      held[i] += scales[i] * shape.weight[k] *
+                 Eigen::Vector3d(&part.values[3 * shape.node[k]]);
+    }
+  }
+  return held;
+}
+
+double MaxChange(const LocalField& before, const LocalField& after) {
+  double change = 0.0;
+  for (size_t k = 0; k < before.values.size(); ++k) {
+    change = std::max(change, std::abs(after.values[k] - before.values[k]));
+  }
+  return change;
+}
+
+// Block Gauss-Seidel over the two parts (Parts): each solved with the
+// other held, until a pass changes neither.  The report's last cost is the
+// whole field's, both regularizers included.
+SolverReport SolveParts(LocalData* data, const LocalRegularizer& regularizer,
+                        const FitOptions& options, LocalDirectSolver* direct,
+                        LocalField* field) {
+  Parts parts = SplitParts(*data, *field);
+  const LocalRegularizer part_regularizer =
+      parts.layers ? Scaled(regularizer, std::sqrt(0.5)) : regularizer;
+  SolverReport report;
+  int iterations = 0;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    const LocalField first = parts.first, second = parts.second;
+    data->set_part(parts.a, Held(*data, parts.b, parts.second));
+    report = SolveOne(*data, part_regularizer, options, direct, &parts.first);
+    iterations += report.iterations;
+    if (!report.usable) break;
+    data->set_part(parts.b, Held(*data, parts.a, parts.first));
+    report = SolveOne(*data, part_regularizer, options, direct, &parts.second);
+    iterations += report.iterations;
+    if (!report.usable || parts.layers) break;
+    if (std::max(MaxChange(first, parts.first),
+                 MaxChange(second, parts.second)) < kPassTolerance) {
+      break;
+    }
+  }
+  data->set_part({}, {});
+  JoinParts(parts, field);
+  report.iterations = iterations;
+  if (!report.trace.empty()) {
+    report.trace.back().cost =
+        data->Cost(*field) +
+        RegularizerCost(part_regularizer, parts.first.values) +
+        RegularizerCost(part_regularizer, parts.second.values);
+  }
+  return report;
+}
+
+// The field's solve for the data's current weights: one solve, or a
+// solid's two parts in turn.
+SolverReport SolveLocal(LocalData* data, const Model& model,
+                        const FitOptions& options, LocalDirectSolver* direct,
+                        LocalField* field) {
+  const LocalRegularizer regularizer =
+      MakeLocalRegularizer(model, field->grid, static_cast<int>(data->size()),
+                           options.local.stiffness);
+  if (!field->transmural()) {
+    return SolveOne(*data, regularizer, options, direct, field);
+  }
+  return SolveParts(data, regularizer, options, direct, field);
 }
 
 // Square roots of the loss's weights of the data's points under `field`.
@@ -216,7 +385,8 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   grid.cols = options.local.cols;
   grid.u_min = config.u_min;
   grid.u_max = config.u_max;
-  LocalField field = LocalField::Zero(grid);
+  LocalField field =
+      LocalField::Zero(grid, options.local.transmural && config.Solid());
   LocalData data(points, material, sliding, grid, *model);
   const bool robust = options.loss != "none";
   // With a loss, iteratively reweighted least squares: each solve weighs
@@ -226,7 +396,7 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   std::vector<double> sqrt_weights;
   if (robust) sqrt_weights = SqrtLossWeights(data, options, field);
   data.set_sqrt_weights(sqrt_weights);
-  SolverReport report = SolveLocal(data, *model, options, direct, &field);
+  SolverReport report = SolveLocal(&data, *model, options, direct, &field);
   for (int pass = 1; robust && pass < kMaxReweightings && report.usable;
        ++pass) {
     const std::vector<double> next = SqrtLossWeights(data, options, field);
@@ -239,7 +409,7 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
     sqrt_weights = next;
     data.set_sqrt_weights(sqrt_weights);
     const int iterations = report.iterations;
-    report = SolveLocal(data, *model, options, direct, &field);
+    report = SolveLocal(&data, *model, options, direct, &field);
     report.iterations += iterations;
   }
   model->state.local = std::move(field);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "gtest/gtest.h"
@@ -202,6 +203,115 @@ TEST(LocalFitTest, RingMeansStayWithTheGlobalFunctions) {
     largest = std::max({largest, std::abs(radial), std::abs(mean.z())});
   }
   EXPECT_LT(largest, 0.15);
+}
+
+// A solid (the shell, 10 mm wall) whose field varies through the wall: q
+// as MakeTruth's, q_w radial cos 2v and axial cos v (no ring mean).
+Model TransmuralShell(const LocalGrid& grid) {
+  Model model = TestShell(5);
+  model.state.center = {10.0, -5.0, 30.0};
+  model.state.quaternion = {std::cos(0.25), 0.0, std::sin(0.25), 0.0};
+  LocalField field = LocalField::Zero(grid, /*transmural=*/true);
+  for (int row = 1; row < grid.rows; ++row) {
+    const double amplitude = std::sin(kPi * row / (grid.rows - 1) / 1.2);
+    for (int col = 0; col < grid.cols; ++col) {
+      const double v = grid.ColV(col);
+      const int at = 3 * grid.Node(row, col);
+      field.values[at] = 2.0 * amplitude * std::cos(3 * v) * std::cos(v);
+      field.values[at + 1] = 2.0 * amplitude * std::cos(3 * v) * std::sin(v);
+      field.slope[at] = amplitude * std::cos(2 * v) * std::cos(v);
+      field.slope[at + 1] = amplitude * std::cos(2 * v) * std::sin(v);
+      field.slope[at + 2] = 0.5 * amplitude * std::cos(v);
+    }
+  }
+  model.state.local = field;
+  return model;
+}
+
+// The largest distance (mm) between the models' endocardia, mid-walls and
+// epicardia over a dense grid.
+double WorstThroughTheWall(const Model& a, const Model& b,
+                           const LocalGrid& grid) {
+  double worst = 0.0;
+  for (double w : {-1.0, 0.0, 1.0}) {
+    for (int i = 0; i <= 30; ++i) {
+      const double u = grid.u_min + (grid.u_max - grid.u_min) * i / 30;
+      for (int j = 0; j < 48; ++j) {
+        const double v = -kPi + 2 * kPi * j / 48;
+        worst = std::max(
+            worst, (a.WorldPoint(u, v, w) - b.WorldPoint(u, v, w)).norm());
+      }
+    }
+  }
+  return worst;
+}
+
+struct WallPoints {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<MaterialPoint> material;
+};
+
+// Noise-free points of `truth` at random (u, v), w uniform through the wall
+// (tags) or on its two surfaces alone (both walls' contours).
+WallPoints SampleTheWall(const Model& truth, bool surfaces_only) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  WallPoints out;
+  for (int i = 0; i < 3000; ++i) {
+    const double u = std::asin(-1.0 + 1.5 * unit(random));
+    const double v = -kPi + 2 * kPi * unit(random);
+    const double w =
+        surfaces_only ? (i % 2 == 0 ? -1.0 : 1.0) : -1.0 + 2.0 * unit(random);
+    out.material.push_back({u, v, w});
+    out.points.push_back(truth.WorldPoint(u, v, w));
+  }
+  return out;
+}
+
+// Tags through the wall: both parts (q, and q_w at each tag's w) come back
+// with every solver, in a few passes of the two; both surfaces alone (w =
+// +-1, as both walls' contours) are the endocardium's and the epicardium's
+// fields, apart: one pass, the direct solver's two solves.
+TEST(LocalFitTest, ATransmuralFieldComesBackThroughTheWall) {
+  const LocalGrid grid = GridOver(TestShell(5).config, 7, 12);
+  const Model truth = TransmuralShell(grid);
+  Model global = truth;
+  global.state.local = LocalField();
+  for (bool surfaces_only : {false, true}) {
+    const WallPoints data = SampleTheWall(truth, surfaces_only);
+    const std::vector<bool> sliding(data.points.size(), false);
+    for (const char* solver : {"direct", "damped"}) {
+      FitOptions options;
+      options.solver.kind = SolverFromName(solver);
+      options.local.rows = grid.rows;
+      options.local.cols = grid.cols;
+      options.local.stiffness = 1e-5;
+      options.local.transmural = true;
+      Model fitted = global;
+      const SolverReport report =
+          FitLocalField(data.points, data.material, sliding, options, &fitted);
+      ASSERT_TRUE(report.usable) << solver;
+      ASSERT_TRUE(fitted.state.local.transmural());
+      const double worst = WorstThroughTheWall(fitted, truth, grid);
+      std::printf("%s, %s: worst %.4f mm, %d iterations\n",
+                  surfaces_only ? "surfaces" : "through the wall", solver,
+                  worst, report.iterations);
+      EXPECT_LT(worst, 0.03) << solver;
+      if (surfaces_only && std::string(solver) == "direct") {
+        EXPECT_EQ(report.iterations, 2);
+      }
+    }
+  }
+  // Without the option the same solid's field moves every layer alike.
+  FitOptions options;
+  options.local.rows = grid.rows;
+  options.local.cols = grid.cols;
+  Model fitted = global;
+  const WallPoints data = SampleTheWall(truth, false);
+  FitLocalField(data.points, data.material,
+                std::vector<bool>(data.points.size(), false), options, &fitted);
+  EXPECT_FALSE(fitted.state.local.transmural());
+  EXPECT_GT(WorstThroughTheWall(fitted, truth, grid), 0.5);
 }
 
 }  // namespace

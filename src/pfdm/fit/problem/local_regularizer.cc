@@ -104,6 +104,39 @@ LocalRegularizer MakeLocalRegularizer(const Model& global,
   return regularizer;
 }
 
+double RegularizerCost(const LocalRegularizer& regularizer,
+                       const std::vector<double>& q) {
+  const auto node = [&q](int k) { return Eigen::Vector3d(&q[3 * k]); };
+  double sum = 0.0;
+  for (const NodeDifference& term : regularizer.differences) {
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
+    for (size_t k = 0; k < term.nodes.size(); ++k) {
+      r += term.coefficients[k] * node(term.nodes[k]);
+    }
+    sum += term.sqrt_weight * term.sqrt_weight * r.squaredNorm();
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    double radial = 0.0, tangential = 0.0;
+    for (size_t k = 0; k < ring.nodes.size(); ++k) {
+      mean += node(ring.nodes[k]);
+      radial += node(ring.nodes[k]).dot(ring.radial[k]);
+      tangential += node(ring.nodes[k]).dot(ring.tangential[k]);
+    }
+    sum += ring.scale * ring.scale *
+           (mean.squaredNorm() + radial * radial + tangential * tangential);
+  }
+  return 0.5 * sum;
+}
+
+LocalRegularizer Scaled(LocalRegularizer regularizer, double factor) {
+  for (NodeDifference& term : regularizer.differences) {
+    term.sqrt_weight *= factor;
+  }
+  for (RingMean& ring : regularizer.rings) ring.scale *= factor;
+  return regularizer;
+}
+
 void AddLocalRegularizer(const LocalRegularizer& regularizer, LocalField* field,
                          ceres::Problem* problem) {
   auto block = [field](int node) { return &field->values[3 * node]; };

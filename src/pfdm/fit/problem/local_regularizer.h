@@ -42,6 +42,14 @@ LocalRegularizer MakeLocalRegularizer(const Model& global,
                                       const LocalGrid& grid, int num_points,
                                       double stiffness);
 
+// The terms' cost at the nodal values q (3 per node): 1/2 their squared
+// rows, as Ceres counts it.
+double RegularizerCost(const LocalRegularizer& regularizer,
+                       const std::vector<double>& q);
+
+// The terms with every row scaled by `factor` (their cost by its square).
+LocalRegularizer Scaled(LocalRegularizer regularizer, double factor);
+
 // The terms as residual blocks on *field's nodal values, in order.
 void AddLocalRegularizer(const LocalRegularizer& regularizer, LocalField* field,
                          ceres::Problem* problem);

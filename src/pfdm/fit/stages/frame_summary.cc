@@ -23,7 +23,7 @@ bool StateFinite(const ModelState& state) {
   for (const FunctionValues& knot : state.knots) {
     if (!finite(knot)) return false;
   }
-  return finite(state.local.values);
+  return finite(state.local.values) && finite(state.local.slope);
 }
 
 }  // namespace

@@ -42,7 +42,9 @@ GlobalRounds::GlobalRounds(const FramePoints& frame, const ModelState& prior,
       source_(source),
       model_(model),
       fit_(fit),
-      normals_(frame.positions.size(), Eigen::Vector3d::Zero()) {}
+      normals_(frame.positions.size(), Eigen::Vector3d::Zero()) {
+  ranking_.neighbourhoods = options.local.enabled && options.local.transmural;
+}
 
 void GlobalRounds::Start() {
   if (frame_.kind == FrameKind::kReference &&
@@ -56,7 +58,7 @@ void GlobalRounds::Start() {
   rerank_depths_ = model_->config.Solid() && !frame_.tracked.empty();
   if (rerank_depths_) {
     RerankDepths(*model_, frame_.positions, frame_.tracked, &fit_->material,
-                 rank_band_mm_);
+                 ranking_);
   }
 }
 
@@ -73,7 +75,7 @@ void GlobalRounds::SolveCoarse() {
   pfdm::UpdateClosest(*model_, frame_.positions, coarse,
                       options_.solver.num_threads, frame_.layer_w,
                       frame_.assign_depth, false, &fit_->material, &normals_,
-                      &found_, rank_band_mm_, grid_);
+                      &found_, ranking_, grid_);
   fit_->correspondence_seconds += SecondsSince(closest_start);
   std::vector<Eigen::Vector3d> coarse_points, coarse_normals;
   std::vector<MaterialPoint> coarse_material;
@@ -198,7 +200,7 @@ bool GlobalRounds::Settled(int round, int max_rounds) {
     // between tags (kRerankRounds).
     return round + 1 >= kRerankRounds ||
            RerankDepths(*model_, frame_.positions, frame_.tracked,
-                        &fit_->material, rank_band_mm_) < tolerance;
+                        &fit_->material, ranking_) < tolerance;
   }
   if (frame_.untracked.empty()) return true;
   if (frame_.kind == FrameKind::kReference) {
@@ -231,7 +233,7 @@ double GlobalRounds::UpdateClosest(std::vector<Eigen::Vector3d> now) {
   pfdm::UpdateClosest(*model_, frame_.positions, frame_.untracked,
                       options_.solver.num_threads, frame_.layer_w,
                       frame_.assign_depth, found_closest_, &fit_->material,
-                      &normals_, &found_, rank_band_mm_, grid_);
+                      &normals_, &found_, ranking_, grid_);
   const double moved = found_closest_ || frame_.untracked.empty()
                            ? MaxDistance(now, found_)
                            : std::numeric_limits<double>::infinity();

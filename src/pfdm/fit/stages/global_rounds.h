@@ -12,6 +12,7 @@
 
 #include "Eigen/Core"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/correspondence/frame_correspondence.h"
 #include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/fit_options.h"
 #include "pfdm/fit/problem/frame_problem.h"
@@ -51,7 +52,7 @@ class GlobalRounds {
   // With a robust loss, the ranks of tags across a solid's wall leave out
   // those farther than band_mm outside it (QuantileDepths); 0, the
   // default, ranks them all.
-  void set_rank_band_mm(double band_mm) { rank_band_mm_ = band_mm; }
+  void set_rank_band_mm(double band_mm) { ranking_.outlier_band_mm = band_mm; }
   // The searches' grid, kept from search to search (null, the default: a
   // grid per search); it outlives the rounds.
   void set_surface_grid(SurfaceGrid* grid) { grid_ = grid; }
@@ -93,7 +94,7 @@ class GlobalRounds {
   bool found_closest_ = false;  // Then searches start from the last.
   double moved_ = 0.0;          // By the last search.
   bool rerank_depths_ = false;
-  double rank_band_mm_ = 0.0;
+  DepthRanking ranking_;
   SurfaceGrid* grid_ = nullptr;
   SolverReport report_;
   // Frames whose untracked points are all contour points: the rounds are

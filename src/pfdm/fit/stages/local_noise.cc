@@ -85,7 +85,7 @@ std::vector<std::vector<double>> LocalNoiseDraws(
         FitLocalField(Noisy(surface, normals, searched, sigma_mm, &random),
                       material, sliding, options, &fitted, &direct);
     if (!report.usable) return {};
-    fields.push_back(fitted.state.local.values);
+    fields.push_back(fitted.state.local.Coefficients());
   }
   return fields;
 }

@@ -35,7 +35,8 @@ double UpdateContours(const FramePoints& frame,
   std::vector<Eigen::Vector3d> normals(frame.positions.size());
   UpdateClosest(model, frame.positions, contours, options.solver.num_threads,
                 frame.layer_w, std::vector<bool>(frame.positions.size(), false),
-                /*warm=*/true, &fit->material, &normals, &found, 0.0, grid);
+                /*warm=*/true, &fit->material, &normals, &found, DepthRanking(),
+                grid);
   return MaxDistance(before, found);
 }
 
