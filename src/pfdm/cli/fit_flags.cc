@@ -109,8 +109,9 @@ DEFINE_double(local_stiffness, kDefaults.local_stiffness,
               "local deformations' membrane and thin-plate weight, relative "
               "to one node's data, 1e-4 to 1e6 (--local off: none)");
 DEFINE_string(local_transmural, kDefaults.local_transmural.c_str(),
-              "a solid's local deformations vary through the wall (the "
-              "endocardium's apart from the epicardium's): on or off");
+              "a solid's local deformations vary through the wall and its "
+              "tags' depths are ranked among their neighbours, so that "
+              "regional and subendocardial defects show: on or off");
 DEFINE_string(uncertainty, kDefaults.uncertainty.c_str(),
               "each frame's parameter covariance, a standard deviation per "
               "knot value in parameters.csv: on or off");

@@ -82,6 +82,12 @@ std::vector<double> LocalField::Coefficients() const {
   return all;
 }
 
+void LocalField::SetCoefficients(const double* coefficients) {
+  std::copy(coefficients, coefficients + values.size(), values.begin());
+  std::copy(coefficients + values.size(),
+            coefficients + values.size() + slope.size(), slope.begin());
+}
+
 void LocalField::AddCoefficients(const std::vector<double>& change) {
   for (size_t i = 0; i < change.size(); ++i) {
     if (i < values.size()) {

@@ -86,10 +86,12 @@ struct LocalField {
   // A field of zeros on `grid` (with a zero slope when `transmural`).
   static LocalField Zero(const LocalGrid& grid, bool transmural = false);
   Eigen::Vector3d Displacement(double u, double v, double w = 0.0) const;
-  // q then q_w in one vector, as the noise draws perturb them; and the
-  // inverse, adding such a vector (a shorter one adds to q alone).
+  // q then q_w in one vector, as the noise draws perturb them and the
+  // contour rounds mix them; adding such a vector (a shorter one adds to q
+  // alone), or replacing them by one.
   std::vector<double> Coefficients() const;
   void AddCoefficients(const std::vector<double>& change);
+  void SetCoefficients(const double* coefficients);
 };
 
 // d(u, v, w) for any scalar type (a Jet when u and v are differentiated, as

@@ -212,6 +212,9 @@ TEST(LocalFieldTest, CoefficientsAreTheValuesThenTheSlope) {
   for (size_t i = 0; i < change.size(); ++i) change[i] = i + 1.0;
   field.AddCoefficients(change);
   EXPECT_EQ(field.Coefficients(), change);
+  LocalField copy = LocalField::Zero(grid, /*transmural=*/true);
+  copy.SetCoefficients(change.data());
+  EXPECT_EQ(copy.Coefficients(), change);
   EXPECT_EQ(field.slope.front(), field.values.size() + 1.0);
   LocalField plain = LocalField::Zero(grid);
   plain.AddCoefficients(change);

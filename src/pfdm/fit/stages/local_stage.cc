@@ -47,12 +47,12 @@ double UpdateContours(const FramePoints& frame,
 // Returns whether the field changed.
 bool MixField(Eigen::VectorXd change, RoundAcceleration* acceleration,
               Model* model) {
-  std::vector<double>& values = model->state.local.values;
-  const Eigen::Map<const Eigen::VectorXd> solution(values.data(),
-                                                   values.size());
+  const std::vector<double> coefficients = model->state.local.Coefficients();
+  const Eigen::Map<const Eigen::VectorXd> solution(coefficients.data(),
+                                                   coefficients.size());
   const Eigen::VectorXd next = acceleration->Next(std::move(change), solution);
   if (next == solution) return false;
-  std::copy(next.data(), next.data() + next.size(), values.begin());
+  model->state.local.SetCoefficients(next.data());
   return true;
 }
 
