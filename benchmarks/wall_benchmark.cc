@@ -2,8 +2,10 @@
 // with tags through a 10 mm wall (N tracked tags, K = 17, local field off),
 // fitted as one surface (--wall midwall) and as a solid (--wall solid).
 // "frame0_ms" is frame 0 with its correspondence rounds, "frame_ms" the
-// tracked frame, "per_point_ns" the tracked frame's evaluation time
-// (residuals and Jacobians) per tag and iteration.  Each configuration runs
+// tracked frame, "solves" and "iterations" its solves (a solid's: the
+// predictor's step, its tags ranked, the solve) and their steps,
+// "per_point_ns" its evaluation time (residuals and Jacobians) per tag and
+// iteration.  Each configuration runs
 // three times; read the medians.
 #include "benchmark/benchmark.h"
 #include "benchmark_util.h"
@@ -25,6 +27,8 @@ void BM_WallFitFrame(benchmark::State& state) {
   const FrameFit& frame = fit.frames[1];
   CountFrame(frame, state);
   state.counters["frame0_ms"] = 1e3 * fit.frames[0].solve_seconds;
+  state.counters["solves"] = frame.correspondence_rounds;
+  state.counters["iterations"] = frame.iterations;
   state.counters["per_point_ns"] =
       frame.iterations > 0
           ? 1e9 * frame.evaluation_seconds / (frame.iterations * state.range(0))

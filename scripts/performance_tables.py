@@ -362,13 +362,18 @@ def wall_table(document):
         rows.append((a["points"], a["solid"], [
             "{:,}".format(a["points"]), "solid" if a["solid"] else "midwall",
             number(b["frame0_ms"], 1), number(b["frame_ms"], 1),
+            number(b["frame_ms"] / base["frame_ms"], 2)
+            if base and base["frame_ms"] > 0 else "-",
+            "%d (%d)" % (b.get("solves", 0), b.get("iterations", 0)),
             number(b["per_point_ns"], 0),
             number(b["per_point_ns"] / base["per_point_ns"], 2)
             if base and base["per_point_ns"] > 0 else "-",
             "%.3f" % b["rms_mm"]]))
     rows.sort(key=lambda r: r[:2])
     return table(["tags", "wall", "frame 0 ms", "tracked frame ms",
-                  "evaluation ns per tag and iteration", "vs one surface", "RMS mm"],
+                  "tracked frame vs one surface", "solves (steps)",
+                  "evaluation ns per tag and iteration",
+                  "evaluation vs one surface", "RMS mm"],
                  [r[-1] for r in rows])
 
 

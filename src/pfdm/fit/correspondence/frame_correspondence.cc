@@ -151,11 +151,11 @@ void UpdateClosest(const Model& model,
   }
 }
 
-double RerankDepths(const Model& model,
-                    const std::vector<Eigen::Vector3d>& points,
-                    const std::vector<size_t>& which,
-                    std::vector<MaterialPoint>* material,
-                    const DepthRanking& ranking) {
+void RerankDepths(const Model& model,
+                  const std::vector<Eigen::Vector3d>& points,
+                  const std::vector<size_t>& which,
+                  std::vector<MaterialPoint>* material,
+                  const DepthRanking& ranking, double* moved_mm) {
   std::vector<Eigen::Vector3d> subset;
   std::vector<MaterialPoint> subset_material;
   for (size_t i : which) {
@@ -164,15 +164,19 @@ double RerankDepths(const Model& model,
   }
   const std::vector<double> depths =
       RankedDepths(model, subset, subset_material, ranking);
-  double moved = 0.0;
+  std::vector<Eigen::Vector3d> before;
+  if (moved_mm != nullptr) before = WorldPoints(model, subset_material);
   for (size_t j = 0; j < which.size(); ++j) {
-    MaterialPoint& m = (*material)[which[j]];
-    moved = std::max(moved, (model.WorldPoint(m.u, m.v, depths[j]) -
-                             model.WorldPoint(m.u, m.v, m.w))
-                                .norm());
-    m.w = depths[j];
+    subset_material[j].w = depths[j];
+    (*material)[which[j]].w = depths[j];
   }
-  return moved;
+  if (moved_mm == nullptr) return;
+  const std::vector<Eigen::Vector3d> after =
+      WorldPoints(model, subset_material);
+  *moved_mm = 0.0;
+  for (size_t j = 0; j < which.size(); ++j) {
+    *moved_mm = std::max(*moved_mm, (after[j] - before[j]).norm());
+  }
 }
 
 }  // namespace pfdm

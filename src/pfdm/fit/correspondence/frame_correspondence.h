@@ -50,20 +50,22 @@ void UpdateClosest(
     std::vector<Eigen::Vector3d>* normals, std::vector<Eigen::Vector3d>* found,
     const DepthRanking& ranking = DepthRanking(), SurfaceGrid* grid = nullptr);
 
-// Sets the listed points' w to their ranked depths on `model` and returns
-// how far (mm) the farthest one's model point moved.  Why each frame ranks
-// its tags afresh rather than keeping frame 0's w: a w read from noisy
-// distances regresses every later frame's thickness toward zero (errors in
-// the regressor), by the noise's share of the depths' variance, while frame
-// 0's own h comes out inflated by as much; ranked in every frame, h is
-// biased alike in all of them and the thickening (a ratio) is not.  A tag's
+// Sets the listed points' w to their ranked depths on `model` and, when
+// moved_mm is not null, says how far (mm) the farthest one's model point
+// moved (two evaluations of every model point: half the ranking's cost).  Why
+// each frame ranks its tags afresh rather than keeping frame 0's w: a w read
+// from noisy distances regresses every later frame's thickness toward zero
+// (errors in the regressor), by the noise's share of the depths' variance,
+// while frame 0's own h comes out inflated by as much; ranked in every frame, h
+// is biased alike in all of them and the thickening (a ratio) is not.  A tag's
 // place in the order across the wall is material; its rank changes only by
 // noise.
-double RerankDepths(const Model& model,
-                    const std::vector<Eigen::Vector3d>& points,
-                    const std::vector<size_t>& which,
-                    std::vector<MaterialPoint>* material,
-                    const DepthRanking& ranking = DepthRanking());
+void RerankDepths(const Model& model,
+                  const std::vector<Eigen::Vector3d>& points,
+                  const std::vector<size_t>& which,
+                  std::vector<MaterialPoint>* material,
+                  const DepthRanking& ranking = DepthRanking(),
+                  double* moved_mm = nullptr);
 
 }  // namespace pfdm
 

@@ -103,12 +103,14 @@ TEST(FrameCorrespondenceTest, RanksTagsAcrossTheWall) {
       depth.push_back(w);
     }
   }
-  const double moved = RerankDepths(model, points, which, &material);
+  double moved = -1.0;
+  RerankDepths(model, points, which, &material, DepthRanking(), &moved);
   EXPECT_NEAR(moved, 5.0, 0.5);
   for (size_t i = 0; i < points.size(); ++i) {
     EXPECT_NEAR(material[i].w, depth[i], 1.0 / per_band) << i;
   }
-  EXPECT_EQ(RerankDepths(model, points, which, &material), 0.0);
+  RerankDepths(model, points, which, &material, DepthRanking(), &moved);
+  EXPECT_EQ(moved, 0.0);
 }
 
 // Two tags of each band of 24 lie 4 mm outside either surface (outliers):

@@ -62,7 +62,11 @@ class GlobalRounds {
 
  private:
   void SolveCoarse();
-  SolverReport SolveRound(TrajectoryRecorder* recorder);
+  // A round's solve; a predictor takes one step only (PredictsRound).
+  SolverReport SolveRound(TrajectoryRecorder* recorder, bool predictor);
+  // Whether this round only brings the model near enough to rank a solid's
+  // tags against it before the solve that counts.
+  bool PredictsRound(int round) const;
   // Whether the rounds end after this solve.
   bool Settled(int round, int max_rounds);
   // After a round that did not settle: the round is recorded and, past

@@ -4,6 +4,7 @@
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/fit/stages/start.h"
+#include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -83,6 +84,45 @@ TEST(GlobalRoundsTest, TagsFirstFrameEndsOnItsBestRound) {
   EXPECT_LT(fit.frames[0].rms_mm, 0.02);
   EXPECT_LT(fit.frames[1].rms_mm, 0.1);
 }
+
+// A solid's tracked frame: a predictor's single step brings the model near
+// the frame's fit, the tags are ranked against it, and the solve that
+// counts runs to convergence; past 8,192 tags the predictor takes every
+// k-th of them.  The last two solves of a two-frame fit are the tracked
+// frame's (the local field is off; the verdict's probe step reports no
+// steps).
+class GlobalRoundsPredictorTest : public ::testing::TestWithParam<int> {};
+
+TEST_P(GlobalRoundsPredictorTest,
+       ASolidsTrackedFrameRanksAfterOnePredictorStep) {
+  LvPhantomOptions phantom;
+  phantom.tags = LvTagLayer::kWall;
+  phantom.num_tags = GetParam();
+  phantom.num_frames = 2;
+  FitOptions options;
+  options.wall = WallModel::kSolid;
+  options.local.enabled = false;
+  std::vector<int> steps_per_solve;
+  options.solver.on_step = [&](const SolverTracePoint& point) {
+    if (point.iteration == 0) {
+      steps_per_solve.push_back(0);
+    } else {
+      ++steps_per_solve.back();
+    }
+  };
+  const SequenceFit fit = FitSequence(MakeLvPhantom(phantom).points,
+                                      ModelConfig::Paper(17), options);
+  const FrameFit& tracked = fit.frames[1];
+  ASSERT_GE(steps_per_solve.size(), 2u);
+  EXPECT_EQ(tracked.correspondence_rounds, 2);
+  EXPECT_EQ(steps_per_solve[steps_per_solve.size() - 2], 1);
+  EXPECT_GE(steps_per_solve.back(), 1);
+  EXPECT_EQ(tracked.iterations, 1 + steps_per_solve.back());
+  EXPECT_EQ(tracked.termination, "CONVERGENCE");
+}
+
+INSTANTIATE_TEST_SUITE_P(Tags, GlobalRoundsPredictorTest,
+                         ::testing::Values(800, 9000));
 
 }  // namespace
 }  // namespace pfdm
