@@ -267,6 +267,8 @@ def job_table(document, batch):
                      if a["outputs"] else ", default outputs (.vtp, float32)")
         rows.append([case, str(a.get("threads", a.get("arg", 1))),
                      number(b["job_ms"]), number(b["read_ms"]),
+                     number(b.get("start_ms", float("nan"))),
+                     number(b.get("checks_ms", float("nan"))),
                      "%s (%s)" % (number(b["frame0_ms"]),
                                   number(b["frame0_correspondence_ms"])),
                      "%s (%s)" % (number(b["tracked_ms"]),
@@ -281,6 +283,7 @@ def job_table(document, batch):
                                          b.get("analysis_ms", 0.0)) /
                                   b["job_ms"])])
     text = table(["case", "threads", "job ms", "read ms",
+                  "start ms", "checks ms",
                   "frame 0 ms (closest points)",
                   "later frame ms (minimizer)", "analysis ms", "outputs ms",
                   "frame 0 / later frame", "outputs share",

@@ -9,6 +9,7 @@
 #include "pfdm/fit/stages/start.h"
 #include "pfdm/fit/stages/temporal_prior.h"
 #include "pfdm/fit/stages/wall_stage.h"
+#include "pfdm/util/stopwatch.h"
 
 namespace pfdm {
 
@@ -18,7 +19,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
   FitOptions options = given_options;
   options.temporal_prior_weight = TemporalPriorWeightFor(
       static_cast<int>(sequence.frames.size()), given_options);
+  const auto start_time = Clock::now();
   SequenceStart start = StartSequence(sequence, config, options);
+  const double start_seconds = SecondsSince(start_time);
   CheckInterrupt(options.solver);
   CarriedState carried(start.model);
   SequenceFit result;
@@ -35,6 +38,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
   result.time_ms = sequence.time_ms;
   result.left_out = sequence.left_out;
   result.temporal_prior_weight = options.temporal_prior_weight;
+  result.start_seconds = start_seconds;
+  const auto checks_time = Clock::now();
   result.surface =
       result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;
   if (result.config.Solid() && start.has_tags) {
@@ -45,6 +50,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
   WeighPoints(options.loss, &result);
   MeasureApexCoverage(Positions(sequence.frames[0]), &result);
   JudgeFrames(sequence, options, &result);
+  result.checks_seconds = SecondsSince(checks_time);
   return result;
 }
 

@@ -1,6 +1,7 @@
 #include "pfdm/fit/stages/fitter.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <random>
 
@@ -207,6 +208,25 @@ TEST(FitterTest, TrackedFramesConvergeInThreeIterations) {
     EXPECT_LE(fit.frames[frame].iterations, 3) << "frame " << frame;
     EXPECT_EQ(fit.frames[frame].termination, "CONVERGENCE") << frame;
   }
+}
+
+// The fit's wall time is the start, the frames and the checks after them:
+// their sum comes within a millisecond and a percent of the whole, timed
+// here around FitSequence (the job benchmark counts the parts).
+TEST(FitterTest, TheStartAndTheChecksAreTimedWithTheFrames) {
+  const PointSequence points = MakeTestPhantom(1000, 3).points;
+  const auto begin = std::chrono::steady_clock::now();
+  const SequenceFit fit =
+      FitSequence(points, ModelConfig::Paper(17), FitOptions());
+  const double whole =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)
+          .count();
+  double parts = fit.start_seconds + fit.checks_seconds;
+  for (const FrameFit& frame : fit.frames) parts += frame.solve_seconds;
+  EXPECT_GT(fit.start_seconds, 0.0);
+  EXPECT_GT(fit.checks_seconds, 0.0);
+  EXPECT_LE(parts, whole);
+  EXPECT_GE(parts, 0.99 * whole - 1e-3);
 }
 
 // Points seen in one frame each (contours) find their closest points in

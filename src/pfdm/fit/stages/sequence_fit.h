@@ -125,6 +125,12 @@ struct SequenceFit {
   double temporal_prior_weight = 0.0;
   // The contours the reader left out (PointSequence::left_out).
   std::vector<LeftOutContour> left_out;
+  // Wall time outside the frames' solve_seconds: the start (the long axis's
+  // candidates, the initialized model: StartSequence) and the checks after
+  // the frames (the tags' noise out of a solid, the weights, the apex's
+  // coverage, the verdicts' probes).
+  double start_seconds = 0.0;
+  double checks_seconds = 0.0;
   std::vector<FrameFit> frames;
   Model ModelAt(int frame) const { return {config, frames[frame].state}; }
 };
