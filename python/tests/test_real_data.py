@@ -17,6 +17,7 @@ def test_guide_points_fit_and_mitral_valve_volumes_equal_the_clis():
     fit = pfdm.fit(GUIDE_POINTS)
     ours = fit.to_dict()
     for document in (ours, cli):
+        document.pop("timing")
         for frame in document["frames"]:
             frame.pop("solve_seconds")
     assert ours == cli

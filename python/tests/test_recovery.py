@@ -12,6 +12,7 @@ TIMING = ("solve_seconds",)
 
 
 def without_timing(document):
+    document.pop("timing")
     for frame in document["frames"]:
         for key in TIMING:
             frame.pop(key)
@@ -57,7 +58,7 @@ def test_written_outputs_equal_the_clis_byte_for_byte(cli_phantom):
             assert "Made by pfdm " in py_bytes.decode()
         elif name == "fit.json":
             keep = lambda text: [line for line in text.splitlines()
-                                 if '"solve_seconds"' not in line]
+                                 if "_seconds\"" not in line]
             assert keep(py_bytes.decode()) == keep(cli_bytes.decode())
         else:
             assert py_bytes == cli_bytes, name

@@ -405,6 +405,9 @@ std::string FitJson(const PointSequence& points, const SequenceFit& fit,
                    {"settings", Settings(points, fit, options)},
                    {"model", ModelSection(fit, analysis)},
                    {"quality", QualitySection(analysis)},
+                   {"timing",
+                    {{"start_seconds", fit.start_seconds},
+                     {"checks_seconds", fit.checks_seconds}}},
                    {"gauge_convention", fit_json_text::kGaugeConvention},
                    {"clinical_definition", fit_json_text::kClinicalDefinition}};
   if (solid) document["wall_definition"] = fit_json_text::kWallDefinition;

@@ -207,6 +207,20 @@ TEST(FitJsonTest, WhatIsNotMeasuredIsNull) {
             tags["regions"][15]["rotation_deg"][1]);
 }
 
+// The wall time outside the frames' solve_seconds: the start (the long
+// axis) and the checks after the frames, as the fit measured them.
+TEST(FitJsonTest, TimesTheStartAndTheChecks) {
+  const FittedPhantom& f = SmallPhantomFit();
+  SequenceFit fit = f.fit;
+  fit.start_seconds = 0.125;
+  fit.checks_seconds = 0.5;
+  const nlohmann::json timing = nlohmann::json::parse(
+      FitJson(f.phantom.points, fit, FitOptions()))["timing"];
+  EXPECT_EQ(timing["start_seconds"].get<double>(), 0.125);
+  EXPECT_EQ(timing["checks_seconds"].get<double>(), 0.5);
+  EXPECT_EQ(timing.size(), 2u);
+}
+
 // The loss in the settings: none as before (the scale as given, no
 // loss_scale); auto with each frame's measured scale; a number as given.
 TEST(FitJsonTest, RecordsTheLossScaleUsed) {
