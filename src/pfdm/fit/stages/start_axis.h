@@ -25,7 +25,8 @@ struct StartAxis {
 // the normal of the parallel planes most of frame 0's points lie on
 // (parallel_planes.h: short-axis slices, tag planes); else the point
 // cloud's candidate axes (CandidateAxes), each tried by fitting frame 0's
-// global rounds to a subset of its points, the lowest cost kept: the
+// global rounds to a subset of its points (a whole ventricle's three on 5
+// knots, the close calls on the model's), the lowest cost kept: the
 // principal axis as it is, another along the axis its fit turned to.
 // Every model but the hint's is InitializeModelAlong its axis, on all of
 // frame 0's points: the principal axis gives InitializeModel's.
