@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fits the same inputs with two pfdm binaries and fails unless every output
-# file is byte-identical, fit.json's timings (solve_, start_ and checks_seconds) aside.  For a
-# change that must not change behaviour (a refactoring):
+# file is byte-identical, fit.json's timings (solve_seconds, start_seconds,
+# checks_seconds) aside.  For a change that must not change behaviour (a
+# refactoring):
 #
 #   scripts/compare_fit_outputs.sh OLD_PFDM NEW_PFDM [WORK_DIR]
 #

@@ -12,7 +12,8 @@ Model ResampleKnots(const Model& model, const ModelConfig& config) {
     knot_u[k] = config.Grid().KnotU(k);
   }
   Model resampled{config, model.state};
-  resampled.state.knots.assign(config.num_knots, model.state.knots.front());
+  // As Model::Uniform: what is not free reads as the globals.
+  resampled.state.knots.assign(config.num_knots, model.state.globals);
   for (int k = 0; k < config.num_knots; ++k) {
     const FunctionValues values = model.FunctionsAt(knot_u[k]);
     for (int f = 0; f < kNumFunctions; ++f) {
