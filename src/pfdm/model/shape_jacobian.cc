@@ -1,5 +1,6 @@
 #include "pfdm/model/shape_jacobian.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ceres/jet.h"
@@ -24,7 +25,8 @@ Power PowerOf(double x, double e, bool unit_exponents) {
 }  // namespace
 
 ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
-                          bool unit_exponents, double w) {
+                          bool unit_exponents, double w,
+                          const ShapePrelude* same_ring) {
   ShapePrelude prelude;
   prelude.cu = PowerOf(angles.cos_u, f[kEps1], unit_exponents);
   prelude.su = PowerOf(angles.sin_u, f[kEps1], unit_exponents);
@@ -48,6 +50,11 @@ ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
   prelude.angles[kPhase2] = kHalfPi * (x2 - f[kB3]);
   prelude.angles[kBend2] = kHalfPi * f[kB3];
   prelude.angles[kTwist] = TwistAt(f, w);
+  if (same_ring != nullptr) {
+    std::copy(same_ring->j0, same_ring->j0 + 2, prelude.j0);
+    std::copy(same_ring->j1, same_ring->j1 + 2, prelude.j1);
+    return prelude;
+  }
   for (int i = 0; i < 2; ++i) {
     const double ring = kHalfPi * f[i == 0 ? kA1 : kA2] * prelude.cu.value;
     prelude.j0[i] = ceres::BesselJ0(ring);

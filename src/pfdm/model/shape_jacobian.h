@@ -35,8 +35,21 @@ struct ShapePrelude {
   Eigen::Vector3d wall_direction = Eigen::Vector3d::Zero();
   double wall_inverse_norm = 0.0;
 };
+// With same_ring, a prelude of the same a1, a2 and Cu^e1 (a point of the
+// same ring), its Bessel values are taken, not computed again: the
+// surfaces and grids are sampled ring by ring, and J0 and J1 were a tenth
+// of a contour job.
 ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
-                          bool unit_exponents, double w = 0.0);
+                          bool unit_exponents, double w = 0.0,
+                          const ShapePrelude* same_ring = nullptr);
+
+// Whether points (f, angles) and (g, other) have the same ring half extents
+// a1 Cu^e1 and a2 Cu^e1, bit for bit.
+inline bool SameRing(const double* f, const Angles<double>& angles,
+                     const double* g, const Angles<double>& other) {
+  return angles.cos_u == other.cos_u && f[kA1] == g[kA1] && f[kA2] == g[kA2] &&
+         f[kEps1] == g[kEps1];
+}
 
 // The shape and, when jacobian is not null, ds/df, from the prelude and the
 // sines and cosines of its angles.
@@ -58,7 +71,10 @@ void ShapesOfBatch(int count, const FunctionValues* f,
   double sines[kShapeBatch * kNumShapeAngles];
   double cosines[kShapeBatch * kNumShapeAngles];
   for (int i = 0; i < count; ++i) {
-    preludes[i] = PrepareShape(f[i].data(), angles[i], unit_exponents, w[i]);
+    const bool same_ring = i > 0 && SameRing(f[i].data(), angles[i],
+                                             f[i - 1].data(), angles[i - 1]);
+    preludes[i] = PrepareShape(f[i].data(), angles[i], unit_exponents, w[i],
+                               same_ring ? &preludes[i - 1] : nullptr);
     std::copy(preludes[i].angles, preludes[i].angles + kNumShapeAngles,
               shape_angles + i * kNumShapeAngles);
   }

@@ -17,6 +17,8 @@ void WorldPoints(const Model& model, size_t n, const double* u, const double* v,
   double point_w[kShapeBatch];
   double uv[2 * kShapeBatch], uv_sines[2 * kShapeBatch],
       uv_cosines[2 * kShapeBatch];
+  double last_u = 0.0;
+  FunctionValues last_f;
   for (size_t first = 0; first < n; first += kShapeBatch) {
     const int count =
         static_cast<int>(std::min<size_t>(kShapeBatch, n - first));
@@ -27,7 +29,12 @@ void WorldPoints(const Model& model, size_t n, const double* u, const double* v,
     }
     SinCosMany(uv, 2 * count, uv_sines, uv_cosines);
     for (int i = 0; i < count; ++i) {
-      f[i] = model.FunctionsAt(uv[2 * i]);
+      // Surfaces and grids come ring by ring: a ring's points share u.
+      if (first + i == 0 || uv[2 * i] != last_u) {
+        last_u = uv[2 * i];
+        last_f = model.FunctionsAt(last_u);
+      }
+      f[i] = last_f;
       angles[i] = {uv_cosines[2 * i], uv_sines[2 * i], uv_cosines[2 * i + 1],
                    uv_sines[2 * i + 1]};
     }

@@ -73,5 +73,32 @@ TEST(WorldPointsTest, MatchModelWorldPointOneByOne) {
   }
 }
 
+// Points ring by ring, as surfaces and grids come (a ring's functions and
+// Bessel values are taken once, from its first point): the same points as
+// Model::WorldPoint's one by one, rings changing inside a batch and across
+// batches, on the mid-wall and off it.  The bends differ from ring to ring,
+// so a ring's values taken for the next would show.
+TEST(WorldPointsTest, RingByRingMatchesOneByOne) {
+  for (bool unit_exponents : {true, false}) {
+    const Model model = DeformedModel(unit_exponents);
+    std::vector<double> u, v, w;
+    const double u_min = model.config.u_min, u_max = model.config.u_max;
+    for (int ring = 0; ring < 7; ++ring) {
+      for (int j = 0; j < 13; ++j) {
+        u.push_back(u_min + (u_max - u_min) * (ring + 0.5) / 7);
+        v.push_back(-M_PI + 2 * M_PI * j / 13);
+        w.push_back(ring % 3 == 0 ? 0.0 : 0.5 * (j % 3 - 1));
+      }
+    }
+    std::vector<Eigen::Vector3d> points(u.size());
+    WorldPoints(model, u.size(), u.data(), v.data(), w.data(), 1,
+                points.data());
+    for (size_t i = 0; i < u.size(); ++i) {
+      EXPECT_LT((points[i] - model.WorldPoint(u[i], v[i], w[i])).norm(), 1e-11)
+          << "point " << i;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -33,6 +33,8 @@ class BandCholesky {
   int bandwidth() const { return bandwidth_; }
 
  private:
+  void SolveVector(double* x) const;
+
   int size_ = 0;
   int bandwidth_ = 0;
   // L(i, j) at band_(i, j - i + bandwidth_), j in [i - bandwidth_, i].

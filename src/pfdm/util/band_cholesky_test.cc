@@ -60,6 +60,24 @@ TEST(BandCholeskyTest, WideBandSolvesAsADenseCholesky) {
   EXPECT_GT(expected.cwiseAbs().maxCoeff(), 1e-3);
 }
 
+// One right-hand side takes its own path (dot products and row updates
+// instead of Eigen's products): the dense LLT's solve to 1e-12, and the
+// many-column path's answer for the same column.
+TEST(BandCholeskyTest, SolvesOneRightHandSideAsMany) {
+  const Eigen::SparseMatrix<double> k = RandomBand(400, 145, 8);
+  BandCholesky band;
+  ASSERT_TRUE(band.Compute(k));
+  const BandCholesky::RowMajorMatrix b =
+      BandCholesky::RowMajorMatrix::Random(400, 2);
+  const Eigen::MatrixXd expected =
+      Eigen::MatrixXd(k).llt().solve(Eigen::MatrixXd(b.col(0)));
+  const Eigen::MatrixXd one = band.Solve(b.col(0));
+  const Eigen::MatrixXd many = band.Solve(b);
+  EXPECT_LT((one - expected).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((one - many.col(0)).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_GT(expected.cwiseAbs().maxCoeff(), 1e-3);
+}
+
 // K handed over as its lower band factorizes as the sparse K: the same
 // solve to the bit, and a band wider than K's entries reach is taken as
 // given (its zeros change the sums' grouping: round-off only).

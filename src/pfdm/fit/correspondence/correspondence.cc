@@ -56,13 +56,14 @@ double LongitudeAround(const Model& model, const Eigen::Vector3d& point,
 // interpolated along u as WorldPointAt does, derivatives in closed form
 // (ShapeAngleDerivatives) rather than through ceres::Jet, which made the
 // search several times slower.  The closed form covers the layer w = 0 of
-// the global model; off it (a solid's other layers) or with a local field,
-// the Jets.
+// the global model, a local field's bilinear d(u, v) added with its own
+// Jets (cheap: no functions of the angles); off it (a solid's other
+// layers), the Jets throughout.
 class SurfacePoints {
  public:
   SurfacePoints(const Model& model, bool jet_derivatives)
       : model_(model),
-        jet_derivatives_(jet_derivatives || !model.state.local.empty()),
+        jet_derivatives_(jet_derivatives),
         grid_(model.config.Grid()),
         free_mask_(model.config.FreeMask()),
         unit_exponents_(model.UnitExponents()),
@@ -98,12 +99,27 @@ class SurfacePoints {
     }
     const ShapeAndAngleDerivatives shape =
         ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents_);
-    *point = center_ + rotation_ * shape.shape;
-    jacobian->col(0) = rotation_ * shape.d_u;
-    jacobian->col(1) = rotation_ * shape.d_v;
+    Eigen::Vector3d model_point = shape.shape;
+    Eigen::Matrix<double, 3, 2> model_jacobian;
+    model_jacobian << shape.d_u, shape.d_v;
+    if (!model_.state.local.empty())
+      AddLocal(u, v, &model_point, &model_jacobian);
+    *point = center_ + rotation_ * model_point;
+    *jacobian = rotation_ * model_jacobian;
   }
 
  private:
+  void AddLocal(double u, double v, Eigen::Vector3d* point,
+                Eigen::Matrix<double, 3, 2>* jacobian) const {
+    using Jet2 = ceres::Jet<double, 2>;
+    const Eigen::Matrix<Jet2, 3, 1> d =
+        LocalDisplacement(model_.state.local, Jet2(u, 0), Jet2(v, 1));
+    for (int i = 0; i < 3; ++i) {
+      (*point)[i] += d[i].a;
+      jacobian->row(i) += d[i].v.transpose();
+    }
+  }
+
   const Model& model_;
   const bool jet_derivatives_;
   const KnotGrid& grid_;

@@ -9,6 +9,7 @@
 #include "ceres/jet.h"
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/initialization.h"
+#include "pfdm/model/local_field.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/testing/test_models.h"
 
@@ -241,20 +242,37 @@ MaterialPoint ReferenceClosest(const Model& model, const Eigen::Vector3d& p) {
   return best;
 }
 
-// Random points within 3 mm of the bent, twisted truth model and of the
-// initialized frame-0 model, many of them near the apex pole and across the
-// seam v = +-pi.  Against the search with ceres::Jet derivatives (the same
-// steps, as the search was before closed-form derivatives): the same
-// distances to 1e-9 mm and material points to 1e-6 mm on the model.
-// Against a slow reference (dense grid, then Gauss-Newton to the end):
-// never farther from the data than 1e-6 mm more.
+// The truth model with a local field of up to 2 mm per coordinate at its
+// 13 x 24 nodes, as the contours' local rounds search it.
+Model WithLocalField(Model model) {
+  std::mt19937 random(4);
+  const LocalGrid grid{13, 24, model.config.u_min, model.config.u_max};
+  model.state.local = LocalField::Zero(grid);
+  std::uniform_real_distribution<double> offset(-2.0, 2.0);
+  for (double& value : model.state.local.values) value = offset(random);
+  return model;
+}
+
+// Random points within 3 mm of the bent, twisted truth model (with and
+// without a local field) and of the initialized frame-0 model, many of them
+// near the apex pole and across the seam v = +-pi.  Against the search with
+// ceres::Jet derivatives (the same steps, as the search was before
+// closed-form derivatives): the same distances to 1e-9 mm and material
+// points to 1e-6 mm on the model.  Against a slow reference (dense grid,
+// then Gauss-Newton to the end): never farther from the data than 1e-6 mm
+// more, on the global models; the random field's bumps have local minima
+// of their own (0.45 mm farther than the reference's), which neither
+// search escapes.
 TEST(CorrespondenceTest, MatchesJetDerivativesAndAReferenceOnRandomPoints) {
   Phantom phantom;
   const std::vector<Eigen::Vector3d> data = PhantomPositions(1000, 0, &phantom);
   const Model start = InitializeModel(phantom.truth[0].config, data, {});
   std::mt19937 random(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (const Model& model : {phantom.truth[3], start}) {
+  const Model local = WithLocalField(phantom.truth[3]);
+  for (const Model* model_in :
+       std::initializer_list<const Model*>{&phantom.truth[3], &start, &local}) {
+    const Model& model = *model_in;
     const double u_min = model.config.u_min, u_max = model.config.u_max;
     std::vector<Eigen::Vector3d> points;
     for (int i = 0; i < 300; ++i) {
@@ -293,7 +311,7 @@ TEST(CorrespondenceTest, MatchesJetDerivativesAndAReferenceOnRandomPoints) {
     EXPECT_NEAR(evaluations, jet_evaluations, 0.05 * jet_evaluations);
     EXPECT_LT(worst_mm, 1e-6);
     EXPECT_LT(worst_distance_mm, 1e-9);
-    EXPECT_LT(worst_excess_mm, 1e-6);
+    if (model_in != &local) EXPECT_LT(worst_excess_mm, 1e-6);
   }
 }
 

@@ -217,19 +217,18 @@ struct LowerBand {
   BandCholesky::RowMajorMatrix Trimmed() const {
     return lower.rightCols(used + 1);
   }
-  // A x, each row summed in its columns' order, as a sparse A's product.
+  // A x, row by row of the band: the row's lower part against x, and its
+  // mirror above the diagonal added along x's entries (contiguous both; the
+  // column walk of the mirror was a tenth of the contours' field solve).
   Eigen::VectorXd Times(const Eigen::VectorXd& x) const {
     const int n = static_cast<int>(lower.rows());
-    Eigen::VectorXd y(n);
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(n);
     for (int i = 0; i < n; ++i) {
-      double sum = 0.0;
-      for (int j = std::max(0, i - used); j <= i; ++j) {
-        sum += lower(i, j - i + width) * x[j];
-      }
-      for (int j = i + 1; j <= std::min(n - 1, i + used); ++j) {
-        sum += lower(j, i - j + width) * x[j];
-      }
-      y[i] = sum;
+      const int first = std::max(0, i - used);
+      const int count = i - first;
+      const auto row = lower.row(i).segment(first - i + width, count);
+      y[i] += row.dot(x.segment(first, count)) + lower(i, width) * x[i];
+      y.segment(first, count) += row.transpose() * x[i];
     }
     return y;
   }
@@ -239,21 +238,52 @@ struct LowerBand {
   int used = 0;
 };
 
-// The whole A and b, 3 unknowns per node (index 3 node + coordinate).  A is
-// summed in place in its band, in the terms' order, as Eigen's
-// setFromTriplets summed a triplet per entry (the same A to the bit): the
-// triplets and their sorting took as long as A's factorization.
-void WholeSystem(const LocalDirectData& data,
-                 const LocalRegularizer& regularizer, int num_nodes,
-                 LowerBand* a, Eigen::VectorXd* b) {
-  *a = LowerBand(3 * num_nodes, 3 * NodeSpan(data, regularizer) + 2);
-  auto add = [a](int row_node, int col_node, const Eigen::Matrix3d& m) {
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) {
-        if (m(r, c) != 0.0) a->Add(3 * row_node + r, 3 * col_node + c, m(r, c));
+// Adds m to A's 3 x 3 block of nodes (row_node, col_node), its zeros left
+// out.
+void AddBlock(int row_node, int col_node, const Eigen::Matrix3d& m,
+              LowerBand* a) {
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      if (m(r, c) != 0.0) a->Add(3 * row_node + r, 3 * col_node + c, m(r, c));
+    }
+  }
+}
+
+// The regularizer's part of A, 3 unknowns per node (index 3 node +
+// coordinate), summed in place in its band `width` wide: the same for
+// every solve of a frame's contour rounds (the ring means' 24 x 24 node
+// blocks were most of A's assembly), so kept between them.
+LowerBand StiffnessBand(const LocalRegularizer& regularizer, int num_nodes,
+                        int width) {
+  LowerBand a(3 * num_nodes, width);
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  for (const NodeDifference& term : regularizer.differences) {
+    const double w2 = term.sqrt_weight * term.sqrt_weight;
+    for (size_t p = 0; p < term.nodes.size(); ++p) {
+      for (size_t r = 0; r < term.nodes.size(); ++r) {
+        AddBlock(term.nodes[p], term.nodes[r],
+                 w2 * term.coefficients[p] * term.coefficients[r] * identity,
+                 &a);
       }
     }
-  };
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    const double s2 = ring.scale * ring.scale;
+    for (size_t p = 0; p < ring.nodes.size(); ++p) {
+      for (size_t r = 0; r < ring.nodes.size(); ++r) {
+        AddBlock(ring.nodes[p], ring.nodes[r],
+                 s2 * (identity + ring.radial[p] * ring.radial[r].transpose() +
+                       ring.tangential[p] * ring.tangential[r].transpose()),
+                 &a);
+      }
+    }
+  }
+  return a;
+}
+
+// The data's part of A added to *a, and b.
+void AddDataSystem(const LocalDirectData& data, int num_nodes, LowerBand* a,
+                   Eigen::VectorXd* b) {
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   *b = Eigen::VectorXd::Zero(3 * num_nodes);
   for (size_t i = 0; i < data.shapes.size(); ++i) {
@@ -264,32 +294,39 @@ void WholeSystem(const LocalDirectData& data,
         (normal.isZero(0.0) ? identity : normal * normal.transpose());
     for (int p = 0; p < shape.count; ++p) {
       for (int r = 0; r < shape.count; ++r) {
-        add(shape.node[p], shape.node[r],
-            shape.weight[p] * shape.weight[r] * gram);
+        AddBlock(shape.node[p], shape.node[r],
+                 shape.weight[p] * shape.weight[r] * gram, a);
       }
       b->segment<3>(3 * shape.node[p]) -=
           shape.weight[p] * gram * data.offsets[i];
     }
   }
+}
+
+// The regularizer's terms, flattened: equal signatures, equal stiffness.
+std::vector<double> StiffnessSignature(const LocalRegularizer& regularizer,
+                                       int num_nodes, int width) {
+  std::vector<double> signature = {static_cast<double>(num_nodes),
+                                   static_cast<double>(width)};
   for (const NodeDifference& term : regularizer.differences) {
-    const double w2 = term.sqrt_weight * term.sqrt_weight;
-    for (size_t p = 0; p < term.nodes.size(); ++p) {
-      for (size_t r = 0; r < term.nodes.size(); ++r) {
-        add(term.nodes[p], term.nodes[r],
-            w2 * term.coefficients[p] * term.coefficients[r] * identity);
-      }
-    }
+    signature.push_back(term.sqrt_weight);
+    signature.push_back(static_cast<double>(term.nodes.size()));
+    signature.insert(signature.end(), term.nodes.begin(), term.nodes.end());
+    signature.insert(signature.end(), term.coefficients.begin(),
+                     term.coefficients.end());
   }
   for (const RingMean& ring : regularizer.rings) {
-    const double s2 = ring.scale * ring.scale;
-    for (size_t p = 0; p < ring.nodes.size(); ++p) {
-      for (size_t r = 0; r < ring.nodes.size(); ++r) {
-        add(ring.nodes[p], ring.nodes[r],
-            s2 * (identity + ring.radial[p] * ring.radial[r].transpose() +
-                  ring.tangential[p] * ring.tangential[r].transpose()));
-      }
+    signature.push_back(ring.scale);
+    signature.push_back(static_cast<double>(ring.nodes.size()));
+    signature.insert(signature.end(), ring.nodes.begin(), ring.nodes.end());
+    for (size_t k = 0; k < ring.nodes.size(); ++k) {
+      signature.insert(signature.end(), ring.radial[k].data(),
+                       ring.radial[k].data() + 3);
+      signature.insert(signature.end(), ring.tangential[k].data(),
+                       ring.tangential[k].data() + 3);
     }
   }
+  return signature;
 }
 
 void FillReport(double seconds, const SolverTracePoint& before,
@@ -308,15 +345,16 @@ void FillReport(double seconds, const SolverTracePoint& before,
   report->trace.back().wall_seconds = seconds;
 }
 
-// Points with normals: A as a whole, factorized for this solve.
-bool SolveWhole(const LocalDirectData& data,
+// Points with normals: A as a whole (`stiffness`, the regularizer's part,
+// plus the data's), factorized for this solve.
+bool SolveWhole(const LocalDirectData& data, const LowerBand& stiffness,
                 const LocalRegularizer& regularizer, LocalField* field,
                 SolverReport* report) {
   const auto start = Clock::now();
   const int num_nodes = field->grid.NumNodes();
-  LowerBand a(0, 0);
+  LowerBand a = stiffness;
   Eigen::VectorXd b;
-  WholeSystem(data, regularizer, num_nodes, &a, &b);
+  AddDataSystem(data, num_nodes, &a, &b);
   BandCholesky cholesky;
   if (!cholesky.ComputeBand(a.Trimmed())) return false;
   Eigen::Map<Eigen::VectorXd> values(field->values.data(), 3 * num_nodes);
@@ -331,6 +369,25 @@ bool SolveWhole(const LocalDirectData& data,
 }
 
 }  // namespace
+
+struct LocalDirectSolver::Stiffness {
+  std::vector<double> signature;
+  LowerBand band{0, 0};
+};
+
+const LocalDirectSolver::Stiffness& LocalDirectSolver::StiffnessFor(
+    const LocalDirectData& data, const LocalRegularizer& regularizer,
+    int num_nodes) {
+  const int width = 3 * NodeSpan(data, regularizer) + 2;
+  std::vector<double> signature =
+      StiffnessSignature(regularizer, num_nodes, width);
+  if (stiffness_ == nullptr || stiffness_->signature != signature) {
+    stiffness_ = std::make_unique<Stiffness>();
+    stiffness_->band = StiffnessBand(regularizer, num_nodes, width);
+    stiffness_->signature = std::move(signature);
+  }
+  return *stiffness_;
+}
 
 struct LocalDirectSolver::Factor {
   std::vector<double> signature;
@@ -369,7 +426,11 @@ const LocalDirectSolver::Factor* LocalDirectSolver::FactorFor(
 bool LocalDirectSolver::Solve(const LocalDirectData& data,
                               const LocalRegularizer& regularizer,
                               LocalField* field, SolverReport* report) {
-  if (HasNormals(data)) return SolveWhole(data, regularizer, field, report);
+  if (HasNormals(data)) {
+    const Stiffness& stiffness =
+        StiffnessFor(data, regularizer, field->grid.NumNodes());
+    return SolveWhole(data, stiffness.band, regularizer, field, report);
+  }
   const auto start = Clock::now();
   const int num_nodes = field->grid.NumNodes();
   const Factor* factor = FactorFor(data, regularizer, num_nodes);

@@ -75,7 +75,15 @@ class LocalDirectSolver {
   const Factor* FactorFor(const LocalDirectData& data,
                           const LocalRegularizer& regularizer, int num_nodes);
 
+  struct Stiffness;
+  // A with normals less the data's part, as the last solve had it: kept
+  // while the regularizer stays (a frame's contour rounds).
+  const Stiffness& StiffnessFor(const LocalDirectData& data,
+                                const LocalRegularizer& regularizer,
+                                int num_nodes);
+
   std::vector<std::unique_ptr<Factor>> factors_;  // Most recent first.
+  std::unique_ptr<Stiffness> stiffness_;
   int factorizations_ = 0;
 };
 

@@ -177,6 +177,34 @@ TEST(LocalDirectTest, ReusesKOnlyWhenItIsTheSame) {
       1e-9);
 }
 
+// Contour points (the whole A): a solver that keeps the regularizer's part
+// of A from an earlier solve (the same regularizer, other points and
+// normals, as a frame's next contour round) or has to drop it (another
+// global shape's ring directions, as the next frame) solves as Ceres does,
+// within 1e-9 mm.
+TEST(LocalDirectTest, KeepsTheStiffnessOnlyWhileTheRegularizerStays) {
+  const Case first = MakeCase(500, true, 7, /*sliding=*/true);
+  const Case second = MakeCase(500, true, 8, /*sliding=*/true);
+  const LocalRegularizer regularizer =
+      MakeLocalRegularizer(first.model, first.grid, 500, 0.05);
+  Model other_shape = second.model;
+  for (FunctionValues& knot : other_shape.state.knots) knot[kA1] *= 1.3;
+  other_shape.state.globals[kA1] *= 1.3;
+  const LocalRegularizer other =
+      MakeLocalRegularizer(other_shape, second.grid, 500, 0.05);
+  LocalDirectSolver kept;
+  LocalField field = LocalField::Zero(first.grid);
+  SolverReport report, ceres_report;
+  ASSERT_TRUE(kept.Solve(first.data, regularizer, &field, &report));
+  for (const LocalRegularizer* next : {&regularizer, &other}) {
+    field = LocalField::Zero(second.grid);
+    ASSERT_TRUE(kept.Solve(second.data, *next, &field, &report));
+    const LocalField expected = CeresSolve(second, *next, &ceres_report);
+    EXPECT_LT(MaxDifference(field, expected), 1e-9);
+    EXPECT_GT(*std::max_element(field.values.begin(), field.values.end()), 0.1);
+  }
+}
+
 // A node no point and no stiffness holds: K is singular, the solver says
 // so and leaves the field alone (the caller then asks Ceres).
 TEST(LocalDirectTest, RefusesASingularK) {

@@ -158,7 +158,7 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   if (options.local.enabled) {
     const FitOptions local_options = WithLossScale(options, fit.loss_scale_mm);
     FitLocalStage(points, local_options, source, &model, &fit,
-                  &carried->local_solver, &carried->surface_grid);
+                  &carried->local_solver, &carried->local_surface_grid);
     if (fit.covariance.computed) {
       fit.covariance.local_noise = LocalNoiseDraws(
           points, fit.material, local_options, model, fit.covariance.sigma_mm);

@@ -39,9 +39,12 @@ struct CarriedState {
   // The local field's direct solver, kept for its factorization: tracked
   // frames' fields share one matrix (local_direct.h).
   LocalDirectSolver local_solver;
-  // The closest-point searches' grid, its k-d tree kept while the surface
-  // moves little (SurfaceGrid::Follow): rebuilt about once a frame.
+  // The closest-point searches' grids, their k-d trees kept while the
+  // surface moves little (SurfaceGrid::Follow): the global rounds' and the
+  // local field's.  One grid for both was rebuilt twice a frame more, as
+  // the field came and went (biv-me's contours: 137 builds in 25 frames).
   SurfaceGrid surface_grid;
+  SurfaceGrid local_surface_grid;
 };
 
 // Fits `frame` (`reference`: frame 0) from carried->model and updates
