@@ -55,6 +55,19 @@ double WallThickness(const Model& model, double u, double v) {
                       .dot(SurfaceNormal(model, u, v)));
 }
 
+double WallThickness(const Model& model, const FunctionValues& f, double u,
+                     double v, const Eigen::Vector3d& xu,
+                     const Eigen::Vector3d& xv) {
+  // dv x du, as SurfaceNormal orients it (the sign does not matter here).
+  const Eigen::Vector3d normal = xv.cross(xu);
+  if (!(normal.norm() > 1e-9 * xu.squaredNorm())) {
+    return WallThickness(model, u, v);
+  }
+  return std::abs(
+      (model.WorldPointWith(f, u, v, 1.0) - model.WorldPointWith(f, u, v, -1.0))
+          .dot(normal.normalized()));
+}
+
 double RingHeight(const Model& model, double u) {
   return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
          model.FunctionAt(kE3o, u);

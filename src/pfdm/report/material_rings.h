@@ -42,6 +42,12 @@ double AngleAbout(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
 // along the normal of the layer w = 0 there, as a chord perpendicular to
 // the wall reads it.
 double WallThickness(const Model& model, double u, double v);
+// The same with the ring's functions at u and the layer w = 0's tangents
+// dx/du, dx/dv at (u, v) given, as the regional samples have them: two
+// model points instead of the functions twice and the tangents again.
+double WallThickness(const Model& model, const FunctionValues& f, double u,
+                     double v, const Eigen::Vector3d& xu,
+                     const Eigen::Vector3d& xv);
 
 // Height of ring u along the reference model's axis in its model frame:
 // a0 a3 sin u + e3o, which bending does not move (its ring mean is zero).

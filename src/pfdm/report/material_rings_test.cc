@@ -4,6 +4,7 @@
 
 #include "Eigen/Geometry"
 #include "gtest/gtest.h"
+#include "pfdm/report/surface_strain.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -52,6 +53,35 @@ TEST(MaterialRingsTest, HeightFractionRunsFromApexToRim) {
   EXPECT_NEAR(std::sin(u), s_min + 0.4 * (std::sin(model.config.u_max) - s_min),
               1e-12);
   EXPECT_NEAR(RingHeight(model, u), 40.0 * std::sin(u), 1e-12);
+}
+
+// The shell's wall, 10 mm, read on a bent, twisted shell with a local
+// field: from the ring's functions and tangents as from the material point
+// alone, within 1e-9 mm, and 10 mm where the shell is undeformed.
+TEST(MaterialRingsTest, WallThicknessFromTheRingsTangentsIsTheSame) {
+  const Model shell = TestShell(9);
+  Model bent = shell;
+  for (size_t k = 0; k < bent.state.knots.size(); ++k) {
+    bent.state.knots[k][kB0] = 3.0 - 0.4 * k;
+    bent.state.knots[k][kTau] = 0.05 * k;
+    bent.state.knots[k][kH] = 9.0 + 0.2 * k;
+  }
+  bent.state.globals[kB0] = 1.0;
+  AddTestLocalField(1.5, &bent);
+  for (const Model* model :
+       std::initializer_list<const Model*>{&shell, &bent}) {
+    for (double u : {-1.2, -0.4, 0.0, 0.3}) {
+      const RingFunctions ring(*model, u);
+      for (double v : {-3.0, -1.0, 0.5, 2.9}) {
+        Eigen::Vector3d xu, xv;
+        SurfaceTangents(*model, ring, v, &xu, &xv);
+        const double expected = WallThickness(*model, u, v);
+        EXPECT_NEAR(WallThickness(*model, ring.at, u, v, xu, xv), expected,
+                    1e-9);
+        if (model == &shell) EXPECT_NEAR(expected, 10.0, 1e-9);
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -142,7 +142,8 @@ void SampleReferenceRow(const Model& reference, const RegionLayout& layout,
     sample.from = before.points[j] - before.centroid;
     SurfaceTangents(reference, ring, v, &sample.xu, &sample.xv);
     if (reference.config.Solid()) {
-      sample.thickness = WallThickness(reference, u, v);
+      sample.thickness =
+          WallThickness(reference, ring.at, u, v, sample.xu, sample.xv);
     }
   }
 }
@@ -192,7 +193,10 @@ void SampleRow(const Model& current, double u, CurrentSamples::Sample* row) {
     CurrentSamples::Sample& sample = row[j];
     sample.to = after.points[j] - after.centroid;
     SurfaceTangents(current, ring, v, &sample.xu, &sample.xv);
-    if (solid) sample.thickness = WallThickness(current, u, v);
+    if (solid) {
+      sample.thickness =
+          WallThickness(current, ring.at, u, v, sample.xu, sample.xv);
+    }
   }
 }
 
