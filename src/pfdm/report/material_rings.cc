@@ -50,9 +50,21 @@ double MeanRotation(const MaterialRing& from, const MaterialRing& to,
   return sum / from.points.size();
 }
 
+namespace {
+
+// The chord from (u, v, -1) to (u, v, +1) along the unit `normal`.
+double ThicknessAlong(const Model& model, const FunctionValues& f, double u,
+                      double v, const Eigen::Vector3d& normal) {
+  return std::abs(
+      (model.WorldPointWith(f, u, v, 1.0) - model.WorldPointWith(f, u, v, -1.0))
+          .dot(normal));
+}
+
+}  // namespace
+
 double WallThickness(const Model& model, double u, double v) {
-  return std::abs((model.WorldPoint(u, v, 1.0) - model.WorldPoint(u, v, -1.0))
-                      .dot(SurfaceNormal(model, u, v)));
+  return ThicknessAlong(model, model.FunctionsAt(u), u, v,
+                        SurfaceNormal(model, u, v));
 }
 
 double WallThickness(const Model& model, const FunctionValues& f, double u,
@@ -63,9 +75,7 @@ double WallThickness(const Model& model, const FunctionValues& f, double u,
   if (!(normal.norm() > 1e-9 * xu.squaredNorm())) {
     return WallThickness(model, u, v);
   }
-  return std::abs(
-      (model.WorldPointWith(f, u, v, 1.0) - model.WorldPointWith(f, u, v, -1.0))
-          .dot(normal.normalized()));
+  return ThicknessAlong(model, f, u, v, normal.normalized());
 }
 
 double RingHeight(const Model& model, double u) {

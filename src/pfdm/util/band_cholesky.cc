@@ -21,6 +21,13 @@ double DotSse2(const double* a, const double* b, int n) {
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define PFDM_BAND_AVX2 1
+// The four lanes' sum, (l0 + l2) + (l1 + l3).
+__attribute__((target("avx2,fma"))) double LaneSum(__m256d lanes) {
+  const __m128d half = _mm_add_pd(_mm256_castpd256_pd128(lanes),
+                                  _mm256_extractf128_pd(lanes, 1));
+  return _mm_cvtsd_f64(_mm_add_sd(half, _mm_unpackhi_pd(half, half)));
+}
+
 // Four lanes and fused multiply-adds where the CPU has them: the build
 // targets SSE2, whose two lanes made this loop a tenth of a contour job.
 // Other round-off than DotSse2's (the sums' order), nothing else.
@@ -39,10 +46,7 @@ __attribute__((target("avx2,fma"))) double DotAvx2(const double* a,
         _mm256_fmadd_pd(_mm256_loadu_pd(a + i), _mm256_loadu_pd(b + i), sum0);
     i += 4;
   }
-  sum0 = _mm256_add_pd(sum0, sum1);
-  __m128d half =
-      _mm_add_pd(_mm256_castpd256_pd128(sum0), _mm256_extractf128_pd(sum0, 1));
-  double sum = _mm_cvtsd_f64(_mm_add_sd(half, _mm_unpackhi_pd(half, half)));
+  double sum = LaneSum(_mm256_add_pd(sum0, sum1));
   for (; i < n; ++i) sum += a[i] * b[i];
   return sum;
 }
@@ -63,9 +67,7 @@ __attribute__((target("avx2,fma"))) void Dot4Avx2(const double* a,
     }
   }
   for (int k = 0; k < 4; ++k) {
-    const __m128d half = _mm_add_pd(_mm256_castpd256_pd128(sum[k]),
-                                    _mm256_extractf128_pd(sum[k], 1));
-    out[k] = _mm_cvtsd_f64(_mm_add_sd(half, _mm_unpackhi_pd(half, half)));
+    out[k] = LaneSum(sum[k]);
     for (int m = i; m < n; ++m) out[k] += a[m] * b[k][m];
   }
 }
@@ -75,26 +77,22 @@ void Dot4Sse2(const double* a, const double* const* b, int n, double* out) {
   for (int k = 0; k < 4; ++k) out[k] = DotSse2(a, b[k], n);
 }
 
-using DotFunction = double (*)(const double*, const double*, int);
-using Dot4Function = void (*)(const double*, const double* const*, int,
-                              double*);
+// The kernels this CPU runs, chosen once.
+struct DotKernels {
+  double (*dot)(const double*, const double*, int);
+  void (*dot4)(const double*, const double* const*, int, double*);
+};
 
-Dot4Function ChooseDot4() {
+const DotKernels& Kernels() {
+  static const DotKernels kernels = [] {
 #ifdef PFDM_BAND_AVX2
-  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
-    return Dot4Avx2;
-  }
+    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
+      return DotKernels{DotAvx2, Dot4Avx2};
+    }
 #endif
-  return Dot4Sse2;
-}
-
-DotFunction ChooseDot() {
-#ifdef PFDM_BAND_AVX2
-  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
-    return DotAvx2;
-  }
-#endif
-  return DotSse2;
+    return DotKernels{DotSse2, Dot4Sse2};
+  }();
+  return kernels;
 }
 
 }  // namespace
@@ -121,8 +119,7 @@ bool BandCholesky::ComputeBand(RowMajorMatrix lower) {
   bandwidth_ = static_cast<int>(lower.cols()) - 1;
   const int b = bandwidth_;
   band_ = std::move(lower);
-  static const DotFunction dot = ChooseDot();
-  static const Dot4Function dot4 = ChooseDot4();
+  const auto [dot, dot4] = Kernels();
   for (int i = 0; i < size_; ++i) {
     const int first = std::max(0, i - b);
     const double* row_i = band_.row(i).data();
@@ -169,7 +166,7 @@ bool BandCholesky::ComputeBand(RowMajorMatrix lower) {
 // whole solve of their field with normals).
 void BandCholesky::SolveVector(double* x) const {
   const int b = bandwidth_;
-  static const DotFunction dot = ChooseDot();
+  const auto dot = Kernels().dot;
   for (int i = 0; i < size_; ++i) {
     const int first = std::max(0, i - b);
     const double* row = band_.row(i).data() + first - i + b;

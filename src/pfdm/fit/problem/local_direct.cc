@@ -34,32 +34,51 @@ bool HasNormals(const LocalDirectData& data) {
   return false;
 }
 
+// Appends a term of K: its weight, node count, nodes and (when not null:
+// all 1) coefficients.
+void AppendTerm(double weight, int count, const int* nodes,
+                const double* coefficients, std::vector<double>* signature) {
+  signature->push_back(weight);
+  signature->push_back(count);
+  signature->insert(signature->end(), nodes, nodes + count);
+  if (coefficients != nullptr) {
+    signature->insert(signature->end(), coefficients, coefficients + count);
+  }
+}
+
+// Appends the regularizer's terms and, with `directions`, the ring means'
+// radial and tangential directions (which the whole A takes, and K leaves
+// to the Woodbury columns).
+void AppendRegularizer(const LocalRegularizer& regularizer, bool directions,
+                       std::vector<double>* signature) {
+  for (const NodeDifference& term : regularizer.differences) {
+    AppendTerm(term.sqrt_weight, static_cast<int>(term.nodes.size()),
+               term.nodes.data(), term.coefficients.data(), signature);
+  }
+  for (const RingMean& ring : regularizer.rings) {
+    AppendTerm(ring.scale, static_cast<int>(ring.nodes.size()),
+               ring.nodes.data(), nullptr, signature);
+    if (!directions) continue;
+    for (size_t k = 0; k < ring.nodes.size(); ++k) {
+      signature->insert(signature->end(), ring.radial[k].data(),
+                        ring.radial[k].data() + 3);
+      signature->insert(signature->end(), ring.tangential[k].data(),
+                        ring.tangential[k].data() + 3);
+    }
+  }
+}
+
 // Everything K is made of, in order: equal signatures, equal K.
 std::vector<double> Signature(const LocalDirectData& data,
                               const LocalRegularizer& regularizer,
                               int num_nodes) {
   std::vector<double> signature = {static_cast<double>(num_nodes)};
-  auto put = [&signature](double weight, int count, const int* nodes,
-                          const double* coefficients) {
-    signature.push_back(weight);
-    signature.push_back(count);
-    signature.insert(signature.end(), nodes, nodes + count);
-    if (coefficients != nullptr) {
-      signature.insert(signature.end(), coefficients, coefficients + count);
-    }
-  };
   for (size_t i = 0; i < data.shapes.size(); ++i) {
     const ShapeWeights& shape = data.shapes[i];
-    put(Weight(data, i), shape.count, shape.node.data(), shape.weight.data());
+    AppendTerm(Weight(data, i), shape.count, shape.node.data(),
+               shape.weight.data(), &signature);
   }
-  for (const NodeDifference& term : regularizer.differences) {
-    put(term.sqrt_weight, static_cast<int>(term.nodes.size()),
-        term.nodes.data(), term.coefficients.data());
-  }
-  for (const RingMean& ring : regularizer.rings) {
-    put(ring.scale, static_cast<int>(ring.nodes.size()), ring.nodes.data(),
-        nullptr);
-  }
+  AppendRegularizer(regularizer, /*directions=*/false, &signature);
   return signature;
 }
 
@@ -308,24 +327,7 @@ std::vector<double> StiffnessSignature(const LocalRegularizer& regularizer,
                                        int num_nodes, int width) {
   std::vector<double> signature = {static_cast<double>(num_nodes),
                                    static_cast<double>(width)};
-  for (const NodeDifference& term : regularizer.differences) {
-    signature.push_back(term.sqrt_weight);
-    signature.push_back(static_cast<double>(term.nodes.size()));
-    signature.insert(signature.end(), term.nodes.begin(), term.nodes.end());
-    signature.insert(signature.end(), term.coefficients.begin(),
-                     term.coefficients.end());
-  }
-  for (const RingMean& ring : regularizer.rings) {
-    signature.push_back(ring.scale);
-    signature.push_back(static_cast<double>(ring.nodes.size()));
-    signature.insert(signature.end(), ring.nodes.begin(), ring.nodes.end());
-    for (size_t k = 0; k < ring.nodes.size(); ++k) {
-      signature.insert(signature.end(), ring.radial[k].data(),
-                       ring.radial[k].data() + 3);
-      signature.insert(signature.end(), ring.tangential[k].data(),
-                       ring.tangential[k].data() + 3);
-    }
-  }
+  AppendRegularizer(regularizer, /*directions=*/true, &signature);
   return signature;
 }
 
