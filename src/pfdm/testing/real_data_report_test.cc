@@ -134,7 +134,9 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
 // local field's rounds are mixed.  The rounds alone (no pull toward the
 // previous frame) leave 4 frames of the outflow tract's end-systole (8,
 // 10-12) out of rounds, by 0.10-0.14 mm, and the fit is no worse (pooled
-// RMS 0.764 mm against 0.791).
+// RMS 0.764 mm against 0.791).  Since the local field's nodes move along
+// the surface's normal only (node_normals.h; sliding along the wall had
+// fitted some of the data) the pooled RMS reads 0.856 mm.
 TEST(RealDataReportTest, BivMeContourRoundsSettle) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
@@ -161,7 +163,7 @@ TEST(RealDataReportTest, BivMeContourRoundsSettle) {
     squares += frame.rms_mm * frame.rms_mm * frame.residuals.size();
     points += static_cast<int>(frame.residuals.size());
   }
-  EXPECT_LT(std::sqrt(squares / points), 0.7908);
+  EXPECT_LT(std::sqrt(squares / points), 0.86);
 }
 
 // The same fit as `pfdm fit` makes it by default (issue 31): the pull
@@ -171,7 +173,10 @@ TEST(RealDataReportTest, BivMeContourRoundsSettle) {
 // Ell jump by 14 points).  Every frame settles, in 166 rounds (228 before
 // the rounds were mixed), pooled RMS 0.769 mm, and no level's Ecc or Ell
 // departs from its neighbours' mean by 3 points (the largest: 2.6, apical
-// Ecc at frame 14).
+// Ecc at frame 14).  With the local field's nodes held to the surface's
+// normal (node_normals.h): 163 rounds, pooled RMS 0.860 mm, the largest
+// spike 2.78 points (apical Ecc at frame 14), and the cavity closer to
+// biv-me's meshes (mean deviation 1.8 % against 2.6 %).
 TEST(RealDataReportTest, BivMeTemporalPriorSettlesEveryFrame) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
@@ -204,7 +209,7 @@ TEST(RealDataReportTest, BivMeTemporalPriorSettlesEveryFrame) {
       rounds, std::sqrt(squares / points), spike.points, spike.frame,
       spike.level, spike.longitudinal ? "Ell" : "Ecc");
   EXPECT_LT(rounds, 190);
-  EXPECT_LT(std::sqrt(squares / points), 0.7908);
+  EXPECT_LT(std::sqrt(squares / points), 0.865);
   EXPECT_LT(std::abs(spike.points), 3.0);
 }
 
@@ -244,8 +249,9 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
                  1.0),
         c.myocardial_volume_change_percent, c.lv_mass_g, c.wall_thickness_mm);
     // End-systole's outflow tract is where the contours say least: frames
-    // 10 and 11 read 11.5 and 10.3 % below the meshes, which lie 0.5 mm
-    // outside the contours (the cavity-only fit: 11.4 and 10.7 %).
+    // 10 and 11 read 9.8 and 9.5 % below the meshes, which lie 0.5 mm
+    // outside the contours (11.5 and 10.3 % when the local field slid
+    // along the wall; the cavity-only fit then: 11.4 and 10.7 %).
     EXPECT_LT(std::abs(deviation), 0.12) << "frame " << t;
     EXPECT_LT(fit.frames[t].rms_mm, 2.5) << "frame " << t;
     // The myocardium keeps its volume within 10 % over the cycle.
@@ -280,7 +286,8 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
 // 2 % of ED at every frame (without: +7.7 % at frame 11, the test above),
 // at the same fit (pooled RMS 0.937 mm against 0.938), the cavity no
 // further from biv-me's meshes on average (ES 69.9 ml against 68.4; mesh
-// 72.0).
+// 72.0).  With the local field's nodes held to the surface's normal
+// (node_normals.h): pooled RMS 1.045 mm against 1.043.
 TEST(RealDataReportTest, BivMeIncompressibleWallKeepsItsVolume) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
@@ -311,7 +318,7 @@ TEST(RealDataReportTest, BivMeIncompressibleWallKeepsItsVolume) {
   const double rms = std::sqrt(squares / points);
   std::printf("pooled rms %.4f mm, mean cavity deviation %.2f %%\n", rms,
               100.0 * sum_deviation / 25);
-  EXPECT_LT(rms, 0.95);
+  EXPECT_LT(rms, 1.05);
   EXPECT_LT(sum_deviation / 25, 0.04);
 }
 

@@ -1,5 +1,7 @@
 // Fits to the real third-party LV data in ../shared/data; skipped without it.
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/fitter.h"
@@ -42,11 +44,13 @@ TEST(RealDataTest, BivMePatientContoursFitWithinTwoAndAHalfMillimetres) {
 
 // The landmarks give the axis (APEX_POINT to the valves' centroid), as
 // `pfdm fit` takes them: the contours (lv-cavity) fit as well as from the
-// points' own axis before them (pooled RMS 0.7908 mm against 0.7959; no
-// frame more than 0.05 mm worse) and the cavity volumes, closed at the
-// mitral valve planes, move by at most 0.8 % (ED 174.9 ml against 175.4,
-// ES 67.8 against 68.2).  Today's numbers: `pfdm fit --contours lv-cavity`
-// at the commit before the landmarks.
+// points' own axis (pooled RMS 0.8599 mm against 0.8596; no frame more than
+// 0.002 mm worse) and the cavity volumes, closed at the mitral valve
+// planes, are the same within 0.1 % (ED 175.05 ml against 175.12, ES 70.42
+// against 70.45, frame 17 149.13 against 149.14).  The own axis' numbers:
+// FitSequence without AddLandmarkAxis, with the local field held to the
+// surface's normal (node_normals.h; 0.7959 mm, and ES 68.2 ml, when it slid
+// along the wall).
 TEST(RealDataTest, BivMeLandmarksGiveTheAxis) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
@@ -65,14 +69,57 @@ TEST(RealDataTest, BivMeLandmarksGiveTheAxis) {
     squares += frame.rms_mm * frame.rms_mm * frame.residuals.size();
     points += static_cast<int>(frame.residuals.size());
   }
-  EXPECT_LE(std::sqrt(squares / points), 0.7959);
+  EXPECT_LE(std::sqrt(squares / points), 0.8596 + 0.001);
   const FitAnalysis analysis = AnalyzeFit(fit, MitralValvePlanes(gp));
-  const double today[][2] = {{0, 175.41}, {9, 68.17}, {17, 149.76}};
+  const double today[][2] = {{0, 175.12}, {9, 70.45}, {17, 149.14}};
   for (const auto& [frame, volume] : today) {
     EXPECT_NEAR(analysis.clinical[static_cast<int>(frame)].volume_ml, volume,
-                0.02 * volume)
+                0.005 * volume)
         << "frame " << frame;
   }
+}
+
+// The same contours moved by 1e-5 mm (x, -+ alternately): a fit continuous
+// in its data moves the segments' Ecc by about that times a modest factor.
+// The worst segment's change, per frame: median 0.18 points and largest
+// 0.53 with the local field held to the surface's normal
+// (fit/problem/node_normals.h); 0.89 and 4.6 when it slid along the
+// surface.  Without the field: 0.05 and 0.10.
+TEST(RealDataTest, BivMeSegmentEccHoldsWhenThePointsMoveByAHair) {
+  const std::string shared = SharedDataDirectory();
+  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
+  const std::string gp = shared + "/biv-me-patient1/guidepoints";
+  FitOptions options;
+  AddLandmarkAxis(gp, &options);
+  const PointSequence points = ReadGpFiles(gp, ExpandContourAlias("lv-cavity"));
+  PointSequence moved = points;
+  int parity = 0;
+  for (Frame& frame : moved.frames) {
+    for (DataPoint& point : frame.points) {
+      point.position.x() += parity++ % 2 == 0 ? -1e-5 : 1e-5;
+    }
+  }
+  const auto analyze = [&](const PointSequence& sequence) {
+    return AnalyzeFit(FitSequence(sequence, ModelConfig::Paper(17), options),
+                      MitralValvePlanes(gp));
+  };
+  const FitAnalysis a = analyze(points);
+  const FitAnalysis b = analyze(moved);
+  ASSERT_EQ(a.region_motion.size(), 25u);
+  std::vector<double> worst;
+  for (size_t t = 0; t < a.region_motion.size(); ++t) {
+    double largest = 0.0;
+    for (size_t r = 0; r < 16; ++r) {
+      const double change = std::abs(a.region_motion[t][r].ecc_percent -
+                                     b.region_motion[t][r].ecc_percent);
+      if (std::isfinite(change)) largest = std::max(largest, change);
+    }
+    worst.push_back(largest);
+  }
+  std::sort(worst.begin(), worst.end());
+  EXPECT_LT(worst[worst.size() / 2], 0.4);
+  EXPECT_LT(worst.back(), 1.5);
+  EXPECT_GT(worst.back(), 0.0);  // The points did move the fit.
 }
 
 }  // namespace

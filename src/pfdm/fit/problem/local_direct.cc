@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "Eigen/Cholesky"
+#include "pfdm/fit/problem/lower_band.h"
 #include "pfdm/util/band_cholesky.h"
 #include "pfdm/util/stopwatch.h"
 
@@ -218,45 +219,6 @@ double GradientNorm(const SparseMatrix& k, const RingColumns& u,
   return std::sqrt(sum);
 }
 
-// A symmetric matrix summed in place in its lower band: A(i, j), j <= i,
-// at lower(i, j - i + width), width a bound on the bandwidth from the
-// terms' node spans; used, the largest i - j of an entry added.
-struct LowerBand {
-  LowerBand(int size, int width_bound)
-      : lower(BandCholesky::RowMajorMatrix::Zero(size, width_bound + 1)),
-        width(width_bound) {}
-
-  // Entries above the diagonal are A's by symmetry: left out.
-  void Add(int i, int j, double value) {
-    if (j > i) return;
-    lower(i, j - i + width) += value;
-    used = std::max(used, i - j);
-  }
-  // The band as wide as A's entries reach, as BandCholesky takes it.
-  BandCholesky::RowMajorMatrix Trimmed() const {
-    return lower.rightCols(used + 1);
-  }
-  // A x, row by row of the band: the row's lower part against x, and its
-  // mirror above the diagonal added along x's entries (contiguous both; the
-  // column walk of the mirror was a tenth of the contours' field solve).
-  Eigen::VectorXd Times(const Eigen::VectorXd& x) const {
-    const int n = static_cast<int>(lower.rows());
-    Eigen::VectorXd y = Eigen::VectorXd::Zero(n);
-    for (int i = 0; i < n; ++i) {
-      const int first = std::max(0, i - used);
-      const int count = i - first;
-      const auto row = lower.row(i).segment(first - i + width, count);
-      y[i] += row.dot(x.segment(first, count)) + lower(i, width) * x[i];
-      y.segment(first, count) += row.transpose() * x[i];
-    }
-    return y;
-  }
-
-  BandCholesky::RowMajorMatrix lower;
-  int width;
-  int used = 0;
-};
-
 // Adds m to A's 3 x 3 block of nodes (row_node, col_node), its zeros left
 // out.
 void AddBlock(int row_node, int col_node, const Eigen::Matrix3d& m,
@@ -347,8 +309,47 @@ void FillReport(double seconds, const SolverTracePoint& before,
   report->trace.back().wall_seconds = seconds;
 }
 
-// Points with normals: A as a whole (`stiffness`, the regularizer's part,
-// plus the data's), factorized for this solve.
+// A restricted to nodes moving along unit directions n_k, q_k = n_k d_k:
+// A'(k, l) = n_k^T A_kl n_l.  A node's own block is stored below its
+// diagonal only, so its off-diagonal entries count twice.
+LowerBand AlongDirections(const LowerBand& a,
+                          const std::vector<Eigen::Vector3d>& directions) {
+  LowerBand reduced(static_cast<int>(directions.size()), a.used / 3 + 1);
+  for (int i = 0; i < a.lower.rows(); ++i) {
+    for (int j = std::max(0, i - a.used); j <= i; ++j) {
+      const double value = a.lower(i, j - i + a.width);
+      if (value == 0.0) continue;
+      const int k = i / 3, l = j / 3;
+      const double twice = k == l && i != j ? 2.0 : 1.0;
+      reduced.Add(k, l,
+                  twice * directions[k][i % 3] * directions[l][j % 3] * value);
+    }
+  }
+  return reduced;
+}
+
+// x_k = n_k . v_k for each node, or back: v_k = n_k x_k.
+Eigen::VectorXd Along(const std::vector<Eigen::Vector3d>& directions,
+                      const Eigen::VectorXd& v) {
+  Eigen::VectorXd x(directions.size());
+  for (size_t k = 0; k < directions.size(); ++k) {
+    x[k] = directions[k].dot(v.segment<3>(3 * k));
+  }
+  return x;
+}
+Eigen::VectorXd Across(const std::vector<Eigen::Vector3d>& directions,
+                       const Eigen::VectorXd& x) {
+  Eigen::VectorXd v(3 * directions.size());
+  for (size_t k = 0; k < directions.size(); ++k) {
+    v.segment<3>(3 * k) = directions[k] * x[k];
+  }
+  return v;
+}
+
+// Points with normals, or nodes held to their normals: A as a whole
+// (`stiffness`, the regularizer's part, plus the data's), restricted to the
+// nodes' normals when the regularizer holds them so, factorized for this
+// solve.  The gradient reported is the restricted one.
 bool SolveWhole(const LocalDirectData& data, const LowerBand& stiffness,
                 const LocalRegularizer& regularizer, LocalField* field,
                 SolverReport* report) {
@@ -357,15 +358,27 @@ bool SolveWhole(const LocalDirectData& data, const LowerBand& stiffness,
   LowerBand a = stiffness;
   Eigen::VectorXd b;
   AddDataSystem(data, num_nodes, &a, &b);
+  const std::vector<Eigen::Vector3d>& normals = regularizer.node_normals;
+  const bool along = !normals.empty();
+  if (along) {
+    a = AlongDirections(a, normals);
+    b = Along(normals, b);
+  }
   BandCholesky cholesky;
   if (!cholesky.ComputeBand(a.Trimmed())) return false;
   Eigen::Map<Eigen::VectorXd> values(field->values.data(), 3 * num_nodes);
   const Eigen::Map<const NodeMatrix> q(field->values.data(), num_nodes, 3);
+  const auto gradient = [&] {
+    return (a.Times(along ? Along(normals, values) : Eigen::VectorXd(values)) -
+            b)
+        .norm();
+  };
   const SolverTracePoint before{0, 0.0, 0.0, Cost(data, regularizer, q),
-                                (a.Times(values) - b).norm()};
-  values = cholesky.Solve(b);
+                                gradient()};
+  const Eigen::VectorXd x = cholesky.Solve(b);
+  values = along ? Across(normals, x) : x;
   const SolverTracePoint after{1, 0.0, 0.0, Cost(data, regularizer, q),
-                               (a.Times(values) - b).norm()};
+                               gradient()};
   FillReport(SecondsSince(start), before, after, report);
   return true;
 }
@@ -428,7 +441,7 @@ const LocalDirectSolver::Factor* LocalDirectSolver::FactorFor(
 bool LocalDirectSolver::Solve(const LocalDirectData& data,
                               const LocalRegularizer& regularizer,
                               LocalField* field, SolverReport* report) {
-  if (HasNormals(data)) {
+  if (HasNormals(data) || !regularizer.node_normals.empty()) {
     const Stiffness& stiffness =
         StiffnessFor(data, regularizer, field->grid.NumNodes());
     return SolveWhole(data, stiffness.band, regularizer, field, report);

@@ -25,7 +25,10 @@
 // Points with a normal make the data's Gram blocks w s_a s_b m m^T, no
 // multiple of the identity: then the whole A (3 unknowns per node, node by
 // node, three times K's bandwidth) is factorized for each solve, as the
-// contours' closest points change from one to the next.
+// contours' closest points change from one to the next.  When the
+// regularizer holds each node to its normal (node_normals.h: a frame of
+// contours alone), A is restricted to those directions first, one unknown
+// per node and K's bandwidth.
 #ifndef PFDM_FIT_PROBLEM_LOCAL_DIRECT_H_
 #define PFDM_FIT_PROBLEM_LOCAL_DIRECT_H_
 

@@ -8,6 +8,7 @@
 #include "Eigen/Geometry"
 #include "ceres/problem.h"
 #include "gtest/gtest.h"
+#include "pfdm/fit/problem/node_normals.h"
 #include "pfdm/fit/residuals/linear_node_cost.h"
 #include "pfdm/testing/test_models.h"
 #include "pfdm/util/angles.h"
@@ -81,6 +82,10 @@ LocalField CeresSolve(const Case& c, const LocalRegularizer& regularizer,
     problem.AddResidualBlock(MakeLinearNodeCost(rows), nullptr, nodes);
   }
   AddLocalRegularizer(regularizer, &field, &problem);
+  for (size_t k = 0; k < regularizer.node_normals.size(); ++k) {
+    problem.SetManifold(&field.values[3 * k],
+                        new AlongDirection(regularizer.node_normals[k]));
+  }
   SolverOptions options;
   options.linear = true;
   *report = SolveDirect(&problem, options);
@@ -126,6 +131,48 @@ TEST(LocalDirectTest, SolvesAsCeresDoes) {
     EXPECT_TRUE(report.converged);
     EXPECT_EQ(report.iterations, 1);
   }
+}
+
+// Every point on a contour and each node held to the global surface's
+// normal (a frame of contours alone): the direct solve restricted to one
+// unknown per node is Ceres' on the AlongDirection manifold within 1e-9 mm,
+// every node lies on its normal's line, and the restriction matters (the
+// free field moves nodes along the surface by more than 0.1 mm).
+TEST(LocalDirectTest, HoldsNodesToTheirNormalsAsCeresDoes) {
+  Case c = MakeCase(600, /*weighted=*/true, 9, /*sliding=*/true);
+  for (size_t i = 0; i < c.points.size(); ++i) {
+    if (!c.normals[i].isZero(0.0)) continue;
+    c.normals[i] = Eigen::Vector3d(1, 1, -1).normalized();
+    c.data.normals[i] = c.rotation.transpose() * c.normals[i];
+  }
+  LocalRegularizer regularizer =
+      MakeLocalRegularizer(c.model, c.grid, 600, 0.05);
+  LocalDirectSolver solver;
+  LocalField free_field = LocalField::Zero(c.grid);
+  SolverReport report;
+  ASSERT_TRUE(solver.Solve(c.data, regularizer, &free_field, &report));
+  regularizer.node_normals = NodeNormals(c.model, c.grid);
+  SolverReport ceres_report;
+  const LocalField expected = CeresSolve(c, regularizer, &ceres_report);
+  ASSERT_TRUE(ceres_report.usable);
+  LocalField field = LocalField::Zero(c.grid);
+  ASSERT_TRUE(solver.Solve(c.data, regularizer, &field, &report));
+  EXPECT_LT(MaxDifference(field, expected), 1e-9);
+  EXPECT_NEAR(report.trace[1].cost, ceres_report.trace.back().cost,
+              1e-9 * ceres_report.trace.back().cost);
+  EXPECT_LT(report.trace[1].gradient_norm,
+            1e-10 * report.trace[0].gradient_norm);
+  double largest = 0.0, free_across = 0.0;
+  for (int k = 0; k < c.grid.NumNodes(); ++k) {
+    const Eigen::Vector3d& n = regularizer.node_normals[k];
+    const Eigen::Map<const Eigen::Vector3d> q(&field.values[3 * k]);
+    const Eigen::Map<const Eigen::Vector3d> free_q(&free_field.values[3 * k]);
+    EXPECT_LT((q - n * n.dot(q)).norm(), 1e-12) << k;
+    largest = std::max(largest, q.norm());
+    free_across = std::max(free_across, (free_q - n * n.dot(free_q)).norm());
+  }
+  EXPECT_GT(largest, 0.1);
+  EXPECT_GT(free_across, 0.1);
 }
 
 // A second frame with the same points and weights but other data and

@@ -7,6 +7,7 @@
 
 #include "ceres/problem.h"
 #include "pfdm/fit/problem/local_regularizer.h"
+#include "pfdm/fit/problem/node_normals.h"
 #include "pfdm/fit/residuals/linear_node_cost.h"
 #include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/fit/residuals/square_root_form.h"
@@ -229,6 +230,13 @@ SolverReport SolveOne(const LocalData& data,
   ceres::Problem problem;
   AddLocalData(data, field, &problem);
   AddLocalRegularizer(regularizer, field, &problem);
+  for (size_t k = 0; k < regularizer.node_normals.size(); ++k) {
+    double* node = &field->values[3 * k];
+    if (problem.HasParameterBlock(node)) {
+      problem.SetManifold(node,
+                          new AlongDirection(regularizer.node_normals[k]));
+    }
+  }
   SolverOptions solver = options.solver;
   solver.on_step = nullptr;
   solver.damping_scale.clear();
@@ -346,13 +354,16 @@ SolverReport SolveParts(LocalData* data, const LocalRegularizer& regularizer,
 }
 
 // The field's solve for the data's current weights: one solve, or a
-// solid's two parts in turn.
+// solid's two parts in turn; its nodes held to `node_normals` unless that
+// is empty (node_normals.h).
 SolverReport SolveLocal(LocalData* data, const Model& model,
-                        const FitOptions& options, LocalDirectSolver* direct,
-                        LocalField* field) {
-  const LocalRegularizer regularizer =
+                        const FitOptions& options,
+                        const std::vector<Eigen::Vector3d>& node_normals,
+                        LocalDirectSolver* direct, LocalField* field) {
+  LocalRegularizer regularizer =
       MakeLocalRegularizer(model, field->grid, static_cast<int>(data->size()),
                            options.local.stiffness);
+  regularizer.node_normals = node_normals;
   if (!field->transmural()) {
     return SolveOne(*data, regularizer, options, direct, field);
   }
@@ -388,6 +399,12 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   LocalField field =
       LocalField::Zero(grid, options.local.transmural && config.Solid());
   LocalData data(points, material, sliding, grid, *model);
+  const bool contours_alone =
+      !sliding.empty() &&
+      std::all_of(sliding.begin(), sliding.end(), [](bool s) { return s; });
+  const std::vector<Eigen::Vector3d> node_normals =
+      contours_alone ? NodeNormals(*model, grid)
+                     : std::vector<Eigen::Vector3d>();
   const bool robust = options.loss != "none";
   // With a loss, iteratively reweighted least squares: each solve weighs
   // the points by the loss at their residuals under the last field (the
@@ -396,7 +413,8 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
   std::vector<double> sqrt_weights;
   if (robust) sqrt_weights = SqrtLossWeights(data, options, field);
   data.set_sqrt_weights(sqrt_weights);
-  SolverReport report = SolveLocal(&data, *model, options, direct, &field);
+  SolverReport report =
+      SolveLocal(&data, *model, options, node_normals, direct, &field);
   for (int pass = 1; robust && pass < kMaxReweightings && report.usable;
        ++pass) {
     const std::vector<double> next = SqrtLossWeights(data, options, field);
@@ -409,7 +427,7 @@ SolverReport FitLocalField(const std::vector<Eigen::Vector3d>& points,
     sqrt_weights = next;
     data.set_sqrt_weights(sqrt_weights);
     const int iterations = report.iterations;
-    report = SolveLocal(&data, *model, options, direct, &field);
+    report = SolveLocal(&data, *model, options, node_normals, direct, &field);
     report.iterations += iterations;
   }
   model->state.local = std::move(field);

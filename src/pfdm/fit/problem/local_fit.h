@@ -30,7 +30,9 @@ namespace pfdm {
 // Replaces model->state.local by the field fitted with `options.solver`
 // (any of the three solvers) on `options.local`'s grid, everything else of
 // the model held.  Points listed in `sliding` pull along the global
-// surface's normal (but past the base rim), as in SolveFrame.  The direct
+// surface's normal (but past the base rim), as in SolveFrame; when every
+// point slides (contours alone) the nodes move along that normal only
+// (node_normals.h).  The direct
 // solver solves without Ceres when no point slides (local_direct.h), with
 // `direct`'s factorization when its matrix is the same (pass one solver
 // over a sequence's tracked frames; nullptr: a fresh one).

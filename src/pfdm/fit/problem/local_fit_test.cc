@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gtest/gtest.h"
+#include "pfdm/fit/problem/node_normals.h"
 #include "pfdm/testing/test_models.h"
 #include "pfdm/util/angles.h"
 
@@ -99,6 +100,75 @@ double WorstDistance(const Model& a, const Model& b, const LocalGrid& grid) {
     }
   }
   return worst;
+}
+
+// The largest part of any node's value across its normal (mm).
+double LargestAcross(const LocalField& field,
+                     const std::vector<Eigen::Vector3d>& normals) {
+  double largest = 0.0;
+  for (size_t k = 0; k < normals.size(); ++k) {
+    const Eigen::Map<const Eigen::Vector3d> q(&field.values[3 * k]);
+    largest = std::max(largest, (q - normals[k] * normals[k].dot(q)).norm());
+  }
+  return largest;
+}
+
+// Points of the whole model that all slide (contours alone): every solver
+// moves each node along the global surface's normal only (the Ceres
+// solvers through AlongDirection), to the same field as the direct solve
+// (the damped and integrator's stopping rules: 0.01 mm), and the field
+// still takes up the truth's part along the normal (the points' largest
+// gap along it 5x less than to the global model).  One tracked point among them
+// frees the nodes again.
+TEST(LocalFitTest, ContoursAloneMoveTheNodesAlongTheNormal) {
+  const LocalGrid grid = GridOver(TestSpheroid(5).config, 7, 12);
+  const Truth truth = MakeTruth(grid);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<MaterialPoint> material;
+  for (int i = 0; i < 1500; ++i) {
+    const double u = std::asin(-1.0 + 1.5 * unit(random));
+    const double v = -kPi + 2 * kPi * unit(random);
+    material.push_back({u, v});
+    points.push_back(truth.whole.WorldPoint(u, v));
+  }
+  const std::vector<Eigen::Vector3d> normals = NodeNormals(truth.global, grid);
+  std::vector<bool> sliding(points.size(), true);
+  FitOptions options;
+  options.local.rows = grid.rows;
+  options.local.cols = grid.cols;
+  options.local.stiffness = 1e-3;
+  Model direct = truth.global;
+  ASSERT_TRUE(
+      FitLocalField(points, material, sliding, options, &direct).usable);
+  EXPECT_LT(LargestAcross(direct.state.local, normals), 1e-12);
+  const std::vector<Eigen::Vector3d> point_normals =
+      SurfaceNormals(truth.global, material);
+  const auto largest_gap = [&](const Model& model) {
+    double largest = 0.0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const Eigen::Vector3d x = model.WorldPoint(material[i].u, material[i].v);
+      largest =
+          std::max(largest, std::abs(point_normals[i].dot(x - points[i])));
+    }
+    return largest;
+  };
+  EXPECT_LT(largest_gap(direct), 0.2 * largest_gap(truth.global));
+  for (const char* solver : {"damped", "integrator"}) {
+    options.solver.kind = SolverFromName(solver);
+    Model fitted = truth.global;
+    ASSERT_TRUE(
+        FitLocalField(points, material, sliding, options, &fitted).usable);
+    EXPECT_LT(LargestAcross(fitted.state.local, normals), 1e-12) << solver;
+    EXPECT_LT(WorstDistance(fitted, direct, grid), 0.01) << solver;
+  }
+  options.solver.kind = SolverKind::kDirect;
+  sliding[0] = false;
+  Model tracked = truth.global;
+  ASSERT_TRUE(
+      FitLocalField(points, material, sliding, options, &tracked).usable);
+  EXPECT_GT(LargestAcross(tracked.state.local, normals), 0.1);
 }
 
 // The points above with 0.2 mm of noise and 5 % of them moved 5-10 mm in a

@@ -34,6 +34,9 @@ struct RingMean {
 struct LocalRegularizer {
   std::vector<NodeDifference> differences;
   std::vector<RingMean> rings;
+  // When not empty, node k moves along node_normals[k] only (a frame of
+  // contours alone: node_normals.h); the terms above are unchanged.
+  std::vector<Eigen::Vector3d> node_normals;
 };
 
 // The terms on `grid` for `num_points` data points: stiffness W n (n = the
