@@ -1,10 +1,12 @@
 #include "pfdm/model/shape_angle_derivative.h"
 
+#include <array>
 #include <cmath>
 
 #include "ceres/jet.h"
 #include "pfdm/model/parameter_function.h"
 #include "pfdm/model/signed_power.h"
+#include "pfdm/model/transmural.h"
 
 namespace pfdm {
 namespace {
@@ -50,12 +52,44 @@ Graded GradedBend(double amplitude, double d_amplitude, const Graded& x,
           amplitude * dg_dv};
 }
 
+// k n of transmural.h's WallOffset, graded: n = m / |m| with m =
+// (cos u cos v / a1, cos u sin v / a2, sin u / a3) and dn = (I - n n^T) dm /
+// |m|; k = WallDepth, which moves along u with the functions' slopes.
+std::array<Graded, 3> GradedWallOffset(const double* f, const double* df_du,
+                                       const Angles<double>& angles, double w) {
+  const double cu = angles.cos_u, su = angles.sin_u;
+  const double cv = angles.cos_v, sv = angles.sin_v;
+  const Eigen::Vector3d a(f[kA1], f[kA2], f[kA3]);
+  const Eigen::Vector3d da(df_du[kA1], df_du[kA2], df_du[kA3]);
+  const Eigen::Vector3d top(cu * cv, cu * sv, su);
+  const Eigen::Vector3d top_u(-su * cv, -su * sv, cu);
+  const Eigen::Vector3d top_v(-cu * sv, cu * cv, 0.0);
+  const Eigen::Vector3d m = top.cwiseQuotient(a);
+  const Eigen::Vector3d m_u =
+      top_u.cwiseQuotient(a) - m.cwiseProduct(da).cwiseQuotient(a);
+  const Eigen::Vector3d m_v = top_v.cwiseQuotient(a);
+  const double norm = m.norm();
+  const Eigen::Vector3d n = m / norm;
+  const Eigen::Vector3d n_u = (m_u - n * n.dot(m_u)) / norm;
+  const Eigen::Vector3d n_v = (m_v - n * n.dot(m_v)) / norm;
+  const double k = WallDepth(f, w), k_u = WallDepth(df_du, w);
+  std::array<Graded, 3> offset;
+  for (int i = 0; i < 3; ++i) {
+    offset[i] = {k * n[i], k_u * n[i] + k * n_u[i], k * n_v[i]};
+  }
+  return offset;
+}
+
+Graded Plus(const Graded& a, const Graded& b) {
+  return {a.value + b.value, a.d_u + b.d_u, a.d_v + b.d_v};
+}
+
 }  // namespace
 
 ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
                                                const double* df_du,
                                                const Angles<double>& angles,
-                                               bool unit_exponents) {
+                                               bool unit_exponents, double w) {
   // The primitive's signed powers of the angles' sines and cosines.
   const Graded cos_u{angles.cos_u, -angles.sin_u, 0.0};
   const Graded sin_u{angles.sin_u, angles.cos_u, 0.0};
@@ -79,11 +113,18 @@ ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
             amplitude * (cu.d_u * around.value + cu.value * around.d_u),
         amplitude * cu.value * around.d_v};
   };
-  const Graded e1 = radial(kA1, cv);
-  const Graded e2 = radial(kA2, sv);
-  const Graded e3{
-      a0 * f[kA3] * su.value,
-      (da0 * f[kA3] + a0 * df_du[kA3]) * su.value + a0 * f[kA3] * su.d_u, 0.0};
+  Graded e1 = radial(kA1, cv);
+  Graded e2 = radial(kA2, sv);
+  Graded e3{a0 * f[kA3] * su.value,
+            (da0 * f[kA3] + a0 * df_du[kA3]) * su.value + a0 * f[kA3] * su.d_u,
+            0.0};
+  // Off the mid-wall: the surface w's primitive, e + k n (transmural.h).
+  if (w != 0.0) {
+    const std::array<Graded, 3> offset = GradedWallOffset(f, df_du, angles, w);
+    e1 = Plus(e1, offset[0]);
+    e2 = Plus(e2, offset[1]);
+    e3 = Plus(e3, offset[2]);
+  }
   // Bending: across-axis positions in units of e1max = a0, ring half
   // extents a1 cu and a2 cu.
   const auto across = [&](const Graded& e) {
@@ -99,9 +140,10 @@ ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
   const Graded bent3{e3.value + bend1.value + bend2.value,
                      e3.d_u + bend1.d_u + bend2.d_u,
                      e3.d_v + bend1.d_v + bend2.d_v};
-  // Twist by tau about axis 3, then the offsets.
-  const double c = std::cos(f[kTau]), s = std::sin(f[kTau]);
-  const double dtau = df_du[kTau];
+  // Twist by the surface's tau about axis 3, then the offsets.
+  const double tau = w == 0.0 ? f[kTau] : TwistAt(f, w);
+  const double c = std::cos(tau), s = std::sin(tau);
+  const double dtau = w == 0.0 ? df_du[kTau] : TwistAt(df_du, w);
   ShapeAndAngleDerivatives out;
   out.shape = Eigen::Vector3d(c * e1.value - s * e2.value + f[kE1o],
                               s * e1.value + c * e2.value + f[kE2o],

@@ -18,11 +18,13 @@ struct ShapeAndAngleDerivatives {
 // with the given angles, and its total derivatives in u and v when the
 // functions change along u at the rates df_du (the knot span's slopes of the
 // free functions, 0 for the others).  Matches ReferenceShape differentiated
-// in its angles with ceres::Jet (tested), at a fraction of the cost.
+// in its angles with ceres::Jet (tested), at a fraction of the cost; on
+// surface w (transmural.h) off the mid-wall too.
 ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
                                                const double* df_du,
                                                const Angles<double>& angles,
-                                               bool unit_exponents);
+                                               bool unit_exponents,
+                                               double w = 0.0);
 
 }  // namespace pfdm
 

@@ -14,23 +14,23 @@ using Jet2 = ceres::Jet<double, 2>;
 // ReferenceShape differentiated by ceres::Jet in (u, v), the functions
 // moving along u at the rates df_du.
 void ExpectMatchesJet(const double* f, const double* df_du, double u, double v,
-                      bool unit_exponents) {
+                      bool unit_exponents, double w = 0.0) {
   Jet2 f_jet[kNumFunctions];
   for (int i = 0; i < kNumFunctions; ++i) {
     f_jet[i] = Jet2(f[i]);
     f_jet[i].v[0] = df_du[i];
   }
-  const Eigen::Matrix<Jet2, 3, 1> truth =
-      ReferenceShape(f_jet, MakeAngles(Jet2(u, 0), Jet2(v, 1)), unit_exponents);
+  const Eigen::Matrix<Jet2, 3, 1> truth = ReferenceShape(
+      f_jet, MakeAngles(Jet2(u, 0), Jet2(v, 1)), unit_exponents, w);
   const ShapeAndAngleDerivatives got =
-      ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents);
+      ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents, w);
   for (int k = 0; k < 3; ++k) {
     const double scale = 1.0 + std::abs(truth[k].a);
     EXPECT_NEAR(got.shape[k], truth[k].a, 1e-13 * scale) << k;
     EXPECT_NEAR(got.d_u[k], truth[k].v[0], 1e-11 * scale)
-        << "u " << u << " v " << v << " axis " << k;
+        << "u " << u << " v " << v << " w " << w << " axis " << k;
     EXPECT_NEAR(got.d_v[k], truth[k].v[1], 1e-11 * scale)
-        << "u " << u << " v " << v << " axis " << k;
+        << "u " << u << " v " << v << " w " << w << " axis " << k;
   }
 }
 
@@ -85,6 +85,39 @@ TEST(ShapeAngleDerivativeTest, MatchesJetDerivativesAtSingularPoints) {
     for (double& d : s.df) d = 0.0;
     for (double u : us) {
       for (double v : vs) ExpectMatchesJet(s.f, s.df, u, v, unit);
+    }
+  }
+}
+
+// Off the mid-wall (a solid's layers, the walls at w = -+1): a wall of
+// 7-11 mm whose thickness, twist difference, shift and squeeze all vary
+// along u, at random points and at the pole, the seam and the axes.
+TEST(ShapeAngleDerivativeTest, MatchesJetDerivativesOffTheMidwall) {
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::uniform_real_distribution<double> u_dist(-1.5707963, 0.5235988);
+  std::uniform_real_distribution<double> v_dist(-M_PI, M_PI);
+  const double us[] = {-M_PI / 2, -M_PI / 2 + 1e-9, 0.0, M_PI / 6};
+  const double vs[] = {-M_PI, 0.0, M_PI / 2, 1e-12};
+  for (bool unit : {true, false}) {
+    for (int trial = 0; trial < 100; ++trial) {
+      State s = RandomState(&random, unit, trial % 2 == 0);
+      s.f[kH] = 9.0 + 2.0 * uniform(random);
+      s.df[kH] = 3.0 * uniform(random);
+      s.f[kDtau] = 0.2 * uniform(random);
+      s.df[kDtau] = 0.1 * uniform(random);
+      s.f[kWallShift] = 0.5 * uniform(random);
+      s.df[kWallShift] = 0.3 * uniform(random);
+      s.f[kWallSqueeze] = 0.4 * uniform(random);
+      s.df[kWallSqueeze] = 0.2 * uniform(random);
+      for (double w : {-1.0, -1.0 / 3, 0.5, 1.0}) {
+        ExpectMatchesJet(s.f, s.df, u_dist(random), v_dist(random), unit, w);
+        if (trial == 0) {
+          for (double u : us) {
+            for (double v : vs) ExpectMatchesJet(s.f, s.df, u, v, unit, w);
+          }
+        }
+      }
     }
   }
 }

@@ -55,10 +55,9 @@ double LongitudeAround(const Model& model, const Eigen::Vector3d& point,
 // The model's world point x(u, v, w) and dx/d(u, v), the functions
 // interpolated along u as WorldPointAt does, derivatives in closed form
 // (ShapeAngleDerivatives) rather than through ceres::Jet, which made the
-// search several times slower.  The closed form covers the layer w = 0 of
-// the global model, a local field's bilinear d(u, v) added with its own
-// Jets (cheap: no functions of the angles); off it (a solid's other
-// layers), the Jets throughout.
+// search several times slower.  The closed form covers every layer w of
+// the global model, a local field's bilinear d(u, v, w) added with its own
+// Jets (cheap: no functions of the angles).
 class SurfacePoints {
  public:
   SurfacePoints(const Model& model, bool jet_derivatives)
@@ -73,7 +72,7 @@ class SurfacePoints {
   // x in *point, dx/du and dx/dv in the columns of *jacobian.
   void Evaluate(double u, double v, double w, Eigen::Vector3d* point,
                 Eigen::Matrix<double, 3, 2>* jacobian) const {
-    if (jet_derivatives_ || w != 0.0) {
+    if (jet_derivatives_) {
       using Jet2 = ceres::Jet<double, 2>;
       const Eigen::Matrix<Jet2, 3, 1> x =
           WorldPointAt(model_, Jet2(u, 0), Jet2(v, 1), w);
@@ -98,22 +97,23 @@ class SurfacePoints {
       InterpolateFunctionSlopes(free_mask_, knot0, knot1, width, df_du);
     }
     const ShapeAndAngleDerivatives shape =
-        ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents_);
+        ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents_, w);
     Eigen::Vector3d model_point = shape.shape;
     Eigen::Matrix<double, 3, 2> model_jacobian;
     model_jacobian << shape.d_u, shape.d_v;
-    if (!model_.state.local.empty())
-      AddLocal(u, v, &model_point, &model_jacobian);
+    if (!model_.state.local.empty()) {
+      AddLocal(u, v, w, &model_point, &model_jacobian);
+    }
     *point = center_ + rotation_ * model_point;
     *jacobian = rotation_ * model_jacobian;
   }
 
  private:
-  void AddLocal(double u, double v, Eigen::Vector3d* point,
+  void AddLocal(double u, double v, double w, Eigen::Vector3d* point,
                 Eigen::Matrix<double, 3, 2>* jacobian) const {
     using Jet2 = ceres::Jet<double, 2>;
     const Eigen::Matrix<Jet2, 3, 1> d =
-        LocalDisplacement(model_.state.local, Jet2(u, 0), Jet2(v, 1));
+        LocalDisplacement(model_.state.local, Jet2(u, 0), Jet2(v, 1), w);
     for (int i = 0; i < 3; ++i) {
       (*point)[i] += d[i].a;
       jacobian->row(i) += d[i].v.transpose();
