@@ -61,7 +61,6 @@ const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
       "thickening_percent"};
   static const std::vector<std::string> contours = {
       "ratio",
-      "edv_ml",
       "esv_ml",
       "lv_mass_g",
       "longitudinal_shortening_percent",
