@@ -1,9 +1,11 @@
 #include "pfdm/report/layer_strain.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
-#include <optional>
+#include <vector>
 
+#include "pfdm/model/world_points.h"
 #include "pfdm/report/surface_strain.h"
 #include "pfdm/util/angles.h"
 
@@ -23,38 +25,68 @@ struct Tangents {
   Eigen::Vector3d xu, xv;
 };
 
-// The functions at a sample's ring and its two neighbours in u, which the
-// ring's samples share (FunctionsAt costs more than the point).
-struct Ring {
-  Ring(const Model& model, double u)
-      : model(model),
-        u(u),
-        at(model.FunctionsAt(u)),
-        above(model.FunctionsAt(u + kStep)),
-        below(model.FunctionsAt(u - kStep)) {}
-  Eigen::Vector3d Point(double v, double w) const {
-    return model.WorldPointWith(at, u, v, w);
-  }
-  Tangents TangentsAt(double v, double w) const {
-    const double scale = 0.5 / kStep;
-    return {(model.WorldPointWith(above, u + kStep, v, w) -
-             model.WorldPointWith(below, u - kStep, v, w)) *
-                scale,
-            (Point(v + kStep, w) - Point(v - kStep, w)) * scale};
-  }
-  const Model& model;
-  double u;
-  FunctionValues at, above, below;
-};
-
 // The thirds' bounds across the wall at (u, v), endocardium first.
 using Bounds = std::array<Eigen::Vector3d, kWallLayers + 1>;
-Bounds ThirdBounds(const Ring& ring, double v) {
+
+// What a sample needs of a model: each layer's tangents and the thirds'
+// bounds.
+struct SampleGeometry {
+  std::array<Tangents, kWallLayers> tangents;
   Bounds bounds;
-  for (int k = 0; k <= kWallLayers; ++k) {
-    bounds[k] = ring.Point(v, kThirdBounds[k]);
+};
+
+// Material points (u, v, w) as WorldPoints takes them, and their points.
+struct PointBatch {
+  std::vector<std::array<double, 3>> at;
+  std::vector<Eigen::Vector3d> Evaluate(const Model& model) const {
+    std::vector<Eigen::Vector3d> points(at.size());
+    if (!at.empty()) {
+      WorldPoints(model, at.size(), &at[0][0], &at[0][1], &at[0][2], 3,
+                  points.data());
+    }
+    return points;
   }
-  return bounds;
+};
+
+// The geometry of the samples at longitudes `v` of the ring at u, ring by
+// ring through WorldPoints (a ring's functions and its shape's Bessel
+// values once, the sines and cosines in batches): the ring's own points
+// (each layer at v -+ kStep, the thirds' bounds at v), then the layers on
+// the rings at u -+ kStep.  Central differences, not the closed form's
+// tangents: the rings at 4, 13, 22 and 31 of kLatitudes lie on knots of
+// the functions, where X_u has two sides, and the differences take their
+// mean (the closed form one side's: biv-me's layer Ell moved by up to 0.22
+// points).
+std::vector<SampleGeometry> RingGeometry(const Model& model, double u,
+                                         const std::vector<double>& v) {
+  PointBatch along, above, below;
+  for (double at_v : v) {
+    for (double w : kLayerDepth) {
+      along.at.push_back({u, at_v + kStep, w});
+      along.at.push_back({u, at_v - kStep, w});
+      above.at.push_back({u + kStep, at_v, w});
+      below.at.push_back({u - kStep, at_v, w});
+    }
+    for (double w : kThirdBounds) along.at.push_back({u, at_v, w});
+  }
+  const std::vector<Eigen::Vector3d> on = along.Evaluate(model);
+  const std::vector<Eigen::Vector3d> up = above.Evaluate(model);
+  const std::vector<Eigen::Vector3d> down = below.Evaluate(model);
+  const double scale = 0.5 / kStep;
+  constexpr size_t kAlong = 2 * kWallLayers + kWallLayers + 1;
+  std::vector<SampleGeometry> geometry(v.size());
+  for (size_t j = 0; j < v.size(); ++j) {
+    const Eigen::Vector3d* ring = &on[kAlong * j];
+    for (int k = 0; k < kWallLayers; ++k) {
+      const size_t across = kWallLayers * j + k;
+      geometry[j].tangents[k] = {(up[across] - down[across]) * scale,
+                                 (ring[2 * k] - ring[2 * k + 1]) * scale};
+    }
+    for (int b = 0; b <= kWallLayers; ++b) {
+      geometry[j].bounds[b] = ring[2 * kWallLayers + b];
+    }
+  }
+  return geometry;
 }
 
 // Each third's thickness along `normal` (unit).
@@ -69,34 +101,31 @@ std::array<double, kWallLayers> ThirdThicknesses(
 
 // The reference's share of sample (u, v): region, area weight (per unit of
 // sin u and v, the mid-wall's), tangents, chord, thirds.
-LayerSamples::Sample ReferenceSample(const Ring& ring, double v,
+LayerSamples::Sample ReferenceSample(const Model& reference, double u, double v,
+                                     const SampleGeometry& geometry,
                                      const RegionLayout& layout) {
   LayerSamples::Sample sample;
-  sample.u = ring.u;
+  sample.u = u;
   sample.v = v;
-  sample.region = AssignRegion(ring.model, ring.u, v, layout);
+  sample.region = AssignRegion(reference, u, v, layout);
   for (int k = 0; k < kWallLayers; ++k) {
-    const Tangents at = ring.TangentsAt(v, kLayerDepth[k]);
-    sample.xu[k] = at.xu;
-    sample.xv[k] = at.xv;
+    sample.xu[k] = geometry.tangents[k].xu;
+    sample.xv[k] = geometry.tangents[k].xv;
   }
   const Eigen::Vector3d area = sample.xu[1].cross(sample.xv[1]);
-  sample.weight = area.norm() / std::cos(ring.u);
-  const Bounds bounds = ThirdBounds(ring, v);
+  sample.weight = area.norm() / std::cos(u);
+  const Bounds& bounds = geometry.bounds;
   sample.chord = (bounds[kWallLayers] - bounds[0]).norm();
   sample.third_thickness = ThirdThicknesses(bounds, area.normalized());
   return sample;
 }
 
 // Adds sample's strains in `current` to its region's sums, weighted.
-void AddSample(const LayerSamples::Sample& sample, const Ring& ring,
-               RegionLayers* sum) {
+void AddSample(const LayerSamples::Sample& sample,
+               const SampleGeometry& geometry, RegionLayers* sum) {
   const double w = sample.weight;
-  std::array<Tangents, kWallLayers> at;
-  for (int k = 0; k < kWallLayers; ++k) {
-    at[k] = ring.TangentsAt(sample.v, kLayerDepth[k]);
-  }
-  const Bounds bounds = ThirdBounds(ring, sample.v);
+  const std::array<Tangents, kWallLayers>& at = geometry.tangents;
+  const Bounds& bounds = geometry.bounds;
   const double stretch =
       (bounds[kWallLayers] - bounds[0]).norm() / sample.chord;
   sum->err_percent += w * 100.0 * 0.5 * (stretch * stretch - 1.0);
@@ -136,12 +165,17 @@ LayerSamples SampleLayers(const Model& reference, const RegionLayout& layout) {
   const double s_min = std::sin(reference.config.u_min);
   const double s_max = std::sin(reference.config.u_max);
   out.samples.reserve(kLatitudes * kLongitudes);
+  std::vector<double> v(kLongitudes);
+  for (int j = 0; j < kLongitudes; ++j) {
+    v[j] = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudes;
+  }
   for (int i = 0; i < kLatitudes; ++i) {
-    const Ring ring(
-        reference, std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudes));
+    const double u =
+        std::asin(s_min + (s_max - s_min) * (i + 0.5) / kLatitudes);
+    const std::vector<SampleGeometry> geometry = RingGeometry(reference, u, v);
     for (int j = 0; j < kLongitudes; ++j) {
-      const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudes;
-      out.samples.push_back(ReferenceSample(ring, v, layout));
+      out.samples.push_back(
+          ReferenceSample(reference, u, v[j], geometry[j], layout));
     }
   }
   return out;
@@ -152,11 +186,21 @@ std::vector<RegionLayers> SummarizeLayers(const LayerSamples& reference,
   if (reference.samples.empty()) return {};
   std::vector<RegionLayers> regions(reference.num_regions);
   std::vector<double> weight(reference.num_regions, 0.0);
-  std::optional<Ring> ring;
-  for (const LayerSamples::Sample& sample : reference.samples) {
-    if (!ring || ring->u != sample.u) ring.emplace(current, sample.u);
-    AddSample(sample, *ring, &regions[sample.region]);
-    weight[sample.region] += sample.weight;
+  const std::vector<LayerSamples::Sample>& samples = reference.samples;
+  // Ring by ring: the samples come in rings of equal u.
+  for (size_t first = 0; first < samples.size();) {
+    size_t end = first;
+    std::vector<double> v;
+    while (end < samples.size() && samples[end].u == samples[first].u) {
+      v.push_back(samples[end++].v);
+    }
+    const std::vector<SampleGeometry> geometry =
+        RingGeometry(current, samples[first].u, v);
+    for (size_t j = first; j < end; ++j) {
+      AddSample(samples[j], geometry[j - first], &regions[samples[j].region]);
+      weight[samples[j].region] += samples[j].weight;
+    }
+    first = end;
   }
   for (size_t r = 0; r < regions.size(); ++r) Divide(weight[r], &regions[r]);
   return regions;

@@ -91,6 +91,53 @@ void RefineOnSurfaces(const SurfaceGrid& grid, const Model& model,
   }
 }
 
+// The rows of `which` whose search starts on the mid-wall: all of them
+// but, in a solid, the contour points whose wall is known (layer_w, not
+// ranked), which RefineOnSurfaces seeks on that wall alone (the mid-wall's
+// closest point was thrown away: half of both walls' searches).
+std::vector<size_t> MidwallRows(const Model& model,
+                                const std::vector<size_t>& which,
+                                const std::vector<double>& layer_w,
+                                const std::vector<bool>& assign_depth) {
+  std::vector<size_t> rows;
+  for (size_t j = 0; j < which.size(); ++j) {
+    const size_t i = which[j];
+    if (model.config.Solid() && layer_w[i] != 0.0 && !assign_depth[i]) {
+      continue;
+    }
+    rows.push_back(j);
+  }
+  return rows;
+}
+
+// The mid-wall's closest points of the listed rows of `subset`, written
+// into those rows of closest, found and found_normals.
+void SearchMidwall(const SurfaceGrid& grid, const Model& model,
+                   const std::vector<Eigen::Vector3d>& subset,
+                   const std::vector<size_t>& rows,
+                   const CorrespondenceOptions& correspondence,
+                   std::vector<MaterialPoint>* closest,
+                   std::vector<Eigen::Vector3d>* found,
+                   std::vector<Eigen::Vector3d>* found_normals) {
+  CorrespondenceOptions listed = correspondence;
+  listed.hints.clear();
+  std::vector<Eigen::Vector3d> points;
+  for (size_t j : rows) {
+    points.push_back(subset[j]);
+    if (!correspondence.hints.empty()) {
+      listed.hints.push_back(correspondence.hints[j]);
+    }
+  }
+  std::vector<Eigen::Vector3d> found_rows, normal_rows;
+  const std::vector<MaterialPoint> closest_rows = ClosestMaterialPointsFrom(
+      grid, model, points, listed, &found_rows, &normal_rows);
+  for (size_t k = 0; k < rows.size(); ++k) {
+    (*closest)[rows[k]] = closest_rows[k];
+    (*found)[rows[k]] = found_rows[k];
+    (*found_normals)[rows[k]] = normal_rows[k];
+  }
+}
+
 }  // namespace
 
 std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
@@ -134,9 +181,12 @@ void UpdateClosest(const Model& model,
   if (warm) {
     for (size_t i : which) correspondence.hints.push_back((*material)[i]);
   }
-  std::vector<Eigen::Vector3d> found_normals;
-  std::vector<MaterialPoint> closest = ClosestMaterialPointsFrom(
-      *grid, model, subset, correspondence, found, &found_normals);
+  found->resize(which.size());
+  std::vector<Eigen::Vector3d> found_normals(which.size());
+  std::vector<MaterialPoint> closest(which.size());
+  SearchMidwall(*grid, model, subset,
+                MidwallRows(model, which, layer_w, assign_depth),
+                correspondence, &closest, found, &found_normals);
   if (model.config.Solid()) {
     const std::vector<double> surfaces = SurfacesOf(
         model, subset, which, layer_w, assign_depth, closest, ranking);

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "gtest/gtest.h"
+#include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/correspondence/transmural.h"
 #include "pfdm/testing/test_models.h"
 
@@ -80,6 +82,49 @@ TEST(FrameCorrespondenceTest, FindsContoursOnTheirWall) {
     EXPECT_EQ(material[i].w, 1.0) << i;
     EXPECT_NEAR((found[i] - points[i]).norm(), 0.0, kFoundMm) << i;
   }
+}
+
+// In a solid, one warm search of points on both walls' contours and on the
+// mid-wall (one point left unlisted): each listed point comes out exactly
+// as a search of its own surface alone from the same hint finds it, model
+// point and normal with it.  (The walls' points skip the mid-wall search,
+// whose answer they never used.)
+TEST(FrameCorrespondenceTest, EachPointIsSoughtOnItsOwnSurfaceAlone) {
+  const Model model = SolidSpheroid();
+  std::vector<Eigen::Vector3d> points;
+  std::vector<MaterialPoint> material;
+  std::vector<double> layer_w;
+  for (const MaterialPoint& m : kAt) {
+    for (double w : {-1.0, 0.0, 1.0}) {
+      const Eigen::Vector3d off(0.4 * w + 0.3, -0.5, 0.2 * m.v);
+      points.push_back(model.WorldPoint(m.u, m.v, w) + off);
+      material.push_back({m.u + 0.02, m.v - 0.03, w});
+      layer_w.push_back(w);
+    }
+  }
+  const std::vector<MaterialPoint> hints = material;
+  std::vector<size_t> which(points.size() - 1);
+  std::iota(which.begin(), which.end(), 1);
+  std::vector<Eigen::Vector3d> normals(points.size()), found;
+  UpdateClosest(model, points, which, 1, layer_w,
+                std::vector<bool>(points.size(), false), /*warm=*/true,
+                &material, &normals, &found);
+  const SurfaceGrid grid(model);
+  for (size_t j = 0; j < which.size(); ++j) {
+    const size_t i = which[j];
+    CorrespondenceOptions alone;
+    if (layer_w[i] != 0.0) alone.surfaces = {layer_w[i]};
+    alone.hints = {hints[i]};
+    std::vector<Eigen::Vector3d> point, normal;
+    const MaterialPoint expected = ClosestMaterialPointsFrom(
+        grid, model, {points[i]}, alone, &point, &normal)[0];
+    EXPECT_EQ(material[i].u, expected.u) << i;
+    EXPECT_EQ(material[i].v, expected.v) << i;
+    EXPECT_EQ(material[i].w, layer_w[i]) << i;
+    EXPECT_EQ(found[j], point[0]) << i;
+    EXPECT_EQ(normals[i], normal[0]) << i;
+  }
+  EXPECT_EQ(material[0].u, hints[0].u);  // Not listed: untouched.
 }
 
 // Tags through the wall, ten bands of latitude of 24 tags each evenly
