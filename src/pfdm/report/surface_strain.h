@@ -42,12 +42,13 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
 // The world-frame tangents dx/du, dx/dv at (u, v) of the mid-wall, as
 // StrainAt takes them: the global shape's in closed form
 // (ShapeAngleDerivatives), the local field's through ceres::Jet.  On a
-// knot, or on an edge of the local field's elements, one side's slopes.
+// knot, the mean of its two spans' slopes (RingFunctions); on an edge of
+// the local field's elements, one side's.
 void SurfaceTangents(const Model& model, double u, double v,
                      Eigen::Vector3d* xu, Eigen::Vector3d* xv);
 
 // What SurfaceTangents needs of ring u's functions, for the ring's samples
-// to share.
+// to share: on a knot, `slopes` is the mean of its two spans'.
 struct RingFunctions {
   RingFunctions(const Model& model, double u);
   double u;

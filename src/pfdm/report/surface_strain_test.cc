@@ -52,6 +52,35 @@ TEST(SurfaceStrainTest, TangentsAreTheDerivativesOfTheWorldPoint) {
   }
 }
 
+// A ring on a knot, where a1 bends from rising to falling: its slopes are
+// the mean of the two spans', as central differences across the knot read
+// X_u; off the knot, the span's own slopes to the bit.
+TEST(SurfaceStrainTest, ARingOnAKnotTakesBothSpansSlopes) {
+  Model model = Sphere(0.7);
+  const KnotGrid& grid = model.config.Grid();
+  const int knot = 6;
+  for (int i = 0; i < model.config.num_knots; ++i) {
+    model.state.knots[i][kA1] = 0.7 - 0.02 * std::abs(i - knot);
+  }
+  const double u = grid.KnotU(knot);
+  const RingFunctions on(model, u);
+  const double rising = 0.02 / (u - grid.KnotU(knot - 1));
+  const double falling = -0.02 / (grid.KnotU(knot + 1) - u);
+  EXPECT_NEAR(on.slopes[kA1], 0.5 * (rising + falling), 1e-12);
+  const double h = 1e-7;
+  for (double v : {-2.0, 0.1}) {
+    Eigen::Vector3d xu, xv;
+    SurfaceTangents(model, on, v, &xu, &xv);
+    const Eigen::Vector3d du =
+        (model.WorldPoint(u + h, v) - model.WorldPoint(u - h, v)) / (2 * h);
+    EXPECT_LT((xu - du).norm(), 1e-6 * du.norm()) << v;
+  }
+  const double between = 0.5 * (grid.KnotU(knot) + grid.KnotU(knot + 1));
+  const RingFunctions off(model, between);
+  EXPECT_EQ(off.slopes, model.FunctionSlopesAt(between));
+  EXPECT_LT(off.slopes[kA1], -0.01);
+}
+
 TEST(SurfaceStrainTest, ScalingASphereStrainsBothWaysAlike) {
   const Model reference = Sphere(0.8);
   const double s = 0.85;
