@@ -40,6 +40,22 @@ double UpdateContours(const FramePoints& frame,
   return MaxDistance(before, found);
 }
 
+// The field's displacements at the probes in world directions, stacked:
+// two rounds' difference is how far the field moved the model there, the
+// global part, held through the stage, cancelling (the probes' world
+// points, twice a round, were 1 % of biv-me's both-walls job).
+Eigen::VectorXd FieldAtProbes(const Model& model,
+                              const std::vector<MaterialPoint>& probes) {
+  const Eigen::Matrix3d rotation = model.Rotation();
+  Eigen::VectorXd stacked(3 * probes.size());
+  for (size_t i = 0; i < probes.size(); ++i) {
+    const MaterialPoint& at = probes[i];
+    stacked.segment<3>(3 * i) =
+        rotation * model.state.local.Displacement(at.u, at.v, at.w);
+  }
+  return stacked;
+}
+
 // The next round's field: the mix of the last rounds' fields
 // (round_acceleration.h).  The field's rounds swing as the global rounds
 // did; mixed, each lowers the field's cost further before it stalls (biv-me
@@ -77,7 +93,7 @@ void FitLocalStage(const FramePoints& frame, const FitOptions& options,
   RoundAcceleration acceleration;
   double last_cost = std::numeric_limits<double>::infinity();
   for (int round = 0; round < options.max_correspondence_rounds; ++round) {
-    const Eigen::VectorXd before = ProbePoints(*model, probes);
+    const Eigen::VectorXd before = FieldAtProbes(*model, probes);
     const SolverReport local = FitLocalField(frame.positions, fit->material,
                                              sliding, options, model, direct);
     fit->local_iterations += local.iterations;
@@ -95,7 +111,8 @@ void FitLocalStage(const FramePoints& frame, const FitOptions& options,
         round + 1 == options.max_correspondence_rounds) {
       break;
     }
-    if (MixField(ProbePoints(*model, probes) - before, &acceleration, model)) {
+    if (MixField(FieldAtProbes(*model, probes) - before, &acceleration,
+                 model)) {
       UpdateContours(frame, contours, options, *model, grid, fit);
     }
   }
