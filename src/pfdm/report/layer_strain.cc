@@ -52,11 +52,9 @@ struct PointBatch {
 // ring through WorldPoints (a ring's functions and its shape's Bessel
 // values once, the sines and cosines in batches): the ring's own points
 // (each layer at v -+ kStep, the thirds' bounds at v), then the layers on
-// the rings at u -+ kStep.  Central differences, not the closed form's
-// tangents: the rings at 4, 13, 22 and 31 of kLatitudes lie on knots of
-// the functions, where X_u has two sides, and the differences take their
-// mean (the closed form one side's: biv-me's layer Ell moved by up to 0.22
-// points).
+// the rings at u -+ kStep.  The rings 4, 13, 22 and 31 of kLatitudes lie
+// on knots of the functions, where X_u has two sides: the differences take
+// their mean, as RingFunctions' slopes do for the mid-wall's closed form.
 std::vector<SampleGeometry> RingGeometry(const Model& model, double u,
                                          const std::vector<double>& v) {
   PointBatch along, above, below;
