@@ -118,8 +118,12 @@ Eigen::Matrix<T, 3, 1> LocalDisplacement(const LocalField& field, const T& u,
                                       : (u - e.u0) / e.du;
   const T t = (v - e.v0) / e.dv;
   const bool layered = field.transmural() && w != 0.0;
+  // col is e.col or the next, in [0, cols]: Node's wrap without its two
+  // integer divisions, at every point of every surface and sample.
   auto node = [&](int row, int col) -> Eigen::Matrix<T, 3, 1> {
-    const int at = 3 * grid.Node(row, col);
+    const int index =
+        row == 0 ? 0 : 1 + (row - 1) * grid.cols + (col == grid.cols ? 0 : col);
+    const int at = 3 * index;
     const double* q = &field.values[at];
     if (!layered) return Eigen::Matrix<T, 3, 1>(T(q[0]), T(q[1]), T(q[2]));
     const double* q_w = &field.slope[at];
