@@ -58,43 +58,10 @@ std::vector<double> SurfacesOf(const Model& model,
   return surfaces;
 }
 
-// Off the mid-wall, the closest point of the point's own surface replaces
-// the mid-wall's in closest, found and found_normals.
-void RefineOnSurfaces(const SurfaceGrid& grid, const Model& model,
-                      const std::vector<Eigen::Vector3d>& subset,
-                      const std::vector<size_t>& which,
-                      const std::vector<double>& surfaces,
-                      const CorrespondenceOptions& correspondence, bool warm,
-                      const std::vector<MaterialPoint>& material,
-                      std::vector<MaterialPoint>* closest,
-                      std::vector<Eigen::Vector3d>* found,
-                      std::vector<Eigen::Vector3d>* found_normals) {
-  std::vector<size_t> off;
-  CorrespondenceOptions on_surface = correspondence;
-  on_surface.surfaces.clear();
-  on_surface.hints.clear();
-  std::vector<Eigen::Vector3d> off_points;
-  for (size_t j = 0; j < which.size(); ++j) {
-    if (surfaces[j] == 0.0) continue;
-    off.push_back(j);
-    off_points.push_back(subset[j]);
-    on_surface.surfaces.push_back(surfaces[j]);
-    if (warm) on_surface.hints.push_back(material[which[j]]);
-  }
-  std::vector<Eigen::Vector3d> found_off, normals_off;
-  const std::vector<MaterialPoint> refined = ClosestMaterialPointsFrom(
-      grid, model, off_points, on_surface, &found_off, &normals_off);
-  for (size_t k = 0; k < off.size(); ++k) {
-    (*closest)[off[k]] = refined[k];
-    (*found)[off[k]] = found_off[k];
-    (*found_normals)[off[k]] = normals_off[k];
-  }
-}
-
 // The rows of `which` whose search starts on the mid-wall: all of them
 // but, in a solid, the contour points whose wall is known (layer_w, not
-// ranked), which RefineOnSurfaces seeks on that wall alone (the mid-wall's
-// closest point was thrown away: half of both walls' searches).
+// ranked), which are sought on that wall alone (the mid-wall's closest
+// point was thrown away: half of both walls' searches).
 std::vector<size_t> MidwallRows(const Model& model,
                                 const std::vector<size_t>& which,
                                 const std::vector<double>& layer_w,
@@ -110,23 +77,38 @@ std::vector<size_t> MidwallRows(const Model& model,
   return rows;
 }
 
-// The mid-wall's closest points of the listed rows of `subset`, written
+// The rows of `surfaces` off the mid-wall: a solid's points sought on a
+// wall or a layer, whose closest point there replaces the mid-wall's.
+std::vector<size_t> OffMidwallRows(const std::vector<double>& surfaces) {
+  std::vector<size_t> rows;
+  for (size_t j = 0; j < surfaces.size(); ++j) {
+    if (surfaces[j] != 0.0) rows.push_back(j);
+  }
+  return rows;
+}
+
+// The closest points of the listed rows of `subset` on their surfaces
+// (`surfaces`, a value per row of `subset`; empty: the mid-wall), each
+// search from its row's hint where `correspondence` has hints, written
 // into those rows of closest, found and found_normals.
-void SearchMidwall(const SurfaceGrid& grid, const Model& model,
-                   const std::vector<Eigen::Vector3d>& subset,
-                   const std::vector<size_t>& rows,
-                   const CorrespondenceOptions& correspondence,
-                   std::vector<MaterialPoint>* closest,
-                   std::vector<Eigen::Vector3d>* found,
-                   std::vector<Eigen::Vector3d>* found_normals) {
+void SearchRows(const SurfaceGrid& grid, const Model& model,
+                const std::vector<Eigen::Vector3d>& subset,
+                const std::vector<size_t>& rows,
+                const std::vector<double>& surfaces,
+                const CorrespondenceOptions& correspondence,
+                std::vector<MaterialPoint>* closest,
+                std::vector<Eigen::Vector3d>* found,
+                std::vector<Eigen::Vector3d>* found_normals) {
   CorrespondenceOptions listed = correspondence;
   listed.hints.clear();
+  listed.surfaces.clear();
   std::vector<Eigen::Vector3d> points;
   for (size_t j : rows) {
     points.push_back(subset[j]);
     if (!correspondence.hints.empty()) {
       listed.hints.push_back(correspondence.hints[j]);
     }
+    if (!surfaces.empty()) listed.surfaces.push_back(surfaces[j]);
   }
   std::vector<Eigen::Vector3d> found_rows, normal_rows;
   const std::vector<MaterialPoint> closest_rows = ClosestMaterialPointsFrom(
@@ -184,14 +166,14 @@ void UpdateClosest(const Model& model,
   found->resize(which.size());
   std::vector<Eigen::Vector3d> found_normals(which.size());
   std::vector<MaterialPoint> closest(which.size());
-  SearchMidwall(*grid, model, subset,
-                MidwallRows(model, which, layer_w, assign_depth),
-                correspondence, &closest, found, &found_normals);
+  SearchRows(*grid, model, subset,
+             MidwallRows(model, which, layer_w, assign_depth), {},
+             correspondence, &closest, found, &found_normals);
   if (model.config.Solid()) {
     const std::vector<double> surfaces = SurfacesOf(
         model, subset, which, layer_w, assign_depth, closest, ranking);
-    RefineOnSurfaces(*grid, model, subset, which, surfaces, correspondence,
-                     warm, *material, &closest, found, &found_normals);
+    SearchRows(*grid, model, subset, OffMidwallRows(surfaces), surfaces,
+               correspondence, &closest, found, &found_normals);
   }
   for (size_t j = 0; j < which.size(); ++j) {
     (*material)[which[j]] = closest[j];

@@ -42,22 +42,30 @@ Truth MakeTruth(const LocalGrid& grid) {
   return truth;
 }
 
+// 1,500 points of the whole model without noise, spread evenly in sin u
+// over most of its length, and their material points.
+void SampleWholeModel(const Truth& truth, unsigned seed,
+                      std::vector<Eigen::Vector3d>* points,
+                      std::vector<MaterialPoint>* material) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 1500; ++i) {
+    const double u = std::asin(-1.0 + 1.5 * unit(random));
+    const double v = -kPi + 2 * kPi * unit(random);
+    material->push_back({u, v});
+    points->push_back(truth.whole.WorldPoint(u, v));
+  }
+}
+
 // Tracked points of the whole model, without noise, and the fitted field's
 // largest error over a dense grid, for each solver: the linear problem has
 // one minimum, and with little stiffness it is the truth.
 TEST(LocalFitTest, EverySolverRecoversAFieldWithoutRingMeans) {
   const LocalGrid grid = GridOver(TestSpheroid(5).config, 7, 12);
   const Truth truth = MakeTruth(grid);
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<Eigen::Vector3d> points;
   std::vector<MaterialPoint> material;
-  for (int i = 0; i < 1500; ++i) {
-    const double u = std::asin(-1.0 + 1.5 * unit(random));
-    const double v = -kPi + 2 * kPi * unit(random);
-    material.push_back({u, v});
-    points.push_back(truth.whole.WorldPoint(u, v));
-  }
+  SampleWholeModel(truth, 3, &points, &material);
   const std::vector<bool> sliding(points.size(), false);
   for (const char* solver : {"direct", "damped", "integrator"}) {
     FitOptions options;
@@ -123,16 +131,9 @@ double LargestAcross(const LocalField& field,
 TEST(LocalFitTest, ContoursAloneMoveTheNodesAlongTheNormal) {
   const LocalGrid grid = GridOver(TestSpheroid(5).config, 7, 12);
   const Truth truth = MakeTruth(grid);
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<Eigen::Vector3d> points;
   std::vector<MaterialPoint> material;
-  for (int i = 0; i < 1500; ++i) {
-    const double u = std::asin(-1.0 + 1.5 * unit(random));
-    const double v = -kPi + 2 * kPi * unit(random);
-    material.push_back({u, v});
-    points.push_back(truth.whole.WorldPoint(u, v));
-  }
+  SampleWholeModel(truth, 5, &points, &material);
   const std::vector<Eigen::Vector3d> normals = NodeNormals(truth.global, grid);
   std::vector<bool> sliding(points.size(), true);
   FitOptions options;
