@@ -16,9 +16,6 @@ namespace {
 // v, the pole never sampled (as wall_motion's samples).
 constexpr int kLatitudes = 36;
 constexpr int kLongitudes = 72;
-// Central differences of the world point: the tangents within 1e-9 of
-// their size, and no Jets through the local field.
-constexpr double kStep = 1e-5;
 constexpr double kThirdBounds[kWallLayers + 1] = {-1.0, -1.0 / 3, 1.0 / 3, 1.0};
 
 struct Tangents {
@@ -35,53 +32,32 @@ struct SampleGeometry {
   Bounds bounds;
 };
 
-// Material points (u, v, w) as WorldPoints takes them, and their points.
-struct PointBatch {
-  std::vector<std::array<double, 3>> at;
-  std::vector<Eigen::Vector3d> Evaluate(const Model& model) const {
-    std::vector<Eigen::Vector3d> points(at.size());
-    if (!at.empty()) {
-      WorldPoints(model, at.size(), &at[0][0], &at[0][1], &at[0][2], 3,
-                  points.data());
-    }
-    return points;
-  }
-};
-
-// The geometry of the samples at longitudes `v` of the ring at u, ring by
-// ring through WorldPoints (a ring's functions and its shape's Bessel
-// values once, the sines and cosines in batches): the ring's own points
-// (each layer at v -+ kStep, the thirds' bounds at v), then the layers on
-// the rings at u -+ kStep.  The rings 4, 13, 22 and 31 of kLatitudes lie
-// on knots of the functions, where X_u has two sides: the differences take
-// their mean, as RingFunctions' slopes do for the mid-wall's closed form.
+// The geometry of the samples at longitudes `v` of the ring at u: each
+// layer's tangents in closed form (SurfaceTangents on surface w, the
+// ring's functions once; on a knot, where X_u has two sides, the mean of
+// the two spans' slopes, and the rings 4, 13, 22 and 31 of kLatitudes lie
+// on knots), the thirds' bounds in one batch through WorldPoints.
 std::vector<SampleGeometry> RingGeometry(const Model& model, double u,
                                          const std::vector<double>& v) {
-  PointBatch along, above, below;
+  std::vector<std::array<double, 3>> at;
   for (double at_v : v) {
-    for (double w : kLayerDepth) {
-      along.at.push_back({u, at_v + kStep, w});
-      along.at.push_back({u, at_v - kStep, w});
-      above.at.push_back({u + kStep, at_v, w});
-      below.at.push_back({u - kStep, at_v, w});
-    }
-    for (double w : kThirdBounds) along.at.push_back({u, at_v, w});
+    for (double w : kThirdBounds) at.push_back({u, at_v, w});
   }
-  const std::vector<Eigen::Vector3d> on = along.Evaluate(model);
-  const std::vector<Eigen::Vector3d> up = above.Evaluate(model);
-  const std::vector<Eigen::Vector3d> down = below.Evaluate(model);
-  const double scale = 0.5 / kStep;
-  constexpr size_t kAlong = 2 * kWallLayers + kWallLayers + 1;
+  std::vector<Eigen::Vector3d> bounds(at.size());
+  if (!at.empty()) {
+    WorldPoints(model, at.size(), &at[0][0], &at[0][1], &at[0][2], 3,
+                bounds.data());
+  }
+  const RingFunctions ring(model, u);
   std::vector<SampleGeometry> geometry(v.size());
   for (size_t j = 0; j < v.size(); ++j) {
-    const Eigen::Vector3d* ring = &on[kAlong * j];
     for (int k = 0; k < kWallLayers; ++k) {
-      const size_t across = kWallLayers * j + k;
-      geometry[j].tangents[k] = {(up[across] - down[across]) * scale,
-                                 (ring[2 * k] - ring[2 * k + 1]) * scale};
+      Tangents& tangents = geometry[j].tangents[k];
+      SurfaceTangents(model, ring, v[j], kLayerDepth[k], &tangents.xu,
+                      &tangents.xv);
     }
     for (int b = 0; b <= kWallLayers; ++b) {
-      geometry[j].bounds[b] = ring[2 * kWallLayers + b];
+      geometry[j].bounds[b] = bounds[(kWallLayers + 1) * j + b];
     }
   }
   return geometry;

@@ -52,30 +52,30 @@ double MeanRotation(const MaterialRing& from, const MaterialRing& to,
 
 namespace {
 
-// The chord from (u, v, -1) to (u, v, +1) along the unit `normal`.
-double ThicknessAlong(const Model& model, const FunctionValues& f, double u,
-                      double v, const Eigen::Vector3d& normal) {
-  return std::abs(
-      (model.WorldPointWith(f, u, v, 1.0) - model.WorldPointWith(f, u, v, -1.0))
-          .dot(normal));
+// The chord from endo to epi along the unit `normal`.
+double ThicknessAlong(const Eigen::Vector3d& endo, const Eigen::Vector3d& epi,
+                      const Eigen::Vector3d& normal) {
+  return std::abs((epi - endo).dot(normal));
 }
 
 }  // namespace
 
 double WallThickness(const Model& model, double u, double v) {
-  return ThicknessAlong(model, model.FunctionsAt(u), u, v,
+  const FunctionValues f = model.FunctionsAt(u);
+  return ThicknessAlong(model.WorldPointWith(f, u, v, -1.0),
+                        model.WorldPointWith(f, u, v, 1.0),
                         SurfaceNormal(model, u, v));
 }
 
-double WallThickness(const Model& model, const FunctionValues& f, double u,
-                     double v, const Eigen::Vector3d& xu,
-                     const Eigen::Vector3d& xv) {
+double WallThickness(const Model& model, double u, double v,
+                     const Eigen::Vector3d& endo, const Eigen::Vector3d& epi,
+                     const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) {
   // dv x du, as SurfaceNormal orients it (the sign does not matter here).
   const Eigen::Vector3d normal = xv.cross(xu);
   if (!(normal.norm() > 1e-9 * xu.squaredNorm())) {
     return WallThickness(model, u, v);
   }
-  return ThicknessAlong(model, f, u, v, normal.normalized());
+  return ThicknessAlong(endo, epi, normal.normalized());
 }
 
 double RingHeight(const Model& model, double u) {

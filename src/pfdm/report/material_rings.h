@@ -42,12 +42,15 @@ double AngleAbout(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
 // along the normal of the layer w = 0 there, as a chord perpendicular to
 // the wall reads it.
 double WallThickness(const Model& model, double u, double v);
-// The same with the ring's functions at u and the layer w = 0's tangents
-// dx/du, dx/dv at (u, v) given, as the regional samples have them: two
-// model points instead of the functions twice and the tangents again.
-double WallThickness(const Model& model, const FunctionValues& f, double u,
-                     double v, const Eigen::Vector3d& xu,
-                     const Eigen::Vector3d& xv);
+// The same at a material point whose endocardial and epicardial points
+// are endo and epi and whose layer w = 0 has tangents dx/du, dx/dv there:
+// the regional samples take a ring's walls in a batch each (SampleRing at
+// w = -1 and +1) and the tangents in closed form, where two model points
+// apiece were a tenth of a solid's analysis.  At a pole, where the
+// tangents give no normal, WallThickness(model, u, v).
+double WallThickness(const Model& model, double u, double v,
+                     const Eigen::Vector3d& endo, const Eigen::Vector3d& epi,
+                     const Eigen::Vector3d& xu, const Eigen::Vector3d& xv);
 
 // Height of ring u along the reference model's axis in its model frame:
 // a0 a3 sin u + e3o, which bending does not move (its ring mean is zero).

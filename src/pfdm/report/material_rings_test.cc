@@ -6,6 +6,7 @@
 #include "gtest/gtest.h"
 #include "pfdm/report/surface_strain.h"
 #include "pfdm/testing/test_models.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
@@ -56,9 +57,10 @@ TEST(MaterialRingsTest, HeightFractionRunsFromApexToRim) {
 }
 
 // The shell's wall, 10 mm, read on a bent, twisted shell with a local
-// field: from the ring's functions and tangents as from the material point
-// alone, within 1e-9 mm, and 10 mm where the shell is undeformed.
-TEST(MaterialRingsTest, WallThicknessFromTheRingsTangentsIsTheSame) {
+// field: from the ring's batches of walls and its tangents as from the
+// material point alone, within 1e-9 mm, and 10 mm where the shell is
+// undeformed.
+TEST(MaterialRingsTest, WallThicknessFromTheRingsWallsIsTheSame) {
   const Model shell = TestShell(9);
   Model bent = shell;
   for (size_t k = 0; k < bent.state.knots.size(); ++k) {
@@ -68,16 +70,21 @@ TEST(MaterialRingsTest, WallThicknessFromTheRingsTangentsIsTheSame) {
   }
   bent.state.globals[kB0] = 1.0;
   AddTestLocalField(1.5, &bent);
+  constexpr int kSamples = 7;
   for (const Model* model :
        std::initializer_list<const Model*>{&shell, &bent}) {
     for (double u : {-1.2, -0.4, 0.0, 0.3}) {
       const RingFunctions ring(*model, u);
-      for (double v : {-3.0, -1.0, 0.5, 2.9}) {
+      const MaterialRing endo = SampleRing(*model, u, kSamples, -1.0);
+      const MaterialRing epi = SampleRing(*model, u, kSamples, 1.0);
+      for (int j = 0; j < kSamples; ++j) {
+        const double v = -kPi + 2.0 * kPi * (j + 0.5) / kSamples;
         Eigen::Vector3d xu, xv;
         SurfaceTangents(*model, ring, v, &xu, &xv);
         const double expected = WallThickness(*model, u, v);
-        EXPECT_NEAR(WallThickness(*model, ring.at, u, v, xu, xv), expected,
-                    1e-9);
+        EXPECT_NEAR(
+            WallThickness(*model, u, v, endo.points[j], epi.points[j], xu, xv),
+            expected, 1e-9);
         if (model == &shell) EXPECT_NEAR(expected, 10.0, 1e-9);
       }
     }

@@ -54,12 +54,17 @@ RingFunctions::RingFunctions(const Model& model, double u)
 
 void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
                      Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
+  SurfaceTangents(model, ring, v, 0.0, xu, xv);
+}
+
+void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
+                     double w, Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
   using Jet2 = ceres::Jet<double, 2>;
   const ShapeAndAngleDerivatives shape =
       ShapeAngleDerivatives(ring.at.data(), ring.slopes.data(),
-                            MakeAngles(ring.u, v), model.UnitExponents());
+                            MakeAngles(ring.u, v), model.UnitExponents(), w);
   const Eigen::Matrix<Jet2, 3, 1> local =
-      LocalDisplacement(model.state.local, Jet2(ring.u, 0), Jet2(v, 1));
+      LocalDisplacement(model.state.local, Jet2(ring.u, 0), Jet2(v, 1), w);
   Eigen::Vector3d local_u, local_v;
   for (int i = 0; i < 3; ++i) {
     local_u[i] = local[i].v[0];

@@ -56,6 +56,10 @@ struct RingFunctions {
 };
 void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
                      Eigen::Vector3d* xu, Eigen::Vector3d* xv);
+// The same on a solid's surface w (transmural.h), as the layers' strain
+// reads each layer.
+void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
+                     double w, Eigen::Vector3d* xu, Eigen::Vector3d* xv);
 
 SurfaceStrain StrainAt(const Model& reference, const Model& current, double u,
                        double v);

@@ -52,6 +52,44 @@ TEST(SurfaceStrainTest, TangentsAreTheDerivativesOfTheWorldPoint) {
   }
 }
 
+// Each layer of a bent, twisted solid with a transmural local field: the
+// closed-form tangents of surface w are the central differences of
+// WorldPoint(u, v, w), the endocardium's and the epicardium's as the
+// mid-wall's.
+TEST(SurfaceStrainTest, EachLayersTangentsAreItsWorldPointsDerivatives) {
+  Model model = TestShell(17);
+  for (int i = 0; i < model.config.num_knots; ++i) {
+    model.state.knots[i][kB0] = 3.0 - 0.4 * i;
+    model.state.knots[i][kTau] = 0.05 * i;
+    model.state.knots[i][kH] = 9.0 + 0.2 * i;
+  }
+  model.state.globals[kB0] = 1.0;
+  AddTestLocalField(1.5, &model);
+  LocalField& field = model.state.local;
+  field.slope.resize(field.values.size());
+  for (size_t i = 0; i < field.slope.size(); ++i) {
+    field.slope[i] = 0.8 * std::cos(2.3 * i);
+  }
+  const double h = 1e-6;
+  for (double w : {-1.0, -0.35, 0.0, 1.0}) {
+    for (double u : {-1.23, -0.41, 0.07, 0.43}) {
+      const RingFunctions ring(model, u);
+      for (double v : {-2.93, 0.31, 1.77}) {
+        Eigen::Vector3d xu, xv;
+        SurfaceTangents(model, ring, v, w, &xu, &xv);
+        const Eigen::Vector3d du =
+            (model.WorldPoint(u + h, v, w) - model.WorldPoint(u - h, v, w)) /
+            (2 * h);
+        const Eigen::Vector3d dv =
+            (model.WorldPoint(u, v + h, w) - model.WorldPoint(u, v - h, w)) /
+            (2 * h);
+        EXPECT_LT((xu - du).norm(), 1e-6 * du.norm()) << w << " " << u;
+        EXPECT_LT((xv - dv).norm(), 1e-6 * dv.norm()) << w << " " << u;
+      }
+    }
+  }
+}
+
 // A ring on a knot, where a1 bends from rising to falling: its slopes are
 // the mean of the two spans', as central differences across the knot read
 // X_u; off the knot, the span's own slopes to the bit.

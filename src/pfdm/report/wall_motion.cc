@@ -129,11 +129,27 @@ int AssignRegion(const Model& reference, double u, double v,
 
 namespace {
 
+// A solid's endocardial and epicardial rings at the samples' longitudes.
+struct WallRings {
+  WallRings(const Model& model, double u) : solid(model.config.Solid()) {
+    if (!solid) return;
+    endo = SampleRing(model, u, kLongitudeSamples, -1.0);
+    epi = SampleRing(model, u, kLongitudeSamples, 1.0);
+  }
+  double Thickness(const Model& model, double u, double v, int j,
+                   const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) const {
+    return WallThickness(model, u, v, endo.points[j], epi.points[j], xu, xv);
+  }
+  bool solid;
+  MaterialRing endo, epi;
+};
+
 // Row i of SampleReference: the samples of latitude u.
 void SampleReferenceRow(const Model& reference, const RegionLayout& layout,
                         double u, ReferenceSamples::Sample* row) {
   const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
   const RingFunctions ring(reference, u);
+  const WallRings walls(reference, u);
   for (int j = 0; j < kLongitudeSamples; ++j) {
     const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
     ReferenceSamples::Sample& sample = row[j];
@@ -141,9 +157,9 @@ void SampleReferenceRow(const Model& reference, const RegionLayout& layout,
     sample.weight = AreaWeight(reference, u, v);
     sample.from = before.points[j] - before.centroid;
     SurfaceTangents(reference, ring, v, &sample.xu, &sample.xv);
-    if (reference.config.Solid()) {
+    if (walls.solid) {
       sample.thickness =
-          WallThickness(reference, ring.at, u, v, sample.xu, sample.xv);
+          walls.Thickness(reference, u, v, j, sample.xu, sample.xv);
     }
   }
 }
@@ -187,15 +203,15 @@ namespace {
 void SampleRow(const Model& current, double u, CurrentSamples::Sample* row) {
   const MaterialRing after = SampleRing(current, u, kLongitudeSamples);
   const RingFunctions ring(current, u);
-  const bool solid = current.config.Solid();
+  const WallRings walls(current, u);
   for (int j = 0; j < kLongitudeSamples; ++j) {
     const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
     CurrentSamples::Sample& sample = row[j];
     sample.to = after.points[j] - after.centroid;
     SurfaceTangents(current, ring, v, &sample.xu, &sample.xv);
-    if (solid) {
+    if (walls.solid) {
       sample.thickness =
-          WallThickness(current, ring.at, u, v, sample.xu, sample.xv);
+          walls.Thickness(current, u, v, j, sample.xu, sample.xv);
     }
   }
 }
