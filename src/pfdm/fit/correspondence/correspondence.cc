@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <thread>
 
@@ -365,22 +366,25 @@ std::vector<MaterialPoint> ClosestMaterialPointsFrom(
   const auto refine_range = [&](size_t begin, size_t end) {
     std::int64_t range_evaluations = 0;
     for (size_t i = begin; i < end; ++i) {
-      const SurfaceGrid::Nearest nearest = grid.NearestTo(points[i]);
-      const double distance_squared = nearest.distance_squared;
-      MaterialPoint start = grid.Sample(nearest.index);
-      if (!options.surfaces.empty()) start.w = options.surfaces[i];
-      if (nearest.index < static_cast<size_t>(SurfaceGrid::kGridV)) {
-        start.v = LongitudeAround(model, points[i], start.u);
-      }
-      // The hint's evaluation, when it wins, is the search's first.
+      const double w = options.surfaces.empty() ? 0.0 : options.surfaces[i];
+      // The hint's evaluation, when no grid sample is nearer, is the
+      // search's first.
       std::optional<SurfaceSample> from;
-      if (!options.hints.empty() && options.hints[i].w == start.w) {
+      double hint_squared = std::numeric_limits<double>::infinity();
+      if (!options.hints.empty() && options.hints[i].w == w) {
         from = Sample(surface, options.hints[i], &range_evaluations);
-        if ((from->point - points[i]).squaredNorm() > distance_squared) {
-          from.reset();
-        }
+        hint_squared = (from->point - points[i]).squaredNorm();
       }
-      if (!from) from = Sample(surface, start, &range_evaluations);
+      const std::optional<SurfaceGrid::Nearest> nearest =
+          grid.NearestWithin(points[i], hint_squared);
+      if (nearest) {
+        MaterialPoint start = grid.Sample(nearest->index);
+        start.w = w;
+        if (nearest->index < static_cast<size_t>(SurfaceGrid::kGridV)) {
+          start.v = LongitudeAround(model, points[i], start.u);
+        }
+        from = Sample(surface, start, &range_evaluations);
+      }
       const SurfaceSample found =
           Refine(surface, model, points[i], *from, options.step_tolerance_mm,
                  &range_evaluations);

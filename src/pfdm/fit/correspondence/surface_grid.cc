@@ -27,9 +27,13 @@ double SquaredDistance(const double* p, const Eigen::Vector3d& q) {
 // worstDist() lets the tree prune every cell farther than that.
 class MovedNearest {
  public:
+  // Samples no nearer than sqrt(best) are not kept.
   MovedNearest(const std::vector<Eigen::Vector3d>& points, const double* query,
-               double drift)
-      : points_(points), query_(query), drift_(drift) {}
+               double drift, double best)
+      : points_(points), query_(query), drift_(drift), best_(best) {
+    const double reach = std::sqrt(best) + drift_ + 1e-9;
+    bound_ = reach * reach;
+  }
   size_t size() const { return 1; }
   bool full() const { return true; }
   bool addPoint(double, unsigned int index) {
@@ -51,9 +55,9 @@ class MovedNearest {
   const std::vector<Eigen::Vector3d>& points_;
   const double* query_;
   double drift_;
-  size_t index_ = 0;
-  double best_ = std::numeric_limits<double>::infinity();
-  double bound_ = std::numeric_limits<double>::infinity();
+  size_t index_ = std::numeric_limits<size_t>::max();  // None yet.
+  double best_;
+  double bound_;
 };
 
 }  // namespace
@@ -104,15 +108,27 @@ void SurfaceGrid::Follow(const Model& model) {
 }
 
 SurfaceGrid::Nearest SurfaceGrid::NearestTo(const Eigen::Vector3d& p) const {
+  return *NearestWithin(p, std::numeric_limits<double>::infinity());
+}
+
+std::optional<SurfaceGrid::Nearest> SurfaceGrid::NearestWithin(
+    const Eigen::Vector3d& p, double squared_bound) const {
   if (drift_ == 0.0) {
+    // knnSearch's, its worst distance starting at the bound: the tree
+    // offers only samples strictly nearer.
     unsigned int nearest = 0;
     double distance_squared = 0.0;
-    tree_->knnSearch(p.data(), 1, &nearest, &distance_squared);
-    return {nearest, distance_squared};
+    nanoflann::KNNResultSet<double, unsigned int> result(1);
+    result.init(&nearest, &distance_squared);
+    distance_squared = squared_bound;
+    tree_->findNeighbors(result, p.data(), nanoflann::SearchParams());
+    if (result.size() == 0) return std::nullopt;
+    return Nearest{nearest, distance_squared};
   }
-  MovedNearest result(points_, p.data(), drift_);
+  MovedNearest result(points_, p.data(), drift_, squared_bound);
   tree_->findNeighbors(result, p.data(), nanoflann::SearchParams());
-  return {result.index(), result.best()};
+  if (result.index() == std::numeric_limits<size_t>::max()) return std::nullopt;
+  return Nearest{result.index(), result.best()};
 }
 
 }  // namespace pfdm

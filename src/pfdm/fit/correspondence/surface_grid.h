@@ -4,6 +4,7 @@
 #define PFDM_FIT_CORRESPONDENCE_SURFACE_GRID_H_
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "Eigen/Core"
@@ -45,6 +46,11 @@ class SurfaceGrid {
     double distance_squared;
   };
   Nearest NearestTo(const Eigen::Vector3d& p) const;
+  // The same if that sample is nearer than sqrt(squared_bound), else none:
+  // a search with a hint needs the grid only where the grid beats the hint,
+  // and the bound lets the tree prune nearly all of its cells.
+  std::optional<Nearest> NearestWithin(const Eigen::Vector3d& p,
+                                       double squared_bound) const;
   const MaterialPoint& Sample(size_t index) const { return samples_[index]; }
   // How many times the tree was built (a test's and a benchmark's count).
   int builds() const { return builds_; }

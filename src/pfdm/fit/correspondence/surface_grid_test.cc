@@ -95,5 +95,47 @@ TEST(SurfaceGridTest, FollowingGridAnswersAsAFreshOne) {
   }
 }
 
+// A bounded search answers as the unbounded one where its sample is nearer
+// than the bound, and not at all where it is not, on a fresh grid and on
+// one that followed the model 1 mm (kept its tree): bounds a hair above
+// and below each nearest distance, and a hint's typical 1 mm.
+TEST(SurfaceGridTest, BoundedSearchFindsOnlyNearerSamples) {
+  Model model = TwistedTestModel();
+  SurfaceGrid following(model);
+  model.state.center[1] += 1.0;
+  following.Follow(model);
+  ASSERT_EQ(following.builds(), 1);
+  const SurfaceGrid fresh(model);
+  std::mt19937 random(5);
+  std::normal_distribution<double> noise(0.0, 2.0);
+  std::uniform_real_distribution<double> u(-1.5, 0.6), v(-M_PI, M_PI);
+  int found_within_a_millimetre = 0;
+  for (const SurfaceGrid* grid :
+       std::initializer_list<const SurfaceGrid*>{&fresh, &following}) {
+    for (int k = 0; k < 300; ++k) {
+      const Eigen::Vector3d p =
+          model.WorldPoint(u(random), v(random)) +
+          Eigen::Vector3d(noise(random), noise(random), noise(random));
+      const SurfaceGrid::Nearest nearest = grid->NearestTo(p);
+      const double d = nearest.distance_squared;
+      const std::optional<SurfaceGrid::Nearest> above =
+          grid->NearestWithin(p, d * (1.0 + 1e-12));
+      ASSERT_TRUE(above.has_value()) << k;
+      EXPECT_EQ(above->index, nearest.index) << k;
+      EXPECT_EQ(above->distance_squared, d) << k;
+      EXPECT_FALSE(grid->NearestWithin(p, d).has_value()) << k;
+      EXPECT_FALSE(grid->NearestWithin(p, d * (1.0 - 1e-12)).has_value());
+      const std::optional<SurfaceGrid::Nearest> hint =
+          grid->NearestWithin(p, 1.0);
+      EXPECT_EQ(hint.has_value(), d < 1.0) << k;
+      if (hint) {
+        EXPECT_EQ(hint->index, nearest.index) << k;
+        ++found_within_a_millimetre;
+      }
+    }
+  }
+  EXPECT_GT(found_within_a_millimetre, 10);
+}
+
 }  // namespace
 }  // namespace pfdm
