@@ -139,57 +139,101 @@ double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
   return std::sqrt(6.0 * sum_squared / pairs);
 }
 
-std::vector<double> NeighbourDepartures(
+namespace {
+
+// The departures of the listed tags (NeighbourDepartures') from their
+// neighbours among `sample`, whose tree is `tree`.
+std::vector<double> DeparturesOf(
+    const NeighbourCloud& sample, const PointCloudTree& tree,
     const std::vector<Eigen::Vector3d>& midwall_points,
-    const std::vector<double>& distances) {
-  const NeighbourCloud sample(midwall_points, distances);
+    const std::vector<double>& distances, const std::vector<size_t>& tags) {
   const size_t num_points = sample.cloud.points.size();
-  std::vector<double> departures(distances.size(), 0.0);
+  std::vector<double> departures(tags.size(), 0.0);
   if (num_points < 2) return departures;
-  PointCloudTree tree(3, sample.cloud,
-                      nanoflann::KDTreeSingleIndexAdaptorParams(10));
-  tree.buildIndex();
   const size_t wanted = std::min<size_t>(kOutlierNeighbours + 1, num_points);
   std::vector<unsigned int> nearest(wanted);
   std::vector<double> distance_squared(wanted);
   std::vector<double> neighbours;
-  for (size_t i = 0; i < distances.size(); ++i) {
+  for (size_t k = 0; k < tags.size(); ++k) {
+    const size_t i = tags[k];
     const size_t found =
         tree.knnSearch(midwall_points[i].data(), wanted, nearest.data(),
                        distance_squared.data());
     // The tag itself, when it is among the sampled ones, is no neighbour.
     const bool sampled = i % sample.step == 0;
     neighbours.clear();
-    for (size_t k = 0; k < found; ++k) {
-      if (sampled && nearest[k] == i / sample.step) continue;
+    for (size_t n = 0; n < found; ++n) {
+      if (sampled && nearest[n] == i / sample.step) continue;
       if (neighbours.size() < kOutlierNeighbours) {
-        neighbours.push_back(sample.distances[nearest[k]]);
+        neighbours.push_back(sample.distances[nearest[n]]);
       }
     }
-    departures[i] = distances[i] - Median(&neighbours);
+    departures[k] = distances[i] - Median(&neighbours);
   }
   return departures;
+}
+
+// Every tag's index, or the sampled ones' (every step-th).
+std::vector<size_t> EveryNth(size_t count, size_t step) {
+  std::vector<size_t> tags;
+  for (size_t i = 0; i < count; i += step) tags.push_back(i);
+  return tags;
+}
+
+}  // namespace
+
+std::vector<double> NeighbourDepartures(
+    const std::vector<Eigen::Vector3d>& midwall_points,
+    const std::vector<double>& distances) {
+  const NeighbourCloud sample(midwall_points, distances);
+  PointCloudTree tree(3, sample.cloud,
+                      nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  return DeparturesOf(sample, tree, midwall_points, distances,
+                      EveryNth(distances.size(), 1));
 }
 
 RobustWallSpread RobustWallSpreadMm(
     const std::vector<Eigen::Vector3d>& midwall_points,
     const std::vector<double>& distances) {
   RobustWallSpread result;
+  // Among the tags the neighbours are sought from: past 16,384 tags, a
+  // departure for each of all of them cost frame 0 a fifth of its time.
+  const NeighbourCloud sample(midwall_points, distances);
+  PointCloudTree tree(3, sample.cloud,
+                      nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  result.step = sample.step;
   const std::vector<double> departures =
-      NeighbourDepartures(midwall_points, distances);
+      DeparturesOf(sample, tree, midwall_points, distances,
+                   EveryNth(distances.size(), sample.step));
   std::vector<double> sizes;
   sizes.reserve(departures.size());
   for (double d : departures) sizes.push_back(std::abs(d));
   result.fence_mm =
       std::max(kMinOutlierMm, kOutlierScales * kMadToSigma * Median(&sizes));
-  result.inlier.resize(distances.size());
-  for (size_t i = 0; i < distances.size(); ++i) {
-    result.inlier[i] = std::abs(departures[i]) <= result.fence_mm;
-    if (!result.inlier[i]) ++result.outliers;
+  result.inlier.resize(departures.size());
+  for (size_t k = 0; k < departures.size(); ++k) {
+    result.inlier[k] = std::abs(departures[k]) <= result.fence_mm;
+    if (!result.inlier[k]) ++result.outliers;
   }
-  result.spread_mm = WallSpreadMm(KeptEntries(midwall_points, result.inlier),
-                                  KeptEntries(distances, result.inlier));
+  result.spread_mm =
+      WallSpreadMm(KeptEntries(sample.cloud.points, result.inlier),
+                   KeptEntries(sample.distances, result.inlier));
   return result;
+}
+
+std::vector<bool> TagInliers(const RobustWallSpread& spread,
+                             const std::vector<Eigen::Vector3d>& midwall_points,
+                             const std::vector<double>& distances) {
+  if (spread.step == 1) return spread.inlier;
+  const std::vector<double> departures =
+      NeighbourDepartures(midwall_points, distances);
+  std::vector<bool> inlier(departures.size());
+  for (size_t i = 0; i < departures.size(); ++i) {
+    inlier[i] = std::abs(departures[i]) <= spread.fence_mm;
+  }
+  return inlier;
 }
 
 std::vector<double> QuantileDepths(const std::vector<double>& u,

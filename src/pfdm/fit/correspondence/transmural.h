@@ -70,11 +70,14 @@ constexpr double kOutlierScales = 4.0;
 // spread tags 4 mm.
 constexpr double kMinOutlierMm = 2.0;
 
-// WallSpreadMm measured on the tags that are not outliers.
+// WallSpreadMm measured on the tags that are not outliers, sought among
+// the tags WallSpreadMm takes its neighbours from: every tag up to 16,384
+// of them, else every step-th.
 struct RobustWallSpread {
   double spread_mm = 0.0;    // WallSpreadMm of the inliers.
-  std::vector<bool> inlier;  // Per tag.
-  size_t outliers = 0;       // Tags left out.
+  size_t step = 1;           // Tag k * step is the k-th examined.
+  std::vector<bool> inlier;  // Per examined tag.
+  size_t outliers = 0;       // Examined tags left out.
   double fence_mm = 0.0;     // Largest departure of an inlier allowed.
 };
 
@@ -89,6 +92,12 @@ std::vector<double> NeighbourDepartures(
 RobustWallSpread RobustWallSpreadMm(
     const std::vector<Eigen::Vector3d>& midwall_points,
     const std::vector<double>& distances);
+
+// Whether each tag (not only each examined one) lies within the spread's
+// fence of its neighbours: a solid's start leaves the others out.
+std::vector<bool> TagInliers(const RobustWallSpread& spread,
+                             const std::vector<Eigen::Vector3d>& midwall_points,
+                             const std::vector<double>& distances);
 
 // The entries of `values` whose `keep` is set, in order.
 template <typename T>

@@ -243,6 +243,39 @@ TEST(TransmuralOutlierTest, OutliersDoNotReadAsAWall) {
   EXPECT_NEAR(robust.fence_mm, 2.2, 0.2);
 }
 
+// Past 16,384 tags the outliers are sought among the sampled ones (every
+// second of 20,000 here; every 21st tag is 5-10 mm off, so are every 42nd
+// of the sampled ones): the fence and the spread as from all tags, and
+// each tag, sampled or not, judged against that fence (TagInliers).
+TEST(TransmuralOutlierTest, ManyTagsAreJudgedOnTheSampledOnes) {
+  std::vector<Eigen::Vector3d> midwall;
+  const std::vector<double> distances = DistancesAt(
+      TestSpheroid(9), 20000,
+      [](double, int i, std::mt19937& random) {
+        return std::normal_distribution<double>(0.0, 0.5)(random) +
+               Offset(i % 21 == 0 ? 0 : 1, random) * (i % 2 == 0 ? 1 : -1);
+      },
+      &midwall);
+  const RobustWallSpread robust = RobustWallSpreadMm(midwall, distances);
+  EXPECT_EQ(robust.step, 2u);
+  ASSERT_EQ(robust.inlier.size(), 10000u);
+  // 0, 42, ..., 19,992, and a tag or two whose neighbours' median two
+  // outliers on one side pull.
+  EXPECT_GE(robust.outliers, 477u);
+  EXPECT_LE(robust.outliers, 480u);
+  EXPECT_NEAR(robust.spread_mm, 3.46 * 0.5, 0.15);
+  EXPECT_NEAR(robust.fence_mm, 2.2, 0.2);
+  const std::vector<bool> inlier = TagInliers(robust, midwall, distances);
+  ASSERT_EQ(inlier.size(), distances.size());
+  int wrongly_out = 0;
+  for (size_t i = 0; i < distances.size(); ++i) {
+    if (i % 21 == 0) EXPECT_FALSE(inlier[i]) << i << " " << distances[i];
+    if (i % 21 != 0 && !inlier[i]) ++wrongly_out;
+    if (i % 2 == 0) EXPECT_EQ(inlier[i], robust.inlier[i / 2]) << i;
+  }
+  EXPECT_LE(wrongly_out, 6);
+}
+
 // Tags uniform through a 10 mm wall: none is an outlier (a uniform's tails
 // are short: departures reach 1.35 robust deviations, the fence is at 4),
 // so the spread is WallSpreadMm's to the bit.  Noise-free tags on one

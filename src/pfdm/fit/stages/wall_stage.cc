@@ -73,16 +73,18 @@ std::string FormatCount(size_t count) {
 }
 
 // "tags spread 1.7 mm across the wall, 97 of 2,000 (4.9 %) left out as
-// outliers (more than 2.3 mm off their neighbours)".
+// outliers (more than 2.3 mm off their neighbours)"; "of 10,000 sampled"
+// where only every step-th tag was examined.
 std::string SpreadReason(const RobustWallSpread& spread) {
   const size_t tags = spread.inlier.size();
   char percent[32];
   std::snprintf(percent, sizeof(percent), "%.1f",
                 tags == 0 ? 0.0 : 100.0 * spread.outliers / tags);
   return "tags spread " + FormatMm(spread.spread_mm) + " mm across the wall, " +
-         FormatCount(spread.outliers) + " of " + FormatCount(tags) + " (" +
-         percent + " %) left out as outliers (more than " +
-         FormatMm(spread.fence_mm) + " mm off their neighbours)";
+         FormatCount(spread.outliers) + " of " + FormatCount(tags) +
+         (spread.step > 1 ? " sampled" : "") + " (" + percent +
+         " %) left out as outliers (more than " + FormatMm(spread.fence_mm) +
+         " mm off their neighbours)";
 }
 
 // Makes *model a solid whose thickness is the one frame 0's tags span
@@ -169,9 +171,10 @@ bool DecideWallFromTags(const FramePoints& frame,
         wall == WallModel::kSolid
             ? ": a solid (--wall solid)"
             : ": a solid (at least " + FormatMm(kMinWallSpreadMm) + " mm)";
-    decision->reason +=
-        MakeSolidOfTags(KeptEntries(distances, spread.inlier),
-                        KeptEntries(tag_u, spread.inlier), model);
+    const std::vector<bool> inlier =
+        TagInliers(spread, midwall_points, distances);
+    decision->reason += MakeSolidOfTags(KeptEntries(distances, inlier),
+                                        KeptEntries(tag_u, inlier), model);
     return true;
   }
   decision->reason +=
