@@ -141,14 +141,7 @@ double PriorPullMm(const Frame& points, const FrameFit& frame,
              frame.state, reference, step, &probe);
   Model global = solution;
   global.state.local = LocalField();
-  const std::vector<Eigen::Vector3d> before =
-      WorldPoints(global, frame.material);
-  const std::vector<Eigen::Vector3d> after = WorldPoints(probe, frame.material);
-  double sum = 0.0;
-  for (size_t i = 0; i < before.size(); ++i) {
-    sum += (after[i] - before[i]).squaredNorm();
-  }
-  return std::sqrt(sum / before.size());
+  return RmsMoveMm(global, probe, frame.material);
 }
 
 void JudgePrior(double pull_mm, const FrameFit& frame, Verdict* verdict) {
@@ -252,6 +245,23 @@ void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
 }
 
 }  // namespace
+
+double RmsMoveMm(const Model& before, const Model& after,
+                 const std::vector<MaterialPoint>& material) {
+  const size_t step =
+      std::max<size_t>(1, (material.size() + kMoveSamples - 1) / kMoveSamples);
+  std::vector<MaterialPoint> sampled;
+  for (size_t i = 0; i < material.size(); i += step) {
+    sampled.push_back(material[i]);
+  }
+  if (sampled.empty()) return 0.0;
+  const std::vector<Eigen::Vector3d> from = WorldPoints(before, sampled);
+  const std::vector<Eigen::Vector3d> to = WorldPoints(after, sampled);
+  double sum = 0.0;
+  for (size_t i = 0; i < from.size(); ++i)
+    sum += (to[i] - from[i]).squaredNorm();
+  return std::sqrt(sum / from.size());
+}
 
 void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
                  SequenceFit* fit) {
