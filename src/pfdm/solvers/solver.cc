@@ -81,10 +81,6 @@ SolverReport SolveProblem(ceres::Problem* problem,
 
 namespace {
 
-// The direct solve's first trust-region radius: LM damping of 1e-8 of the
-// scaled diagonal (see SolveDirect).
-constexpr double kInitialTrustRegionRadius = 1e8;
-
 // Hands each iteration to SolverOptions::on_step with the parameter blocks
 // at that iterate.  What on_step throws must not unwind through Ceres: it
 // is kept, the solve aborted, and rethrown after it.

@@ -41,6 +41,10 @@ const char* DampingName(DampingKind kind);
 IntegratorKind IntegratorFromName(const std::string& name);
 const char* IntegratorName(IntegratorKind kind);
 
+// The direct solve's first trust-region radius: Levenberg-Marquardt
+// damping of 1e-8 of the scaled diagonal (see SolveDirect).
+constexpr double kInitialTrustRegionRadius = 1e8;
+
 // One iteration (direct, damped) or step (integrator).
 struct SolverTracePoint {
   int iteration = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -11,6 +12,7 @@
 #include "glog/logging.h"
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/problem/frame_blocks.h"
+#include "pfdm/fit/problem/gauss_newton_step.h"
 #include "pfdm/fit/residuals/axis_gauge_chain.h"
 #include "pfdm/fit/residuals/data_cost.h"
 #include "pfdm/fit/residuals/incompressibility_residual.h"
@@ -30,34 +32,6 @@ namespace {
 // frame took 31 ms an iteration with 512, 26.5 with 1,024 or 2,048 (one
 // thread; with two, 18 whichever).
 constexpr size_t kPointsPerGroup = 1024;
-
-// Millimetres of model-point motion per unit of each function, for the
-// regularizers.  Everything scales with the data, so scaled data get scaled
-// lengths.  tau is weighted as if at radius a0, about four times the LV's:
-// near the apex the rings are too small for the data to pin the twist, and
-// twist varies slowly along the axis, so its smoothness carries more.
-FunctionValues FunctionScales(const Model& model,
-                              const std::vector<int>& held) {
-  const double a0 = model.state.globals[kA0];
-  const double radius =
-      a0 * 0.5 * (model.FunctionAt(kA1, 0.0) + model.FunctionAt(kA2, 0.0));
-  FunctionValues scales{};
-  scales[kA0] = 1.0;
-  scales[kA1] = scales[kA2] = scales[kA3] = a0;
-  scales[kEps1] = scales[kEps2] = radius;
-  scales[kTau] = a0;
-  scales[kB0] = scales[kB2] = scales[kE1o] = scales[kE2o] = scales[kE3o] = 1.0;
-  scales[kB1] = scales[kB3] = radius;
-  // A unit of h moves a wall surface by half a millimetre, one of shift by a
-  // millimetre, one of squeeze the layers w = +-1/sqrt(3) by 0.38 mm; dtau
-  // turns it by half as much as tau.
-  scales[kH] = 0.5;
-  scales[kWallShift] = 1.0;
-  scales[kWallSqueeze] = 0.385;
-  scales[kDtau] = 0.5 * a0;
-  for (int f : held) scales[f] = 0.0;
-  return scales;
-}
 
 // The groups' multipliers per free entry of each free block, and for the
 // pose when it is free.
@@ -110,6 +84,17 @@ class FrameProblem {
   void AddIncompressibility(size_t num_points, const ModelState& reference);
   // Solves with the chosen solver and leaves the solution in the model.
   SolverReport Solve();
+  // One step from the model's values (TakeGaussNewtonStep), left in it;
+  // `verify` sees the stepped model.
+  bool Step(const std::function<bool(const Model&)>& verify) {
+    const bool kept =
+        TakeGaussNewtonStep(kInitialTrustRegionRadius, &problem_, [&] {
+          blocks_.Store();
+          return !verify || verify(*model_);
+        });
+    blocks_.Store();
+    return kept;
+  }
   // Each term's cost at the parameters' current values, the data's as the
   // rest of the solve's final cost.
   TermCosts Costs(const SolverReport& report) const;
@@ -131,8 +116,8 @@ class FrameProblem {
     return static_cast<double>(num_points) / model_->config.num_knots;
   }
   FunctionValues KnotScales() const {
-    return FunctionScales(*model_,
-                          HeldEntries(model_->config, FrameKind::kTracked, 0));
+    return RegularizerScales(
+        *model_, HeldEntries(model_->config, FrameKind::kTracked, 0));
   }
 
   const FrameKind kind_;
@@ -319,7 +304,7 @@ void FrameProblem::AddPrior(size_t num_points, const ModelState& prior) {
   prior_ids_.push_back(blocks_.AddResidual(
       PriorResidual::Create(
           std::sqrt(prior_weight * num_points),
-          FunctionScales(*model_, HeldEntries(config, kind_, kGlobalsBlock)),
+          RegularizerScales(*model_, HeldEntries(config, kind_, kGlobalsBlock)),
           prior.globals),
       nullptr, false, {kGlobalsBlock}));
 }
@@ -473,6 +458,19 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
   SolverReport report = problem.Solve();
   if (costs != nullptr) *costs = problem.Costs(report);
   return report;
+}
+
+bool StepFrame(const std::vector<Eigen::Vector3d>& points,
+               const std::vector<MaterialPoint>& material,
+               const std::vector<Eigen::Vector3d>& normals,
+               std::optional<double> rim_height, FrameKind kind,
+               const ModelState& prior, const ModelState& reference,
+               const FitOptions& options, Model* model,
+               const std::function<bool(const Model&)>& verify) {
+  FrameProblem problem(kind, options, model);
+  BuildFrameProblem(points, material, normals, rim_height, prior, reference,
+                    &problem);
+  return problem.Step(verify);
 }
 
 FrameCovariance EstimateFrameCovariance(

@@ -5,6 +5,7 @@
 #define PFDM_FIT_PROBLEM_FRAME_PROBLEM_H_
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -51,6 +52,19 @@ SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
                         const ModelState& prior, const ModelState& reference,
                         const FitOptions& options, Model* model,
                         TermCosts* costs = nullptr);
+
+// One Levenberg-Marquardt step of the same problem from *model, left in
+// it (TakeGaussNewtonStep: the direct solve's first iteration); false, the
+// model unmoved, if Ceres would not keep it.  `verify`, when given, sees
+// the stepped model and says whether that test (an evaluation of the
+// frame) is needed; without it, it always is.
+bool StepFrame(const std::vector<Eigen::Vector3d>& points,
+               const std::vector<MaterialPoint>& material,
+               const std::vector<Eigen::Vector3d>& normals,
+               std::optional<double> rim_height, FrameKind kind,
+               const ModelState& prior, const ModelState& reference,
+               const FitOptions& options, Model* model,
+               const std::function<bool(const Model&)>& verify = nullptr);
 
 // The covariance of the frame's free parameters at `model` (a solution of
 // SolveFrame with the same arguments), from the same problem, not solved

@@ -4,6 +4,29 @@
 
 namespace pfdm {
 
+FunctionValues RegularizerScales(const Model& model,
+                                 const std::vector<int>& held) {
+  const double a0 = model.state.globals[kA0];
+  const double radius =
+      a0 * 0.5 * (model.FunctionAt(kA1, 0.0) + model.FunctionAt(kA2, 0.0));
+  FunctionValues scales{};
+  scales[kA0] = 1.0;
+  scales[kA1] = scales[kA2] = scales[kA3] = a0;
+  scales[kEps1] = scales[kEps2] = radius;
+  scales[kTau] = a0;
+  scales[kB0] = scales[kB2] = scales[kE1o] = scales[kE2o] = scales[kE3o] = 1.0;
+  scales[kB1] = scales[kB3] = radius;
+  // A unit of h moves a wall surface by half a millimetre, one of shift by a
+  // millimetre, one of squeeze the layers w = +-1/sqrt(3) by 0.38 mm; dtau
+  // turns it by half as much as tau.
+  scales[kH] = 0.5;
+  scales[kWallShift] = 1.0;
+  scales[kWallSqueeze] = 0.385;
+  scales[kDtau] = 0.5 * a0;
+  for (int f : held) scales[f] = 0.0;
+  return scales;
+}
+
 bool SmoothnessResidual::Evaluate(double const* const* parameters,
                                   double* residuals, double** jacobians) const {
   const double* previous = parameters[0];

@@ -8,9 +8,19 @@
 #include "ceres/autodiff_cost_function.h"
 #include "ceres/cost_function.h"
 #include "ceres/sized_cost_function.h"
+#include "pfdm/model/model.h"
 #include "pfdm/model/parameter_function.h"
 
 namespace pfdm {
+
+// Millimetres of model-point motion per unit of each function, for the
+// regularizers: 0 for the `held` functions.  Everything scales with the
+// data, so scaled data get scaled lengths.  tau is weighted as if at
+// radius a0, about four times the LV's: near the apex the rings are too
+// small for the data to pin the twist, and twist varies slowly along the
+// axis, so its smoothness carries more.
+FunctionValues RegularizerScales(const Model& model,
+                                 const std::vector<int>& held);
 
 // r_f = sqrt(w) s_f (k_{j-1,f} - 2 k_{j,f} + k_{j+1,f}) for the functions
 // with s_f != 0: the second difference, so that a linear trend in u costs

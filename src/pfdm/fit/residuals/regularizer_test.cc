@@ -7,9 +7,30 @@
 #include "ceres/gradient_checker.h"
 #include "gtest/gtest.h"
 #include "pfdm/model/model.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
+
+// A unit of each function in millimetres of model-point motion, on a
+// shell of a0 = 60 and ring radius 30 mm: the radii's and tau's at a0, the
+// exponents' and bends' shapes at the ring's radius, the wall's fixed; a
+// held function none.
+TEST(RegularizerScalesTest, ConvertEachFunctionToMillimetres) {
+  const Model shell = TestShell(9);
+  const FunctionValues scales = RegularizerScales(shell, {kB0, kE3o});
+  EXPECT_DOUBLE_EQ(scales[kA0], 1.0);
+  EXPECT_DOUBLE_EQ(scales[kA1], 60.0);
+  EXPECT_DOUBLE_EQ(scales[kA3], 60.0);
+  EXPECT_DOUBLE_EQ(scales[kEps1], 30.0);
+  EXPECT_DOUBLE_EQ(scales[kB1], 30.0);
+  EXPECT_DOUBLE_EQ(scales[kTau], 60.0);
+  EXPECT_DOUBLE_EQ(scales[kDtau], 30.0);
+  EXPECT_DOUBLE_EQ(scales[kH], 0.5);
+  EXPECT_DOUBLE_EQ(scales[kE1o], 1.0);
+  EXPECT_EQ(scales[kB0], 0.0);
+  EXPECT_EQ(scales[kE3o], 0.0);
+}
 
 TEST(SmoothnessResidualTest, LinearTrendsCostNothingAndBendsDo) {
   FunctionValues scales{};

@@ -112,6 +112,13 @@ void JudgeRms(const FrameFit& frame, double median_rms, double radius,
   }
 }
 
+// Whether a step without the prior that moves the points by pull_mm (RMS)
+// is the verdict's reason `prior`.
+bool PullIsAReason(double pull_mm, const FrameFit& frame) {
+  const double share = pull_mm / JudgedRmsMm(frame);
+  return share > kPriorPullWarn && pull_mm > kPriorPullFloorMm;
+}
+
 // How far the data would take the model without the prior: one solver
 // step from the frame's global solution with the prior's weight 0, the
 // RMS of the points' model positions' move.  At the solution the data's
@@ -127,26 +134,31 @@ double PriorPullMm(const Frame& points, const FrameFit& frame,
   probe.state.local = LocalField();
   FitOptions step = WithLossScale(options, frame.loss_scale_mm);
   step.prior_weight = 0.0;
-  // One Levenberg-Marquardt step whatever the fit's solver: the
-  // integrators count steps by max_steps and, without the prior, would
-  // integrate the modes only the prior held (rates ~1e-9) to their cap.
-  step.solver.kind = SolverKind::kDirect;
-  step.solver.max_iterations = 1;
-  step.solver.on_step = nullptr;
+  // One Levenberg-Marquardt step whatever the fit's solver (the
+  // integrators, without the prior, would integrate the modes only the
+  // prior held, rates ~1e-9, to their cap), not evaluated where it lands:
+  // a solve's one iteration evaluated the frame twice with Jacobians.
   std::vector<Eigen::Vector3d> positions;
   for (const DataPoint& p : points.points) positions.push_back(p.position);
   const std::vector<Eigen::Vector3d> normals(positions.size(),
                                              Eigen::Vector3d::Zero());
-  SolveFrame(positions, frame.material, normals, std::nullopt, frame.kind,
-             frame.state, reference, step, &probe);
   Model global = solution;
   global.state.local = LocalField();
-  return RmsMoveMm(global, probe, frame.material);
+  double pull = 0.0;
+  // A step Ceres would reject moves nothing, so the step is tested (an
+  // evaluation of the frame) only where its move would be a reason.
+  const bool kept = StepFrame(
+      positions, frame.material, normals, std::nullopt, frame.kind, frame.state,
+      reference, step, &probe, [&](const Model& stepped) {
+        pull = RmsMoveMm(global, stepped, frame.material);
+        return PullIsAReason(pull, frame);
+      });
+  return kept ? pull : 0.0;
 }
 
 void JudgePrior(double pull_mm, const FrameFit& frame, Verdict* verdict) {
+  if (!PullIsAReason(pull_mm, frame)) return;
   const double share = pull_mm / JudgedRmsMm(frame);
-  if (!(share > kPriorPullWarn) || !(pull_mm > kPriorPullFloorMm)) return;
   const std::string text = Format(
       "without the prior (--prior) one step would move the points by "
       "%.2f mm (RMS), %.0f %% of the frame's RMS: the prior, not the "
