@@ -198,7 +198,7 @@ RobustWallSpread RobustWallSpreadMm(
     const std::vector<double>& distances) {
   RobustWallSpread result;
   // Among the tags the neighbours are sought from: past 16,384 tags, a
-  // departure for each of all of them cost frame 0 a fifth of its time.
+  // departure for every one of them cost frame 0 a fifth of its time.
   const NeighbourCloud sample(midwall_points, distances);
   PointCloudTree tree(3, sample.cloud,
                       nanoflann::KDTreeSingleIndexAdaptorParams(10));

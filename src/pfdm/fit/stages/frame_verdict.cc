@@ -136,8 +136,9 @@ double PriorPullMm(const Frame& points, const FrameFit& frame,
   step.prior_weight = 0.0;
   // One Levenberg-Marquardt step whatever the fit's solver (the
   // integrators, without the prior, would integrate the modes only the
-  // prior held, rates ~1e-9, to their cap), not evaluated where it lands:
-  // a solve's one iteration evaluated the frame twice with Jacobians.
+  // prior held, rates ~1e-9, to their cap), taken without a solve: a
+  // solve's one iteration evaluated the frame twice with Jacobians.
+  step.solver.kind = SolverKind::kDirect;
   std::vector<Eigen::Vector3d> positions;
   for (const DataPoint& p : points.points) positions.push_back(p.position);
   const std::vector<Eigen::Vector3d> normals(positions.size(),
