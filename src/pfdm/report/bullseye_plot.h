@@ -28,7 +28,7 @@ struct BullseyeMap {
   // The values' 95 % half-widths (empty: none, --uncertainty off); a
   // segment whose half-width exceeds uncertain_half_width is marked
   // uncertain ("?" after its value), a reliable one is not.
-  std::vector<double> half_widths;
+  std::vector<double> half_widths{};
   double uncertain_half_width = 0.0;
 };
 

@@ -16,12 +16,13 @@ struct ChartSeries {
   double width = 1.5;
   bool legend = true;  // Listed in the legend (many curves: hover only).
   // Per value, a 95 % half-width drawn as an error bar and given on hover;
-  // empty: none.
-  std::vector<double> half_width;
+  // empty: none.  (The {} lets a series' brace initializer leave it and
+  // `bias` out without -Wmissing-field-initializers.)
+  std::vector<double> half_width{};
   // Per value, the bias the noise puts into it (report/local_field_noise.h):
   // the bar is centred on y - bias, as fit.json's ci95 is, so it can miss
   // the dot.  Empty or NaN: centred on y.
-  std::vector<double> bias;
+  std::vector<double> bias{};
 };
 
 struct Chart {

@@ -57,7 +57,9 @@ class DampingMatrix {
  private:
   std::vector<double> diag_;
   Eigen::MatrixXd dense_;
-  Eigen::LLT<Eigen::MatrixXd> factor_;
+  // Of an empty matrix until a dense D is factored: Eigen's default LLT
+  // leaves its norm and status unset, which copying a diagonal D read.
+  Eigen::LLT<Eigen::MatrixXd> factor_{Eigen::MatrixXd()};
   // D_FF factored per held set: a bound becomes active a few times a solve.
   mutable std::map<std::vector<bool>, Eigen::LLT<Eigen::MatrixXd>> reduced_;
 };
