@@ -33,12 +33,19 @@ LocalElement ElementAt(const LocalGrid& grid, double u, double v) {
   e.du = (grid.u_max - grid.u_min) / (grid.rows - 1);
   const double row =
       (std::clamp(u, grid.u_min, grid.u_max) - grid.u_min) / e.du;
-  e.row = std::clamp(static_cast<int>(std::floor(row)), 0, grid.rows - 2);
+  // row >= 0, so the cast is the floor.
+  e.row = std::clamp(static_cast<int>(row), 0, grid.rows - 2);
   e.u0 = grid.RowU(e.row);
   e.dv = 2.0 * kPi / grid.cols;
   const double column = std::floor((v + kPi) / e.dv);
   e.v0 = -kPi + column * e.dv;
-  e.col = ((static_cast<int>(column) % grid.cols) + grid.cols) % grid.cols;
+  // v in [-pi, pi), nearly always: its column as it is, without the
+  // modulo's division (every point of every surface and sample finds its
+  // element here).
+  const int col = static_cast<int>(column);
+  e.col = col >= 0 && col < grid.cols
+              ? col
+              : ((col % grid.cols) + grid.cols) % grid.cols;
   return e;
 }
 
