@@ -1,8 +1,9 @@
 // One Levenberg-Marquardt step of a whole ceres::Problem, taken outside
 // Ceres' minimizer: where the first iteration of a solve would move the
-// parameters, without the evaluation of the point it lands on that the
-// minimizer makes to accept it (the verdict's prior probe needs the step,
-// not a judgement of it).
+// parameters, from one evaluation with Jacobians.  The minimizer evaluates
+// the point it lands on, with Jacobians, to decide whether to keep it;
+// here that test is a cost evaluation, made only where the caller needs it
+// (the verdict's prior probe: for steps large enough to be a reason).
 #ifndef PFDM_FIT_PROBLEM_GAUSS_NEWTON_STEP_H_
 #define PFDM_FIT_PROBLEM_GAUSS_NEWTON_STEP_H_
 
