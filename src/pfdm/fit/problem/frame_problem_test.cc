@@ -10,6 +10,19 @@
 namespace pfdm {
 namespace {
 
+// `truth`'s own points on a grid of material points (u, v), noise-free.
+std::vector<Eigen::Vector3d> OwnPoints(const Model& truth,
+                                       std::vector<MaterialPoint>* material) {
+  std::vector<Eigen::Vector3d> points;
+  for (double u = -1.3; u < 0.5; u += 0.1) {
+    for (double v = -M_PI; v < M_PI; v += 0.2) {
+      material->push_back({u, v});
+      points.push_back(truth.WorldPoint(u, v));
+    }
+  }
+  return points;
+}
+
 // A tracked frame whose points are the model's own material points after a
 // known change of a1 and tau and a shift of the whole: one solve recovers
 // the change, the shift in the pose and the twist in tau (not the pose).
@@ -21,14 +34,8 @@ TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
     knot[kTau] = 0.1;
   }
   truth.state.center = {3.0, -2.0, 5.0};
-  std::vector<Eigen::Vector3d> points;
   std::vector<MaterialPoint> material;
-  for (double u = -1.3; u < 0.5; u += 0.1) {
-    for (double v = -M_PI; v < M_PI; v += 0.2) {
-      material.push_back({u, v});
-      points.push_back(truth.WorldPoint(u, v));
-    }
-  }
+  const std::vector<Eigen::Vector3d> points = OwnPoints(truth, &material);
   FitOptions options;
   options.prior_weight = 0.0;
   const SolverReport report = SolveFrame(
@@ -61,14 +68,8 @@ TEST(FrameProblemTest, AStepLandsWhereTheSolvesFirstIterationDoes) {
     truth.state.knots[k][kA1] = 0.42 + 0.01 * k;
     truth.state.knots[k][kTau] = 0.02 * k;
   }
-  std::vector<Eigen::Vector3d> points;
   std::vector<MaterialPoint> material;
-  for (double u = -1.3; u < 0.5; u += 0.1) {
-    for (double v = -M_PI; v < M_PI; v += 0.2) {
-      material.push_back({u, v});
-      points.push_back(truth.WorldPoint(u, v));
-    }
-  }
+  const std::vector<Eigen::Vector3d> points = OwnPoints(truth, &material);
   const std::vector<Eigen::Vector3d> normals(points.size(),
                                              Eigen::Vector3d::Zero());
   const ModelState prior = model.state;
