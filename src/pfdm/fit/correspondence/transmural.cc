@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 #include "pfdm/util/error.h"
@@ -142,13 +143,21 @@ double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
 namespace {
 
 // The departures of the listed tags (NeighbourDepartures') from their
-// neighbours among `sample`, whose tree is `tree`.
+// neighbours among `sample`, whose tree is `tree`; when `lists` is given,
+// tag k's neighbours (indices into the sample, nearest first, itself left
+// out) in its entries k * kOutlierNeighbours on, kNoNeighbour past the
+// last.
+constexpr unsigned int kNoNeighbour = ~0u;
 std::vector<double> DeparturesOf(
     const NeighbourCloud& sample, const PointCloudTree& tree,
     const std::vector<Eigen::Vector3d>& midwall_points,
-    const std::vector<double>& distances, const std::vector<size_t>& tags) {
+    const std::vector<double>& distances, const std::vector<size_t>& tags,
+    std::vector<unsigned int>* lists = nullptr) {
   const size_t num_points = sample.cloud.points.size();
   std::vector<double> departures(tags.size(), 0.0);
+  if (lists != nullptr) {
+    lists->assign(tags.size() * kOutlierNeighbours, kNoNeighbour);
+  }
   if (num_points < 2) return departures;
   const size_t wanted = std::min<size_t>(kOutlierNeighbours + 1, num_points);
   std::vector<unsigned int> nearest(wanted);
@@ -165,12 +174,65 @@ std::vector<double> DeparturesOf(
     for (size_t n = 0; n < found; ++n) {
       if (sampled && nearest[n] == i / sample.step) continue;
       if (neighbours.size() < kOutlierNeighbours) {
+        if (lists != nullptr) {
+          (*lists)[k * kOutlierNeighbours + neighbours.size()] = nearest[n];
+        }
         neighbours.push_back(sample.distances[nearest[n]]);
       }
     }
     departures[k] = distances[i] - Median(&neighbours);
   }
   return departures;
+}
+
+// WallSpreadMm of the sample's inliers, each tag paired with the first
+// inlier of its neighbour list (DeparturesOf's `lists` of every sampled
+// tag): the nearest inlier, as WallSpreadMm's tree of the inliers would
+// find it, without building that tree (a fifth of the spread's time at
+// 20,000 tags).  Only a tag with no inlier among its neighbours asks that
+// tree.
+double InlierSpreadMm(const NeighbourCloud& sample,
+                      const std::vector<bool>& inlier,
+                      const std::vector<unsigned int>& lists) {
+  std::vector<size_t> kept;
+  for (size_t s = 0; s < inlier.size(); ++s) {
+    if (inlier[s]) kept.push_back(s);
+  }
+  if (kept.size() < 2) return 0.0;
+  const PointCloud kept_cloud{KeptEntries(sample.cloud.points, inlier)};
+  std::optional<PointCloudTree> kept_tree;
+  const auto nearest_kept = [&](size_t r) {
+    if (!kept_tree) {
+      kept_tree.emplace(3, kept_cloud,
+                        nanoflann::KDTreeSingleIndexAdaptorParams(10));
+      kept_tree->buildIndex();
+    }
+    unsigned int nearest[2];
+    double distance_squared[2];
+    kept_tree->knnSearch(kept_cloud.points[r].data(), 2, nearest,
+                         distance_squared);
+    return kept[nearest[0] == r ? nearest[1] : nearest[0]];
+  };
+  // As WallSpreadMm: every stride-th inlier's pair.
+  const size_t stride = (kept.size() + kMaxSpreadPairs - 1) / kMaxSpreadPairs;
+  double sum_squared = 0.0;
+  size_t pairs = 0;
+  for (size_t r = 0; r < kept.size(); r += stride, ++pairs) {
+    const size_t s = kept[r];
+    size_t j = kNoNeighbour;
+    for (size_t n = 0; n < kOutlierNeighbours; ++n) {
+      const unsigned int candidate = lists[s * kOutlierNeighbours + n];
+      if (candidate == kNoNeighbour) break;
+      if (inlier[candidate]) {
+        j = candidate;
+        break;
+      }
+    }
+    if (j == kNoNeighbour) j = nearest_kept(r);
+    const double difference = sample.distances[s] - sample.distances[j];
+    sum_squared += difference * difference;
+  }
+  return std::sqrt(6.0 * sum_squared / pairs);
 }
 
 // Every tag's index, or the sampled ones' (every step-th).
@@ -204,9 +266,10 @@ RobustWallSpread RobustWallSpreadMm(
                       nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
   result.step = sample.step;
+  std::vector<unsigned int> lists;
   const std::vector<double> departures =
       DeparturesOf(sample, tree, midwall_points, distances,
-                   EveryNth(distances.size(), sample.step));
+                   EveryNth(distances.size(), sample.step), &lists);
   std::vector<double> sizes;
   sizes.reserve(departures.size());
   for (double d : departures) sizes.push_back(std::abs(d));
@@ -217,9 +280,7 @@ RobustWallSpread RobustWallSpreadMm(
     result.inlier[k] = std::abs(departures[k]) <= result.fence_mm;
     if (!result.inlier[k]) ++result.outliers;
   }
-  result.spread_mm =
-      WallSpreadMm(KeptEntries(sample.cloud.points, result.inlier),
-                   KeptEntries(sample.distances, result.inlier));
+  result.spread_mm = InlierSpreadMm(sample, result.inlier, lists);
   return result;
 }
 

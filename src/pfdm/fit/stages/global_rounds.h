@@ -103,7 +103,7 @@ class GlobalRounds {
   SolverReport report_;
   // Frames whose untracked points are all contour points: the rounds are
   // accelerated (round_acceleration.h), the change of each measured at the
-  // untracked points' first material points.
+  // untracked points' first material points (every k-th of many).
   std::optional<RoundAcceleration> acceleration_;
   std::vector<MaterialPoint> probes_;
   // The round whose search moved the points least: its model, material

@@ -23,14 +23,18 @@ struct IdMotion {
 
 inline constexpr int kIdSample = 4096;
 
-IdMotion MeasureIdMotion(const Frame& before, const Frame& after);
+// With `nearest` false, nearest_mm is left 0: it takes a k-d tree of the
+// frame before, and IdsScrambled needs it only where MayBeScrambled.
+IdMotion MeasureIdMotion(const Frame& before, const Frame& after,
+                         bool nearest = true);
 
 // Whether the ids of `after` are not those of the points of `before`: the
-// points of the same id lie apart by half the data's radius and by 4 times
-// what the clouds' nearest neighbours show (a permutation of the ids leaves
-// the latter as it is).  A heart moves its tags by a fraction of that
-// between frames (frame to frame, measured: see tracked_ids_test.cc); at
-// least 10 shared points are needed to say.
+// points of the same id lie apart by half the data's radius (MayBeScrambled)
+// and by 4 times what the clouds' nearest neighbours show (a permutation of
+// the ids leaves the latter as it is).  A heart moves its tags by a fraction
+// of that between frames (frame to frame, measured: see
+// tracked_ids_test.cc); at least 10 shared points are needed to say.
+bool MayBeScrambled(const IdMotion& motion);
 bool IdsScrambled(const IdMotion& motion);
 
 // Throws InputError "SOURCE: frame T: the ids do not follow the points of

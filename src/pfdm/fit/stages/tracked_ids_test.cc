@@ -110,6 +110,34 @@ TEST(TrackedIdsTest, AFrameMovedFarKeepsItsIds) {
   EXPECT_FALSE(IdsScrambled(m));
 }
 
+// The nearest points' tree is built only where the ids moved by half the
+// radius: not between any two frames of a phantom, whose motion without it
+// is the same but for nearest_mm; for a scrambled frame and a frame moved
+// far away it is, and tells the two apart.
+TEST(TrackedIdsTest, TheNearestPointsAreMeasuredOnlyWhereIdsMovedFar) {
+  LvPhantom phantom = LvSystole(LvTagLayer::kMidwall);
+  const std::vector<Frame>& frames = phantom.points.frames;
+  for (size_t t = 1; t < frames.size(); ++t) {
+    const IdMotion full = MeasureIdMotion(frames[t - 1], frames[t]);
+    const IdMotion cheap = MeasureIdMotion(frames[t - 1], frames[t], false);
+    EXPECT_FALSE(MayBeScrambled(cheap)) << t;
+    EXPECT_EQ(cheap.shared, full.shared) << t;
+    EXPECT_EQ(cheap.by_id_mm, full.by_id_mm) << t;
+    EXPECT_EQ(cheap.radius_mm, full.radius_mm) << t;
+    EXPECT_EQ(cheap.nearest_mm, 0.0) << t;
+    EXPECT_GT(full.nearest_mm, 0.0) << t;
+  }
+  Frame moved = frames[2];
+  for (DataPoint& p : moved.points) p.position += Eigen::Vector3d(300, 0, 0);
+  Frame scrambled = frames[2];
+  ScrambleIds(&scrambled, 3);
+  for (const Frame* after : {&moved, &scrambled}) {
+    EXPECT_TRUE(MayBeScrambled(MeasureIdMotion(frames[1], *after, false)));
+    EXPECT_EQ(IdsScrambled(MeasureIdMotion(frames[1], *after)),
+              after == &scrambled);
+  }
+}
+
 TEST(TrackedIdsTest, ContoursShareNoIds) {
   PointSequence points;
   points.frames.resize(2);
