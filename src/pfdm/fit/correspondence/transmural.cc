@@ -199,10 +199,11 @@ double InlierSpreadMm(const NeighbourCloud& sample,
     if (inlier[s]) kept.push_back(s);
   }
   if (kept.size() < 2) return 0.0;
-  const PointCloud kept_cloud{KeptEntries(sample.cloud.points, inlier)};
+  PointCloud kept_cloud;
   std::optional<PointCloudTree> kept_tree;
   const auto nearest_kept = [&](size_t r) {
     if (!kept_tree) {
+      kept_cloud.points = KeptEntries(sample.cloud.points, inlier);
       kept_tree.emplace(3, kept_cloud,
                         nanoflann::KDTreeSingleIndexAdaptorParams(10));
       kept_tree->buildIndex();

@@ -68,7 +68,7 @@ double MedianNearestMm(const std::vector<Eigen::Vector3d>& points,
 }  // namespace
 
 IdMotion MeasureIdMotion(const Frame& before, const Frame& after,
-                         bool nearest) {
+                         bool nearest_if_needed) {
   // The sample's ids first, then one pass over `before`: a million-point
   // frame needs no map of all its ids.
   std::unordered_map<std::int64_t, Eigen::Vector3d> sampled;
@@ -87,8 +87,10 @@ IdMotion MeasureIdMotion(const Frame& before, const Frame& after,
   motion.shared = static_cast<int>(by_id.size());
   if (by_id.empty()) return motion;
   motion.by_id_mm = Median(std::move(by_id));
-  if (nearest) motion.nearest_mm = MedianNearestMm(moved, before);
   motion.radius_mm = RadiusMm(before);
+  if (!nearest_if_needed || MayBeScrambled(motion)) {
+    motion.nearest_mm = MedianNearestMm(moved, before);
+  }
   return motion;
 }
 
@@ -108,10 +110,8 @@ void CheckIdsFollowPoints(const PointSequence& sequence,
     const Frame& after = sequence.frames[t];
     // The nearest points' tree only where the ids moved far: a 20,000-tag
     // job built four of them (25 ms) to say what the motion already had.
-    if (!MayBeScrambled(MeasureIdMotion(before, after, /*nearest=*/false))) {
-      continue;
-    }
-    const IdMotion motion = MeasureIdMotion(before, after);
+    const IdMotion motion =
+        MeasureIdMotion(before, after, /*nearest_if_needed=*/true);
     if (!IdsScrambled(motion)) continue;
     char numbers[200];
     std::snprintf(numbers, sizeof(numbers),

@@ -23,10 +23,11 @@ struct IdMotion {
 
 inline constexpr int kIdSample = 4096;
 
-// With `nearest` false, nearest_mm is left 0: it takes a k-d tree of the
-// frame before, and IdsScrambled needs it only where MayBeScrambled.
+// With `nearest_if_needed`, nearest_mm is measured only where the rest of
+// the motion MayBeScrambled (it takes a k-d tree of the frame before, and
+// IdsScrambled needs it only there), else left 0.
 IdMotion MeasureIdMotion(const Frame& before, const Frame& after,
-                         bool nearest = true);
+                         bool nearest_if_needed = false);
 
 // Whether the ids of `after` are not those of the points of `before`: the
 // points of the same id lie apart by half the data's radius (MayBeScrambled)

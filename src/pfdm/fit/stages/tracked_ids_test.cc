@@ -110,16 +110,17 @@ TEST(TrackedIdsTest, AFrameMovedFarKeepsItsIds) {
   EXPECT_FALSE(IdsScrambled(m));
 }
 
-// The nearest points' tree is built only where the ids moved by half the
-// radius: not between any two frames of a phantom, whose motion without it
-// is the same but for nearest_mm; for a scrambled frame and a frame moved
-// far away it is, and tells the two apart.
+// The nearest points' tree is built, where asked only if needed, only
+// where the ids moved by half the radius: not between any two frames of a
+// phantom, whose motion without it is the same but for nearest_mm; for a
+// scrambled frame and a frame moved far away it is, and tells the two
+// apart.
 TEST(TrackedIdsTest, TheNearestPointsAreMeasuredOnlyWhereIdsMovedFar) {
   LvPhantom phantom = LvSystole(LvTagLayer::kMidwall);
   const std::vector<Frame>& frames = phantom.points.frames;
   for (size_t t = 1; t < frames.size(); ++t) {
     const IdMotion full = MeasureIdMotion(frames[t - 1], frames[t]);
-    const IdMotion cheap = MeasureIdMotion(frames[t - 1], frames[t], false);
+    const IdMotion cheap = MeasureIdMotion(frames[t - 1], frames[t], true);
     EXPECT_FALSE(MayBeScrambled(cheap)) << t;
     EXPECT_EQ(cheap.shared, full.shared) << t;
     EXPECT_EQ(cheap.by_id_mm, full.by_id_mm) << t;
@@ -132,9 +133,11 @@ TEST(TrackedIdsTest, TheNearestPointsAreMeasuredOnlyWhereIdsMovedFar) {
   Frame scrambled = frames[2];
   ScrambleIds(&scrambled, 3);
   for (const Frame* after : {&moved, &scrambled}) {
-    EXPECT_TRUE(MayBeScrambled(MeasureIdMotion(frames[1], *after, false)));
-    EXPECT_EQ(IdsScrambled(MeasureIdMotion(frames[1], *after)),
-              after == &scrambled);
+    const IdMotion full = MeasureIdMotion(frames[1], *after);
+    const IdMotion if_needed = MeasureIdMotion(frames[1], *after, true);
+    EXPECT_TRUE(MayBeScrambled(if_needed));
+    EXPECT_EQ(if_needed.nearest_mm, full.nearest_mm);
+    EXPECT_EQ(IdsScrambled(if_needed), after == &scrambled);
   }
 }
 
