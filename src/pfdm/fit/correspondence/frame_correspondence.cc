@@ -52,6 +52,7 @@ std::vector<double> SurfacesOf(const Model& model,
     tag_points.push_back(subset[j]);
     tag_material.push_back(closest[j]);
   }
+  if (tags.empty()) return surfaces;
   const std::vector<double> depths =
       RankedDepths(model, tag_points, tag_material, ranking);
   for (size_t t = 0; t < tags.size(); ++t) surfaces[tags[t]] = depths[t];
@@ -120,6 +121,26 @@ void SearchRows(const SurfaceGrid& grid, const Model& model,
   }
 }
 
+// Held depths (DepthRanking::hold): each tag whose depth was assigned is
+// sought on its material point's layer, as a contour on its wall, and none
+// is ranked.
+struct Surfaces {
+  std::vector<double> layer_w;
+  std::vector<bool> assign_depth;
+};
+Surfaces HeldDepths(const std::vector<double>& layer_w,
+                    const std::vector<bool>& assign_depth,
+                    const std::vector<size_t>& which,
+                    const std::vector<MaterialPoint>& material) {
+  Surfaces held{layer_w, assign_depth};
+  for (size_t i : which) {
+    if (!assign_depth[i]) continue;
+    held.layer_w[i] = material[i].w;
+    held.assign_depth[i] = false;
+  }
+  return held;
+}
+
 }  // namespace
 
 std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
@@ -148,6 +169,15 @@ void UpdateClosest(const Model& model,
                    std::vector<Eigen::Vector3d>* normals,
                    std::vector<Eigen::Vector3d>* found,
                    const DepthRanking& ranking, SurfaceGrid* grid) {
+  if (ranking.hold && warm && model.config.Solid()) {
+    const Surfaces held = HeldDepths(layer_w, assign_depth, which, *material);
+    DepthRanking unranked = ranking;
+    unranked.hold = false;
+    UpdateClosest(model, points, which, num_threads, held.layer_w,
+                  held.assign_depth, warm, material, normals, found, unranked,
+                  grid);
+    return;
+  }
   std::vector<Eigen::Vector3d> subset;
   for (size_t i : which) subset.push_back(points[i]);
   // One grid for the mid-wall search and, in a solid, the walls' after it:

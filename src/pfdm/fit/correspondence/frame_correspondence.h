@@ -31,6 +31,9 @@ double MaxDistance(const std::vector<Eigen::Vector3d>& a,
 struct DepthRanking {
   double outlier_band_mm = 0.0;  // 0: every tag ranked.
   bool neighbourhoods = false;
+  // UpdateClosest: a warm search keeps each assigned depth (the material
+  // point's w) and seeks the tag on that layer alone, unranked.
+  bool hold = false;
 };
 
 // Fills material[i] for the listed points with their closest material
@@ -38,7 +41,7 @@ struct DepthRanking {
 // not: PullsAlongNormal) and found[j] with their model points, in the
 // listed order.  In a solid, a point is sought on its surface: layer_w[i]
 // for a contour of one wall, or, when depths are assigned (frame 0's tags),
-// their ranked depth (DepthRanking).
+// their ranked depth, or their held one (DepthRanking).
 // `warm` starts each search from the point's current material point.
 // `grid` (may be null: one is built for the search) follows `model` and
 // keeps its tree for the next search (SurfaceGrid::Follow).

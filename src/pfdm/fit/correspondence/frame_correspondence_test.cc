@@ -127,6 +127,55 @@ TEST(FrameCorrespondenceTest, EachPointIsSoughtOnItsOwnSurfaceAlone) {
   EXPECT_EQ(material[0].u, hints[0].u);  // Not listed: untouched.
 }
 
+// Held depths: tags whose depth is assigned keep their material point's w
+// (the mid-wall's 0 among them) and come out exactly as a search of that
+// layer alone from the same hint finds them; unheld, the same search ranks
+// them afresh.
+TEST(FrameCorrespondenceTest, HeldDepthsAreSoughtOnTheirOwnLayer) {
+  const Model model = SolidSpheroid();
+  std::vector<Eigen::Vector3d> points;
+  std::vector<MaterialPoint> material;
+  int j = 0;
+  for (const MaterialPoint& m : kAt) {
+    for (double w : {-0.7, 0.0, 0.45}) {
+      const Eigen::Vector3d off(0.3, -0.2 * w, 0.1 * (j++ % 3));
+      points.push_back(model.WorldPoint(m.u, m.v, w) + off);
+      material.push_back({m.u + 0.02, m.v - 0.03, w});
+    }
+  }
+  const std::vector<MaterialPoint> hints = material;
+  std::vector<size_t> which(points.size());
+  std::iota(which.begin(), which.end(), 0);
+  const std::vector<double> layer_w(points.size(), 0.0);
+  const std::vector<bool> assign_depth(points.size(), true);
+  DepthRanking held;
+  held.hold = true;
+  std::vector<Eigen::Vector3d> normals(points.size()), found;
+  UpdateClosest(model, points, which, 1, layer_w, assign_depth,
+                /*warm=*/true, &material, &normals, &found, held);
+  const SurfaceGrid grid(model);
+  for (size_t i = 0; i < points.size(); ++i) {
+    CorrespondenceOptions alone;
+    if (hints[i].w != 0.0) alone.surfaces = {hints[i].w};
+    alone.hints = {hints[i]};
+    std::vector<Eigen::Vector3d> point, normal;
+    const MaterialPoint expected = ClosestMaterialPointsFrom(
+        grid, model, {points[i]}, alone, &point, &normal)[0];
+    EXPECT_EQ(material[i].w, hints[i].w) << i;
+    EXPECT_EQ(material[i].u, expected.u) << i;
+    EXPECT_EQ(material[i].v, expected.v) << i;
+    EXPECT_EQ(found[i], point[0]) << i;
+  }
+  std::vector<MaterialPoint> ranked = hints;
+  UpdateClosest(model, points, which, 1, layer_w, assign_depth,
+                /*warm=*/true, &ranked, &normals, &found);
+  int changed = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    changed += ranked[i].w != hints[i].w;
+  }
+  EXPECT_GT(changed, 0);
+}
+
 // Tags through the wall, ten bands of latitude of 24 tags each evenly
 // spread across it, take their rank's depth in their band; a tag moved
 // from the mid-wall to its rank's surface moves by up to the wall's half

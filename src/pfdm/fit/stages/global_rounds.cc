@@ -40,6 +40,13 @@ constexpr double kConfirmBelow = 10.0;
 // first solve only has to bring the model near this frame's fit, which
 // one Gauss-Newton step does (PredictsRound): the problem is nearly linear
 // about the previous frame's fit.
+// Frame 0's tags through a solid's wall are ranked at this many searches
+// too, and then held at their depths (DepthRanking::hold): at 6,000 wall
+// tags, a third of them changed rank at every search, moving the rounds'
+// farthest points 0.3-0.7 mm, and the rounds ran on until the skip rule or
+// the round limit ended them (1,500 tags: out of rounds, 0.30 mm
+// unsettled).  With the depths held, the slide that is left shrinks by
+// about 0.7 a round and the rounds settle (docs/performance.md).
 constexpr int kRerankRounds = 2;
 
 // Every stride-th of the listed points, the stride leaving about `count`
@@ -85,6 +92,16 @@ GlobalRounds::GlobalRounds(const FramePoints& frame, const ModelState& prior,
       fit_(fit),
       normals_(frame.positions.size(), Eigen::Vector3d::Zero()) {
   ranking_.neighbourhoods = options.local.enabled && options.local.transmural;
+  ranks_tags_ =
+      std::any_of(frame.untracked.begin(), frame.untracked.end(),
+                  [&frame](size_t i) { return frame.assign_depth[i]; });
+}
+
+void GlobalRounds::set_rank_band_mm(double band_mm) {
+  if (band_mm == ranking_.outlier_band_mm) return;
+  ranking_.outlier_band_mm = band_mm;
+  ranking_.hold = false;  // Ranked afresh within the new band.
+  ranked_searches_ = 0;
 }
 
 void GlobalRounds::Start() {
@@ -303,6 +320,10 @@ double GlobalRounds::UpdateClosest(std::vector<Eigen::Vector3d> now) {
                            : std::numeric_limits<double>::infinity();
   found_closest_ = true;
   normals_current_ = true;
+  if (model_->config.Solid() && ranks_tags_ &&
+      ++ranked_searches_ >= kRerankRounds) {
+    ranking_.hold = true;
+  }
   fit_->correspondence_seconds += SecondsSince(closest_start);
   return moved;
 }

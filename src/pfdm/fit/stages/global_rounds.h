@@ -51,8 +51,9 @@ class GlobalRounds {
   void Search();
   // With a robust loss, the ranks of tags across a solid's wall leave out
   // those farther than band_mm outside it (QuantileDepths); 0, the
-  // default, ranks them all.
-  void set_rank_band_mm(double band_mm) { ranking_.outlier_band_mm = band_mm; }
+  // default, ranks them all.  Held depths (frame 0's tags, kRerankRounds)
+  // are ranked afresh in a new band.
+  void set_rank_band_mm(double band_mm);
   // The searches' grid, kept from search to search (null, the default: a
   // grid per search); it outlives the rounds.
   void set_surface_grid(SurfaceGrid* grid) { grid_ = grid; }
@@ -99,6 +100,10 @@ class GlobalRounds {
   double moved_ = 0.0;          // By the last search.
   bool rerank_depths_ = false;
   DepthRanking ranking_;
+  // Frame 0's tags through a solid's wall: ranked at the first searches,
+  // then held at their depths (global_rounds.cc, kRerankRounds).
+  bool ranks_tags_ = false;
+  int ranked_searches_ = 0;
   SurfaceGrid* grid_ = nullptr;
   SolverReport report_;
   // Frames whose untracked points are all contour points: the rounds are
