@@ -428,65 +428,44 @@ double FrameProblem::CostOf(
 }
 
 // The frame's terms, as SolveFrame adds them.
-void BuildFrameProblem(const std::vector<Eigen::Vector3d>& points,
-                       const std::vector<MaterialPoint>& material,
-                       const std::vector<Eigen::Vector3d>& normals,
-                       std::optional<double> rim_height,
-                       const ModelState& prior, const ModelState& reference,
-                       FrameProblem* problem) {
-  CHECK_EQ(normals.size(), points.size());
-  problem->AddData(points, material, normals);
-  problem->AddSmoothness(points.size());
-  if (rim_height) problem->AddRim(points.size(), *rim_height);
-  problem->AddGauges(points.size(), reference);
-  problem->AddPrior(points.size(), prior);
-  problem->AddIncompressibility(points.size(), reference);
+void BuildFrameProblem(const FrameInputs& frame, FrameProblem* problem) {
+  CHECK_EQ(frame.normals.size(), frame.points.size());
+  const size_t num_points = frame.points.size();
+  problem->AddData(frame.points, frame.material, frame.normals);
+  problem->AddSmoothness(num_points);
+  if (frame.rim_height) problem->AddRim(num_points, *frame.rim_height);
+  problem->AddGauges(num_points, frame.reference);
+  problem->AddPrior(num_points, frame.prior);
+  problem->AddIncompressibility(num_points, frame.reference);
 }
 
 }  // namespace
 
-SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
-                        const std::vector<MaterialPoint>& material,
-                        const std::vector<Eigen::Vector3d>& normals,
-                        std::optional<double> rim_height, FrameKind kind,
-                        const ModelState& prior, const ModelState& reference,
-                        const FitOptions& options, Model* model,
-                        TermCosts* costs) {
-  FrameProblem problem(kind, options, model);
-  BuildFrameProblem(points, material, normals, rim_height, prior, reference,
-                    &problem);
+SolverReport SolveFrame(const FrameInputs& frame, const FitOptions& options,
+                        Model* model, TermCosts* costs) {
+  FrameProblem problem(frame.kind, options, model);
+  BuildFrameProblem(frame, &problem);
   SolverReport report = problem.Solve();
   if (costs != nullptr) *costs = problem.Costs(report);
   return report;
 }
 
-bool StepFrame(const std::vector<Eigen::Vector3d>& points,
-               const std::vector<MaterialPoint>& material,
-               const std::vector<Eigen::Vector3d>& normals,
-               std::optional<double> rim_height, FrameKind kind,
-               const ModelState& prior, const ModelState& reference,
-               const FitOptions& options, Model* model,
-               const std::function<bool(const Model&)>& verify) {
-  FrameProblem problem(kind, options, model);
-  BuildFrameProblem(points, material, normals, rim_height, prior, reference,
-                    &problem);
+bool StepFrame(const FrameInputs& frame, const FitOptions& options,
+               Model* model, const std::function<bool(const Model&)>& verify) {
+  FrameProblem problem(frame.kind, options, model);
+  BuildFrameProblem(frame, &problem);
   return problem.Step(verify);
 }
 
-FrameCovariance EstimateFrameCovariance(
-    const std::vector<Eigen::Vector3d>& points,
-    const std::vector<MaterialPoint>& material,
-    const std::vector<Eigen::Vector3d>& normals,
-    std::optional<double> rim_height, FrameKind kind, const ModelState& prior,
-    const ModelState& reference, const FitOptions& options,
-    const Model& model) {
+FrameCovariance EstimateFrameCovariance(const FrameInputs& frame,
+                                        const FitOptions& options,
+                                        const Model& model) {
   // The problem holds pointers into the model's state; Ceres only
   // evaluates it here, but the copy keeps the caller's model out of reach.
   Model at = model;
-  FrameProblem problem(kind, options, &at);
-  BuildFrameProblem(points, material, normals, rim_height, prior, reference,
-                    &problem);
-  return problem.Covariance(points, material, normals);
+  FrameProblem problem(frame.kind, options, &at);
+  BuildFrameProblem(frame, &problem);
+  return problem.Covariance(frame.points, frame.material, frame.normals);
 }
 
 }  // namespace pfdm

@@ -33,48 +33,49 @@ struct TermCosts {
   }
 };
 
-// A point with a non-zero normal (unit, world frame) pulls along it
-// (point-to-plane), the others with their whole distance; sliding points
-// take theirs from the search that found their material points on *model,
-// or from SlidingNormals (correspondence.h).  rim_height, when given, is where
-// the base rim must sit (RimResidual), along the model's axis from its
-// centre as the solve starts.  `prior` is the state the prior term pulls
-// toward (the previous frame's; frame 0's for untracked frames, with
-// FitOptions::untracked_prior_weight); `reference` frame 0's state: its
-// pose, which later frames may not spin away from (SpinGaugeResidual), and
-// a solid's wall volume, which later frames keep with
-// FitOptions::incompressible_weight.  Leaves the solution in *model and,
-// when given, each term's cost there in *costs.
-SolverReport SolveFrame(const std::vector<Eigen::Vector3d>& points,
-                        const std::vector<MaterialPoint>& material,
-                        const std::vector<Eigen::Vector3d>& normals,
-                        std::optional<double> rim_height, FrameKind kind,
-                        const ModelState& prior, const ModelState& reference,
-                        const FitOptions& options, Model* model,
-                        TermCosts* costs = nullptr);
+// What a frame's problem is made of: the points and their material
+// points; a point with a non-zero normal (unit, world frame) pulls along it
+// (point-to-plane), the others with their whole distance, sliding points
+// taking theirs from the search that found their material points on the
+// model, or from SlidingNormals (correspondence.h).  rim_height, when
+// given, is where the base rim must sit (RimResidual), along the model's
+// axis from its centre as the solve starts.  `prior` is the state the
+// prior term pulls toward (the previous frame's; frame 0's for untracked
+// frames, with FitOptions::untracked_prior_weight); `reference` frame 0's
+// state: its pose, which later frames may not spin away from
+// (SpinGaugeResidual), and a solid's wall volume, which later frames keep
+// with FitOptions::incompressible_weight.  Every member is the caller's and
+// outlives the call it is passed to.
+struct FrameInputs {
+  const std::vector<Eigen::Vector3d>& points;
+  const std::vector<MaterialPoint>& material;
+  const std::vector<Eigen::Vector3d>& normals;
+  std::optional<double> rim_height;
+  FrameKind kind;
+  const ModelState& prior;
+  const ModelState& reference;
+};
+
+// Solves the frame from *model, leaving the solution there and, when
+// given, each term's cost in *costs.
+SolverReport SolveFrame(const FrameInputs& frame, const FitOptions& options,
+                        Model* model, TermCosts* costs = nullptr);
 
 // One Levenberg-Marquardt step of the same problem from *model, left in
 // it (TakeGaussNewtonStep: the direct solve's first iteration); false, the
 // model unmoved, if Ceres would not keep it.  `verify`, when given, sees
 // the stepped model and says whether that test (an evaluation of the
 // frame) is needed; without it, it always is.
-bool StepFrame(const std::vector<Eigen::Vector3d>& points,
-               const std::vector<MaterialPoint>& material,
-               const std::vector<Eigen::Vector3d>& normals,
-               std::optional<double> rim_height, FrameKind kind,
-               const ModelState& prior, const ModelState& reference,
-               const FitOptions& options, Model* model,
+bool StepFrame(const FrameInputs& frame, const FitOptions& options,
+               Model* model,
                const std::function<bool(const Model&)>& verify = nullptr);
 
 // The covariance of the frame's free parameters at `model` (a solution of
-// SolveFrame with the same arguments), from the same problem, not solved
+// SolveFrame with the same inputs), from the same problem, not solved
 // again (frame_covariance.h says what it is and is not).
-FrameCovariance EstimateFrameCovariance(
-    const std::vector<Eigen::Vector3d>& points,
-    const std::vector<MaterialPoint>& material,
-    const std::vector<Eigen::Vector3d>& normals,
-    std::optional<double> rim_height, FrameKind kind, const ModelState& prior,
-    const ModelState& reference, const FitOptions& options, const Model& model);
+FrameCovariance EstimateFrameCovariance(const FrameInputs& frame,
+                                        const FitOptions& options,
+                                        const Model& model);
 
 }  // namespace pfdm
 

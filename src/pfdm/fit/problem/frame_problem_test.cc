@@ -38,11 +38,13 @@ TEST(FrameProblemTest, TrackedFrameRecoversKnownParameters) {
   const std::vector<Eigen::Vector3d> points = OwnPoints(truth, &material);
   FitOptions options;
   options.prior_weight = 0.0;
-  const SolverReport report = SolveFrame(
-      points, material,
-      std::vector<Eigen::Vector3d>(points.size(), Eigen::Vector3d::Zero()),
-      std::nullopt, FrameKind::kTracked, model.state, model.state, options,
-      &model);
+  const std::vector<Eigen::Vector3d> normals(points.size(),
+                                             Eigen::Vector3d::Zero());
+  const ModelState start = model.state;
+  const SolverReport report =
+      SolveFrame({points, material, normals, std::nullopt, FrameKind::kTracked,
+                  start, start},
+                 options, &model);
   ASSERT_TRUE(report.usable);
   for (int k = 1; k < 5; ++k) {
     EXPECT_NEAR(model.state.knots[k][kA1], 0.42, 1e-6) << k;
@@ -75,19 +77,19 @@ TEST(FrameProblemTest, AStepLandsWhereTheSolvesFirstIterationDoes) {
   const ModelState prior = model.state;
   FitOptions held;
   held.prior_weight = 1.0;
-  ASSERT_TRUE(SolveFrame(points, material, normals, std::nullopt,
-                         FrameKind::kTracked, prior, prior, held, &model)
+  ASSERT_TRUE(SolveFrame({points, material, normals, std::nullopt,
+                          FrameKind::kTracked, prior, prior},
+                         held, &model)
                   .usable);
   FitOptions free = held;
   free.prior_weight = 0.0;
   free.solver.max_iterations = 1;
   Model stepped = model, solved = model;
-  ASSERT_TRUE(StepFrame(points, material, normals, std::nullopt,
-                        FrameKind::kTracked, model.state, prior, free,
-                        &stepped));
-  const SolverReport report =
-      SolveFrame(points, material, normals, std::nullopt, FrameKind::kTracked,
-                 model.state, prior, free, &solved);
+  const FrameInputs frame{
+      points,      material, normals, std::nullopt, FrameKind::kTracked,
+      model.state, prior};
+  ASSERT_TRUE(StepFrame(frame, free, &stepped));
+  const SolverReport report = SolveFrame(frame, free, &solved);
   ASSERT_EQ(report.iterations, 1);
   double largest_move = 0.0;
   for (size_t i = 0; i < material.size(); i += 7) {

@@ -22,8 +22,8 @@ FrameCovariance MeasureFrameCovariance(
   }
   const std::vector<Eigen::Vector3d> normals =
       SlidingNormals(model, material, points.sliding);
-  return EstimateFrameCovariance(points.positions, material, normals,
-                                 rim_height, points.kind, prior, reference,
+  return EstimateFrameCovariance({points.positions, material, normals,
+                                  rim_height, points.kind, prior, reference},
                                  options, model);
 }
 

@@ -148,12 +148,13 @@ double PriorPullMm(const Frame& points, const FrameFit& frame,
   double pull = 0.0;
   // A step Ceres would reject moves nothing, so the step is tested (an
   // evaluation of the frame) only where its move would be a reason.
-  const bool kept = StepFrame(
-      positions, frame.material, normals, std::nullopt, frame.kind, frame.state,
-      reference, step, &probe, [&](const Model& stepped) {
-        pull = RmsMoveMm(global, stepped, frame.material);
-        return PullIsAReason(pull, frame);
-      });
+  const bool kept = StepFrame({positions, frame.material, normals, std::nullopt,
+                               frame.kind, frame.state, reference},
+                              step, &probe, [&](const Model& stepped) {
+                                pull =
+                                    RmsMoveMm(global, stepped, frame.material);
+                                return PullIsAReason(pull, frame);
+                              });
   return kept ? pull : 0.0;
 }
 

@@ -137,9 +137,10 @@ void GlobalRounds::SolveCoarse() {
       Subset(coarse, frame_.positions, fit_->material, normals_);
   FitOptions coarse_options = options_;
   coarse_options.solver.on_step = nullptr;  // Not part of the path.
-  const SolverReport coarse_report = SolveFrame(
-      subset.points, subset.material, subset.normals, std::nullopt,
-      FrameKind::kReference, prior_, reference_, coarse_options, model_);
+  const SolverReport coarse_report =
+      SolveFrame({subset.points, subset.material, subset.normals, std::nullopt,
+                  FrameKind::kReference, prior_, reference_},
+                 coarse_options, model_);
   AddSolverCounts(coarse_report, fit_);
   SpanAxialExtent(frame_.positions, options_, model_);
 }
@@ -246,13 +247,13 @@ SolverReport GlobalRounds::SolveRound(TrajectoryRecorder* recorder,
     const PointSubset subset =
         Subset(Coarse(all, kPredictorPoints), frame_.positions, fit_->material,
                normals_);
-    report =
-        SolveFrame(subset.points, subset.material, subset.normals, rim_height,
-                   frame_.kind, prior_, reference_, round_options, model_);
+    report = SolveFrame({subset.points, subset.material, subset.normals,
+                         rim_height, frame_.kind, prior_, reference_},
+                        round_options, model_);
   } else {
-    report = SolveFrame(frame_.positions, fit_->material, normals_, rim_height,
-                        frame_.kind, prior_, reference_, round_options, model_,
-                        &fit_->costs);
+    report = SolveFrame({frame_.positions, fit_->material, normals_, rim_height,
+                         frame_.kind, prior_, reference_},
+                        round_options, model_, &fit_->costs);
   }
   normals_current_ = false;
   AddSolverCounts(report, fit_);
