@@ -6,6 +6,7 @@
 
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/viewer_script.h"
+#include "pfdm/util/stride.h"
 
 namespace pfdm {
 namespace {
@@ -91,10 +92,9 @@ void AppendFrame(const Frame& frame, const Model& model,
 }  // namespace
 
 int PointStride(size_t num_points, int max_points) {
-  if (max_points < 1 || num_points <= static_cast<size_t>(max_points)) {
-    return 1;
-  }
-  return static_cast<int>((num_points + max_points - 1) / max_points);
+  if (max_points < 1) return 1;
+  return static_cast<int>(
+      StrideForAtMost(num_points, static_cast<size_t>(max_points)));
 }
 
 std::string SceneJson(const PointSequence& points,

@@ -8,6 +8,7 @@
 
 #include "pfdm/util/error.h"
 #include "pfdm/util/point_cloud_tree.h"
+#include "pfdm/util/stride.h"
 
 namespace pfdm {
 namespace {
@@ -26,8 +27,7 @@ constexpr double kMadToSigma = 1.4826;
 struct NeighbourCloud {
   NeighbourCloud(const std::vector<Eigen::Vector3d>& midwall_points,
                  const std::vector<double>& all_distances)
-      : step((midwall_points.size() + kMaxSpreadNeighbours - 1) /
-             kMaxSpreadNeighbours) {
+      : step(StrideForAtMost(midwall_points.size(), kMaxSpreadNeighbours)) {
     for (size_t i = 0; i < midwall_points.size(); i += step) {
       cloud.points.push_back(midwall_points[i]);
       distances.push_back(all_distances[i]);
@@ -126,7 +126,7 @@ double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
   // The mean over at most kMaxSpreadPairs tags' pairs (every stride-th)
   // estimates the mean over all to about 1 % (one in sqrt(2 x 4096)),
   // plenty for a threshold.
-  const size_t stride = (num_points + kMaxSpreadPairs - 1) / kMaxSpreadPairs;
+  const size_t stride = StrideForAtMost(num_points, kMaxSpreadPairs);
   double sum_squared = 0.0;
   size_t pairs = 0;
   for (size_t i = 0; i < num_points; i += stride, ++pairs) {
@@ -215,7 +215,7 @@ double InlierSpreadMm(const NeighbourCloud& sample,
     return kept[nearest[0] == r ? nearest[1] : nearest[0]];
   };
   // As WallSpreadMm: every stride-th inlier's pair.
-  const size_t stride = (kept.size() + kMaxSpreadPairs - 1) / kMaxSpreadPairs;
+  const size_t stride = StrideForAtMost(kept.size(), kMaxSpreadPairs);
   double sum_squared = 0.0;
   size_t pairs = 0;
   for (size_t r = 0; r < kept.size(); r += stride, ++pairs) {

@@ -11,6 +11,7 @@
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/loss_scale.h"
+#include "pfdm/util/stride.h"
 
 namespace pfdm {
 namespace {
@@ -262,8 +263,7 @@ void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
 
 double RmsMoveMm(const Model& before, const Model& after,
                  const std::vector<MaterialPoint>& material) {
-  const size_t step =
-      std::max<size_t>(1, (material.size() + kMoveSamples - 1) / kMoveSamples);
+  const size_t step = StrideForAtMost(material.size(), kMoveSamples);
   std::vector<MaterialPoint> sampled;
   for (size_t i = 0; i < material.size(); i += step) {
     sampled.push_back(material[i]);

@@ -10,6 +10,7 @@
 
 #include "pfdm/util/error.h"
 #include "pfdm/util/point_cloud_tree.h"
+#include "pfdm/util/stride.h"
 
 namespace pfdm {
 namespace {
@@ -29,7 +30,7 @@ double Median(std::vector<double> values) {
 // Every stride-th point, stride chosen to keep at most `most`.
 std::vector<const DataPoint*> Sample(const Frame& frame, size_t most) {
   const size_t n = frame.points.size();
-  const size_t stride = std::max<size_t>(1, (n + most - 1) / most);
+  const size_t stride = StrideForAtMost(n, most);
   std::vector<const DataPoint*> sample;
   for (size_t i = 0; i < n; i += stride) sample.push_back(&frame.points[i]);
   return sample;
