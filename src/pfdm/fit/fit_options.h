@@ -90,6 +90,12 @@ struct FitOptions {
   // lowest and highest u (FitFrame sets them after frame 0); equal: the
   // model's whole length.
   double incompressible_u_low = 0.0, incompressible_u_high = 0.0;
+  // Frame 0's pose spins toward `reference`'s (the start's) about the long
+  // axis with this weight, relative to the data's N points
+  // (SpinGaugeResidual): where the section is round the data leave that
+  // spin free (docs/gauge.md).  FitFrame sets it for frame 0 of tags; 0:
+  // off.
+  double reference_spin_weight = 0.0;
   // "none", "huber" or "cauchy" (fit/residuals/robust_loss.h).  Its scale
   // is measured by the fit (fit/stages/loss_scale.h, recorded in
   // SequenceFit::loss_scale_mm) unless loss_scale_auto is false; then it is

@@ -8,7 +8,10 @@ namespace pfdm::fit_json_text {
 inline constexpr char kGaugeConvention[] =
     "a0 (scale) is set on frame 0 so that the model, a3 = 0.8 there, spans "
     "the data from its fitted apex to the highest point along the axis, and "
-    "is held afterwards; frame 0 fits the pose with tau = 0 and no bending; "
+    "is held afterwards; frame 0 fits the pose with tau = 0 and no bending, "
+    "and with tags its spin about the long axis is pulled weakly (1e-3 a "
+    "point) toward the start's, whose x axis is the data's widest direction "
+    "across the axis, where a round section leaves it free; "
     "in every frame the axis is the least-squares line of the ring centres "
     "(offsets e1o, e2o with zero mean and zero linear trend over the knots; "
     "e3o = 0), so translation and tilt are the pose's; later frames fit the "

@@ -251,6 +251,12 @@ void FrameProblem::AddGauges(size_t num_points, const ModelState& reference) {
         SpinGaugeResidual::Create(sqrt_weight, SpinGaugeLength(*model_),
                                   reference.quaternion),
         nullptr, model_->state.quaternion.data()));
+  } else if (options_.reference_spin_weight > 0.0) {
+    gauge_ids_.push_back(problem_.AddResidualBlock(
+        SpinGaugeResidual::Create(
+            std::sqrt(options_.reference_spin_weight * num_points),
+            SpinGaugeLength(*model_), reference.quaternion),
+        nullptr, model_->state.quaternion.data()));
   }
   if (kind_ == FrameKind::kUntracked &&
       config.modes[kA3] == FunctionMode::kFree) {

@@ -15,6 +15,21 @@
 namespace pfdm {
 namespace {
 
+// Frame 0 of tags keeps the start's spin about the long axis where the
+// data leave it free (FitOptions::reference_spin_weight).  Frame 0 holds
+// tau, so the pose's spin is where v = 0 lies and which material point
+// each tag keeps for every later frame; on a round section (the LV
+// phantom: a1 = a2 to 1e-3) only noise decides it, and the closest-point
+// rounds crept along it 0.6-0.7 mm a round until the mixed rounds settled
+// it (2,000 wall tags: 20 rounds, 212 ms; 7 with it, 66 ms).  At 1e-3 a
+// point the data of a section of ellipticity 0.1 keep their spin against a
+// 0.2 rad pull to within 0.015 rad in one solve (FrameProblemTest), and
+// the start's x axis, the data's widest direction across the axis, is near
+// their choice anyway; 1e-4 left the rounds creeping.  Contours are left as
+// they were: on biv-me's they settle without it, and with it two frames
+// ended 0.05 mm unsettled (docs/performance.md, 2026-12-04).
+constexpr double kReferenceSpinWeight = 1e-3;
+
 // The frame's global rounds, and on frame 0 with the wall undecided, the
 // wall: a solid runs the rounds again.  With --loss_scale auto, the rounds
 // run without the loss until they settle (and the wall is decided), then
@@ -138,6 +153,9 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   FitOptions options = frame_prior.options;
   options.incompressible_u_low = carried->data_u_low;
   options.incompressible_u_high = carried->data_u_high;
+  if (reference && fit.tracked) {
+    options.reference_spin_weight = kReferenceSpinWeight;
+  }
   CheckInterrupt(options.solver);
   FitGlobal(points, prior, options, source, wall, carried, &fit);
   RememberTags(frame, points, fit, &carried->tracked_material);
