@@ -1,5 +1,7 @@
 #include "pfdm/fit/stages/global_rounds.h"
 
+#include <utility>
+
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/fit/stages/frame_summary.h"
@@ -17,11 +19,14 @@ PointSequence Contours() {
   return sequence;
 }
 
-// Frame 0 of the phantom as contours (every id seen once), from its start.
+// Frame 0 of a sequence, from its start: by default the phantom as
+// contours (every id seen once).
 struct ContourFrame {
-  ContourFrame()
-      : sequence(Contours()),
-        start(StartSequence(sequence, ModelConfig::Paper(17), FitOptions())) {
+  explicit ContourFrame(PointSequence points_of = Contours(),
+                        int num_knots = 17)
+      : sequence(std::move(points_of)),
+        start(StartSequence(sequence, ModelConfig::Paper(num_knots),
+                            FitOptions())) {
     points = MakeFramePoints(sequence.frames[0], true, start.frames_per_id, {},
                              &fit.material);
   }
@@ -29,6 +34,26 @@ struct ContourFrame {
   const SequenceStart start;
   FramePoints points;
   FrameFit fit;
+};
+
+// Frame 0's rounds on tags with the default options, run once from the
+// start (FitFrame's other stages left out: no spin convention, no wall).
+struct TagRounds {
+  TagRounds(PointSequence sequence, int num_knots)
+      : frame(std::move(sequence), num_knots),
+        model(frame.start.model),
+        prior(model.state),
+        rounds(frame.points, prior, prior, options, "tags", &model, &frame.fit),
+        recorder(0, &model, &frame.fit.trajectory) {
+    rounds.Start();
+    rounds.Run(&recorder);
+  }
+  const FitOptions options;
+  ContourFrame frame;
+  Model model;
+  const ModelState prior;
+  GlobalRounds rounds;
+  TrajectoryRecorder recorder;
 };
 
 // The rounds bring the start to the data, to the phantom's 0.5 mm noise
@@ -82,22 +107,13 @@ TEST(GlobalRoundsTest, SayHowFarUnsettledPointsMoved) {
 // settles in the plain rounds.
 TEST(GlobalRoundsTest, TagsFirstFrameEndsOnItsBestRound) {
   const PointSequence sequence = LvTwoFrameTags(400, 1004, 0.0);
-  const FitOptions options;
-  ASSERT_EQ(options.reference_spin_weight, 0.0);
-  const SequenceStart start =
-      StartSequence(sequence, ModelConfig::Paper(9), options);
-  FrameFit swung;
-  const FramePoints points = MakeFramePoints(
-      sequence.frames[0], true, start.frames_per_id, {}, &swung.material);
-  Model model = start.model;
-  const ModelState prior = model.state;
-  GlobalRounds rounds(points, prior, prior, options, "tags", &model, &swung);
-  TrajectoryRecorder recorder(0, &model, &swung.trajectory);
-  rounds.Start();
-  rounds.Run(&recorder);
-  EXPECT_GT(swung.correspondence_rounds, options.max_correspondence_rounds);
-  Summarize(model, points.positions, &swung);
-  EXPECT_LT(swung.rms_mm, 0.02);
+  TagRounds swung(sequence, 9);
+  ASSERT_EQ(swung.options.reference_spin_weight, 0.0);
+  const FitOptions& options = swung.options;
+  EXPECT_GT(swung.frame.fit.correspondence_rounds,
+            options.max_correspondence_rounds);
+  Summarize(swung.model, swung.frame.points.positions, &swung.frame.fit);
+  EXPECT_LT(swung.frame.fit.rms_mm, 0.02);
 
   const SequenceFit fit =
       FitSequence(sequence, ModelConfig::Paper(9), FitOptions());
@@ -108,7 +124,8 @@ TEST(GlobalRoundsTest, TagsFirstFrameEndsOnItsBestRound) {
   EXPECT_LT(fit.frames[1].rms_mm, 0.1);
 }
 
-// Frame 0 of tags through the wall, as frame_fit.cc fits it: mid-wall
+// Frame 0 of tags through the wall, as frame_fit.cc fits it (the spin
+// left free): mid-wall
 // rounds, the wall decided a solid, and the solid's rounds, whose tags are
 // ranked at the first two searches and then held at their depths.  The
 // rounds settle, and a further search keeps every tag's depth (ranked
@@ -119,25 +136,16 @@ TEST(GlobalRoundsTest, ASolidsFirstFrameHoldsItsTagsDepthsOnceRanked) {
   phantom.tags = LvTagLayer::kWall;
   phantom.num_tags = 1500;
   phantom.num_frames = 2;
-  const PointSequence sequence = MakeLvPhantom(phantom).points;
-  const FitOptions options;
-  const SequenceStart start =
-      StartSequence(sequence, ModelConfig::Paper(17), options);
-  FrameFit fit;
-  const FramePoints points = MakeFramePoints(
-      sequence.frames[0], true, start.frames_per_id, {}, &fit.material);
-  Model model = start.model;
-  const ModelState prior = model.state;
-  GlobalRounds rounds(points, prior, prior, options, "tags", &model, &fit);
-  TrajectoryRecorder recorder(0, &model, &fit.trajectory);
-  rounds.Start();
-  rounds.Run(&recorder);
+  TagRounds tags(MakeLvPhantom(phantom).points, 17);
+  const FramePoints& points = tags.frame.points;
+  FrameFit& fit = tags.frame.fit;
+  GlobalRounds& rounds = tags.rounds;
   WallDecision wall;
   ASSERT_TRUE(DecideWallFromTags(points, fit.material,
-                                 rounds.report().converged, options.wall, &wall,
-                                 &model));
+                                 rounds.report().converged, tags.options.wall,
+                                 &wall, &tags.model));
   rounds.Search();
-  rounds.Run(&recorder);
+  rounds.Run(&tags.recorder);
   EXPECT_EQ(fit.unsettled_mm, 0.0);
   const std::vector<MaterialPoint> settled = fit.material;
   rounds.Search();
