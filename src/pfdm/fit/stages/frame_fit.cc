@@ -21,7 +21,7 @@ namespace {
 // each tag keeps for every later frame; on a round section (the LV
 // phantom: a1 = a2 to 1e-3) only noise decides it, and the closest-point
 // rounds crept along it 0.6-0.7 mm a round until the mixed rounds settled
-// it (2,000 wall tags: 20 rounds, 212 ms; 7 with it, 66 ms).  At 1e-3 a
+// it (2,000 wall tags: 20 rounds, 212 ms; 7 with it, 55 ms).  At 1e-3 a
 // point the data of a section of ellipticity 0.1 keep their spin against a
 // 0.2 rad pull to within 0.015 rad in one solve (FrameProblemTest), and
 // the start's x axis, the data's widest direction across the axis, is near
