@@ -14,6 +14,9 @@ namespace {
 // of the step, 0.07 % of a sphere's volume at this resolution.
 constexpr int kVolumeRings = 97;
 constexpr int kVolumeMeridians = 128;
+// How far above a base plane the ring a cavity's surface stops at lies: the
+// delta method's steps move a ring by hundredths of a millimetre.
+constexpr double kCutMarginMm = 2.0;
 
 // A ring at u is the apex (or top) pole, one vertex.
 bool IsPole(double u) { return std::abs(std::cos(u)) < 1e-9; }
@@ -55,39 +58,80 @@ double CappedVolume(const TriangleMesh& mesh, int meridians, bool apex_pole,
   return std::abs(six) / 6.0;
 }
 
-}  // namespace
+// The base plane's normal turned toward the base (the model's +z).
+Eigen::Vector3d BaseNormal(const Model& model, const BasePlane& base) {
+  Eigen::Vector3d normal = base.normal.normalized();
+  if (normal.dot(model.Rotation().col(2)) < 0.0) normal = -normal;
+  return normal;
+}
 
-ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
-                              std::optional<double> u_end, double w) {
+// Whether the `count` vertices from `first` lie wholly more than `margin`
+// mm above the base plane (on its base side).
+bool WhollyAbove(const std::vector<Eigen::Vector3d>& points, int first,
+                 int count, const BasePlane& base,
+                 const Eigen::Vector3d& normal, double margin) {
+  for (int k = first; k < first + count; ++k) {
+    if (!(normal.dot(points[k] - base.point) > margin)) return false;
+  }
+  return true;
+}
+
+// MakeModelSurface, which with a base plane stops at the first ring past
+// the rim wholly kCutMarginMm above it.  VolumeBelowPlane skips every
+// triangle wholly above, so the rings after it add exactly nothing to the
+// cavity's volume (past the rim, with the functions held, each ring lies
+// higher up the axis and narrower than the one before, so none comes back
+// down), and on biv-me's patient they were a third of the continued
+// surface.
+ModelSurface SampleSurface(const Model& model, int rings, int meridians,
+                           std::optional<double> u_end, double w,
+                           const BasePlane* cut) {
   ModelSurface surface;
-  auto add = [&](double u, double v) {
-    surface.u.push_back(u);
-    surface.v.push_back(v);
-    return static_cast<int>(surface.u.size()) - 1;
-  };
+  surface.w = w;
   const double u_min = model.config.u_min;
   const double u_max = u_end.value_or(model.config.u_max);
   // first[i]: index of ring i's vertex at v = -pi; a pole ring has one.
-  std::vector<int> first(rings);
+  std::vector<int> first(rings + 1);
   std::vector<bool> pole(rings);
   for (int i = 0; i < rings; ++i) {
     const double u = u_min + (u_max - u_min) * i / (rings - 1);
     pole[i] = IsPole(u);
     first[i] = static_cast<int>(surface.u.size());
     for (int j = 0; j < (pole[i] ? 1 : meridians); ++j) {
-      add(u, -kPi + 2.0 * kPi * j / meridians);
+      surface.u.push_back(u);
+      surface.v.push_back(-kPi + 2.0 * kPi * j / meridians);
     }
   }
-  // In batches (WorldPoints, round-off from WorldPoint's): a cavity
-  // volume's 25,000 points one at a time were a tenth of a contour job.
+  first[rings] = static_cast<int>(surface.u.size());
+  // In batches (WorldPoints, round-off from WorldPoint's) of a ring each: a
+  // cavity volume's 25,000 points one at a time were a tenth of a contour
+  // job.
   const std::vector<double> ws(surface.u.size(), w);
   surface.mesh.points.resize(surface.u.size());
-  WorldPoints(model, surface.u.size(), surface.u.data(), surface.v.data(),
-              ws.data(), 1, surface.mesh.points.data());
+  const Eigen::Vector3d normal =
+      cut == nullptr ? Eigen::Vector3d::Zero() : BaseNormal(model, *cut);
+  const double u_cut = std::max(model.config.u_max, 0.0);
+  int used = rings;
+  for (int i = 0; i < rings; ++i) {
+    const int count = first[i + 1] - first[i];
+    WorldPoints(model, count, &surface.u[first[i]], &surface.v[first[i]],
+                &ws[first[i]], 1, &surface.mesh.points[first[i]]);
+    if (cut != nullptr && !pole[i] && i + 1 < rings &&
+        surface.u[first[i]] >= u_cut &&
+        WhollyAbove(surface.mesh.points, first[i], count, *cut, normal,
+                    kCutMarginMm)) {
+      used = i + 1;
+      surface.cut_ring_first = first[i];
+      break;
+    }
+  }
+  surface.u.resize(first[used]);
+  surface.v.resize(first[used]);
+  surface.mesh.points.resize(first[used]);
   auto at = [&](int i, int j) {
     return pole[i] ? first[i] : first[i] + j % meridians;
   };
-  for (int i = 0; i + 1 < rings; ++i) {
+  for (int i = 0; i + 1 < used; ++i) {
     for (int j = 0; j < meridians; ++j) {
       // With v turning counter-clockwise about +z and u running up the
       // axis, (a, b, c) faces outward.
@@ -100,14 +144,21 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
   return surface;
 }
 
+}  // namespace
+
+ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
+                              std::optional<double> u_end, double w) {
+  return SampleSurface(model, rings, meridians, u_end, w, nullptr);
+}
+
 ModelSurface CavitySurface(const Model& model, const BasePlane* base,
                            double w) {
   if (base == nullptr) {
     return MakeModelSurface(model, kVolumeRings, kVolumeMeridians, {}, w);
   }
   // Closed at both poles; twice the rings for twice the range of u.
-  return MakeModelSurface(model, 2 * kVolumeRings, kVolumeMeridians, kPi / 2,
-                          w);
+  return SampleSurface(model, 2 * kVolumeRings, kVolumeMeridians, kPi / 2, w,
+                       base);
 }
 
 void ReplaceVertices(const Model& model, double u_low, double u_high, double w,
@@ -139,8 +190,18 @@ double CavityVolumeMl(const Model& model, const ModelSurface& surface,
                         IsPole(model.config.u_max)) /
            1000.0;
   }
-  Eigen::Vector3d normal = base->normal.normalized();
-  if (normal.dot(model.Rotation().col(2)) < 0.0) normal = -normal;
+  const Eigen::Vector3d normal = BaseNormal(model, *base);
+  // A move (ReplaceVertices) that brought the top ring down to the plane:
+  // the whole continued surface.
+  if (surface.cut_ring_first >= 0 &&
+      !WhollyAbove(surface.mesh.points, surface.cut_ring_first,
+                   kVolumeMeridians, *base, normal, 0.0)) {
+    return CavityVolumeMl(
+        model,
+        SampleSurface(model, 2 * kVolumeRings, kVolumeMeridians, kPi / 2,
+                      surface.w, nullptr),
+        base);
+  }
   return VolumeBelowPlane(surface.mesh, base->point, normal) / 1000.0;
 }
 

@@ -19,6 +19,10 @@ struct ModelSurface {
   TriangleMesh mesh;
   std::vector<double> u;  // Per vertex.
   std::vector<double> v;
+  double w = 0.0;  // The solid's surface it samples.
+  // CavitySurface with a base plane: the first vertex of the ring it stops
+  // at, wholly above the plane; -1 for a surface that runs to its end.
+  int cut_ring_first = -1;
 };
 
 // u_end > u_max continues the surface past the base rim with every

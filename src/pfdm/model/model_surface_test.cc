@@ -105,5 +105,36 @@ TEST(ModelSurfaceTest, BasePlaneCutsTheContinuedSurface) {
               EllipsoidVolumeBelow(30, 25, 40, 0.75), 0.005 * 120.0);
 }
 
+// With a base plane the surface stops at the first ring past the rim wholly
+// 2 mm above it: the same volume, to the bit, as the surface continued to
+// the top pole (the rings after it lie wholly above, where VolumeBelowPlane
+// skips them), from fewer vertices.  A move that brings that ring down to
+// the plane measures the whole surface again.
+TEST(ModelSurfaceTest, TheCavityStopsAtARingWhollyAboveTheBasePlane) {
+  const Model model = Ellipsoid();
+  const BasePlane tilted{
+      {0, 0, 15}, Eigen::Vector3d(0.3, -0.2, 1).normalized(), 3};
+  const ModelSurface whole = MakeModelSurface(model, 194, 128, kPi / 2);
+  const ModelSurface cut = CavitySurface(model, &tilted);
+  ASSERT_GE(cut.cut_ring_first, 0);
+  EXPECT_LT(cut.mesh.points.size(), 0.9 * whole.mesh.points.size());
+  const Eigen::Vector3d up = tilted.normal;
+  for (int k = cut.cut_ring_first; k < cut.cut_ring_first + 128; ++k) {
+    EXPECT_GT(up.dot(cut.mesh.points[k] - tilted.point), 2.0);
+  }
+  EXPECT_EQ(CavityVolumeMl(model, cut, &tilted),
+            VolumeBelowPlane(whole.mesh, tilted.point, up) / 1000.0);
+  // Down the axis by 5 mm, every vertex re-placed: the cut ring is now
+  // below the plane, past which the moved surface goes on.
+  Model lowered = model;
+  lowered.state.center[2] -= 5.0;
+  ModelSurface moved = cut;
+  ReplaceVertices(lowered, model.config.u_min, kPi / 2, 0.0, &moved);
+  EXPECT_GT(CavityVolumeMl(lowered, &tilted),
+            CavityVolumeMl(model, &tilted) + 5.0);
+  EXPECT_EQ(CavityVolumeMl(lowered, moved, &tilted),
+            CavityVolumeMl(lowered, &tilted));
+}
+
 }  // namespace
 }  // namespace pfdm
