@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <functional>
+#include <vector>
 
+#include "pfdm/model/world_points.h"
 #include "pfdm/util/angles.h"
 
 namespace pfdm {
@@ -10,16 +12,33 @@ namespace {
 
 constexpr int kUSteps = 48, kVSteps = 72, kWSteps = 8;
 
+// The material point (u, v, w) at grid node (i, j).
+struct GridPoint {
+  double u, v, w;
+};
+
 // The signed volume enclosed with `origin` by the quads of a grid of
 // points p(i, j), i = 0..rows, j = 0..columns - 1 and periodic in j (v),
-// oriented by d/di x d/dj: (1/6) sum (a - o) . ((b - o) x (c - o)).
-double GridVolume(const std::function<Eigen::Vector3d(int, int)>& at, int rows,
+// oriented by d/di x d/dj: (1/6) sum (a - o) . ((b - o) x (c - o)).  The
+// points in one WorldPoints batch: one at a time, a frame's myocardium
+// took as long as the rest of its clinical summary.
+double GridVolume(const Model& model,
+                  const std::function<GridPoint(int, int)>& at, int rows,
                   int columns, const Eigen::Vector3d& origin) {
-  std::vector<Eigen::Vector3d> points;
-  points.reserve((rows + 1) * columns);
+  const size_t n = static_cast<size_t>(rows + 1) * columns;
+  std::vector<double> u(n), v(n), w(n);
   for (int i = 0; i <= rows; ++i) {
-    for (int j = 0; j < columns; ++j) points.push_back(at(i, j) - origin);
+    for (int j = 0; j < columns; ++j) {
+      const GridPoint g = at(i, j);
+      const size_t k = static_cast<size_t>(i) * columns + j;
+      u[k] = g.u;
+      v[k] = g.v;
+      w[k] = g.w;
+    }
   }
+  std::vector<Eigen::Vector3d> points(n);
+  WorldPoints(model, n, u.data(), v.data(), w.data(), 1, points.data());
+  for (Eigen::Vector3d& point : points) point -= origin;
   auto p = [&](int i, int j) -> const Eigen::Vector3d& {
     return points[i * columns + (j % columns)];
   };
@@ -47,21 +66,27 @@ double MaterialMyocardiumMl(const Model& model, double u_low, double u_high) {
   // i.e. rows in w backward, the strip at u_low with rows in w forward.
   const double volume =
       GridVolume(
-          [&](int i, int j) { return model.WorldPoint(u_at(i), v_at(j), 1.0); },
-          kUSteps, kVSteps, origin) +
-      GridVolume(
+          model,
           [&](int i, int j) {
-            return model.WorldPoint(u_at(kUSteps - i), v_at(j), -1.0);
+            return GridPoint{u_at(i), v_at(j), 1.0};
           },
           kUSteps, kVSteps, origin) +
       GridVolume(
+          model,
+          [&](int i, int j) {
+            return GridPoint{u_at(kUSteps - i), v_at(j), -1.0};
+          },
+          kUSteps, kVSteps, origin) +
+      GridVolume(
+          model,
           [&](int k, int j) {
-            return model.WorldPoint(u_high, v_at(j), w_at(kWSteps - k));
+            return GridPoint{u_high, v_at(j), w_at(kWSteps - k)};
           },
           kWSteps, kVSteps, origin) +
       GridVolume(
+          model,
           [&](int k, int j) {
-            return model.WorldPoint(u_low, v_at(j), w_at(k));
+            return GridPoint{u_low, v_at(j), w_at(k)};
           },
           kWSteps, kVSteps, origin);
   return std::abs(volume) / 1000.0;

@@ -271,6 +271,9 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
   // Each point's P in two parts: the D x D block and the rows of U and r.
   MomentSums sums(m, (k + 1) * q);
   Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::RowMajor> g(3, q);
+  // n^T g into its own row first: g's row 0 from all of g would otherwise
+  // be a temporary allocated per point.
+  Eigen::RowVectorXd along_normal(q);
   auto add_point = [&](int i, const Eigen::Vector3d& s,
                        const ShapeJacobian& ds) {
     const PointSample& sample = samples_[i];
@@ -301,7 +304,9 @@ Eigen::MatrixXd PointGroupResidual::MomentGram(
     g.col(r) = s + model_from_world * (center - sample.data);
     int num_rows = 3;
     if (sample.has_normal) {
-      g.row(0) = (model_from_world * sample.normal).transpose() * g;
+      along_normal.noalias() =
+          (model_from_world * sample.normal).transpose() * g;
+      g.row(0) = along_normal;
       num_rows = 1;
     }
 
