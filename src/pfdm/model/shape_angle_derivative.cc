@@ -3,10 +3,10 @@
 #include <array>
 #include <cmath>
 
-#include "ceres/jet.h"
 #include "pfdm/model/parameter_function.h"
 #include "pfdm/model/signed_power.h"
 #include "pfdm/model/transmural.h"
+#include "pfdm/util/bessel.h"
 
 namespace pfdm {
 namespace {
@@ -40,8 +40,8 @@ Graded GradedBend(double amplitude, double d_amplitude, const Graded& x,
   const double phase = kHalfPi * (x.value - b);
   const double cos_phase = std::cos(phase), sin_phase = std::sin(phase);
   const double cos_b = std::cos(kHalfPi * b), sin_b = std::sin(kHalfPi * b);
-  const double j0 = ceres::BesselJ0(kHalfPi * r);
-  const double j1 = ceres::BesselJ1(kHalfPi * r);
+  const BesselJ01 j = BesselJ0J1(kHalfPi * r);
+  const double j0 = j.j0, j1 = j.j1;
   const double g = cos_phase - j0 * cos_b;
   // dg = -h sin(h (x - b)) (dx - db) + h J1(h r) cos(h b) dr
   //      + h J0(h r) sin(h b) db, h = pi / 2.

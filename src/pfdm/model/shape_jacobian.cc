@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ceres/jet.h"
 #include "pfdm/model/transmural.h"
+#include "pfdm/util/bessel.h"
 
 namespace pfdm {
 namespace {
@@ -57,8 +57,9 @@ ShapePrelude PrepareShape(const double* f, const Angles<double>& angles,
   }
   for (int i = 0; i < 2; ++i) {
     const double ring = kHalfPi * f[i == 0 ? kA1 : kA2] * prelude.cu.value;
-    prelude.j0[i] = ceres::BesselJ0(ring);
-    prelude.j1[i] = ceres::BesselJ1(ring);
+    const BesselJ01 j = BesselJ0J1(ring);
+    prelude.j0[i] = j.j0;
+    prelude.j1[i] = j.j1;
   }
   return prelude;
 }
