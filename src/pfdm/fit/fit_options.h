@@ -96,6 +96,11 @@ struct FitOptions {
   // spin free (docs/gauge.md).  FitFrame sets it for frame 0 of tags; 0:
   // off.
   double reference_spin_weight = 0.0;
+  // Frame 0's apex keeps the start's height along the long axis with this
+  // weight, relative to the data's N points (ApexGaugeResidual): where no
+  // data reach the apex they leave it free.  FitFrame sets it for frame 0
+  // of tags; 0: off.
+  double reference_apex_weight = 0.0;
   // "none", "huber" or "cauchy" (fit/residuals/robust_loss.h).  Its scale
   // is measured by the fit (fit/stages/loss_scale.h, recorded in
   // SequenceFit::loss_scale_mm) unless loss_scale_auto is false; then it is

@@ -146,16 +146,25 @@ TEST_P(LvLayerStrainTest, EachLayerOfEachSegmentAgainstThePhantoms) {
     EXPECT_TRUE(
         std::isnan(analysis.region_layers[1][7].layers[1].thickening_percent));
   }
-  // fit.json holds them: mid 2's endocardial Ecc at ES, its Err.
+  // fit.json holds them: the endocardial Ecc at ES of the first segment
+  // measured there, from mid 2 on (the cylinder's data, without an apex,
+  // may not reach far enough into the model's mid third: its extrapolated
+  // apex sets the levels), and its Err.
   const auto json = nlohmann::json::parse(
       FitJson(phantom.points, fit, FitOptions(), analysis));
   const size_t es = fit.frames.size() - 1;
-  const RegionLayers& mid2 = analysis.region_layers[es][7];
-  EXPECT_EQ(json["regions"][7]["layers"]["endocardium"]["ecc_percent"][es]
+  size_t r = 7;
+  while (r > 0 &&
+         std::isnan(analysis.region_layers[es][r].layers[0].ecc_percent)) {
+    --r;
+  }
+  const RegionLayers& measured = analysis.region_layers[es][r];
+  ASSERT_FALSE(std::isnan(measured.layers[0].ecc_percent));
+  EXPECT_EQ(json["regions"][r]["layers"]["endocardium"]["ecc_percent"][es]
                 .get<double>(),
-            mid2.layers[0].ecc_percent);
-  EXPECT_EQ(json["regions"][7]["err_percent"][es].get<double>(),
-            mid2.err_percent);
+            measured.layers[0].ecc_percent);
+  EXPECT_EQ(json["regions"][r]["err_percent"][es].get<double>(),
+            measured.err_percent);
   EXPECT_TRUE(json.contains("layers_definition"));
 }
 

@@ -13,6 +13,7 @@
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/problem/frame_blocks.h"
 #include "pfdm/fit/problem/gauss_newton_step.h"
+#include "pfdm/fit/residuals/apex_gauge_residual.h"
 #include "pfdm/fit/residuals/axis_gauge_chain.h"
 #include "pfdm/fit/residuals/data_cost.h"
 #include "pfdm/fit/residuals/incompressibility_residual.h"
@@ -109,6 +110,8 @@ class FrameProblem {
   static ceres::Problem::Options ProblemOptions(PrecomputedGroups* precomputed);
   void AddPointGroup(int k0, std::vector<PointSample> group);
   void AddAxisGauge(double sqrt_weight);
+  // Frame 0's apex toward the start's (FitOptions::reference_apex_weight).
+  void AddApexGauge(size_t num_points, const ModelState& reference);
   // 1/2 the sum of the blocks' squared residuals (no loss: the terms other
   // than the data have none).
   double CostOf(const std::vector<ceres::ResidualBlockId>& ids) const;
@@ -258,6 +261,9 @@ void FrameProblem::AddGauges(size_t num_points, const ModelState& reference) {
             SpinGaugeLength(*model_), reference.quaternion),
         nullptr, model_->state.quaternion.data()));
   }
+  if (kind_ == FrameKind::kReference && options_.reference_apex_weight > 0.0) {
+    AddApexGauge(num_points, reference);
+  }
   if (kind_ == FrameKind::kUntracked &&
       config.modes[kA3] == FunctionMode::kFree) {
     for (int k = 0; k + 1 < config.num_knots; ++k) {
@@ -268,6 +274,19 @@ void FrameProblem::AddGauges(size_t num_points, const ModelState& reference) {
     }
   }
   if (config.modes[kE1o] == FunctionMode::kFree) AddAxisGauge(sqrt_weight);
+}
+
+void FrameProblem::AddApexGauge(size_t num_points,
+                                const ModelState& reference) {
+  const Model start{model_->config, reference};
+  const Eigen::Vector3d axis = start.Rotation().col(2);
+  const double height =
+      axis.dot(Eigen::Vector3d(reference.center.data())) + ApexHeight(start);
+  gauge_ids_.push_back(blocks_.AddResidual(
+      ApexGaugeResidual::Create(
+          std::sqrt(options_.reference_apex_weight * num_points),
+          ApexExtent(*model_), axis, height),
+      nullptr, true, {kGlobalsBlock}));
 }
 
 void FrameProblem::AddAxisGauge(double sqrt_weight) {

@@ -93,6 +93,15 @@ double SpinGaugeLength(const Model& model) {
          (model.FunctionAt(kA1, 0.0) + model.FunctionAt(kA2, 0.0));
 }
 
+double ApexExtent(const Model& model) {
+  return model.FunctionAt(kA3, model.config.u_min) *
+         std::sin(model.config.u_min);
+}
+
+double ApexHeight(const Model& model) {
+  return model.state.globals[kA0] * ApexExtent(model);
+}
+
 double TopHeight(const std::vector<Eigen::Vector3d>& points,
                  const FitOptions& options, const Model& model) {
   const Eigen::Vector3d axis = model.Rotation().col(2);

@@ -45,6 +45,13 @@ std::vector<int> HeldEntries(const ModelConfig& config, FrameKind kind,
 // the model's radius: a0 times the mean of a1 and a2 at the equator.
 double SpinGaugeLength(const Model& model);
 
+// The apex pole's axis point in the model frame, in units of a0: a3(u_min)
+// sin(u_min) along the axis (frame 0 neither bends nor offsets it there).
+double ApexExtent(const Model& model);
+// Its height along the model's long axis from the centre, a0 ApexExtent,
+// as TopHeight's.
+double ApexHeight(const Model& model);
+
 // Height along the model axis of the highest data point that is not an
 // outlier: with a robust loss, points farther than OutlierBandMm
 // (fit/residuals/robust_loss.h) from the surface (a solid's wall) do not

@@ -36,6 +36,7 @@ TEST(ApexCoverageTest, DataAtTheApex) {
   SequenceFit fit = FitWithPointsAt({-1.5, -0.5, 0.3}, &points);
   MeasureApexCoverage(points, &fit);
   EXPECT_TRUE(fit.apex_in_data);
+  EXPECT_TRUE(ApexInData(fit.ModelAt(0), points));
   // Height fraction (sin u + 1) / (sin u_max + 1), u_max = pi / 6.
   EXPECT_NEAR(fit.lowest_data_height, (std::sin(-1.5) + 1) / 1.5, 1e-9);
   EXPECT_NEAR(fit.lowest_data_u, -1.5, 1e-12);
@@ -49,6 +50,7 @@ TEST(ApexCoverageTest, NoDataNearTheApex) {
   SequenceFit fit = FitWithPointsAt({-0.7, 0.0, 0.5}, &points);
   MeasureApexCoverage(points, &fit);
   EXPECT_FALSE(fit.apex_in_data);
+  EXPECT_FALSE(ApexInData(fit.ModelAt(0), points));
   EXPECT_NEAR(fit.lowest_data_height, (std::sin(-0.7) + 1) / 1.5, 1e-9);
   EXPECT_NEAR(fit.lowest_data_u, -0.7, 1e-12);
   const double height = 40 * (std::sin(-0.7) + 1);
@@ -68,6 +70,11 @@ TEST(ApexCoverageTest, AFewPointsNearTheApexAreNotIt) {
   fit.frames[0].material.push_back(MaterialPoint{-1.5, 1.0});
   MeasureApexCoverage(points, &fit);
   EXPECT_FALSE(fit.apex_in_data);
+  EXPECT_FALSE(ApexInData(model, points));
+  // A third point there is.
+  points.push_back(model.WorldPoint(-1.5, 2.0));
+  EXPECT_TRUE(ApexInData(model, points));
+  points.pop_back();
   EXPECT_NEAR(fit.apex_data_distance, 25 * std::cos(1.5) / 60, 1e-3);
 }
 

@@ -29,12 +29,6 @@ std::vector<Eigen::Vector3d> Noisy(const std::vector<Eigen::Vector3d>& surface,
   return out;
 }
 
-// Height of the model's apex pole along its axis, from its centre.
-double ApexHeight(const Model& model) {
-  const double u = model.config.u_min;
-  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u);
-}
-
 // The points that can be the highest or hold it up (TopHeight's support
 // below it) in a draw of noise of sd sigma_mm: within 8 sigma and the
 // outlier band of `top`.  The rest cannot change it, and with a robust
