@@ -96,10 +96,10 @@ struct FitOptions {
   // spin free (docs/gauge.md).  FitFrame sets it for frame 0 of tags; 0:
   // off.
   double reference_spin_weight = 0.0;
-  // Frame 0's apex keeps the start's height along the long axis with this
-  // weight, relative to the data's N points (ApexGaugeResidual): where no
-  // data reach the apex they leave it free.  FitFrame sets it for frame 0
-  // of tags; 0: off.
+  // Frame 0's apex is pulled toward the start's height along the long axis
+  // with this weight, relative to the data's N points (ApexGaugeResidual):
+  // where no data reach the apex they leave it free.  FitFrame sets it for
+  // frame 0 of tags without data near the start's apex; 0: off.
   double reference_apex_weight = 0.0;
   // "none", "huber" or "cauchy" (fit/residuals/robust_loss.h).  Its scale
   // is measured by the fit (fit/stages/loss_scale.h, recorded in

@@ -14,8 +14,9 @@ namespace {
 // of the step, 0.07 % of a sphere's volume at this resolution.
 constexpr int kVolumeRings = 97;
 constexpr int kVolumeMeridians = 128;
-// How far above a base plane the ring a cavity's surface stops at lies: the
-// delta method's steps move a ring by hundredths of a millimetre.
+// The ring a cavity's surface stops at lies at least this far above the
+// base plane: the delta method's steps move a ring by hundredths of a
+// millimetre.
 constexpr double kCutMarginMm = 2.0;
 
 // A ring at u is the apex (or top) pole, one vertex.

@@ -41,8 +41,9 @@ bool ApexInData(const Model& model,
                 const std::vector<Eigen::Vector3d>& points) {
   const ApexFrame frame(model);
   int near_apex = 0;
-  for (const Eigen::Vector3d& p : points)
+  for (const Eigen::Vector3d& p : points) {
     near_apex += frame.Reach(p) < kApexReach;
+  }
   return EnoughNearTheApex(near_apex, points.size());
 }
 
