@@ -136,7 +136,7 @@ TEST(GlobalRoundsTest, TagsFirstFrameEndsOnItsBestRound) {
 // (FitOptions::reference_apex_weight, 1e-3) pulls the apex toward the
 // start's height: it moves 1.6 mm, and the rounds settle; without it the
 // rounds move it up by 6.3 mm.
-TEST(GlobalRoundsTest, ASegmentsApexKeepsTheStartsHeight) {
+TEST(GlobalRoundsTest, ASegmentsApexStaysNearTheStarts) {
   LvPhantomOptions phantom;
   phantom.region = LvRegion::kMidventricular;
   phantom.num_tags = 1500;
