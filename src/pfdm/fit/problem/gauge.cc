@@ -99,7 +99,8 @@ double ApexExtent(const Model& model) {
 }
 
 double ApexHeight(const Model& model) {
-  return model.state.globals[kA0] * ApexExtent(model);
+  const double u = model.config.u_min;
+  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u);
 }
 
 double TopHeight(const std::vector<Eigen::Vector3d>& points,
@@ -129,7 +130,7 @@ void SpanAxialExtent(const std::vector<Eigen::Vector3d>& points,
   FunctionValues& globals = model->state.globals;
   const double a0 = globals[kA0];
   const double a3 = model->FunctionAt(kA3, model->config.u_min);
-  const double z_apex = a0 * a3 * sin_min;
+  const double z_apex = ApexHeight(*model);
   const double new_a0 = (z_base - z_apex) / (a3 * (sin_max - sin_min));
   const Eigen::Vector3d new_center =
       center + axis * (z_apex - new_a0 * a3 * sin_min);
