@@ -1,6 +1,8 @@
 #include "pfdm/model/parameter_function.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "gtest/gtest.h"
 
@@ -30,6 +32,33 @@ TEST(KnotGridTest, SpanWeightsAreLinearInU) {
   span = grid.Span(-7.0);  // Clamped.
   EXPECT_EQ(span.k0, 0);
   EXPECT_DOUBLE_EQ(span.weight, 0.0);
+}
+
+// Span counts knots where it once searched them: the same span as a
+// binary search (std::upper_bound) everywhere, on the knots themselves,
+// just beside them and at the ends.
+TEST(KnotGridTest, SpanIsTheBinarySearchsSpan) {
+  const KnotGrid grid(17, -2.4, 0.3);
+  std::vector<double> u_values = {-9.0, 9.0};
+  for (int k = 0; k < grid.num_knots(); ++k) {
+    const double knot = grid.KnotU(k);
+    for (double u :
+         {knot, std::nextafter(knot, -10.0), std::nextafter(knot, 10.0)}) {
+      u_values.push_back(u);
+    }
+  }
+  for (int i = 0; i <= 1000; ++i) u_values.push_back(-2.4 + 2.7 * i / 1000);
+  std::vector<double> knots;
+  for (int k = 0; k < grid.num_knots(); ++k) knots.push_back(grid.KnotU(k));
+  for (double u : u_values) {
+    const double clamped = std::clamp(u, -2.4, 0.3);
+    const int searched = std::clamp(
+        static_cast<int>(std::upper_bound(knots.begin(), knots.end(), clamped) -
+                         knots.begin()) -
+            1,
+        0, grid.num_knots() - 2);
+    EXPECT_EQ(grid.Span(u).k0, searched) << "u = " << u;
+  }
 }
 
 TEST(FunctionNameTest, NamesRoundTrip) {
