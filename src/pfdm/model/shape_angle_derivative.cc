@@ -6,6 +6,7 @@
 #include "pfdm/model/parameter_function.h"
 #include "pfdm/model/signed_power.h"
 #include "pfdm/model/transmural.h"
+#include "pfdm/util/batch_trig.h"
 #include "pfdm/util/bessel.h"
 
 namespace pfdm {
@@ -16,6 +17,10 @@ constexpr double kHalfPi = 1.57079632679489661923;
 // A value with its derivatives in u and v.
 struct Graded {
   double value, d_u, d_v;
+};
+
+struct CosSin {
+  double cos, sin;
 };
 
 // sgn(x)|x|^e as SignedPower, x and e graded.
@@ -31,15 +36,22 @@ Graded GradedSignedPower(const Graded& x, double e, double de_du) {
   return {value, d_x * x.d_u + d_e * de_du, d_x * x.d_v};
 }
 
-// b g(x, b, r) of global_deformations.h's BendProfile with its derivatives;
-// nothing to compute while the amplitude and its slope are zero (frame 0,
-// and any unbent model).
+// Whether the bend of this amplitude (kB0 or kB2) moves the shape here:
+// not while the amplitude and its slope are zero (frame 0, and any unbent
+// model).
+bool Bends(const double* f, const double* df_du, int amplitude) {
+  return f[amplitude] != 0.0 || df_du[amplitude] != 0.0;
+}
+
+// b g(x, b, r) of global_deformations.h's BendProfile with its derivatives,
+// given the cosines and sines of its phase h (x - b) and of h b, h = pi / 2
+// (b's own value enters only through them).
 Graded GradedBend(double amplitude, double d_amplitude, const Graded& x,
-                  double b, double db_du, double r, double dr_du) {
+                  double db_du, double r, double dr_du, CosSin phase_trig,
+                  CosSin b_trig) {
   if (amplitude == 0.0 && d_amplitude == 0.0) return {0.0, 0.0, 0.0};
-  const double phase = kHalfPi * (x.value - b);
-  const double cos_phase = std::cos(phase), sin_phase = std::sin(phase);
-  const double cos_b = std::cos(kHalfPi * b), sin_b = std::sin(kHalfPi * b);
+  const double cos_phase = phase_trig.cos, sin_phase = phase_trig.sin;
+  const double cos_b = b_trig.cos, sin_b = b_trig.sin;
   const BesselJ01 j = BesselJ0J1(kHalfPi * r);
   const double j0 = j.j0, j1 = j.j1;
   const double g = cos_phase - j0 * cos_b;
@@ -84,12 +96,16 @@ Graded Plus(const Graded& a, const Graded& b) {
   return {a.value + b.value, a.d_u + b.d_u, a.d_v + b.d_v};
 }
 
-}  // namespace
+double TwistOf(const double* f, double w) {
+  return w == 0.0 ? f[kTau] : TwistAt(f, w);
+}
 
-ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
-                                               const double* df_du,
-                                               const Angles<double>& angles,
-                                               bool unit_exponents, double w) {
+// ShapeAngleDerivatives with the twist's cosine and sine given.  The bends'
+// four come from one SinCosMany batch: scalar, they were four of a bent
+// model's seven sincos per evaluation.
+ShapeAndAngleDerivatives Derivatives(const double* f, const double* df_du,
+                                     const Angles<double>& angles, CosSin twist,
+                                     bool unit_exponents, double w) {
   // The primitive's signed powers of the angles' sines and cosines.
   const Graded cos_u{angles.cos_u, -angles.sin_u, 0.0};
   const Graded sin_u{angles.sin_u, angles.cos_u, 0.0};
@@ -131,18 +147,26 @@ ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
     return Graded{e.value / a0, (e.d_u * a0 - e.value * da0) / (a0 * a0),
                   e.d_v / a0};
   };
-  const Graded bend1 =
-      GradedBend(f[kB0], df_du[kB0], across(e1), f[kB1], df_du[kB1],
-                 f[kA1] * cu.value, df_du[kA1] * cu.value + f[kA1] * cu.d_u);
-  const Graded bend2 =
-      GradedBend(f[kB2], df_du[kB2], across(e2), f[kB3], df_du[kB3],
-                 f[kA2] * cu.value, df_du[kA2] * cu.value + f[kA2] * cu.d_u);
+  Graded bend1{0.0, 0.0, 0.0}, bend2{0.0, 0.0, 0.0};
+  if (Bends(f, df_du, kB0) || Bends(f, df_du, kB2)) {
+    const Graded x1 = across(e1), x2 = across(e2);
+    const double bend_angles[4] = {kHalfPi * (x1.value - f[kB1]),
+                                   kHalfPi * (x2.value - f[kB3]),
+                                   kHalfPi * f[kB1], kHalfPi * f[kB3]};
+    double sines[4], cosines[4];
+    SinCosMany(bend_angles, 4, sines, cosines);
+    bend1 = GradedBend(f[kB0], df_du[kB0], x1, df_du[kB1], f[kA1] * cu.value,
+                       df_du[kA1] * cu.value + f[kA1] * cu.d_u,
+                       {cosines[0], sines[0]}, {cosines[2], sines[2]});
+    bend2 = GradedBend(f[kB2], df_du[kB2], x2, df_du[kB3], f[kA2] * cu.value,
+                       df_du[kA2] * cu.value + f[kA2] * cu.d_u,
+                       {cosines[1], sines[1]}, {cosines[3], sines[3]});
+  }
   const Graded bent3{e3.value + bend1.value + bend2.value,
                      e3.d_u + bend1.d_u + bend2.d_u,
                      e3.d_v + bend1.d_v + bend2.d_v};
   // Twist by the surface's tau about axis 3, then the offsets.
-  const double tau = w == 0.0 ? f[kTau] : TwistAt(f, w);
-  const double c = std::cos(tau), s = std::sin(tau);
+  const double c = twist.cos, s = twist.sin;
   const double dtau = w == 0.0 ? df_du[kTau] : TwistAt(df_du, w);
   ShapeAndAngleDerivatives out;
   out.shape = Eigen::Vector3d(c * e1.value - s * e2.value + f[kE1o],
@@ -157,6 +181,28 @@ ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
   out.d_v = Eigen::Vector3d(c * e1.d_v - s * e2.d_v, s * e1.d_v + c * e2.d_v,
                             bent3.d_v);
   return out;
+}
+
+}  // namespace
+
+ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
+                                               const double* df_du,
+                                               const Angles<double>& angles,
+                                               bool unit_exponents, double w) {
+  const double tau = TwistOf(f, w);
+  return Derivatives(f, df_du, angles, {std::cos(tau), std::sin(tau)},
+                     unit_exponents, w);
+}
+
+ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
+                                               const double* df_du, double u,
+                                               double v, bool unit_exponents,
+                                               double w) {
+  const double angles[3] = {u, v, TwistOf(f, w)};
+  double sines[3], cosines[3];
+  SinCosMany(angles, 3, sines, cosines);
+  return Derivatives(f, df_du, {cosines[0], sines[0], cosines[1], sines[1]},
+                     {cosines[2], sines[2]}, unit_exponents, w);
 }
 
 }  // namespace pfdm

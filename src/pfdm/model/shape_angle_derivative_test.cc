@@ -11,8 +11,22 @@ namespace {
 
 using Jet2 = ceres::Jet<double, 2>;
 
+void ExpectNear(const ShapeAndAngleDerivatives& got,
+                const Eigen::Matrix<Jet2, 3, 1>& truth, double u, double v,
+                double w) {
+  for (int k = 0; k < 3; ++k) {
+    const double scale = 1.0 + std::abs(truth[k].a);
+    EXPECT_NEAR(got.shape[k], truth[k].a, 1e-13 * scale) << k;
+    EXPECT_NEAR(got.d_u[k], truth[k].v[0], 1e-11 * scale)
+        << "u " << u << " v " << v << " w " << w << " axis " << k;
+    EXPECT_NEAR(got.d_v[k], truth[k].v[1], 1e-11 * scale)
+        << "u " << u << " v " << v << " w " << w << " axis " << k;
+  }
+}
+
 // ReferenceShape differentiated by ceres::Jet in (u, v), the functions
-// moving along u at the rates df_du.
+// moving along u at the rates df_du: both forms, from the angles' scalar
+// sines and cosines and from (u, v) with batched ones.
 void ExpectMatchesJet(const double* f, const double* df_du, double u, double v,
                       bool unit_exponents, double w = 0.0) {
   Jet2 f_jet[kNumFunctions];
@@ -22,15 +36,10 @@ void ExpectMatchesJet(const double* f, const double* df_du, double u, double v,
   }
   const Eigen::Matrix<Jet2, 3, 1> truth = ReferenceShape(
       f_jet, MakeAngles(Jet2(u, 0), Jet2(v, 1)), unit_exponents, w);
-  const ShapeAndAngleDerivatives got =
-      ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents, w);
-  for (int k = 0; k < 3; ++k) {
-    const double scale = 1.0 + std::abs(truth[k].a);
-    EXPECT_NEAR(got.shape[k], truth[k].a, 1e-13 * scale) << k;
-    EXPECT_NEAR(got.d_u[k], truth[k].v[0], 1e-11 * scale)
-        << "u " << u << " v " << v << " w " << w << " axis " << k;
-    EXPECT_NEAR(got.d_v[k], truth[k].v[1], 1e-11 * scale)
-        << "u " << u << " v " << v << " w " << w << " axis " << k;
+  for (const ShapeAndAngleDerivatives& got :
+       {ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents, w),
+        ShapeAngleDerivatives(f, df_du, u, v, unit_exponents, w)}) {
+    ExpectNear(got, truth, u, v, w);
   }
 }
 

@@ -60,9 +60,8 @@ void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
 void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
                      double w, Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
   using Jet2 = ceres::Jet<double, 2>;
-  const ShapeAndAngleDerivatives shape =
-      ShapeAngleDerivatives(ring.at.data(), ring.slopes.data(),
-                            MakeAngles(ring.u, v), model.UnitExponents(), w);
+  const ShapeAndAngleDerivatives shape = ShapeAngleDerivatives(
+      ring.at.data(), ring.slopes.data(), ring.u, v, model.UnitExponents(), w);
   const Eigen::Matrix<Jet2, 3, 1> local =
       LocalDisplacement(model.state.local, Jet2(ring.u, 0), Jet2(v, 1), w);
   Eigen::Vector3d local_u, local_v;

@@ -98,7 +98,7 @@ class SurfacePoints {
       InterpolateFunctionSlopes(free_mask_, knot0, knot1, width, df_du);
     }
     const ShapeAndAngleDerivatives shape =
-        ShapeAngleDerivatives(f, df_du, MakeAngles(u, v), unit_exponents_, w);
+        ShapeAngleDerivatives(f, df_du, u, v, unit_exponents_, w);
     Eigen::Vector3d model_point = shape.shape;
     Eigen::Matrix<double, 3, 2> model_jacobian;
     model_jacobian << shape.d_u, shape.d_v;
