@@ -25,7 +25,9 @@ constexpr const char* kExtrapolatedDefinition =
     "(--extrapolated), their numbers are null: the levels' regions and "
     "strains, the apical ring's rotations, the net twists, torsion and "
     "shear angle.  Volumes and mass include the extrapolated apex cap "
-    "(the frames' quality says so).";
+    "(the frames' quality says so), and unless shown, they and the ejection "
+    "fraction have no interval (--uncertainty on): their noise's would be "
+    "about a cap the data never saw.";
 
 // The levels and the apical ring measured where frame 0 has no data
 // (FitAnalysis::level_extrapolated); null when there are none.

@@ -255,6 +255,36 @@ TEST(NumberUncertaintyTest, NotMeasuredNumbersHaveNoSd) {
   EXPECT_GT(sd.strain[1].gcs_percent, 0.0);
 }
 
+// Data that do not reach the apex: the volumes, the mass and the ejection
+// fraction, which take in the apex cap, keep their values and lose their
+// intervals; the numbers measured from the data's own rings keep both.
+TEST(NumberUncertaintyTest, NumbersWithTheUnseenApexCapHaveNoSd) {
+  SequenceFit fit = LvFit().fit;
+  fit.apex_in_data = false;
+  const FitAnalysis unseen = AnalyzeFit(fit);
+  const FitAnalysis& seen = LvFit().analysis;
+  ASSERT_TRUE(unseen.sd.computed);
+  for (size_t t = 0; t < 2; ++t) {
+    EXPECT_EQ(unseen.clinical[t].volume_ml, seen.clinical[t].volume_ml);
+    EXPECT_EQ(unseen.clinical[t].lv_mass_g, seen.clinical[t].lv_mass_g);
+    for (double sd : {unseen.sd.clinical[t].volume_ml,
+                      unseen.sd.clinical[t].myocardial_volume_ml,
+                      unseen.sd.clinical[t].lv_mass_g}) {
+      EXPECT_FALSE(Measured(sd)) << t;
+    }
+    EXPECT_TRUE(Measured(seen.sd.clinical[t].volume_ml)) << t;
+  }
+  EXPECT_EQ(unseen.ejection_fraction.ratio, seen.ejection_fraction.ratio);
+  for (double sd : {unseen.sd.ejection_fraction.ratio,
+                    unseen.sd.ejection_fraction.edv_ml,
+                    unseen.sd.ejection_fraction.esv_ml}) {
+    EXPECT_FALSE(Measured(sd));
+  }
+  EXPECT_GT(seen.sd.ejection_fraction.ratio, 0.0);
+  EXPECT_GT(unseen.sd.clinical[1].radial_contraction_percent, 0.0);
+  EXPECT_GT(unseen.sd.strain[1].gcs_percent, 0.0);
+}
+
 TEST(NumberUncertaintyTest, WithoutCovariancesNothingIsComputed) {
   SequenceFit fit = LvFit().fit;
   fit.frames[1].covariance.computed = false;
