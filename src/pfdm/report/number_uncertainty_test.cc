@@ -275,9 +275,9 @@ TEST(NumberUncertaintyTest, NumbersWithTheUnseenApexCapHaveNoSd) {
     EXPECT_TRUE(Measured(seen.sd.clinical[t].volume_ml)) << t;
   }
   EXPECT_EQ(unseen.ejection_fraction.ratio, seen.ejection_fraction.ratio);
-  for (double sd : {unseen.sd.ejection_fraction.ratio,
-                    unseen.sd.ejection_fraction.edv_ml,
-                    unseen.sd.ejection_fraction.esv_ml}) {
+  for (double sd :
+       {unseen.sd.ejection_fraction.ratio, unseen.sd.ejection_fraction.edv_ml,
+        unseen.sd.ejection_fraction.esv_ml}) {
     EXPECT_FALSE(Measured(sd));
   }
   EXPECT_GT(seen.sd.ejection_fraction.ratio, 0.0);
