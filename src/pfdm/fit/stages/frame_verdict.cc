@@ -227,6 +227,37 @@ void JudgeRings(const ModelConfig& config, const FrameFit& frame,
                        empty, kMinRingPoints));
 }
 
+// The data's span along the long axis as a share of the knot grid's, from
+// their material points' latitudes (heights uniform in sin u, as the knots
+// are).
+double AxialSpan(const KnotGrid& grid, const std::vector<MaterialPoint>& at) {
+  if (at.empty()) return 0.0;
+  const auto [low, high] = std::minmax_element(
+      at.begin(), at.end(),
+      [](const MaterialPoint& a, const MaterialPoint& b) { return a.u < b.u; });
+  return (std::sin(high->u) - std::sin(low->u)) /
+         (std::sin(grid.u_max()) - std::sin(grid.u_min()));
+}
+
+// A later frame of contours whose data span much less of the axis than
+// frame 0's (a short-axis slice the heart moved out of): its rings beyond
+// the data, and its volume with them, are the model's continuation.  On
+// the LV phantom's three slices the end-systolic frame lost the basal one
+// and read a volume of 137 ml against 83, at an RMS of 0.16 mm.
+void JudgeSpan(const ModelConfig& config, const FrameFit& first,
+               const FrameFit& frame, Verdict* verdict) {
+  const KnotGrid grid = config.Grid();
+  const double reference = AxialSpan(grid, first.material);
+  if (reference <= 0.0) return;
+  const double share = AxialSpan(grid, frame.material) / reference;
+  if (share >= kMinSpanShare) return;
+  verdict->Warn("short_span",
+                Format("the data span %.0f %% of frame 0's along the axis "
+                       "(under %.0f %%): the rings beyond them and the "
+                       "volume are the model's continuation",
+                       100.0 * share, 100.0 * kMinSpanShare));
+}
+
 // Frame 0 starts from the initialized model, far from the data: a solve
 // that leaves its cost where it was took no step.
 void JudgeMoved(const FrameFit& frame, Verdict* verdict) {
@@ -301,6 +332,7 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     JudgeBounds(fit->config, frame, &frame.verdict);
     JudgeRings(fit->config, frame, &frame.verdict);
     if (t == 0) JudgeMoved(frame, &frame.verdict);
+    if (t > 0) JudgeSpan(fit->config, fit->frames[0], frame, &frame.verdict);
     JudgeApex(*fit, &frame.verdict);
     JudgeShape(spreads, &frame.verdict);
   }

@@ -12,6 +12,8 @@
 //                prior moves the points by a share of the frame's RMS;
 //   at_bound     a shape function pressed against its bound;
 //   sparse_rings knot spans inside the data with almost no points;
+//   short_span   a later frame's data spanning much less of the axis than
+//                frame 0's (contours that lost a slice);
 //   not_moved    frame 0's solve never left its start;
 //   extrapolated no data near the apex (SequenceFit::apex_in_data);
 //   flat_data    points nearly in a plane, no ventricle.
@@ -48,6 +50,9 @@ constexpr double kPriorPullFloorMm = 0.1;
 // warning: more outliers than a tracker makes.
 constexpr double kKeptWeight = 0.5, kDownWeightedWarn = 0.2;
 constexpr int kMinRingPoints = 3;
+// A later frame's data span along the axis, as a share of frame 0's: 9
+// short-axis slices that lose the basal one keep 7/8.
+constexpr double kMinSpanShare = 0.75;
 constexpr double kFlatDataRatio = 0.02;
 
 // The RMS (mm) of the material points' move from `before` to `after`,

@@ -1,5 +1,6 @@
 #include "pfdm/fit/stages/frame_verdict.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -200,6 +201,34 @@ TEST(FrameVerdictTest, SaysWhenKnotSpansInsideTheDataAreEmpty) {
     }
   });
   EXPECT_EQ(Codes(fit.frames[1]), "sparse_rings/warning");
+}
+
+// Frame 0's data span from their lowest to their highest latitude; a later
+// frame's points above `share` of that span (in sin u, as heights go)
+// brought down to it, as contours that lost their upper slices.
+void CutAbove(double share, const std::vector<MaterialPoint>& first,
+              std::vector<MaterialPoint>* material) {
+  const auto [low, high] = std::minmax_element(
+      first.begin(), first.end(),
+      [](const MaterialPoint& a, const MaterialPoint& b) { return a.u < b.u; });
+  const double cut = std::asin(std::sin(low->u) +
+                               share * (std::sin(high->u) - std::sin(low->u)));
+  for (MaterialPoint& m : *material) m.u = std::min(m.u, cut);
+}
+
+// Half of frame 0's span is a warning; 85 % of it (9 slices less the
+// basal one keep 7/8) is none.
+TEST(FrameVerdictTest, SaysWhenALaterFramesDataSpanLessOfTheAxis) {
+  const SequenceFit fit = Judged([](SequenceFit* f) {
+    CutAbove(0.5, f->frames[0].material, &f->frames[2].material);
+    CutAbove(0.85, f->frames[0].material, &f->frames[1].material);
+  });
+  EXPECT_EQ(Codes(fit.frames[2]), "short_span/warning");
+  EXPECT_NE(fit.frames[2].verdict.reasons()[0].text.find("span 50 %"),
+            std::string::npos)
+      << fit.frames[2].verdict.reasons()[0].text;
+  EXPECT_EQ(Codes(fit.frames[1]), "");
+  EXPECT_EQ(Codes(fit.frames[0]), "");
 }
 
 TEST(FrameVerdictTest, FailsAFrameZeroThatNeverMoved) {
