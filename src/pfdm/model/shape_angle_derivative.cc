@@ -5,6 +5,7 @@
 
 #include "pfdm/model/parameter_function.h"
 #include "pfdm/model/signed_power.h"
+#include "pfdm/model/superellipsoid.h"
 #include "pfdm/model/transmural.h"
 #include "pfdm/util/batch_trig.h"
 #include "pfdm/util/bessel.h"
@@ -184,15 +185,6 @@ ShapeAndAngleDerivatives Derivatives(const double* f, const double* df_du,
 }
 
 }  // namespace
-
-ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
-                                               const double* df_du,
-                                               const Angles<double>& angles,
-                                               bool unit_exponents, double w) {
-  const double tau = TwistOf(f, w);
-  return Derivatives(f, df_du, angles, {std::cos(tau), std::sin(tau)},
-                     unit_exponents, w);
-}
 
 ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
                                                const double* df_du, double u,

@@ -4,7 +4,6 @@
 #define PFDM_MODEL_SHAPE_ANGLE_DERIVATIVE_H_
 
 #include "Eigen/Core"
-#include "pfdm/model/superellipsoid.h"
 
 namespace pfdm {
 
@@ -15,21 +14,15 @@ struct ShapeAndAngleDerivatives {
 };
 
 // s = T_o(T_twist(T_b(e))) for the function values f at the material point
-// with the given angles, and its total derivatives in u and v when the
-// functions change along u at the rates df_du (the knot span's slopes of the
-// free functions, 0 for the others).  Matches ReferenceShape differentiated
-// in its angles with ceres::Jet (tested), at a fraction of the cost; on
-// surface w (transmural.h) off the mid-wall too.
-ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
-                                               const double* df_du,
-                                               const Angles<double>& angles,
-                                               bool unit_exponents,
-                                               double w = 0.0);
-
-// The same at the material point (u, v).  The sines and cosines of u, v and
-// the twist come from one SinCosMany batch (libmvec's four lanes, within its
-// 4 ulp): the closest-point search evaluates this at every step, where
-// three scalar sincos were an eighth of its time.
+// (u, v), and its total derivatives in u and v when the functions change
+// along u at the rates df_du (the knot span's slopes of the free functions,
+// 0 for the others).  Matches ReferenceShape differentiated in its angles
+// with ceres::Jet (tested), at a fraction of the cost; on surface w
+// (transmural.h) off the mid-wall too.  The sines and cosines of u, v and
+// the twist come from one SinCosMany batch (libmvec's four lanes, within
+// its 4 ulp), a bent model's four bend angles from another: the
+// closest-point search evaluates this at every step, where up to seven
+// scalar sincos were an eighth of its time.
 ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
                                                const double* df_du, double u,
                                                double v, bool unit_exponents,
