@@ -74,7 +74,8 @@ void DefEntryDicts(FitFrameClass& fit_frame) {
           "epicardial_volume_ml, with a solid's myocardial_volume_ml and "
           "lv_mass_g.  None where fit.json has null: the rotations, twists, "
           "torsion, shear angle and gcl_percent of a frame without tracked "
-          "points (contours).");
+          "points (contours), and the volumes and mass of a frame whose "
+          "data span too little of the axis (short_span).");
 }
 
 // ids, points, material, residuals and loss weights: a row per data

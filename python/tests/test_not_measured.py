@@ -48,3 +48,20 @@ def test_rotation_of_contours_is_none_and_of_tags_a_number():
     assert all(isinstance(r, float) for r in tags.regions[15]["rotation_deg"])
     assert contours.to_dict()["not_measured"]["frames"] == [0, 1, 2, 3, 4]
     assert "not_measured" not in tags.to_dict()
+
+
+def test_a_frame_that_lost_slices_has_no_volume_nor_ejection_fraction():
+    """Three short-axis slices: at end-systole the base has left the basal
+    one, and that frame's volume, the ESV and the ratio are None (NaN in the
+    DataFrame and the intervals); the other frames keep theirs."""
+    points, _ = pfdm.simulate("lv", sampling="sax-slices", slices=3)
+    result = pfdm.fit(points, surface="endo", uncertainty=True)
+    volumes = [frame.clinical["cavity_volume_ml"] for frame in result]
+    assert volumes[4] is None
+    assert all(isinstance(v, float) for v in volumes[:4])
+    ef = result.ejection_fraction
+    assert ef["ratio"] is None and ef["esv_ml"] is None
+    assert isinstance(ef["edv_ml"], float)
+    assert result.to_dict()["not_measured"]["short_span"]["frames"] == [4]
+    reasons = [r["code"] for r in result[4].stats["quality_reasons"]]
+    assert "short_span" in reasons

@@ -25,6 +25,22 @@ const char* const kHalfWidthColumns[10] = {
 
 namespace {
 
+// A number of fit.json, NaN where it is null (what the data cannot
+// determine).
+double NumberOrNaN(const nlohmann::json& value) {
+  return value.is_null() ? std::numeric_limits<double>::quiet_NaN()
+                         : value.get<double>();
+}
+
+// A CSV field: empty for NaN, as for every number that does not apply.
+std::string Field(double value) {
+  if (std::isnan(value)) return "";
+  std::ostringstream out;
+  out.precision(6);
+  out << value;
+  return out.str();
+}
+
 // Half the width of object[key + "_ci95"], NaN without one.
 double HalfWidth(const nlohmann::json& object, const std::string& key) {
   const auto it = object.find(key + "_ci95");
@@ -125,32 +141,32 @@ CaseSummary SummaryFromFitJson(const std::string& name,
       summary.max_rms_mm =
           std::max(summary.max_rms_mm, frame.at("rms_mm").get<double>());
     }
-    summary.edv_ml = ef.at("edv_ml").get<double>();
-    summary.esv_ml = ef.at("esv_ml").get<double>();
+    summary.edv_ml = NumberOrNaN(ef.at("edv_ml"));
+    summary.esv_ml = NumberOrNaN(ef.at("esv_ml"));
     summary.es_frame = ef.at("es_frame").get<int>();
-    summary.ejection_fraction = ef.at("ratio").get<double>();
+    summary.ejection_fraction = NumberOrNaN(ef.at("ratio"));
     const nlohmann::json& es = frames.at(summary.es_frame).at("clinical");
     const nlohmann::json& twist = es.at("net_twist_deg");
     summary.twist_measured = !twist.is_null();
     if (summary.twist_measured) summary.net_twist_deg = twist.get<double>();
     summary.longitudinal_shortening_percent =
-        es.at("longitudinal_shortening_percent").get<double>();
+        NumberOrNaN(es.at("longitudinal_shortening_percent"));
     summary.radial_contraction_percent =
-        es.at("radial_contraction_percent").get<double>();
+        NumberOrNaN(es.at("radial_contraction_percent"));
     summary.solid = model.value("wall", std::string()) == "solid";
     if (summary.solid) {
-      summary.lv_mass_g = frames.at(0).at("lv_mass_g").get<double>();
+      summary.lv_mass_g = NumberOrNaN(frames.at(0).at("lv_mass_g"));
       summary.wall_thickening_percent =
-          es.at("wall_thickening_percent").get<double>();
+          NumberOrNaN(es.at("wall_thickening_percent"));
     }
     ReadQuality(fit, &summary);
     ReadHalfWidths(fit, ef, &summary);
     if (fit.contains("strain")) {
       summary.has_strain = true;
       summary.peak_gcs_percent =
-          fit["strain"].at("peak_gcs_percent").get<double>();
+          NumberOrNaN(fit["strain"].at("peak_gcs_percent"));
       summary.peak_gls_percent =
-          fit["strain"].at("peak_gls_percent").get<double>();
+          NumberOrNaN(fit["strain"].at("peak_gls_percent"));
     }
   } catch (const nlohmann::json::exception& error) {
     throw InputError(where + ": not a pfdm fit.json: " + error.what());
@@ -178,19 +194,21 @@ std::string SummaryCsv(const std::vector<CaseSummary>& cases) {
     out << CsvField(c.name) << ',' << c.status << ',' << c.quality << ',';
     if (c.status == "done") {
       out << c.frames << ',' << c.max_rms_mm << ',' << c.volume_surface << ','
-          << c.edv_ml << ',' << c.esv_ml << ',' << c.es_frame << ',';
-      if (c.volume_surface == "cavity") out << c.ejection_fraction;
+          << Field(c.edv_ml) << ',' << Field(c.esv_ml) << ',' << c.es_frame
+          << ',';
+      if (c.volume_surface == "cavity") out << Field(c.ejection_fraction);
       out << ',';
       if (c.solid)
-        out << c.lv_mass_g << ',' << c.wall_thickening_percent;
+        out << Field(c.lv_mass_g) << ',' << Field(c.wall_thickening_percent);
       else
         out << ',';
       out << ',';
       if (c.twist_measured) out << c.net_twist_deg;
-      out << ',' << c.longitudinal_shortening_percent << ','
-          << c.radial_contraction_percent << ',';
+      out << ',' << Field(c.longitudinal_shortening_percent) << ','
+          << Field(c.radial_contraction_percent) << ',';
       if (c.has_strain) {
-        out << c.peak_gcs_percent << ',' << c.peak_gls_percent << ',';
+        out << Field(c.peak_gcs_percent) << ',' << Field(c.peak_gls_percent)
+            << ',';
       } else {
         out << ",,";
       }

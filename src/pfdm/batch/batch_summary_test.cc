@@ -114,6 +114,22 @@ TEST(BatchSummaryTest, TwistNotMeasuredIsAnEmptyColumn) {
   EXPECT_EQ(e.net_twist_deg, 12.5);
 }
 
+// A frame without a volume (its data span too little of the axis): null
+// ESV and ratio in fit.json are empty columns, not a failed case.
+TEST(BatchSummaryTest, NullVolumesAreEmptyColumns) {
+  std::string json = kFitJson;
+  for (const std::string number : {"\"ratio\": 0.6", "\"esv_ml\": 60.0"}) {
+    const std::string key = number.substr(0, number.find(':'));
+    json.replace(json.find(number), number.size(), key + ": null");
+  }
+  const CaseSummary c = SummaryFromFitJson("s", json, "s/fit.json");
+  EXPECT_TRUE(std::isnan(c.esv_ml));
+  EXPECT_TRUE(std::isnan(c.ejection_fraction));
+  EXPECT_EQ(c.edv_ml, 150.0);
+  EXPECT_EQ(SummaryCsv({c}).substr(SummaryCsv({c}).find('\n') + 1),
+            "s,done,,3,1.25,cavity,150,,1,,,,12.5,15,25,-18.5,-14.25,,\n");
+}
+
 // A solid's fit.json: the cavity's ejection fraction, the LV mass at ED
 // and the thickening at ES; a mid-wall surface's: no ejection fraction.
 TEST(BatchSummaryTest, NamesWhatTheVolumesEnclose) {

@@ -2,6 +2,7 @@
 // shardable (a Slurm array runs the same command with --shard i/n).
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
@@ -99,9 +100,9 @@ std::string RunCase(const BatchCase& c, const std::string& out,
   // A mid-wall or epicardial volume's fraction is no ejection fraction;
   // summary.csv leaves it empty too.
   char ef[48] = "n/a";
-  if (s.volume_surface == "cavity") {
+  if (s.volume_surface == "cavity" && !std::isnan(s.ejection_fraction)) {
     std::snprintf(ef, sizeof(ef), "%.1f %%", 100.0 * s.ejection_fraction);
-  } else {
+  } else if (s.volume_surface != "cavity") {
     std::snprintf(ef, sizeof(ef), "n/a (a %s surface)",
                   s.volume_surface.c_str());
   }

@@ -11,6 +11,7 @@
 #include "pfdm/io/segmentation_source.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/gnuplot.h"
+#include "pfdm/report/report_text.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/verdict.h"
 #include "pfdm/util/version.h"
@@ -59,10 +60,15 @@ int ReportQuality(const SequenceFit& fit, const FitAnalysis& analysis) {
 void ReportVolumes(const FitAnalysis& analysis) {
   const EjectionFraction& ef = analysis.ejection_fraction;
   const bool cavity = analysis.volume_surface == "cavity";
-  std::printf("%s volume: ED %.1f ml (frame %d), ES %.1f ml (frame %d)",
-              analysis.volume_surface.c_str(), ef.edv_ml, ef.ed_frame,
-              ef.esv_ml, ef.es_frame);
-  if (ef.es_frame == ef.ed_frame) {
+  std::printf("%s volume: ED %s (frame %d), ES %s (frame %d)",
+              analysis.volume_surface.c_str(),
+              WithUnit(ef.edv_ml, 1, " ml").c_str(), ef.ed_frame,
+              WithUnit(ef.esv_ml, 1, " ml").c_str(), ef.es_frame);
+  if (!Measured(ef.esv_ml) || !Measured(ef.edv_ml)) {
+    std::printf(
+        "; a frame's data span too little of the axis for its volume, so no "
+        "ejection fraction (fit.json's verdicts say which)\n");
+  } else if (ef.es_frame == ef.ed_frame) {
     std::printf("; no frame holds less than ED, so no ejection fraction\n");
   } else if (cavity) {
     std::printf(", ejection fraction %.2f\n", ef.ratio);

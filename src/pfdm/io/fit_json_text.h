@@ -27,7 +27,8 @@ inline constexpr char kEjectionDefinition[] =
     "(EDV - ESV) / EDV; ED is settings.ed_frame (--ed_frame, frame 0 unless "
     "given), ES the frame of least volume; the "
     "volumes are the frames' cavity_volume_ml, closed as cavity_closure "
-    "says.";
+    "says.  esv_ml and the ratio are null when a frame has no volume "
+    "(not_measured.short_span).";
 
 inline constexpr char kVolumeFractionDefinition[] =
     "(V_ED - V_ES) / V_ED of the volume the fitted surface encloses, which "

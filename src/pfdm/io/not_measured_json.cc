@@ -29,6 +29,25 @@ constexpr const char* kExtrapolatedDefinition =
     "fraction have no interval (--uncertainty on): their noise's would be "
     "about a cap the data never saw.";
 
+constexpr const char* kShortSpanDefinition =
+    "In the frames listed the data span under 75 % of frame 0's along the "
+    "long axis (the verdict's short_span: contours that lost a slice): "
+    "their walls beyond the data are the model's continuation, and unless "
+    "shown (--extrapolated) their volumes, mass and myocardial volume "
+    "change are null, and so are the ejection fraction's esv_ml and ratio "
+    "(end-systole may be such a frame).";
+
+// The frames whose volumes are left out (FitAnalysis::volume_measured);
+// null when there are none.
+json ShortSpan(const FitAnalysis& analysis) {
+  json frames = json::array();
+  for (size_t t = 0; t < analysis.volume_measured.size(); ++t) {
+    if (!analysis.volume_measured[t]) frames.push_back(t);
+  }
+  if (frames.empty()) return json();
+  return {{"frames", frames}, {"definition", kShortSpanDefinition}};
+}
+
 // The levels and the apical ring measured where frame 0 has no data
 // (FitAnalysis::level_extrapolated); null when there are none.
 json Extrapolated(const FitAnalysis& analysis) {
@@ -55,12 +74,16 @@ json NotMeasured(const FitAnalysis& analysis) {
     if (!analysis.rotation_measured[t]) frames.push_back(t);
   }
   const json extrapolated = Extrapolated(analysis);
-  if (frames.empty() && extrapolated.is_null()) return json();
+  const json short_span = ShortSpan(analysis);
+  if (frames.empty() && extrapolated.is_null() && short_span.is_null()) {
+    return json();
+  }
   json section;
   if (!frames.empty()) {
     section = {{"frames", frames}, {"definition", kNotMeasuredDefinition}};
   }
   if (!extrapolated.is_null()) section["extrapolated"] = extrapolated;
+  if (!short_span.is_null()) section["short_span"] = short_span;
   return section;
 }
 

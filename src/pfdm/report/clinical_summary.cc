@@ -232,13 +232,21 @@ EjectionFraction EjectionFractionOf(
   ef.edv_ml = summaries[ed_frame].volume_ml;
   ef.es_frame = ef.ed_frame;
   ef.esv_ml = ef.edv_ml;
+  bool every_volume = true;
   for (const ClinicalSummary& s : summaries) {
+    every_volume = every_volume && Measured(s.volume_ml);
     if (s.volume_ml < ef.esv_ml) {
       ef.es_frame = s.frame;
       ef.esv_ml = s.volume_ml;
     }
   }
-  if (ef.edv_ml > 0.0) ef.ratio = (ef.edv_ml - ef.esv_ml) / ef.edv_ml;
+  if (!every_volume) {
+    // The frame without a volume may be end-systole's: the least of the
+    // others would read a smaller ejection fraction than the heart's.
+    ef.esv_ml = ef.ratio = kNotMeasured;
+  } else if (ef.edv_ml > 0.0) {
+    ef.ratio = (ef.edv_ml - ef.esv_ml) / ef.edv_ml;
+  }
   return ef;
 }
 

@@ -109,7 +109,9 @@ struct ClinicalSummary {
 
 // (EDV - ESV) / EDV with end-diastole the frame given (--ed_frame, frame 0
 // unless said: the fit starts at ED, as tagged sequences do) and
-// end-systole the frame of least volume.
+// end-systole the frame of least volume.  When a frame has no volume
+// (kNotMeasured), ESV and the ratio have none either, and es_frame is the
+// least volume's of the frames that have one.
 struct EjectionFraction {
   int ed_frame = 0;
   int es_frame = 0;

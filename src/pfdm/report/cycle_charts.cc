@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "pfdm/report/number_sd.h"
+#include "pfdm/report/report_text.h"
 #include "pfdm/report/segment_curves.h"
 #include "pfdm/report/svg_chart.h"
 
@@ -90,8 +91,9 @@ std::string VolumeCharts(const FitAnalysis& analysis, const Axis& axis) {
   // Only the cavity's volumes give an ejection fraction.
   char title[96];
   if (analysis.volume_surface == "cavity") {
-    std::snprintf(title, sizeof(title), "cavity volume, EF %.1f %%",
-                  100.0 * analysis.ejection_fraction.ratio);
+    std::snprintf(
+        title, sizeof(title), "cavity volume, EF %s",
+        WithUnit(100.0 * analysis.ejection_fraction.ratio, 1, " %").c_str());
   } else {
     std::snprintf(title, sizeof(title), "%s volume (not the cavity)",
                   analysis.volume_surface.c_str());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/local_field_noise.h"
 #include "pfdm/report/number_uncertainty.h"
@@ -119,6 +120,22 @@ void LeaveOutCapIntervals(FitAnalysis* analysis) {
       sd.ejection_fraction.esv_ml = kNotMeasured;
 }
 
+// kNotMeasured in the volumes and the mass of each frame whose data span
+// much less of the axis than frame 0's (its verdict's kShortSpanCode):
+// beyond the data its walls are the model's continuation, and on the LV
+// phantom's three short-axis slices end-systole, which lost the basal one,
+// read 137 ml against 83 (ejection fraction 0.18 against 0.59).
+void LeaveOutShortSpanVolumes(const SequenceFit& fit, FitAnalysis* analysis) {
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    if (!fit.frames[t].verdict.Has(kShortSpanCode)) continue;
+    analysis->volume_measured[t] = false;
+    ClinicalSummary& c = analysis->clinical[t];
+    c.volume_ml = c.myocardial_volume_ml = c.lv_mass_g = kNotMeasured;
+    c.material_myocardium_ml = c.myocardial_volume_change_percent =
+        kNotMeasured;
+  }
+}
+
 }  // namespace
 
 RingSpan ClinicalRingSpan(const SequenceFit& fit, bool show_extrapolated) {
@@ -165,6 +182,8 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
       }
     }
   }
+  analysis.volume_measured.assign(fit.frames.size(), true);
+  if (!show_extrapolated) LeaveOutShortSpanVolumes(fit, &analysis);
   analysis.ejection_fraction = EjectionFractionOf(analysis.clinical, ed);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.verdicts.push_back(fit.frames[t].verdict);

@@ -42,6 +42,11 @@ struct FitAnalysis {
   // gcl are kNotMeasured: contours show no turn about the axis, and the
   // circumferential-longitudinal shear is a twist's gradient.
   std::vector<bool> rotation_measured;
+  // Per frame, false where its data span much less of the axis than frame
+  // 0's (the fit's short_span warning; unless --extrapolated): its volumes,
+  // mass and myocardial volume change are kNotMeasured, and so are the
+  // ejection fraction's ESV and ratio.
+  std::vector<bool> volume_measured;
   // Without data near the apex (SequenceFit::apex_in_data), what lies
   // where frame 0 has no data is the model's continuation of the data
   // above: a level (kBasal, kMid, kApical) whose middle height lies below

@@ -1,6 +1,7 @@
 #include "pfdm/report/fit_analysis.h"
 
 #include "gtest/gtest.h"
+#include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/model/model_surface.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/testing/truth_as_fit.h"
@@ -179,6 +180,53 @@ TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
                      CavityVolumeMl(phantom.truth[t], &planes[t]));
     EXPECT_LT(analysis.clinical[t].volume_ml, CavityVolumeMl(phantom.truth[t]));
   }
+}
+
+// A frame whose data span too little of the axis (short_span) has no
+// volume, and then the ejection fraction has no ESV nor ratio, whichever
+// frame it is: end-systole may be that frame (the LV phantom's three
+// short-axis slices lost the basal one at ES).  --extrapolated shows them.
+TEST(FitAnalysisTest, AFrameSpanningTooLittleOfTheAxisHasNoVolume) {
+  PhantomOptions options;
+  options.num_points = 1;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  const FitAnalysis full = AnalyzeFit(fit);
+  ASSERT_EQ(full.ejection_fraction.es_frame, 4);
+  EXPECT_GT(full.ejection_fraction.ratio, 0.2);
+  EXPECT_EQ(full.volume_measured, std::vector<bool>(5, true));
+
+  fit.frames[4].verdict.Warn(kShortSpanCode, "the data span 53 %");
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  EXPECT_EQ(analysis.volume_measured,
+            std::vector<bool>({true, true, true, true, false}));
+  EXPECT_FALSE(Measured(analysis.clinical[4].volume_ml));
+  EXPECT_FALSE(Measured(analysis.clinical[4].lv_mass_g));
+  for (int t : {0, 1, 2, 3}) {
+    EXPECT_EQ(analysis.clinical[t].volume_ml, full.clinical[t].volume_ml);
+  }
+  // The rest of the frame is as measured.
+  EXPECT_EQ(analysis.clinical[4].radial_contraction_percent,
+            full.clinical[4].radial_contraction_percent);
+  const EjectionFraction& ef = analysis.ejection_fraction;
+  EXPECT_EQ(ef.es_frame, 3);  // The least of the volumes there are.
+  EXPECT_EQ(ef.edv_ml, full.ejection_fraction.edv_ml);
+  EXPECT_FALSE(Measured(ef.esv_ml));
+  EXPECT_FALSE(Measured(ef.ratio));
+  // A missing volume is no implausible one.
+  EXPECT_FALSE(analysis.verdicts[4].Has("volume_range"));
+
+  // A frame before end-systole: the ES frame stays, its ratio goes.
+  fit.frames[4].verdict = Verdict();
+  fit.frames[2].verdict.Warn(kShortSpanCode, "the data span 53 %");
+  const FitAnalysis middle = AnalyzeFit(fit);
+  EXPECT_EQ(middle.ejection_fraction.es_frame, 4);
+  EXPECT_FALSE(Measured(middle.ejection_fraction.ratio));
+
+  const FitAnalysis shown =
+      AnalyzeFit(fit, {}, RegionLayout(), /*show_extrapolated=*/true);
+  EXPECT_EQ(shown.volume_measured, std::vector<bool>(5, true));
+  EXPECT_EQ(shown.ejection_fraction.ratio, full.ejection_fraction.ratio);
 }
 
 // The ring means go where frame 0 has data when it does not reach the apex,

@@ -58,6 +58,21 @@ std::string UntrackedNote(const FitAnalysis& analysis) {
   return h.str();
 }
 
+// Where frames have no volume (FitAnalysis::volume_measured): ES is the
+// least of the others', and which frames and why; "" otherwise.
+std::string ShortSpanNote(const FitAnalysis& analysis) {
+  std::ostringstream frames;
+  int count = 0;
+  for (size_t t = 0; t < analysis.volume_measured.size(); ++t) {
+    if (!analysis.volume_measured[t]) frames << (count++ ? ", " : "") << t;
+  }
+  if (count == 0) return "";
+  return " of those with one (" +
+         std::string(count == 1 ? "frame " : "frames ") + frames.str() +
+         " spanning too little of the axis for a volume, so ESV and the "
+         "ejection fraction are n/a)";
+}
+
 constexpr const char* kStyle =
     "body{font-family:sans-serif;margin:24px;color:#222;max-width:1250px}"
     "h1{font-size:22px}h2{font-size:18px;margin-top:28px}"
@@ -85,7 +100,7 @@ std::string PageHead(const PointSequence& points, const SequenceFit& fit,
     << EscapeMarkup(fit.config.name) << "</code> with " << fit.config.num_knots
     << " knots from apex to base. End-diastole (ED) is frame " << ef.ed_frame
     << ", end-systole (ES) the frame of least " << volume_name << ", frame "
-    << ef.es_frame << ". Wall: "
+    << ef.es_frame << ShortSpanNote(analysis) << ". Wall: "
     << (fit.config.Solid() ? "a solid from endocardium to epicardium"
                            : "one surface")
     << " (" << EscapeMarkup(fit.wall_reason) << ").</p>\n";

@@ -23,12 +23,12 @@ std::string VolumeCard(const FitAnalysis& analysis) {
   if (analysis.volume_surface == "cavity") {
     h << "<div>ejection fraction<b>" << Fixed(100 * ef.ratio, 1)
       << (with_sd ? PlusMinus(100 * sd.ratio, 1, Cal(analysis, "ratio")) : "")
-      << " %</b>"
+      << (Measured(ef.ratio) ? " %" : "") << "</b>"
       << "EDV " << Fixed(ef.edv_ml, 1)
       << (with_sd ? PlusMinus(sd.edv_ml, 1, Cal(analysis, "edv_ml")) : "")
       << " ml, ESV " << Fixed(ef.esv_ml, 1)
       << (with_sd ? PlusMinus(sd.esv_ml, 1, Cal(analysis, "esv_ml")) : "")
-      << " ml</div>";
+      << (Measured(ef.esv_ml) ? " ml" : "") << "</div>";
   } else {
     h << "<div>" << VolumeName(analysis) << "<b>" << Fixed(ef.edv_ml, 1)
       << (with_sd ? PlusMinus(sd.edv_ml, 1, Cal(analysis, "edv_ml")) : "")

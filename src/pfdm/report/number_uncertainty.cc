@@ -238,7 +238,7 @@ EjectionFraction EjectionSd(const FitAnalysis& analysis, const NumberSd& sd) {
   out.edv_ml = sd.clinical[ef.ed_frame].volume_ml;
   out.esv_ml = sd.clinical[ef.es_frame].volume_ml;
   out.ratio = kNotMeasured;
-  if (ef.edv_ml > 0.0) {
+  if (Measured(ef.ratio) && ef.edv_ml > 0.0) {
     const double d_edv = ef.esv_ml / (ef.edv_ml * ef.edv_ml);
     const double d_esv = -1.0 / ef.edv_ml;
     out.ratio = ef.es_frame == ef.ed_frame

@@ -15,6 +15,7 @@ std::string Format(const char* format, double a, double b = 0.0, double c = 0.0,
 
 void JudgeVolume(const ClinicalSummary& c, const std::string& surface,
                  Verdict* verdict) {
+  if (!Measured(c.volume_ml)) return;
   if (c.volume_ml >= kMinVolumeMl && c.volume_ml <= kMaxVolumeMl) return;
   verdict->Fail("volume_range",
                 surface + Format(" volume %.3g ml is outside %g-%g ml (are the "
@@ -35,7 +36,10 @@ void JudgeMass(const ClinicalSummary& c, Verdict* verdict) {
 
 void JudgeMyocardium(const ClinicalSummary& first, const ClinicalSummary& c,
                      Verdict* verdict) {
-  if (!c.solid || !(first.myocardial_volume_ml > 0.0)) return;
+  if (!c.solid || !(first.myocardial_volume_ml > 0.0) ||
+      !Measured(c.myocardial_volume_ml)) {
+    return;
+  }
   const double change = c.myocardial_volume_ml / first.myocardial_volume_ml - 1;
   if (std::abs(change) <= kMyocardiumWarn) return;
   const std::string text = Format(

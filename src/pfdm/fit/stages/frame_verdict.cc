@@ -251,7 +251,7 @@ void JudgeSpan(const ModelConfig& config, const FrameFit& first,
   if (reference <= 0.0) return;
   const double share = AxialSpan(grid, frame.material) / reference;
   if (share >= kMinSpanShare) return;
-  verdict->Warn("short_span",
+  verdict->Warn(kShortSpanCode,
                 Format("the data span %.0f %% of frame 0's along the axis "
                        "(under %.0f %%): the rings beyond them and the "
                        "volume are the model's continuation",

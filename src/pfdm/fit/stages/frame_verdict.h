@@ -53,6 +53,8 @@ constexpr int kMinRingPoints = 3;
 // A later frame's data span along the axis, as a share of frame 0's: 9
 // short-axis slices that lose the basal one keep 7/8.
 constexpr double kMinSpanShare = 0.75;
+// The code of that warning: the analysis leaves such a frame's volumes out.
+inline constexpr char kShortSpanCode[] = "short_span";
 constexpr double kFlatDataRatio = 0.02;
 
 // The RMS (mm) of the material points' move from `before` to `after`,
