@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pfdm/solvers/normal_matrix.h"
+
 namespace pfdm {
 namespace {
 
@@ -33,18 +35,6 @@ Eigen::VectorXd GaussNewtonProduct(const ceres::CRSMatrix& j,
 }
 
 }  // namespace
-
-Eigen::MatrixXd GaussNewtonMatrix(const ceres::CRSMatrix& j) {
-  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(j.num_cols, j.num_cols);
-  for (int r = 0; r < j.num_rows; ++r) {
-    for (int a = j.rows[r]; a < j.rows[r + 1]; ++a) {
-      for (int b = j.rows[r]; b < j.rows[r + 1]; ++b) {
-        h(j.cols[a], j.cols[b]) += j.values[a] * j.values[b];
-      }
-    }
-  }
-  return h;
-}
 
 // The model damping is J^T J of the start, floored on its diagonal: the
 // data's block is the paper's integral of L^T L over the model's material,

@@ -64,9 +64,6 @@ class DampingMatrix {
   mutable std::map<std::vector<bool>, Eigen::LLT<Eigen::MatrixXd>> reduced_;
 };
 
-// J^T J from the CRS rows.
-Eigen::MatrixXd GaussNewtonMatrix(const ceres::CRSMatrix& j);
-
 // The coordinates of blocks without a manifold that sit on a bound the
 // force g pushes them through (-g points outward).
 std::vector<bool> HeldAtBounds(const ceres::Problem& problem,

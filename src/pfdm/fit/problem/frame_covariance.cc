@@ -7,9 +7,9 @@
 
 #include "Eigen/Cholesky"
 #include "Eigen/Eigenvalues"
-#include "Eigen/SparseCore"
 #include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/model/parameter_function.h"
+#include "pfdm/solvers/normal_matrix.h"
 #include "pfdm/util/stopwatch.h"
 
 namespace pfdm {
@@ -157,13 +157,8 @@ bool NormalMatrices(ceres::Problem* problem,
   if (!problem->Evaluate(options, nullptr, nullptr, nullptr, &jacobian)) {
     return false;
   }
-  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> j(
-      jacobian.num_rows, jacobian.num_cols,
-      static_cast<int>(jacobian.values.size()), jacobian.rows.data(),
-      jacobian.cols.data(), jacobian.values.data());
-  *normal = Eigen::SparseMatrix<double>(j.transpose() * j).toDense();
-  const auto data = j.topRows(std::min(data_rows, jacobian.num_rows));
-  *data_normal = Eigen::SparseMatrix<double>(data.transpose() * data).toDense();
+  *normal = GaussNewtonMatrix(jacobian);
+  *data_normal = GaussNewtonMatrix(jacobian, data_rows);
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include "Eigen/SparseCore"
 #include "ceres/crs_matrix.h"
 #include "ceres/manifold.h"
+#include "pfdm/solvers/normal_matrix.h"
 
 namespace pfdm {
 namespace {
@@ -34,12 +35,8 @@ bool SolveStep(double radius, ceres::Problem* problem,
   if (!problem->Evaluate(options, &step->cost, nullptr, &gradient, &jacobian)) {
     return false;
   }
-  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor>> j(
-      jacobian.num_rows, jacobian.num_cols,
-      static_cast<int>(jacobian.values.size()), jacobian.rows.data(),
-      jacobian.cols.data(), jacobian.values.data());
-  Eigen::MatrixXd normal =
-      Eigen::SparseMatrix<double>(j.transpose() * j).toDense();
+  const auto j = SparseView(jacobian);
+  Eigen::MatrixXd normal = GaussNewtonMatrix(jacobian);
   for (int i = 0; i < normal.rows(); ++i) {
     const double diagonal = normal(i, i);
     const double root = 1.0 + std::sqrt(std::max(0.0, diagonal));
