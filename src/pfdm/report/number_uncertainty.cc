@@ -236,7 +236,10 @@ EjectionFraction EjectionSd(const FitAnalysis& analysis, const NumberSd& sd) {
   const EjectionFraction& ef = analysis.ejection_fraction;
   EjectionFraction out = ef;
   out.edv_ml = sd.clinical[ef.ed_frame].volume_ml;
-  out.esv_ml = sd.clinical[ef.es_frame].volume_ml;
+  // No ESV (a frame without a volume, EjectionFractionOf): none to have an
+  // sd, whatever the least of the other volumes' is.
+  out.esv_ml =
+      Measured(ef.esv_ml) ? sd.clinical[ef.es_frame].volume_ml : kNotMeasured;
   out.ratio = kNotMeasured;
   if (Measured(ef.ratio) && ef.edv_ml > 0.0) {
     const double d_edv = ef.esv_ml / (ef.edv_ml * ef.edv_ml);

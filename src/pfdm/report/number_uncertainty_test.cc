@@ -8,6 +8,7 @@
 #include "Eigen/Eigenvalues"
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/fitter.h"
+#include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/phantom/lv_phantom.h"
 
 namespace pfdm {
@@ -283,6 +284,23 @@ TEST(NumberUncertaintyTest, NumbersWithTheUnseenApexCapHaveNoSd) {
   EXPECT_GT(seen.sd.ejection_fraction.ratio, 0.0);
   EXPECT_GT(unseen.sd.clinical[1].radial_contraction_percent, 0.0);
   EXPECT_GT(unseen.sd.strain[1].gcs_percent, 0.0);
+}
+
+// A frame without a volume (short_span): its volume, the ESV and the
+// ratio have no sd; ED's volume keeps its own, and the other numbers of the
+// frame theirs.
+TEST(NumberUncertaintyTest, AFrameWithoutAVolumeHasNoVolumeSd) {
+  SequenceFit fit = LvFit().fit;
+  fit.frames[1].verdict.Warn(kShortSpanCode, "the data span 53 %");
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  ASSERT_TRUE(analysis.sd.computed);
+  EXPECT_FALSE(Measured(analysis.sd.clinical[1].volume_ml));
+  EXPECT_TRUE(Measured(analysis.sd.clinical[0].volume_ml));
+  EXPECT_GT(analysis.sd.clinical[1].radial_contraction_percent, 0.0);
+  const EjectionFraction& sd = analysis.sd.ejection_fraction;
+  EXPECT_FALSE(Measured(sd.esv_ml));
+  EXPECT_FALSE(Measured(sd.ratio));
+  EXPECT_EQ(sd.edv_ml, analysis.sd.clinical[0].volume_ml);
 }
 
 TEST(NumberUncertaintyTest, WithoutCovariancesNothingIsComputed) {
