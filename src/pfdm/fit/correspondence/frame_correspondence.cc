@@ -169,6 +169,12 @@ void UpdateClosest(const Model& model,
                    std::vector<Eigen::Vector3d>* normals,
                    std::vector<Eigen::Vector3d>* found,
                    const DepthRanking& ranking, SurfaceGrid* grid) {
+  // A frame of tracked tags alone has nothing to search, and its grid need
+  // not follow the model: a third of its tracked frame at 2,000 tags.
+  if (which.empty()) {
+    found->clear();
+    return;
+  }
   if (ranking.hold && warm && model.config.Solid()) {
     const Surfaces held = HeldDepths(layer_w, assign_depth, which, *material);
     DepthRanking unranked = ranking;
