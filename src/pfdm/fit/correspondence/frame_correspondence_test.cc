@@ -65,6 +65,29 @@ TEST(FrameCorrespondenceTest, FindsTheListedPointsOnTheMidwall) {
   EXPECT_EQ(normals[3], Eigen::Vector3d::Zero());
 }
 
+// With no point to search (a frame of tracked tags alone) nothing changes,
+// the grid included: it follows the model only for a search.
+TEST(FrameCorrespondenceTest, NoPointsLeaveTheGridWhereItWas) {
+  const Model model = TestSpheroid(9);
+  Model moved = model;
+  moved.state.center[0] += 20.0;
+  const std::vector<Eigen::Vector3d> points = {moved.WorldPoint(0.3, 1.0)};
+  std::vector<MaterialPoint> material(1);
+  std::vector<Eigen::Vector3d> normals(1, Eigen::Vector3d::Zero());
+  std::vector<Eigen::Vector3d> found = {Eigen::Vector3d::Ones()};
+  SurfaceGrid grid(model);
+  ASSERT_EQ(grid.builds(), 1);
+  UpdateClosest(moved, points, {}, 1, {0.0}, {false}, false, &material,
+                &normals, &found, DepthRanking(), &grid);
+  EXPECT_EQ(grid.builds(), 1);
+  EXPECT_TRUE(found.empty());
+  EXPECT_EQ(material[0].u, 0.0);
+  UpdateClosest(moved, points, {0}, 1, {0.0}, {false}, false, &material,
+                &normals, &found, DepthRanking(), &grid);
+  EXPECT_EQ(grid.builds(), 2);  // 20 mm of drift.
+  EXPECT_NEAR(material[0].u, 0.3, kFoundAngle);
+}
+
 // In a solid, a contour point is sought on its own wall: an epicardial
 // point 5 mm outside the mid-wall is on w = +1, at distance 0.
 TEST(FrameCorrespondenceTest, FindsContoursOnTheirWall) {
