@@ -32,5 +32,27 @@ TEST(NotMeasuredJsonTest, ListsWhatIsNullAndWhy) {
             std::string::npos);
 }
 
+// Frames without a volume (FitAnalysis::volume_measured) are listed under
+// short_span, beside the rest.
+TEST(NotMeasuredJsonTest, ListsTheFramesWithoutAVolume) {
+  FitAnalysis analysis;
+  analysis.rotation_measured = {true, true, true};
+  analysis.volume_measured = {true, true, true};
+  EXPECT_TRUE(NotMeasured(analysis).is_null());
+
+  analysis.volume_measured = {true, true, false};
+  nlohmann::ordered_json section = NotMeasured(analysis);
+  EXPECT_FALSE(section.contains("frames"));
+  EXPECT_EQ(section["short_span"]["frames"], nlohmann::ordered_json({2}));
+  EXPECT_NE(section["short_span"]["definition"].get<std::string>().find(
+                "esv_ml and ratio"),
+            std::string::npos);
+
+  analysis.rotation_measured = {false, false, false};
+  section = NotMeasured(analysis);
+  EXPECT_EQ(section["frames"], nlohmann::ordered_json({0, 1, 2}));
+  EXPECT_EQ(section["short_span"]["frames"], nlohmann::ordered_json({2}));
+}
+
 }  // namespace
 }  // namespace pfdm

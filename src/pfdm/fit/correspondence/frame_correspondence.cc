@@ -170,7 +170,8 @@ void UpdateClosest(const Model& model,
                    std::vector<Eigen::Vector3d>* found,
                    const DepthRanking& ranking, SurfaceGrid* grid) {
   // A frame of tracked tags alone has nothing to search, and its grid need
-  // not follow the model: a third of its tracked frame at 2,000 tags.
+  // not follow the model: 7 % of a tracked frame's instructions at 2,000
+  // tags.
   if (which.empty()) {
     found->clear();
     return;
