@@ -131,7 +131,9 @@ void DefFitJson(FitClass& fit) {
           "dict: fit.json's ejection_fraction (ratio, ed_frame, es_frame, "
           "edv_ml, esv_ml, cavity_closure); None when the fitted surface "
           "is not the cavity's (volume_surface), whose volume fraction is "
-          "then fit.json's <volume_surface>_volume_fraction.")
+          "then fit.json's <volume_surface>_volume_fraction.  Its ratio and "
+          "esv_ml are None when a frame has no volume (its data span too "
+          "little of the axis: to_dict()['not_measured']['short_span']).")
       .def_property_readonly(
           "volume_surface",
           [](const FitResult& r) { return r.analysis.volume_surface; },
@@ -146,9 +148,9 @@ void DefFitJson(FitClass& fit) {
           "'ci95'}} per frame, 'segments' the same per (frame, segment), "
           "'ejection_fraction' of (ratio, edv_ml, esv_ml), 'data' the "
           "kind of data fitted ('midwall tags', 'wall tags', 'wall "
-          "contours' or 'other') and 'calibrated' the names whose intervals held "
-          "the truth in 90-98 % of noise draws on that kind (the others: "
-          "lower bounds); None without.")
+          "contours' or 'other') and 'calibrated' the names whose "
+          "intervals held the truth in 90-98 % of noise draws on that kind "
+          "(the others: lower bounds); None without.")
       .def_property_readonly(
           "dyssynchrony",
           [](const FitResult& r) { return FitJsonMember(r, "dyssynchrony"); },
