@@ -71,16 +71,14 @@ void ReadHalfWidths(const nlohmann::json& fit, const nlohmann::json& ef,
 
 // ",hw,hw,..." for the case (empty fields where it has none).
 std::string HalfWidthFields(const CaseSummary& c) {
-  std::ostringstream out;
-  out.precision(6);
+  std::string out;
   for (size_t i = 0; i < std::size(kHalfWidthColumns); ++i) {
-    out << ',';
-    if (i < c.half_widths.size() && !std::isnan(c.half_widths[i])) {
-      if (i == 2 && c.volume_surface != "cavity") continue;
-      out << c.half_widths[i];
+    out += ',';
+    if (i < c.half_widths.size() && (i != 2 || c.volume_surface == "cavity")) {
+      out += Field(c.half_widths[i]);
     }
   }
-  return out.str();
+  return out;
 }
 
 std::string CsvField(const std::string& text) {

@@ -97,6 +97,8 @@ Graded Plus(const Graded& a, const Graded& b) {
   return {a.value + b.value, a.d_u + b.d_u, a.d_v + b.d_v};
 }
 
+// Tau on surface w (TwistAt), or its slope when f holds the slopes; on the
+// mid-wall f's own entry, exactly.
 double TwistOf(const double* f, double w) {
   return w == 0.0 ? f[kTau] : TwistAt(f, w);
 }
@@ -168,7 +170,7 @@ ShapeAndAngleDerivatives Derivatives(const double* f, const double* df_du,
                      e3.d_v + bend1.d_v + bend2.d_v};
   // Twist by the surface's tau about axis 3, then the offsets.
   const double c = twist.cos, s = twist.sin;
-  const double dtau = w == 0.0 ? df_du[kTau] : TwistAt(df_du, w);
+  const double dtau = TwistOf(df_du, w);
   ShapeAndAngleDerivatives out;
   out.shape = Eigen::Vector3d(c * e1.value - s * e2.value + f[kE1o],
                               s * e1.value + c * e2.value + f[kE2o],

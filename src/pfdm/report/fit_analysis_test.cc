@@ -9,10 +9,17 @@
 namespace pfdm {
 namespace {
 
-TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
+// The project's phantom with one tag: the analysis measures its truth's
+// models (TruthAsFit), which the points do not enter.
+Phantom OnePointPhantom(int num_frames = 5) {
   PhantomOptions options;
   options.num_points = 1;
-  const Phantom phantom = MakePhantom(options);
+  options.num_frames = num_frames;
+  return MakePhantom(options);
+}
+
+TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
+  const Phantom phantom = OnePointPhantom();
   const FitAnalysis analysis = AnalyzeFit(TruthAsFit(phantom));
   ASSERT_EQ(analysis.clinical.size(), 5u);
   EXPECT_TRUE(analysis.base_planes.empty());
@@ -38,10 +45,7 @@ TEST(FitAnalysisTest, EveryFrameIsSummarizedAgainstFrameZero) {
 // angle, regional rotation or Ecl (kNotMeasured); its contraction, strain
 // and volume are as measured.  Frame 0 without them takes every frame's.
 TEST(FitAnalysisTest, FramesWithoutTrackedPointsHaveNoRotation) {
-  PhantomOptions options;
-  options.num_points = 1;
-  options.num_frames = 3;
-  const Phantom phantom = MakePhantom(options);
+  const Phantom phantom = OnePointPhantom(3);
   SequenceFit fit = TruthAsFit(phantom);
   const FitAnalysis tracked = AnalyzeFit(fit);
   EXPECT_EQ(tracked.rotation_measured, std::vector<bool>(3, true));
@@ -82,10 +86,7 @@ TEST(FitAnalysisTest, FramesWithoutTrackedPointsHaveNoRotation) {
 // ring (at 0.2) lie below them, the mid level's middle (0.5) does not.
 // What lies there is null unless shown; the rest is as measured.
 TEST(FitAnalysisTest, WhatLiesBelowTheDataIsNotMeasuredUnlessShown) {
-  PhantomOptions options;
-  options.num_points = 1;
-  options.num_frames = 3;
-  SequenceFit fit = TruthAsFit(MakePhantom(options));
+  SequenceFit fit = TruthAsFit(OnePointPhantom(3));
   const FitAnalysis full = AnalyzeFit(fit);
   EXPECT_EQ(full.level_extrapolated, (std::array<bool, 4>{}));
   fit.apex_in_data = false;
@@ -137,9 +138,7 @@ TEST(FitAnalysisTest, WhatLiesBelowTheDataIsNotMeasuredUnlessShown) {
 // numbers are not measured, its area kept; the apical level's strain and
 // the global strain still take the model's cap in, as they did.
 TEST(FitAnalysisTest, ApexCapIsNotMeasuredWithoutDataNearTheApex) {
-  PhantomOptions options;
-  options.num_points = 1;
-  const Phantom phantom = MakePhantom(options);
+  const Phantom phantom = OnePointPhantom();
   SequenceFit fit = TruthAsFit(phantom);
   const FitAnalysis seen = AnalyzeFit(fit);
   fit.apex_in_data = false;
@@ -163,9 +162,7 @@ TEST(FitAnalysisTest, ApexCapIsNotMeasuredWithoutDataNearTheApex) {
 }
 
 TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
-  PhantomOptions options;
-  options.num_points = 1;
-  const Phantom phantom = MakePhantom(options);
+  const Phantom phantom = OnePointPhantom();
   // A plane across the axis 10 mm below each frame's centre.
   std::vector<BasePlane> planes;
   for (const Model& model : phantom.truth) {
@@ -187,9 +184,7 @@ TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
 // frame it is: end-systole may be that frame (the LV phantom's three
 // short-axis slices lost the basal one at ES).  --extrapolated shows them.
 TEST(FitAnalysisTest, AFrameSpanningTooLittleOfTheAxisHasNoVolume) {
-  PhantomOptions options;
-  options.num_points = 1;
-  const Phantom phantom = MakePhantom(options);
+  const Phantom phantom = OnePointPhantom();
   SequenceFit fit = TruthAsFit(phantom);
   const FitAnalysis full = AnalyzeFit(fit);
   ASSERT_EQ(full.ejection_fraction.es_frame, 4);
