@@ -11,7 +11,10 @@
 // docs/gauge.md "The profile across the wall"), with the squeeze (a cubic
 // depth) and its noise taken out: thickening 2.4 points off at worst
 // (prolate, designed law, noise-free, ES: 41.7 against 44.1), endocardium
-// 1.8 (prolate, incompressible: 27.0 against 28.8), epicardium 0.9; before,
+// 1.8 (prolate, incompressible: 27.0 against 28.8), epicardium 0.9.  That
+// is the default seed's: on the prolate segment with 0.5 mm of noise, seeds
+// 1-8 read thickening rms 2.6 points off, worst 5.0 (designed law) and 4.6
+// (incompressible) (docs/performance.md, twenty-first session).  Before,
 // with a quadratic depth, thickening read up to 3.9 points under and the
 // endocardium 2.2.
 //
