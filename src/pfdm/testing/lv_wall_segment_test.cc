@@ -27,6 +27,7 @@ constexpr double kThickeningPoints = 3.0;
 constexpr double kEndoPoints = 2.0;
 constexpr double kEpiPoints = 2.0;
 constexpr double kMyocardiumPercent = 5.0;
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -137,6 +138,54 @@ INSTANTIATE_TEST_SUITE_P(
         Case{LvGeometry::kProlate, LvThickeningLaw::kDesigned, 0.5},
         Case{LvGeometry::kProlate, LvThickeningLaw::kIncompressible, 0.0},
         Case{LvGeometry::kProlate, LvThickeningLaw::kIncompressible, 0.5}));
+
+// One seed's thickening within 3 points says little of the next: over
+// eight noise draws of the prolate segment (0.5 mm, 1,500 tags, frames 1
+// and 2 against the truth) each law's error is measured as a spread.
+// Measured: mean +0.14 and +0.21 points, rms 2.59 and 2.64, worst 4.97
+// and 4.57 (designed, incompressible).  A change that made frame 0's
+// held depths hang on its path (a Gauss-Newton step a round; 2026-12-04)
+// read rms 4.0-4.5 and worst 11-12.
+class LvWallSegmentSeedsTest : public testing::TestWithParam<LvThickeningLaw> {
+};
+
+TEST_P(LvWallSegmentSeedsTest, ThickeningOverEightNoiseDraws) {
+  double sum = 0.0, sum_squares = 0.0, worst = 0.0;
+  int count = 0;
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    LvPhantomOptions options;
+    options.tags = LvTagLayer::kWall;
+    options.region = LvRegion::kMidventricular;
+    options.law = GetParam();
+    options.noise_mm = 0.5;
+    options.num_frames = 3;
+    options.num_tags = 1500;
+    options.seed = seed;
+    const LvPhantom phantom = MakeLvPhantom(options);
+    const SequenceFit fit =
+        FitSequence(phantom.points, ModelConfig::Paper(17), FitOptions());
+    const FitAnalysis analysis = AnalyzeFit(fit);
+    for (size_t t = 1; t < fit.frames.size(); ++t) {
+      const double error =
+          analysis.clinical[t].wall_thickening_percent -
+          SegmentMean(phantom.truth[t].wall_thickening_percent);
+      sum += error;
+      sum_squares += error * error;
+      worst = std::max(worst, std::abs(error));
+      ++count;
+    }
+  }
+  const double rms = std::sqrt(sum_squares / count);
+  std::printf("%s: thickening mean %+.2f, rms %.2f, worst %.2f points\n",
+              LvThickeningLawName(GetParam()).c_str(), sum / count, rms, worst);
+  EXPECT_LT(std::abs(sum / count), 1.0);
+  EXPECT_LT(rms, 3.0);
+  EXPECT_LT(worst, 6.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Laws, LvWallSegmentSeedsTest,
+                         testing::Values(LvThickeningLaw::kDesigned,
+                                         LvThickeningLaw::kIncompressible));
 
 }  // namespace
 }  // namespace pfdm
