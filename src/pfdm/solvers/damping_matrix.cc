@@ -18,22 +18,6 @@ std::vector<double> AsVector(const Eigen::VectorXd& v) {
   return std::vector<double>(v.data(), v.data() + v.size());
 }
 
-// J^T J x by the CRS rows, without forming J^T J.
-Eigen::VectorXd GaussNewtonProduct(const ceres::CRSMatrix& j,
-                                   const Eigen::VectorXd& x) {
-  Eigen::VectorXd z = Eigen::VectorXd::Zero(j.num_cols);
-  for (int r = 0; r < j.num_rows; ++r) {
-    double y = 0.0;
-    for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
-      y += j.values[k] * x[j.cols[k]];
-    }
-    for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
-      z[j.cols[k]] += j.values[k] * y;
-    }
-  }
-  return z;
-}
-
 }  // namespace
 
 // The model damping is J^T J of the start, floored on its diagonal: the

@@ -20,4 +20,11 @@ Eigen::MatrixXd GaussNewtonMatrix(const ceres::CRSMatrix& jacobian, int rows) {
   return Eigen::SparseMatrix<double>(top.transpose() * top).toDense();
 }
 
+Eigen::VectorXd GaussNewtonProduct(const ceres::CRSMatrix& jacobian,
+                                   const Eigen::VectorXd& x) {
+  const auto j = SparseView(jacobian);
+  const Eigen::VectorXd y = j * x;
+  return j.transpose() * y;
+}
+
 }  // namespace pfdm

@@ -46,5 +46,13 @@ TEST(NormalMatrixTest, IsJTransposeJOfAllOrTheFirstRows) {
   EXPECT_EQ(GaussNewtonMatrix(j, 0), Eigen::MatrixXd::Zero(3, 3));
 }
 
+TEST(NormalMatrixTest, ProductIsJTransposeJTimesX) {
+  const ceres::CRSMatrix j = SmallJacobian();
+  const Eigen::MatrixXd dense = Dense(j);
+  const Eigen::Vector3d x(0.7, -1.3, 2.0);
+  EXPECT_TRUE(GaussNewtonProduct(j, x).isApprox(dense.transpose() * (dense * x),
+                                                1e-15));
+}
+
 }  // namespace
 }  // namespace pfdm

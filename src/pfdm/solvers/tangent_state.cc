@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ceres/manifold.h"
+#include "pfdm/solvers/normal_matrix.h"
 
 namespace pfdm {
 namespace {
@@ -118,26 +119,16 @@ std::optional<std::vector<double>> Damping(const ceres::Problem& problem,
 // from a start vector with no symmetry that could hide the top mode.
 double LargestEigenvalue(const ceres::CRSMatrix& j,
                          const std::vector<double>& d) {
-  std::vector<double> x(j.num_cols), y(j.num_rows), z(j.num_cols);
+  std::vector<double> x(j.num_cols), z(j.num_cols);
   for (int c = 0; c < j.num_cols; ++c) x[c] = 1.0 + 0.5 * std::sin(c + 1.0);
   double lambda = 0.0;
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double norm = Norm(x);
     if (norm == 0.0) break;
     for (int c = 0; c < j.num_cols; ++c) x[c] /= norm * std::sqrt(d[c]);
-    for (int r = 0; r < j.num_rows; ++r) {
-      y[r] = 0.0;
-      for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
-        y[r] += j.values[k] * x[j.cols[k]];
-      }
-    }
-    std::fill(z.begin(), z.end(), 0.0);
-    for (int r = 0; r < j.num_rows; ++r) {
-      for (int k = j.rows[r]; k < j.rows[r + 1]; ++k) {
-        z[j.cols[k]] += j.values[k] * y[r];
-      }
-    }
-    for (int c = 0; c < j.num_cols; ++c) z[c] /= std::sqrt(d[c]);
+    const Eigen::VectorXd product = GaussNewtonProduct(
+        j, Eigen::Map<const Eigen::VectorXd>(x.data(), j.num_cols));
+    for (int c = 0; c < j.num_cols; ++c) z[c] = product[c] / std::sqrt(d[c]);
     const double next = Norm(z);
     const bool settled = std::abs(next - lambda) <= 1e-4 * next;
     lambda = next;
