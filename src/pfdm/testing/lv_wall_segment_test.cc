@@ -59,10 +59,8 @@ struct Case {
   double noise_mm;
 };
 
-class LvWallSegmentTest : public testing::TestWithParam<Case> {};
-
-TEST_P(LvWallSegmentTest, ThickeningAndBothWallsWhereTheDataAre) {
-  const Case c = GetParam();
+// The segment's 1,500 tags through the wall over 3 frames.
+LvPhantom SegmentPhantom(const Case& c, unsigned seed = 1) {
   LvPhantomOptions options;
   options.tags = LvTagLayer::kWall;
   options.region = LvRegion::kMidventricular;
@@ -71,10 +69,18 @@ TEST_P(LvWallSegmentTest, ThickeningAndBothWallsWhereTheDataAre) {
   options.noise_mm = c.noise_mm;
   options.num_frames = 3;
   options.num_tags = 1500;
+  options.seed = seed;
   if (c.geometry == LvGeometry::kCylinder) {
     options.deformation = CylinderDeformation();
   }
-  const LvPhantom phantom = MakeLvPhantom(options);
+  return MakeLvPhantom(options);
+}
+
+class LvWallSegmentTest : public testing::TestWithParam<Case> {};
+
+TEST_P(LvWallSegmentTest, ThickeningAndBothWallsWhereTheDataAre) {
+  const Case c = GetParam();
+  const LvPhantom phantom = SegmentPhantom(c);
   const SequenceFit fit =
       FitSequence(phantom.points, ModelConfig::Paper(17), FitOptions());
   ASSERT_TRUE(fit.config.Solid()) << fit.wall_reason;
@@ -153,15 +159,8 @@ TEST_P(LvWallSegmentSeedsTest, ThickeningOverEightNoiseDraws) {
   double sum = 0.0, sum_squares = 0.0, worst = 0.0;
   int count = 0;
   for (unsigned seed = 1; seed <= 8; ++seed) {
-    LvPhantomOptions options;
-    options.tags = LvTagLayer::kWall;
-    options.region = LvRegion::kMidventricular;
-    options.law = GetParam();
-    options.noise_mm = 0.5;
-    options.num_frames = 3;
-    options.num_tags = 1500;
-    options.seed = seed;
-    const LvPhantom phantom = MakeLvPhantom(options);
+    const LvPhantom phantom =
+        SegmentPhantom({LvGeometry::kProlate, GetParam(), 0.5}, seed);
     const SequenceFit fit =
         FitSequence(phantom.points, ModelConfig::Paper(17), FitOptions());
     const FitAnalysis analysis = AnalyzeFit(fit);
