@@ -12,9 +12,8 @@
 // depth) and its noise taken out: thickening 2.4 points off at worst
 // (prolate, designed law, noise-free, ES: 41.7 against 44.1), endocardium
 // 1.8 (prolate, incompressible: 27.0 against 28.8), epicardium 0.9.  That
-// is the default seed's: on the prolate segment with 0.5 mm of noise, seeds
-// 1-8 read thickening rms 2.6 points off, worst 5.0 (designed law) and 4.6
-// (incompressible) (docs/performance.md, twenty-first session).  Before,
+// is the default seed's; over noise draws the targets hold from about
+// 3,000 tags (LvWallSegmentSeedsTest below).  Before,
 // with a quadratic depth, thickening read up to 3.9 points under and the
 // endocardium 2.2.
 //
@@ -59,8 +58,8 @@ struct Case {
   double noise_mm;
 };
 
-// The segment's 1,500 tags through the wall over 3 frames.
-LvPhantom SegmentPhantom(const Case& c, unsigned seed = 1) {
+// The segment's tags through the wall over 3 frames.
+LvPhantom SegmentPhantom(const Case& c, unsigned seed = 1, int tags = 1500) {
   LvPhantomOptions options;
   options.tags = LvTagLayer::kWall;
   options.region = LvRegion::kMidventricular;
@@ -68,7 +67,7 @@ LvPhantom SegmentPhantom(const Case& c, unsigned seed = 1) {
   options.law = c.law;
   options.noise_mm = c.noise_mm;
   options.num_frames = 3;
-  options.num_tags = 1500;
+  options.num_tags = tags;
   options.seed = seed;
   if (c.geometry == LvGeometry::kCylinder) {
     options.deformation = CylinderDeformation();
@@ -145,46 +144,69 @@ INSTANTIATE_TEST_SUITE_P(
         Case{LvGeometry::kProlate, LvThickeningLaw::kIncompressible, 0.0},
         Case{LvGeometry::kProlate, LvThickeningLaw::kIncompressible, 0.5}));
 
-// One seed's thickening within 3 points says little of the next: over
-// eight noise draws of the prolate segment (0.5 mm, 1,500 tags, frames 1
-// and 2 against the truth) each law's error is measured as a spread.
-// Measured: mean +0.14 and +0.21 points, rms 2.59 and 2.64, worst 4.97
-// and 4.57 (designed, incompressible).  A change that made frame 0's
-// held depths hang on its path (a Gauss-Newton step a round; 2026-12-04)
-// read rms 4.0-4.5 and worst 11-12.
-class LvWallSegmentSeedsTest : public testing::TestWithParam<LvThickeningLaw> {
-};
+// One seed's thickening within 3 points says little of the next, so the
+// targets are checked over eight noise draws (0.5 mm) of each geometry and
+// law, at frames 1 and 2.  At 1,500 tags they do not hold: on the prolate
+// segment thickening erred by rms 2.6 points, worst 5.0 (designed law) and
+// 4.6 (incompressible), its mean within 0.2.  That spread is the depth
+// profile's: thickness is where the fitted cubic (model/transmural.h)
+// meets the walls, and a least-squares cubic's endpoint varies (3 + 7) / 3
+// times as much as a line's (the odd Legendre terms); holding the squeeze
+// at 0 left a spread of 1.5 but read 2.4 points under (docs/gauge.md).  At
+// 3,000 tags the spread is about 1.1 points and every draw is within the
+// targets (measured: thickening worst 2.54 / 2.74 prolate, 2.53 / 1.50
+// cylinder, designed / incompressible; mean +0.96 / +0.87, +0.58 / +0.47; each
+// wall's radial contraction 1.80 points at worst).
+constexpr int kSeedsTags = 3000;
+constexpr double kSeedsMeanThickeningPoints = 1.5;
 
-TEST_P(LvWallSegmentSeedsTest, ThickeningOverEightNoiseDraws) {
-  double sum = 0.0, sum_squares = 0.0, worst = 0.0;
+class LvWallSegmentSeedsTest : public testing::TestWithParam<Case> {};
+
+TEST_P(LvWallSegmentSeedsTest, TargetsHoldOverEightNoiseDraws) {
+  const Case c = GetParam();
+  double sum = 0.0, worst = 0.0, worst_endo = 0.0, worst_epi = 0.0;
   int count = 0;
   for (unsigned seed = 1; seed <= 8; ++seed) {
-    const LvPhantom phantom =
-        SegmentPhantom({LvGeometry::kProlate, GetParam(), 0.5}, seed);
+    const LvPhantom phantom = SegmentPhantom(c, seed, kSeedsTags);
     const SequenceFit fit =
         FitSequence(phantom.points, ModelConfig::Paper(17), FitOptions());
     const FitAnalysis analysis = AnalyzeFit(fit);
     for (size_t t = 1; t < fit.frames.size(); ++t) {
-      const double error =
-          analysis.clinical[t].wall_thickening_percent -
-          SegmentMean(phantom.truth[t].wall_thickening_percent);
+      const ClinicalSummary& s = analysis.clinical[t];
+      const LvFrameTruth& truth = phantom.truth[t];
+      const double error = s.wall_thickening_percent -
+                           SegmentMean(truth.wall_thickening_percent);
       sum += error;
-      sum_squares += error * error;
       worst = std::max(worst, std::abs(error));
+      worst_endo = std::max(
+          worst_endo,
+          std::abs(s.endo_radial_contraction_percent -
+                   SegmentMean(truth.endo.radial_contraction_percent)));
+      worst_epi =
+          std::max(worst_epi,
+                   std::abs(s.epi_radial_contraction_percent -
+                            SegmentMean(truth.epi.radial_contraction_percent)));
       ++count;
     }
   }
-  const double rms = std::sqrt(sum_squares / count);
-  std::printf("%s: thickening mean %+.2f, rms %.2f, worst %.2f points\n",
-              LvThickeningLawName(GetParam()).c_str(), sum / count, rms, worst);
-  EXPECT_LT(std::abs(sum / count), 1.0);
-  EXPECT_LT(rms, 3.0);
-  EXPECT_LT(worst, 6.0);
+  std::printf(
+      "%s %s: thickening mean %+.2f, worst %.2f points; endo worst %.2f, "
+      "epi worst %.2f\n",
+      LvGeometryName(c.geometry).c_str(), LvThickeningLawName(c.law).c_str(),
+      sum / count, worst, worst_endo, worst_epi);
+  EXPECT_LT(std::abs(sum / count), kSeedsMeanThickeningPoints);
+  EXPECT_LT(worst, kThickeningPoints);
+  EXPECT_LT(worst_endo, kEndoPoints);
+  EXPECT_LT(worst_epi, kEpiPoints);
 }
 
-INSTANTIATE_TEST_SUITE_P(Laws, LvWallSegmentSeedsTest,
-                         testing::Values(LvThickeningLaw::kDesigned,
-                                         LvThickeningLaw::kIncompressible));
+INSTANTIATE_TEST_SUITE_P(
+    GeometriesLaws, LvWallSegmentSeedsTest,
+    testing::Values(
+        Case{LvGeometry::kCylinder, LvThickeningLaw::kDesigned, 0.5},
+        Case{LvGeometry::kCylinder, LvThickeningLaw::kIncompressible, 0.5},
+        Case{LvGeometry::kProlate, LvThickeningLaw::kDesigned, 0.5},
+        Case{LvGeometry::kProlate, LvThickeningLaw::kIncompressible, 0.5}));
 
 }  // namespace
 }  // namespace pfdm
