@@ -52,6 +52,16 @@ double SegmentMean(const std::vector<double>& values) {
   return sum / kSamples;
 }
 
+// The truth's segment means a frame's fit is held to.
+struct WallTruth {
+  double thickening, endo, epi;
+};
+WallTruth SegmentTruth(const LvFrameTruth& truth) {
+  return {SegmentMean(truth.wall_thickening_percent),
+          SegmentMean(truth.endo.radial_contraction_percent),
+          SegmentMean(truth.epi.radial_contraction_percent)};
+}
+
 struct Case {
   LvGeometry geometry;
   LvThickeningLaw law;
@@ -90,9 +100,7 @@ TEST_P(LvWallSegmentTest, ThickeningAndBothWallsWhereTheDataAre) {
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     const ClinicalSummary& s = analysis.clinical[t];
     const LvFrameTruth& truth = phantom.truth[t];
-    const double thickening = SegmentMean(truth.wall_thickening_percent);
-    const double endo = SegmentMean(truth.endo.radial_contraction_percent);
-    const double epi = SegmentMean(truth.epi.radial_contraction_percent);
+    const auto [thickening, endo, epi] = SegmentTruth(truth);
     const double myocardium_change =
         100.0 *
         (truth.myocardial_volume_ml / phantom.truth[0].myocardial_volume_ml -
@@ -173,19 +181,14 @@ TEST_P(LvWallSegmentSeedsTest, TargetsHoldOverEightNoiseDraws) {
     const FitAnalysis analysis = AnalyzeFit(fit);
     for (size_t t = 1; t < fit.frames.size(); ++t) {
       const ClinicalSummary& s = analysis.clinical[t];
-      const LvFrameTruth& truth = phantom.truth[t];
-      const double error = s.wall_thickening_percent -
-                           SegmentMean(truth.wall_thickening_percent);
+      const WallTruth truth = SegmentTruth(phantom.truth[t]);
+      const double error = s.wall_thickening_percent - truth.thickening;
       sum += error;
       worst = std::max(worst, std::abs(error));
       worst_endo = std::max(
-          worst_endo,
-          std::abs(s.endo_radial_contraction_percent -
-                   SegmentMean(truth.endo.radial_contraction_percent)));
-      worst_epi =
-          std::max(worst_epi,
-                   std::abs(s.epi_radial_contraction_percent -
-                            SegmentMean(truth.epi.radial_contraction_percent)));
+          worst_endo, std::abs(s.endo_radial_contraction_percent - truth.endo));
+      worst_epi = std::max(
+          worst_epi, std::abs(s.epi_radial_contraction_percent - truth.epi));
       ++count;
     }
   }
