@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Issue 30's full calibration of the derived numbers' 95 % intervals on the
 # LV phantom: runs LvIntervalCalibrationTest (mid-wall tags, tags through
-# the wall, both walls' contours) over SEEDS noise draws (default 100) and
-# writes its tables into docs/uncertainty_calibration.md.
+# the wall, both walls' contours, the endocardium's contours) over SEEDS
+# noise draws (default 100) and writes its tables into
+# docs/uncertainty_calibration.md.
 #   scripts/interval_calibration.sh [build dir] [seeds] [log]
 # Per seed about 3.5 s of one core for the mid-wall tags, 8 s for the wall's
-# tags and 7 s for the contours (two fits each, noisy and noise-free), and
-# one dense noise-free fit per kind.
+# tags, 7 s for both walls' contours and 1.5 s for the endocardium's (two
+# fits each, noisy and noise-free), and one dense noise-free fit per kind.
 # Given a log of that test already run with PFDM_CALIBRATION_SEEDS=seeds,
 # the table is taken from it instead.
 set -euo pipefail
@@ -28,10 +29,12 @@ fi
   echo "Written by \`scripts/interval_calibration.sh\` ($(date -u +%Y-%m-%d)):"
   echo "$seeds noise seeds of the LV phantom (\`phantom/lv_phantom.h\`, the"
   echo "model did not make it), noise 0.5 mm per coordinate, ED and ES, the"
-  echo "paper's model with 9 knots, --uncertainty on; three kinds of data:"
-  echo "400 mid-wall tags, 400 tags through the wall (a solid), and both"
-  echo "walls' contours on 9 short-axis slices and 3 long-axis planes (a"
-  echo "solid).  Per number at ES (the mass at ED): whether pfdm claims its"
+  echo "paper's model with 9 knots, --uncertainty on; four kinds of data:"
+  echo "400 mid-wall tags, 400 tags through the wall (a solid), both walls'"
+  echo "contours on 9 short-axis slices and 3 long-axis planes (a solid),"
+  echo "and the endocardium's contours alone on the same planes (one"
+  echo "surface, as biv-me's lv-cavity).  Per number at ES (the mass at ED):"
+  echo "whether pfdm claims its"
   echo "interval calibrated on that kind of data (fit.json's"
   echo "uncertainty_calibrated, report/interval_calibration.h), how often the"
   echo "interval (value - noise bias -+ 1.96 sd) holds the same data's"

@@ -28,7 +28,8 @@ DEFINE_string(kinematics, "systole",
               "simulate --phantom lv: systole, cycle, rigid-axial, "
               "rigid-lateral, rigid-tilt, rigid-spin or static");
 DEFINE_string(wall_tags, "midwall",
-              "simulate --phantom lv: tags on the midwall or through the wall");
+              "simulate --phantom lv: tags (or contours) on the midwall, "
+              "through the wall (both walls) or on the endo(cardium)");
 DEFINE_bool(breathing, true,
             "simulate --phantom lv: rigid breathing motion in systole and "
             "cycle (--nobreathing: none)");

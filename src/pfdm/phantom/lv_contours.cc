@@ -9,11 +9,17 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The surfaces contours are drawn on: the mid-wall, or both walls.
+// The surfaces contours are drawn on: the mid-wall, both walls, or the
+// endocardium.
 std::vector<std::pair<double, WallLayer>> ContourSurfaces(
     const LvPhantomOptions& options) {
-  if (options.tags == LvTagLayer::kWall) {
-    return {{-1.0, WallLayer::kEndocardium}, {1.0, WallLayer::kEpicardium}};
+  switch (options.tags) {
+    case LvTagLayer::kWall:
+      return {{-1.0, WallLayer::kEndocardium}, {1.0, WallLayer::kEpicardium}};
+    case LvTagLayer::kEndocardium:
+      return {{-1.0, WallLayer::kEndocardium}};
+    case LvTagLayer::kMidwall:
+      break;
   }
   return {{0.0, WallLayer::kAnywhere}};
 }

@@ -24,6 +24,22 @@ constexpr LvHeights kMidventricular{0.30, 0.72};
 // the base plane.
 constexpr LvHeights kFullStack{0.05, 0.90};
 
+// A tag's w: uniform through the wall, drawn from `random` then only (the
+// other layers' tags keep the draws they had before the endocardium's
+// were added); -1 on the endocardium, 0 on the mid-wall.
+double TagDepth(LvTagLayer layer, std::mt19937* random) {
+  switch (layer) {
+    case LvTagLayer::kWall:
+      return -1.0 +
+             2.0 * std::uniform_real_distribution<double>(0.0, 1.0)(*random);
+    case LvTagLayer::kEndocardium:
+      return -1.0;
+    case LvTagLayer::kMidwall:
+      break;
+  }
+  return 0.0;
+}
+
 // ED body positions of the tags, SPAMM-like (see the header).
 std::vector<Eigen::Vector3d> PlaceTags(const LvShape& shape,
                                        const LvPhantomOptions& options) {
@@ -36,8 +52,7 @@ std::vector<Eigen::Vector3d> PlaceTags(const LvShape& shape,
   std::vector<Eigen::Vector3d> tags;
   tags.reserve(options.num_tags);
   for (int i = 0; i < options.num_tags; ++i) {
-    const double w =
-        options.tags == LvTagLayer::kWall ? -1.0 + 2.0 * uniform(random) : 0.0;
+    const double w = TagDepth(options.tags, &random);
     double nu = 0.0;
     if (i % 2 == 0) {  // Short-axis plane: height uniform on this surface.
       const double low = full ? shape.ApexZ(w) : low_z;
@@ -173,8 +188,7 @@ std::vector<Eigen::Vector3d> PlaceCylinderTags(
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<Eigen::Vector3d> tags;
   for (int i = 0; i < options.num_tags; ++i) {
-    const double w =
-        options.tags == LvTagLayer::kWall ? -1.0 + 2.0 * uniform(random) : 0.0;
+    const double w = TagDepth(options.tags, &random);
     const double h =
         cylinder.low + (cylinder.high - cylinder.low) * uniform(random);
     tags.push_back(cylinder.Position(h, -kPi + 2.0 * kPi * uniform(random), w));
@@ -295,6 +309,8 @@ bool ParseLvTagLayer(const std::string& name, LvTagLayer* layer) {
     *layer = LvTagLayer::kMidwall;
   } else if (name == "wall") {
     *layer = LvTagLayer::kWall;
+  } else if (name == "endo") {
+    *layer = LvTagLayer::kEndocardium;
   } else {
     return false;
   }
@@ -302,7 +318,15 @@ bool ParseLvTagLayer(const std::string& name, LvTagLayer* layer) {
 }
 
 std::string LvTagLayerName(LvTagLayer layer) {
-  return layer == LvTagLayer::kWall ? "wall" : "midwall";
+  switch (layer) {
+    case LvTagLayer::kWall:
+      return "wall";
+    case LvTagLayer::kEndocardium:
+      return "endo";
+    case LvTagLayer::kMidwall:
+      break;
+  }
+  return "midwall";
 }
 
 Eigen::Vector3d LvWorldPoint(const LvShape& shape,

@@ -77,8 +77,11 @@
 
 namespace pfdm {
 
-enum class LvTagLayer { kMidwall, kWall };
-// "midwall" or "wall"; false if unknown.
+// Where tags (or contours) lie: on the mid-wall, through the wall (both
+// walls' contours), or on the endocardium alone (its contours: a cavity's,
+// as biv-me's lv-cavity).
+enum class LvTagLayer { kMidwall, kWall, kEndocardium };
+// "midwall", "wall" or "endo"; false if unknown.
 bool ParseLvTagLayer(const std::string& name, LvTagLayer* layer);
 std::string LvTagLayerName(LvTagLayer layer);
 

@@ -34,6 +34,10 @@ TEST(LvPhantomNamesTest, SetsEveryChoiceByName) {
   EXPECT_EQ(options.sampling, LvSampling::kSaxSlices);
   EXPECT_EQ(options.geometry, LvGeometry::kCylinder);
   EXPECT_EQ(options.law, LvThickeningLaw::kIncompressible);
+  names.wall_tags = "endo";
+  SetLvPhantomNames(names, "--", &options);
+  EXPECT_EQ(options.tags, LvTagLayer::kEndocardium);
+  EXPECT_EQ(LvTagLayerName(options.tags), "endo");
 }
 
 TEST(LvPhantomNamesTest, UnknownNamesAreNamedWithTheirChoices) {

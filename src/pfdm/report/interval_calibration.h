@@ -20,15 +20,25 @@ enum class Calibration { kCalibrated, kNotCalibrated };
 
 // The kinds of data calibrated: tags on one surface (a mid-wall fit), tags
 // through the wall (a solid), both walls' contours (no frame tracked, a
-// solid); kOther: none (contours of one surface among them).
-enum class IntervalData { kMidwallTags, kWallTags, kContours, kOther };
+// solid), the endocardium's contours alone (no frame tracked, one
+// surface: the endocardium); kOther: none.
+enum class IntervalData {
+  kMidwallTags,
+  kWallTags,
+  kContours,
+  kEndoContours,
+  kOther
+};
 
 // The fit's kind: tags where every frame is tracked, by whether the model
-// is a solid; wall contours where none is (FrameFit::tracked) and the
-// model is a solid; else kOther.
+// is a solid; where none is (FrameFit::tracked), wall contours if the
+// model is a solid and endocardial contours if it is the endocardium's
+// surface; else kOther (a mix, contours of the mid-wall or the
+// epicardium).
 IntervalData IntervalDataOf(const SequenceFit& fit);
 
-// "midwall tags", "wall tags", "wall contours" or "other".
+// "midwall tags", "wall tags", "wall contours", "endocardial contours" or
+// "other".
 std::string IntervalDataName(IntervalData data);
 
 // fit.json keys of data's calibrated numbers: a key holds wherever it
