@@ -56,15 +56,17 @@ const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
   // Radial contraction's and the segments' thickening's intervals held the
   // noise-free fit in 1.00 and 0.994 of draws on 2026-12-05 (too wide; 0.99
   // and 0.977 on 2026-12-04), EDV's and the mass's in 0.95 (0.88, 0.87).
-  static const std::vector<std::string> wall_tags = {"ratio",
-                                                     "edv_ml",
-                                                     "esv_ml",
-                                                     "lv_mass_g",
-                                                     "wall_thickening_percent",
-                                                     "ecc_percent",
-                                                     "peak_ecc_percent",
-                                                     "ell_percent",
-                                                     "rotation_deg"};
+  static const std::vector<std::string> wall_tags = {
+      "ratio",
+      "edv_ml",
+      "esv_ml",
+      "lv_mass_g",
+      "wall_thickening_percent",
+      "ecc_percent",
+      "peak_ecc_percent",
+      "ell_percent",
+      "rotation_deg",
+  };
   static const std::vector<std::string> contours = {
       "ratio",
       "esv_ml",
