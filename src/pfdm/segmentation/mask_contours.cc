@@ -223,6 +223,7 @@ MaskContours ExtractMaskContours(const LabelVolume& volume,
   out.slice_thickness_mm = volume.Spacing(2);
   out.points.source = volume.source;
   out.points.contour_types = {"SAX_LV_ENDOCARDIAL", "SAX_LV_EPICARDIAL"};
+  out.points.base_from_labels = true;
   for (int t = 0; t < nt; ++t) {
     for (int k = 0; k < nz; ++k) {
       out.rings.push_back(

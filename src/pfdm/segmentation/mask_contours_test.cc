@@ -35,6 +35,9 @@ TEST(MaskContoursTest, PhantomStackWalls) {
   // slices of 8 mm lose their ring.
   EXPECT_GT(c.base_slice[0], c.base_slice[2]);
   EXPECT_LE(c.base_slice[0], mask.volume.nz - 1);
+  // The labels close the base, so the fit does not warn that a slice ends
+  // the data (fit/stages/top_slice.h).
+  EXPECT_TRUE(c.points.base_from_labels);
   ASSERT_EQ(c.points.frames.size(), 3u);
   int endo = 0, epi = 0;
   for (const DataPoint& p : c.points.frames[0].points) {

@@ -48,6 +48,10 @@ struct PointSequence {
   std::vector<double> time_ms;
   // Guide points: the contours left out, in frame order.
   std::vector<LeftOutContour> left_out;
+  // The input closes the base itself: a segmentation's most basal LV slab
+  // (its walls at the slab's basal face, or a partial ring above it), as a
+  // voxel count takes it; contours end at their slice's centre.
+  bool base_from_labels = false;
 };
 
 }  // namespace pfdm

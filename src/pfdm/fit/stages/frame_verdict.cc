@@ -11,6 +11,7 @@
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/loss_scale.h"
+#include "pfdm/fit/stages/top_slice.h"
 #include "pfdm/util/stride.h"
 
 namespace pfdm {
@@ -282,6 +283,22 @@ void JudgeApex(const SequenceFit& fit, Verdict* verdict) {
                        100.0 * fit.apex_data_distance, fit.lowest_data_u));
 }
 
+// The model ends at the highest data; when they are one short-axis slice
+// the base may lie anywhere above it.
+void JudgeTopSlice(const Frame& points, const Model& model, Verdict* verdict) {
+  const Eigen::Vector3d center(model.state.center.data());
+  const TopSlice top =
+      FindTopSlice(Positions(points), center, model.Rotation().col(2));
+  if (!top.found) return;
+  verdict->Warn(kTopSliceCode,
+                Format("the highest data are one short-axis slice (%.0f "
+                       "points all round on a plane %.0f deg from square to "
+                       "the axis, %.1f mm rms off it): the base above it is "
+                       "not in the data, and the model, its basal rings and "
+                       "the volumes end at that slice",
+                       top.points, top.tilt_deg, top.rms_mm));
+}
+
 void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
   if (spreads[0] >= kFlatDataRatio * spreads[2]) return;
   verdict->Fail("flat_data",
@@ -334,6 +351,9 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     if (t == 0) JudgeMoved(frame, &frame.verdict);
     if (t > 0) JudgeSpan(fit->config, fit->frames[0], frame, &frame.verdict);
     JudgeApex(*fit, &frame.verdict);
+    if (!sequence.base_from_labels) {
+      JudgeTopSlice(sequence.frames[t], fit->ModelAt(t), &frame.verdict);
+    }
     JudgeShape(spreads, &frame.verdict);
   }
 }

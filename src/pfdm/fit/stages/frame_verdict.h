@@ -16,6 +16,9 @@
 //                frame 0's (contours that lost a slice);
 //   not_moved    frame 0's solve never left its start;
 //   extrapolated no data near the apex (SequenceFit::apex_in_data);
+//   top_slice    the highest data one short-axis slice: the base not in
+//                the data (top_slice.h; not asked of a segmentation's,
+//                whose labels close the base);
 //   flat_data    points nearly in a plane, no ventricle.
 // The clinical numbers' plausibility is the analysis' (report/).
 #ifndef PFDM_FIT_STAGES_FRAME_VERDICT_H_
@@ -56,6 +59,7 @@ constexpr double kMinSpanShare = 0.75;
 // The code of that warning: the analysis leaves such a frame's volumes out.
 inline constexpr char kShortSpanCode[] = "short_span";
 constexpr double kFlatDataRatio = 0.02;
+inline constexpr char kTopSliceCode[] = "top_slice";
 
 // The RMS (mm) of the material points' move from `before` to `after`,
 // over every k-th of them, at most kMoveSamples: an RMS of thousands of
