@@ -35,5 +35,6 @@ def test_intervals_are_arrays_beside_the_values_and_fit_json():
     # Which intervals are calibrated on this kind of data, as fit.json says.
     assert got["data"] == "midwall tags"
     assert got["calibrated"] == document["uncertainty_calibrated"]["keys"]
-    assert "gcs_percent" in got["calibrated"]
+    assert "gls_percent" in got["calibrated"]
+    assert "gcs_percent" not in got["calibrated"]  # 99 % of draws: too wide
     assert "esv_ml" not in got["calibrated"]

@@ -41,10 +41,16 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
   using D = IntervalData;
   // Tags on the mid-wall: the global numbers and the segments'.
   for (const char* key :
-       {"ratio", "net_twist_deg", "gcs_percent", "gls_percent", "ecc_percent",
+       {"ratio", "net_twist_deg", "gls_percent", "ecc_percent", "ell_percent",
         "rotation_deg", "longitudinal_shortening_percent"}) {
     EXPECT_TRUE(Has(D::kMidwallTags, key)) << key;
   }
+  // Above issue 30's 98 %: GCS on mid-wall tags (0.99), the segments' Ell
+  // on both walls' contours (0.981) and on the endocardium's (0.987).
+  EXPECT_FALSE(Has(D::kMidwallTags, "gcs_percent"));
+  EXPECT_FALSE(Has(D::kMidwallTags, "peak_gcs_percent"));
+  EXPECT_FALSE(Has(D::kContours, "ell_percent"));
+  EXPECT_FALSE(Has(D::kEndoContours, "ell_percent"));
   // Tags through the wall: twist's, radial contraction's and the segments'
   // thickening's intervals held the noise-free fit in every draw or nearly
   // (too wide), GCS's in a third.
@@ -72,13 +78,13 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
   EXPECT_TRUE(Has(D::kContours, "lv_mass_g"));
   EXPECT_TRUE(Has(D::kWallTags, "lv_mass_g"));
   EXPECT_TRUE(Has(D::kWallTags, "edv_ml"));
-  // The endocardium's contours alone: every number they measure held the
-  // noise-free fit in 93-99 % of draws, EDV included; one surface has no
-  // wall to thicken or weigh, and no turn about the axis is seen.
+  // The endocardium's contours alone: every number they measure but Ell
+  // held the noise-free fit in 93-98 % of draws, EDV included; one surface
+  // has no wall to thicken or weigh, and no turn about the axis is seen.
   for (const char* key :
        {"ratio", "edv_ml", "esv_ml", "longitudinal_shortening_percent",
         "radial_contraction_percent", "gcs_percent", "gls_percent",
-        "ecc_percent", "ell_percent"}) {
+        "ecc_percent"}) {
     EXPECT_TRUE(Has(D::kEndoContours, key)) << key;
   }
   for (const char* key : {"wall_thickening_percent", "lv_mass_g",

@@ -280,10 +280,11 @@ std::vector<std::pair<std::string, Tally>> Calibrate(const Case& c) {
 }
 
 // Over 100 seeds and more, a number whose interval pfdm claims calibrated
-// (interval_calibration.h, where coverage read 0.90-0.99) holds the
+// (interval_calibration.h, where coverage read 0.90-0.98) holds the
 // noise-free fit in 88-99 % of draws: the binomial's sd at 100 draws is
-// 2.2 points.  Segment 9 alone is shown, not asserted (the claim is the
-// pooled segments'; it read 0.87 for Ecc on mid-wall tags).
+// 2.2 points, and a change of the code moves a row by a draw or two.
+// Segment 9 alone is shown, not asserted (the claim is the pooled
+// segments'; it read 0.87 for Ecc on mid-wall tags).
 void ExpectCoverageClaimed(const std::string& name, const Tally& t) {
   if (Seeds() < 100 || name.rfind("seg 9", 0) == 0) return;
   const double coverage = t.inside_fit / static_cast<double>(t.draws);
