@@ -163,7 +163,7 @@ const char* ReportedUnit(int f) {
 }
 
 double ReportedSd(const Model& model, const FrameCovariance& covariance, int f,
-                  int k) {
+                  int k, double length_variance) {
   const int i = covariance.FunctionIndex(model.config, f, k);
   const auto variance = [&](int a, int b) {
     return a < 0 || b < 0 ? 0.0 : covariance.covariance(a, b);
@@ -173,9 +173,10 @@ double ReportedSd(const Model& model, const FrameCovariance& covariance, int f,
   const double a0 = model.state.globals[kA0];
   const double ai = model.FunctionAt(f, model.config.Grid().KnotU(k));
   const int j = covariance.FunctionIndex(model.config, kA0, k);
+  const double length = f == kA3 ? a0 * a0 * ai * ai * length_variance : 0.0;
   return std::sqrt(std::max(0.0, a0 * a0 * variance(i, i) +
                                      ai * ai * variance(j, j) +
-                                     2.0 * a0 * ai * variance(i, j)));
+                                     2.0 * a0 * ai * variance(i, j) + length));
 }
 
 std::string ParametersCsv(const std::vector<Model>& frames,
@@ -194,7 +195,9 @@ std::string ParametersCsv(const std::vector<Model>& frames,
         if (fit != nullptr) {
           const FrameCovariance& covariance = fit->frames[t].covariance;
           out << ',';
-          if (covariance.computed) out << ReportedSd(model, covariance, f, k);
+          if (covariance.computed) {
+            out << ReportedSd(model, covariance, f, k, LengthVariance(*fit, t));
+          }
         }
         out << '\n';
       }

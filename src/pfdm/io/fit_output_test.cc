@@ -43,6 +43,27 @@ TEST(FitOutputTest, SurfaceCarriesTwistInDegreesAtEachVertex) {
 
 // A fit with a loss gives its points' weights as loss_weight, 1 on the
 // surface; without one there is no such array.
+// a_i's sd in mm is a0 times a_i's relative one (a0 held: the paper's
+// scale gauge); a3's takes the length's relative error besides, a1's not.
+TEST(FitOutputTest, OnlyA3sSdCarriesTheLengthsError) {
+  FunctionValues values = DefaultFunctionValues();
+  values[kA0] = 40.0;
+  values[kA1] = 0.5;
+  values[kA3] = 1.5;
+  const Model model = Model::Uniform(ModelConfig::Paper(17), values);
+  FrameCovariance covariance;
+  covariance.computed = true;
+  covariance.entries = {{CovarianceEntry::Kind::kKnot, 4, kA1},
+                        {CovarianceEntry::Kind::kKnot, 4, kA3}};
+  covariance.covariance = Eigen::Vector2d(1e-4, 4e-4).asDiagonal();
+  EXPECT_NEAR(ReportedSd(model, covariance, kA1, 4), 0.4, 1e-12);
+  EXPECT_NEAR(ReportedSd(model, covariance, kA1, 4, 1e-4), 0.4, 1e-12);
+  EXPECT_NEAR(ReportedSd(model, covariance, kA3, 4), 0.8, 1e-12);
+  // sqrt(0.8^2 + (40 x 1.5)^2 x 1e-4) = sqrt(0.64 + 0.36).
+  EXPECT_NEAR(ReportedSd(model, covariance, kA3, 4, 1e-4), 1.0, 1e-12);
+  EXPECT_EQ(ReportedSd(model, covariance, kA2, 4, 1e-4), 0.0);
+}
+
 TEST(FitOutputTest, PointsCarryTheirLossWeights) {
   const FittedPhantom& f = SmallPhantomFit();
   FrameFit frame = f.fit.frames[1];

@@ -56,18 +56,26 @@ struct Case {
   LvSampling sampling = LvSampling::kTags;
   bool lesion = false;
   int num_points = 150;
+  // Noise on the later frame only: frame 0's fit, which sets the tracked
+  // tags' material points, is the noise-free one.
+  bool exact_frame0 = false;
 };
 
-// The judged values: a1, a2 (mm) at the knots away from the apex pole on
-// both frames; a3 (mm) and tau (rad) on the second, where they are free.
+// The judged values: a1, a2, a3 (mm) at the knots away from the apex pole
+// on both frames (frame 0's a3, held, has the length's sd alone), tau
+// (rad) on the second where tags track the turn.
 struct Judged {
   int frame, function, knot;
 };
 
-std::vector<Judged> JudgedValues(bool tracked) {
+// With frame 0 exact its values are the reference's: not judged.
+std::vector<Judged> JudgedValues(const Case& c) {
+  const bool tracked = c.sampling == LvSampling::kTags;
   std::vector<Judged> judged;
   for (int k : {2, 4, 6}) {
-    for (int f : {kA1, kA2}) judged.push_back({0, f, k});
+    if (!c.exact_frame0) {
+      for (int f : {kA1, kA2, kA3}) judged.push_back({0, f, k});
+    }
     for (int f : {kA1, kA2, kA3}) judged.push_back({1, f, k});
     if (tracked) judged.push_back({1, kTau, k});
   }
@@ -93,8 +101,13 @@ struct Draw {
 };
 
 Draw FitDraw(const Case& c, unsigned seed, int num_points, double noise_mm) {
-  const LvPhantom phantom =
+  LvPhantom phantom =
       MakeLvPhantom(PhantomOptions(c, seed, num_points, noise_mm));
+  if (c.exact_frame0 && noise_mm > 0.0) {
+    phantom.points.frames[0] =
+        MakeLvPhantom(PhantomOptions(c, seed, num_points, 0.0))
+            .points.frames[0];
+  }
   FitOptions options;
   options.uncertainty = true;
   // The covariance is the global model's; the local field after it
@@ -104,12 +117,13 @@ Draw FitDraw(const Case& c, unsigned seed, int num_points, double noise_mm) {
   const SequenceFit fit =
       FitSequence(phantom.points, ModelConfig::Paper(kKnots), options);
   Draw draw;
-  for (const Judged& j : JudgedValues(c.sampling == LvSampling::kTags)) {
+  for (const Judged& j : JudgedValues(c)) {
     const Model model = fit.ModelAt(j.frame);
     const double u = model.config.Grid().KnotU(j.knot);
     draw.value.push_back(ReportedValue(model, j.function, u));
-    draw.sd.push_back(
-        ReportedSd(model, fit.frames[j.frame].covariance, j.function, j.knot));
+    draw.sd.push_back(ReportedSd(model, fit.frames[j.frame].covariance,
+                                 j.function, j.knot,
+                                 LengthVariance(fit, j.frame)));
   }
   return draw;
 }
@@ -132,7 +146,7 @@ Calibration Calibrate(const Case& c, int seeds, int ratio_seeds) {
   const int scale = EnvInt("PFDM_CALIBRATION_SCALE", 1);
   const int n = c.num_points * scale;
   Calibration result;
-  result.judged = JudgedValues(c.sampling == LvSampling::kTags);
+  result.judged = JudgedValues(c);
   const size_t m = result.judged.size();
   result.inside.assign(m, 0);
   result.sd_n.assign(m, 0.0);
@@ -178,7 +192,7 @@ void Print(const Case& c, const Calibration& r) {
 // at least min_each (100 draws: a binomial sd of 2.2 points at 95 %), and
 // sd(4N)/sd(N) within 0.5 +- ratio_tolerance.
 struct Expected {
-  double low = 0.90, high = 0.98, min_each = 0.70, ratio_tolerance = 0.06;
+  double low = 0.90, high = 0.98, min_each = 0.88, ratio_tolerance = 0.06;
 };
 
 Calibration RunCase(const Case& c) {
@@ -194,36 +208,61 @@ void ExpectCalibrated(const Case& c, const Expected& e = Expected()) {
   EXPECT_LE(r.Pooled(), e.high) << c.name;
   for (size_t j = 0; j < r.judged.size(); ++j) {
     EXPECT_GE(r.inside[j], e.min_each * r.seeds) << c.name << " value " << j;
+    const double ratio = r.sd_4n[j] / r.sd_n[j];
+    // a3's length term (ReportedSd) is the noise of the highest points,
+    // whose number grows with the points' but whose spread along the axis
+    // does not: it shrinks more slowly (0.66-0.82 measured at 100 seeds).
+    if (r.judged[j].function == kA3) {
+      EXPECT_LT(ratio, 0.85) << c.name << " " << j;
+      continue;
+    }
     // The loss-free fit's regularizers scale with the points, and sigma's
     // degrees of freedom are the effective ones: 1/sqrt(4).
-    EXPECT_NEAR(r.sd_4n[j] / r.sd_n[j], 0.5, e.ratio_tolerance)
-        << c.name << " " << j;
+    EXPECT_NEAR(ratio, 0.5, e.ratio_tolerance) << c.name << " " << j;
   }
 }
 
-// 100 draws (seed 1000-1099), 150 tags: pooled 0.917, sd ratio
-// 0.47-0.50.  The tracked frame's a3 covers least (75-85 %): its material
-// points come from frame 0's noisy fit, whose error they share
-// (docs/uncertainty.md).
+// 100 draws (seed 1000-1099), 150 tags: pooled 0.959, each value
+// 0.93-1.00, sd ratio 0.46-0.51 (a3 0.66-0.82).  a3 carries the length's
+// error that the highest points put in frame 0 (ReportedSd): without it the
+// tracked frame's a3 covered 75-85 %, its material points sharing frame
+// 0's error (below, MidwallTagsWithFrameZeroExact; docs/uncertainty.md).
 TEST(LvUncertaintyCalibrationTest, MidwallTags) {
   SKIP_UNLESS_ASKED();
   ExpectCalibrated({"midwall-tags"});
+}
+
+// The tracked frame with frame 0 exact: a3 98-99 % with or without the
+// length term (75-85 % with frame 0 noisy and without), a1, a2 and tau 95-99 %
+// (100 draws, 2026-12-05).  Frame 0's error, which every tag's material point
+// shares, is what the tracked frame's covariance leaves out; with noise on
+// frame 1 alone nothing else is missing.  Frame 0's own values are the
+// noise-free fit's and not judged.
+TEST(LvUncertaintyCalibrationTest, MidwallTagsWithFrameZeroExact) {
+  SKIP_UNLESS_ASKED();
+  Case c{"midwall-tags-exact-frame0"};
+  c.exact_frame0 = true;
+  const Calibration r = RunCase(c);
+  for (size_t j = 0; j < r.judged.size(); ++j) {
+    EXPECT_GE(r.inside[j], 0.90 * r.seeds) << j;
+  }
 }
 
 // Tags through the wall: the fit makes the model a solid, whose thickness,
 // transmural twist and shift are in the covariance with the rest; each
 // tag's depth w, ranked across the wall from the noisy data, is held.
 // That ranking puts part of each tag's radial noise into its depth, so the
-// radii's intervals are too narrow: 54-59 % coverage on frame 0, 64-77 %
-// on frame 1, and they shrink by 0.56-0.59 (not 0.5) at 4 times the tags;
-// tau, which the depths do not touch, covers 97-98 %.  The test shows it:
-// the radii under 85 %, tau in 90-99 %.
+// radii's intervals are too narrow: 79-91 % coverage (pooled 0.83) over
+// 100 draws on 2026-12-05 (54-77 % in 2026-12-02's table; the solid's
+// fit has changed since), and they shrink by 0.50-0.57 at 4 times the
+// tags; tau, which the depths do not touch, covers 96-98 %.  The test
+// shows it: the radii's pooled coverage under 0.88, tau in 90-99 %.
 TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
   SKIP_UNLESS_ASKED();
   Case c{"wall-tags"};
   c.tags = LvTagLayer::kWall;
   const Calibration r = RunCase(c);
-  int tau_inside = 0, tau_count = 0;
+  int tau_inside = 0, tau_count = 0, radii_inside = 0, radii_count = 0;
   for (size_t j = 0; j < r.judged.size(); ++j) {
     const Judged& judged = r.judged[j];
     if (judged.function == kTau) {
@@ -231,17 +270,19 @@ TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
       tau_count += r.seeds;
       EXPECT_NEAR(r.sd_4n[j] / r.sd_n[j], 0.5, 0.06) << j;
     } else if (judged.function != kA3) {
-      EXPECT_LT(r.inside[j], 0.85 * r.seeds) << j;
+      radii_inside += r.inside[j];
+      radii_count += r.seeds;
     }
   }
+  EXPECT_LT(radii_inside, 0.88 * radii_count);
   EXPECT_GE(tau_inside, 0.90 * tau_count);
   EXPECT_LE(tau_inside, 0.99 * tau_count);
 }
 
 // Short-axis contours, re-searched every round: no tracked points, so tau
-// is held and not judged.  Pooled 0.983, sd ratio 0.44-0.48: the
-// model's misfit of the slices' points counts in sigma as noise, so the
-// intervals are a little wide (docs/uncertainty.md).
+// is held and not judged.  Pooled 0.982, sd ratio 0.44-0.48 (a3
+// 0.74-0.81): the model's misfit of the slices' points counts in sigma as
+// noise, so the intervals are a little wide (docs/uncertainty.md).
 TEST(LvUncertaintyCalibrationTest, SaxContours) {
   SKIP_UNLESS_ASKED();
   Case c{"sax-contours"};
@@ -253,7 +294,8 @@ TEST(LvUncertaintyCalibrationTest, SaxContours) {
 }
 
 // The lesion: a segment's contraction the global model cannot follow.
-// Pooled 0.923; the tracked frame's a3 least again (79-90 %).
+// Pooled 0.969, each value 0.93-1.00 (without a3's length term 0.923, the
+// tracked frame's a3 79-90 %).
 TEST(LvUncertaintyCalibrationTest, LesionMidwallTags) {
   SKIP_UNLESS_ASKED();
   Case c{"lesion-midwall-tags"};

@@ -1,6 +1,7 @@
 #include "pfdm/fit/stages/sequence_fit.h"
 
 #include <cstdio>
+#include <numeric>
 
 namespace pfdm {
 
@@ -20,6 +21,21 @@ std::string UnsettledNote(const FrameFit& frame) {
                 "; closest points unsettled (%.2f mm in the last search)",
                 frame.unsettled_mm);
   return text;
+}
+
+size_t LengthSource(const SequenceFit& fit, size_t t) {
+  return t == 0 || fit.frames[t].tracked ? 0 : t;
+}
+
+double LengthVariance(const SequenceFit& fit, size_t t) {
+  const std::vector<double>& draws =
+      fit.frames[LengthSource(fit, t)].covariance.length_noise;
+  if (draws.size() < 2) return 0.0;
+  const double n = static_cast<double>(draws.size());
+  const double mean = std::accumulate(draws.begin(), draws.end(), 0.0) / n;
+  double sum = 0.0;
+  for (double d : draws) sum += (d - mean) * (d - mean);
+  return sum / (n - 1.0);
 }
 
 }  // namespace pfdm

@@ -142,6 +142,15 @@ void AddSolverCounts(const SolverReport& report, FrameFit* fit);
 // termination: "; closest points unsettled (0.94 mm in the last search)".
 std::string UnsettledNote(const FrameFit& frame);
 
+// The frame whose length draws (FrameCovariance::length_noise) frame t's
+// length along the axis carries: frame 0's for frame 0 and the tracked
+// frames, whose material points frame 0 placed; its own for an untracked
+// later frame, whose base rim its own highest points hold.
+size_t LengthSource(const SequenceFit& fit, size_t t);
+// The sample variance of those draws (the length's relative error); 0
+// with fewer than two.
+double LengthVariance(const SequenceFit& fit, size_t t);
+
 }  // namespace pfdm
 
 #endif  // PFDM_FIT_STAGES_SEQUENCE_FIT_H_
