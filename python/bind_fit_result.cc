@@ -1,6 +1,7 @@
 // Python's Fit: a fitted sequence, its frames (FitFrame), fit.json as dicts
 // and the CLI's output files.
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,6 +42,30 @@ py::array_t<double> StackedFunctions(const FitResult& result) {
               all.mutable_data() + t * one.size());
   }
   return all;
+}
+
+// (frames, knots, kNumFunctions): each knot value's sd as parameters.csv's
+// (ReportedSd, a3 with its frame's length draws), NaN on a frame whose
+// covariance was not computed; None without --uncertainty.
+py::object StackedFunctionSds(const FitResult& result) {
+  if (!result.options.uncertainty) return py::none();
+  const int frames = static_cast<int>(result.analysis.models.size());
+  const int knots = result.fit.config.num_knots;
+  py::array_t<double> all({frames, knots, int{kNumFunctions}});
+  double* out = all.mutable_data();
+  for (int t = 0; t < frames; ++t) {
+    const Model& model = result.analysis.models[t];
+    const FrameCovariance& covariance = result.fit.frames[t].covariance;
+    const double length = LengthVariance(result.fit, t);
+    for (int k = 0; k < knots; ++k) {
+      for (int f = 0; f < kNumFunctions; ++f) {
+        *out++ = covariance.computed
+                     ? ReportedSd(model, covariance, f, k, length)
+                     : std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+  }
+  return std::move(all);
 }
 
 // A top-level member of fit.json, parsed afresh.
@@ -96,6 +121,11 @@ void DefFunctions(FitClass& fit) {
   fit.def_property_readonly(
          "functions", &StackedFunctions,
          "(frames, knots, 18) array: every frame's `functions`.")
+      .def_property_readonly(
+          "function_sds", &StackedFunctionSds,
+          "(frames, knots, 18) array: each value's standard deviation in its "
+          "unit (parameters.csv's sd), NaN where a frame's covariance could "
+          "not be computed; None without uncertainty.")
       .def_property_readonly(
           "knot_u", [](const FitResult& r) { return KnotUArray(r.fit.config); },
           "(K,) array: each knot's latitude u, apex to base.")

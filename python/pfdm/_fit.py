@@ -159,7 +159,8 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         their neighbours: regional defects through the wall show.
     uncertainty : bool
         Each knot value's standard deviation, from the frame's covariance
-        (``write`` puts it in parameters.csv's sd column).
+        (``Fit.function_sds``; ``write`` puts it in parameters.csv's sd
+        column), and every derived number's interval (``Fit.intervals``).
 
     Returns
     -------

@@ -38,3 +38,24 @@ def test_intervals_are_arrays_beside_the_values_and_fit_json():
     assert "gls_percent" in got["calibrated"]
     assert "gcs_percent" not in got["calibrated"]  # 99 % of draws: too wide
     assert "esv_ml" not in got["calibrated"]
+
+
+def test_knot_sds_are_an_array_beside_the_functions_as_parameters_csv(tmp_path):
+    points, _ = pfdm.simulate(frames=2, tags=300, seed=5)
+    assert pfdm.fit(points, knots=7).function_sds is None
+    fit = pfdm.fit(points, knots=7, uncertainty="on")
+    sds = fit.function_sds
+    assert sds.shape == fit.functions.shape == (2, 7, 18)
+    names = list(fit.function_names)
+    # Held by the gauge: no spread. Frame 0's a3 is held too, but the
+    # highest points' noise sets its length, so it has one.
+    assert np.all(sds[:, :, names.index("a0")] == 0.0)
+    assert np.all(sds[0, 1:, names.index("a3")] > 0.0)
+    assert np.all(sds[:, 1:-1, names.index("a1")] > 0.0)
+    fit.write(tmp_path)
+    rows = np.genfromtxt(tmp_path / "parameters.csv", delimiter=",",
+                         names=True, dtype=None, encoding="utf-8")
+    for row in rows:
+        f = names.index(row["function"])
+        assert abs(sds[row["frame"], row["knot"], f] - row["sd"]) <= \
+            1e-9 * max(1.0, abs(row["sd"]))

@@ -5,9 +5,8 @@
 // endocardial short-axis stack without long-axis planes (`pfdm simulate
 // --phantom lv --sampling sax-slices --wall_tags endo`, slices from 5 to
 // 90 % of the length) EDV read 95 ml against the truth's 107, every frame
-// otherwise ok.  Long-axis
-// contours reach the base and end in a few points, not a ring; tags fill
-// the wall's height, not a plane.
+// otherwise ok.  Long-axis contours reach the base and end in a few
+// points, not a ring; tags fill the wall's height, not a plane.
 #ifndef PFDM_FIT_STAGES_TOP_SLICE_H_
 #define PFDM_FIT_STAGES_TOP_SLICE_H_
 
