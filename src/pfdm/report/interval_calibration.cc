@@ -137,7 +137,7 @@ std::string CalibrationNote(IntervalData data) {
          names +
          " (the frames' and the segments' numbers of those names) held the "
          "noise-free fit's number in 90-98 % of draws; every other "
-         "interval held it in fewer (too narrow) or in all (too wide) "
+         "interval held it in fewer (too narrow) or in more (too wide) "
          "(docs/uncertainty_calibration.md).";
 }
 

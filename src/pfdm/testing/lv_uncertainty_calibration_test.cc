@@ -301,9 +301,10 @@ TEST(LvUncertaintyCalibrationTest, WallTagsWithFrameZeroExact) {
 }
 
 // Short-axis contours, re-searched every round: no tracked points, so tau
-// is held and not judged.  Pooled 0.982, sd ratio 0.44-0.48 (a3
-// 0.74-0.81): the model's misfit of the slices' points counts in sigma as
-// noise, so the intervals are a little wide (docs/uncertainty.md).
+// is held and not judged.  Pooled 0.982, sd ratio 0.44-0.48 (frame 0's
+// a3 0.81): the model's misfit of the slices' points counts in sigma as
+// noise, so the intervals are a little wide; frame 1's a3 covers 100 %
+// (docs/uncertainty.md).
 TEST(LvUncertaintyCalibrationTest, SaxContours) {
   SKIP_UNLESS_ASKED();
   Case c{"sax-contours"};

@@ -23,13 +23,9 @@ std::string UnsettledNote(const FrameFit& frame) {
   return text;
 }
 
-size_t LengthSource(const SequenceFit& fit, size_t t) {
-  return t == 0 || fit.frames[t].tracked ? 0 : t;
-}
-
 double LengthVariance(const SequenceFit& fit, size_t t) {
-  const std::vector<double>& draws =
-      fit.frames[LengthSource(fit, t)].covariance.length_noise;
+  if (t != 0 && !fit.frames[t].tracked) return 0.0;
+  const std::vector<double>& draws = fit.frames[0].covariance.length_noise;
   if (draws.size() < 2) return 0.0;
   const double n = static_cast<double>(draws.size());
   const double mean = std::accumulate(draws.begin(), draws.end(), 0.0) / n;
