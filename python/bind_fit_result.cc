@@ -45,7 +45,7 @@ py::array_t<double> StackedFunctions(const FitResult& result) {
 }
 
 // (frames, knots, kNumFunctions): each knot value's sd as parameters.csv's
-// (ReportedSd, a3 with its frame's length draws), NaN on a frame whose
+// (ReportedSd, a3 with LengthVariance's length term), NaN on a frame whose
 // covariance was not computed; None without --uncertainty.
 py::object StackedFunctionSds(const FitResult& result) {
   if (!result.options.uncertainty) return py::none();

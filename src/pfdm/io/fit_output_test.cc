@@ -41,8 +41,6 @@ TEST(FitOutputTest, SurfaceCarriesTwistInDegreesAtEachVertex) {
   EXPECT_LT(*std::min_element(twist.begin(), twist.end()), -1.5);
 }
 
-// A fit with a loss gives its points' weights as loss_weight, 1 on the
-// surface; without one there is no such array.
 // a_i's sd in mm is a0 times a_i's relative one (a0 held: the paper's
 // scale gauge); a3's takes the length's relative error besides, a1's not.
 TEST(FitOutputTest, OnlyA3sSdCarriesTheLengthsError) {
@@ -64,6 +62,8 @@ TEST(FitOutputTest, OnlyA3sSdCarriesTheLengthsError) {
   EXPECT_EQ(ReportedSd(model, covariance, kA2, 4, 1e-4), 0.0);
 }
 
+// A fit with a loss gives its points' weights as loss_weight, 1 on the
+// surface; without one there is no such array.
 TEST(FitOutputTest, PointsCarryTheirLossWeights) {
   const FittedPhantom& f = SmallPhantomFit();
   FrameFit frame = f.fit.frames[1];

@@ -18,9 +18,9 @@
 // LvUncertaintyCalibrationTest's contour case).  Tracked frames' material
 // points, found on frame 0 from noisy tags, are held: their per-point error
 // shows in sigma, frame 0's shared error does not (its length's part is
-// added to a3's reported sd: io/fit_output.h ReportedSd).  Held too: the prior's
-// target (the previous frame), a solid's tag depths w, and the local field,
-// fitted after this.
+// added to a3's reported sd: io/fit_output.h ReportedSd).  Held too: the
+// prior's target (the previous frame), a solid's tag depths w, and the
+// local field, fitted after this.
 #ifndef PFDM_FIT_PROBLEM_FRAME_COVARIANCE_H_
 #define PFDM_FIT_PROBLEM_FRAME_COVARIANCE_H_
 
