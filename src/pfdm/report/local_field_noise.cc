@@ -142,12 +142,10 @@ bool StretchedWith(size_t source, size_t t, const SequenceFit& fit) {
 void AddLengthNoiseOf(size_t source, const SequenceFit& fit,
                       const FitAnalysis& analysis,
                       const std::vector<Eigen::VectorXd>& at, Moments* m) {
-  const std::vector<double>& draws = fit.frames[source].covariance.length_noise;
-  if (draws.size() < 2) return;
-  const Eigen::Map<const Eigen::VectorXd> f(draws.data(), draws.size());
-  const double mean = f.mean();
-  const double variance =
-      (f.array() - mean).square().sum() / (static_cast<double>(f.size()) - 1);
+  const FrameCovariance& covariance = fit.frames[source].covariance;
+  if (covariance.length_noise.size() < 2) return;
+  const double mean = covariance.LengthNoiseMean();
+  const double variance = covariance.LengthNoiseVariance();
   const double step = std::sqrt(variance);
   if (!(step > 0.0)) return;
   std::vector<Model> models = analysis.models;

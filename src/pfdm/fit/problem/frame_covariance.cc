@@ -137,6 +137,21 @@ int FrameCovariance::FunctionIndex(const ModelConfig& config, int f,
              : IndexOf(CovarianceEntry::Kind::kGlobal, -1, f);
 }
 
+double FrameCovariance::LengthNoiseMean() const {
+  if (length_noise.empty()) return 0.0;
+  return Eigen::Map<const Eigen::VectorXd>(length_noise.data(),
+                                           length_noise.size())
+      .mean();
+}
+
+double FrameCovariance::LengthNoiseVariance() const {
+  if (length_noise.size() < 2) return 0.0;
+  const Eigen::Map<const Eigen::VectorXd> f(length_noise.data(),
+                                            length_noise.size());
+  return (f.array() - f.mean()).square().sum() /
+         (static_cast<double>(f.size()) - 1);
+}
+
 double FrameCovariance::KnotSd(const ModelConfig& config, int f, int k) const {
   if (!computed) return 0.0;
   const int i = FunctionIndex(config, f, k);

@@ -84,6 +84,10 @@ struct FrameCovariance {
   // untracked later frame's base rim (fit/stages/local_noise.h,
   // LengthNoiseDraws); empty on tracked frames.
   std::vector<double> length_noise;
+  // Their mean (0 without draws) and sample variance (0 with fewer than
+  // two): the length's bias and relative variance.
+  double LengthNoiseMean() const;
+  double LengthNoiseVariance() const;
 
   // Index of (kind, knot, function) in entries, or -1 (held, or absent).
   int IndexOf(CovarianceEntry::Kind kind, int knot, int function) const;

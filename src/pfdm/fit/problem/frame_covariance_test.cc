@@ -70,6 +70,19 @@ std::vector<CovarianceBlock> LineBlocks(LineProblem* line) {
 
 // A full-rank linear problem: sigma^2 (X'X)^-1, to round-off, and what
 // ceres::Covariance gives.
+// The length draws' mean and sample variance (n - 1), 0 where too few.
+TEST(FrameCovarianceTest, LengthDrawsGiveTheirMeanAndSampleVariance) {
+  FrameCovariance covariance;
+  EXPECT_EQ(covariance.LengthNoiseMean(), 0.0);
+  EXPECT_EQ(covariance.LengthNoiseVariance(), 0.0);
+  covariance.length_noise = {0.02};
+  EXPECT_EQ(covariance.LengthNoiseMean(), 0.02);
+  EXPECT_EQ(covariance.LengthNoiseVariance(), 0.0);
+  covariance.length_noise = {0.01, -0.01, 0.03};
+  EXPECT_NEAR(covariance.LengthNoiseMean(), 0.01, 1e-15);
+  EXPECT_NEAR(covariance.LengthNoiseVariance(), 4e-4, 1e-15);
+}
+
 TEST(FrameCovarianceTest, LinearProblemGivesTheTextbookCovariance) {
   LineProblem line;
   MakeLine(false, &line);

@@ -1,7 +1,6 @@
 #include "pfdm/fit/stages/sequence_fit.h"
 
 #include <cstdio>
-#include <numeric>
 
 namespace pfdm {
 
@@ -25,13 +24,7 @@ std::string UnsettledNote(const FrameFit& frame) {
 
 double LengthVariance(const SequenceFit& fit, size_t t) {
   if (t != 0 && !fit.frames[t].tracked) return 0.0;
-  const std::vector<double>& draws = fit.frames[0].covariance.length_noise;
-  if (draws.size() < 2) return 0.0;
-  const double n = static_cast<double>(draws.size());
-  const double mean = std::accumulate(draws.begin(), draws.end(), 0.0) / n;
-  double sum = 0.0;
-  for (double d : draws) sum += (d - mean) * (d - mean);
-  return sum / (n - 1.0);
+  return fit.frames[0].covariance.LengthNoiseVariance();
 }
 
 }  // namespace pfdm
