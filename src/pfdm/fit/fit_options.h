@@ -43,7 +43,9 @@ struct LocalOptions {
   // segment moving unlike its ring keeps them.  Off by default: the local
   // ranks are noisier, and on the phantoms' normal walls and biv-me's
   // contours the ring's ranks and d(u, v) read closer to the truth
-  // (docs/local_deformations.md).
+  // (docs/local_deformations.md).  But a ring's ranks leave frame 0's
+  // section shape about the axis (a1 - a2) where the rounds start it
+  // (lv_wall_rank_shape_test.cc), which its intervals miss.
   bool transmural = false;
 };
 

@@ -259,10 +259,11 @@ TEST(LvUncertaintyCalibrationTest, MidwallTagsWithFrameZeroExact) {
 // 0's noise too), and sds scaled to the tags' tangential noise
 // (SequenceFit::tag_noise_mm) covered less, 0.61-0.78.  Frame 0 is where
 // it goes wrong (below, WallTagsWithFrameZeroExact), and the tracked frame
-// inherits its error.  Why frame 0 is not shown: its tags are searched
-// (residuals along the normal) on the layers their ranks choose, the
-// tracked frame's held in (u, v) with every coordinate a residual.  The
-// test shows it: the radii's pooled coverage under 0.88, tau in 90-99 %.
+// inherits its error.  Why frame 0: its depths, ranked in whole rings,
+// leave the section's shape about the axis (a1 - a2) where the rounds'
+// start puts it (lv_wall_rank_shape_test.cc): the mean radius (a1 + a2) /
+// 2 covered 87-98 %, (a1 - a2) / 2 68-78 % (60 draws).  The test shows
+// it: the radii's pooled coverage under 0.88, tau in 90-99 %.
 TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
   SKIP_UNLESS_ASKED();
   Case c{"wall-tags"};
