@@ -14,8 +14,8 @@
 // Shown here on the LV phantom (150 tags through the wall, 0.5 mm): frame
 // 0's fit given 0.3 mm more ellipticity at every knot, then what the fit's
 // end does, two rounds of (rank, search on the layers, one Gauss-Newton
-// step): with the depths held the data take it out; ranked
-// again it stays.
+// step): with the depths held the data take it out; ranked again it
+// stays.
 #include <cmath>
 #include <optional>
 #include <vector>
