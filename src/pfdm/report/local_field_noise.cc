@@ -143,7 +143,6 @@ void AddLengthNoiseOf(size_t source, const SequenceFit& fit,
                       const FitAnalysis& analysis,
                       const std::vector<Eigen::VectorXd>& at, Moments* m) {
   const FrameCovariance& covariance = fit.frames[source].covariance;
-  if (covariance.length_noise.size() < 2) return;
   const double mean = covariance.LengthNoiseMean();
   const double variance = covariance.LengthNoiseVariance();
   const double step = std::sqrt(variance);

@@ -68,8 +68,6 @@ std::vector<CovarianceBlock> LineBlocks(LineProblem* line) {
       {line->c.data(), {{Kind::kGlobal, -1, kA0}, {Kind::kGlobal, -1, kA1}}}};
 }
 
-// A full-rank linear problem: sigma^2 (X'X)^-1, to round-off, and what
-// ceres::Covariance gives.
 // The length draws' mean and sample variance (n - 1), 0 where too few.
 TEST(FrameCovarianceTest, LengthDrawsGiveTheirMeanAndSampleVariance) {
   FrameCovariance covariance;
@@ -83,6 +81,8 @@ TEST(FrameCovarianceTest, LengthDrawsGiveTheirMeanAndSampleVariance) {
   EXPECT_NEAR(covariance.LengthNoiseVariance(), 4e-4, 1e-15);
 }
 
+// A full-rank linear problem: sigma^2 (X'X)^-1, to round-off, and what
+// ceres::Covariance gives.
 TEST(FrameCovarianceTest, LinearProblemGivesTheTextbookCovariance) {
   LineProblem line;
   MakeLine(false, &line);
