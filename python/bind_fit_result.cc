@@ -178,7 +178,8 @@ void DefFitJson(FitClass& fit) {
           "'ci95'}} per frame, 'segments' the same per (frame, segment), "
           "'ejection_fraction' of (ratio, edv_ml, esv_ml), 'data' the "
           "kind of data fitted ('midwall tags', 'wall tags', 'wall "
-          "contours' or 'other') and 'calibrated' the names whose "
+          "contours', 'endocardial contours', 'epicardial contours', "
+          "'midwall contours' or 'other') and 'calibrated' the names whose "
           "intervals held the truth in 90-98 % of noise draws on that kind "
           "(the others: lower bounds); None without.")
       .def_property_readonly(

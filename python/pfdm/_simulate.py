@@ -32,8 +32,8 @@ def simulate(phantom="model", *, frames=None, tags=2000, noise=0.5,
     geometry, thickening
         "lv" only, as the CLI's flags of the same names: kinematics
         "systole", "cycle", "rigid-axial", "rigid-lateral", "rigid-tilt",
-        "rigid-spin" or "static"; wall_tags "midwall" or "wall" (through
-        the wall); lesion a hypokinetic mid anteroseptal sector; breathing
+        "rigid-spin" or "static"; wall_tags "midwall", "wall" (through
+        the wall), "endo" or "epi" (one wall); lesion a hypokinetic mid anteroseptal sector; breathing
         a rigid drift; region "full" or "midventricular"; sampling "tags"
         or "sax-slices" with `slices` planes (0: the default); geometry
         "prolate" or "cylinder" (a mid-ventricular segment without apex);

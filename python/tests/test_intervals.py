@@ -40,6 +40,16 @@ def test_intervals_are_arrays_beside_the_values_and_fit_json():
     assert "esv_ml" not in got["calibrated"]
 
 
+def test_one_walls_contours_name_their_kind_and_its_calibrated_numbers():
+    points, _ = pfdm.simulate(phantom="lv", frames=2, tags=300, seed=5,
+                              wall_tags="epi", sampling="sax-slices")
+    got = pfdm.fit(points, knots=7, uncertainty="on").intervals
+    assert got["data"] == "epicardial contours"
+    assert "gcs_percent" in got["calibrated"]
+    assert "edv_ml" not in got["calibrated"]  # 88 % of draws: too narrow
+    assert "lv_mass_g" not in got["calibrated"]  # one wall: no mass
+
+
 def test_knot_sds_are_an_array_beside_the_functions_as_parameters_csv(tmp_path):
     points, _ = pfdm.simulate(frames=2, tags=300, seed=5)
     assert pfdm.fit(points, knots=7).function_sds is None

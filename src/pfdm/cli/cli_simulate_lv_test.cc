@@ -148,7 +148,7 @@ TEST(LvPhantomCliTest, RejectsBadFlagsInOneLine) {
            Case{"--phantom heart", "unknown --phantom 'heart'"},
            Case{"--phantom lv --kinematics diastole",
                 "unknown --kinematics 'diastole'"},
-           Case{"--phantom lv --wall_tags epi", "unknown --wall_tags 'epi'"},
+           Case{"--phantom lv --wall_tags peri", "unknown --wall_tags 'peri'"},
            Case{"--phantom lv --outliers 1.5",
                 "--outliers must be between 0 and 1"},
            Case{"--phantom lv --frames 0",

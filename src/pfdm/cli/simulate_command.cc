@@ -29,7 +29,8 @@ DEFINE_string(kinematics, "systole",
               "rigid-lateral, rigid-tilt, rigid-spin or static");
 DEFINE_string(wall_tags, "midwall",
               "simulate --phantom lv: tags (or contours) on the midwall, "
-              "through the wall (both walls) or on the endo(cardium)");
+              "through the wall (both walls), on the endo(cardium) or on "
+              "the epi(cardium)");
 DEFINE_bool(breathing, true,
             "simulate --phantom lv: rigid breathing motion in systole and "
             "cycle (--nobreathing: none)");

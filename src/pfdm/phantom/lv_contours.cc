@@ -9,8 +9,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The surfaces contours are drawn on: the mid-wall, both walls, or the
-// endocardium.
+// The surfaces contours are drawn on: the mid-wall, both walls, the
+// endocardium or the epicardium.
 std::vector<std::pair<double, WallLayer>> ContourSurfaces(
     const LvPhantomOptions& options) {
   switch (options.tags) {
@@ -18,6 +18,8 @@ std::vector<std::pair<double, WallLayer>> ContourSurfaces(
       return {{-1.0, WallLayer::kEndocardium}, {1.0, WallLayer::kEpicardium}};
     case LvTagLayer::kEndocardium:
       return {{-1.0, WallLayer::kEndocardium}};
+    case LvTagLayer::kEpicardium:
+      return {{1.0, WallLayer::kEpicardium}};
     case LvTagLayer::kMidwall:
       break;
   }

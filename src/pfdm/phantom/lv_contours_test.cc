@@ -48,29 +48,37 @@ TEST(LvContoursTest, LongAxisContoursLieOnTheirPlanes) {
   }
 }
 
-// --wall_tags endo: every contour point at ED lies on the endocardium
-// (w = -1) and is labelled so, as biv-me's lv-cavity contours are; tags
-// too lie on it.
-TEST(LvContoursTest, EndocardialContoursLieOnTheEndocardium) {
-  LvPhantomOptions options;
-  options.sampling = LvSampling::kSaxSlices;
-  options.tags = LvTagLayer::kEndocardium;
-  options.num_tags = 900;
-  options.noise_mm = 0.0;
-  const LvPhantom contours = MakeLvPhantom(options);
-  const LvShape shape(contours.options.shape);
-  const Frame& ed = contours.points.frames[0];
-  ASSERT_EQ(ed.points.size(), 900u);  // 9 slices of 100, one wall each.
-  const Eigen::Isometry3d body_from_world =
-      contours.truth[0].world_from_body.inverse();
-  for (const DataPoint& p : ed.points) {
-    EXPECT_EQ(p.layer, WallLayer::kEndocardium);
-    EXPECT_NEAR(shape.Transmural(body_from_world * p.position), -1.0, 1e-6);
-  }
-  options.sampling = LvSampling::kTags;
-  const LvPhantom tags = MakeLvPhantom(options);
-  for (const Eigen::Vector3d& body : tags.tag_material) {
-    EXPECT_NEAR(shape.Transmural(body), -1.0, 1e-9);
+// --wall_tags endo (epi): every contour point at ED lies on the
+// endocardium, w = -1 (the epicardium, w = 1), and is labelled so, as
+// biv-me's lv-cavity (lv-epi) contours are; tags too lie on it.
+TEST(LvContoursTest, OneWallsContoursLieOnThatWall) {
+  const struct {
+    LvTagLayer tags;
+    WallLayer layer;
+    double w;
+  } walls[] = {{LvTagLayer::kEndocardium, WallLayer::kEndocardium, -1.0},
+               {LvTagLayer::kEpicardium, WallLayer::kEpicardium, 1.0}};
+  for (const auto& wall : walls) {
+    LvPhantomOptions options;
+    options.sampling = LvSampling::kSaxSlices;
+    options.tags = wall.tags;
+    options.num_tags = 900;
+    options.noise_mm = 0.0;
+    const LvPhantom contours = MakeLvPhantom(options);
+    const LvShape shape(contours.options.shape);
+    const Frame& ed = contours.points.frames[0];
+    ASSERT_EQ(ed.points.size(), 900u);  // 9 slices of 100, one wall each.
+    const Eigen::Isometry3d body_from_world =
+        contours.truth[0].world_from_body.inverse();
+    for (const DataPoint& p : ed.points) {
+      EXPECT_EQ(p.layer, wall.layer);
+      EXPECT_NEAR(shape.Transmural(body_from_world * p.position), wall.w, 1e-6);
+    }
+    options.sampling = LvSampling::kTags;
+    const LvPhantom tags = MakeLvPhantom(options);
+    for (const Eigen::Vector3d& body : tags.tag_material) {
+      EXPECT_NEAR(shape.Transmural(body), wall.w, 1e-9);
+    }
   }
 }
 

@@ -26,7 +26,8 @@ constexpr LvHeights kFullStack{0.05, 0.90};
 
 // A tag's w: uniform through the wall, drawn from `random` then only (the
 // other layers' tags keep the draws they had before the endocardium's
-// were added); -1 on the endocardium, 0 on the mid-wall.
+// were added); -1 on the endocardium, 0 on the mid-wall, 1 on the
+// epicardium.
 double TagDepth(LvTagLayer layer, std::mt19937* random) {
   switch (layer) {
     case LvTagLayer::kWall:
@@ -34,6 +35,8 @@ double TagDepth(LvTagLayer layer, std::mt19937* random) {
              2.0 * std::uniform_real_distribution<double>(0.0, 1.0)(*random);
     case LvTagLayer::kEndocardium:
       return -1.0;
+    case LvTagLayer::kEpicardium:
+      return 1.0;
     case LvTagLayer::kMidwall:
       break;
   }
@@ -311,6 +314,8 @@ bool ParseLvTagLayer(const std::string& name, LvTagLayer* layer) {
     *layer = LvTagLayer::kWall;
   } else if (name == "endo") {
     *layer = LvTagLayer::kEndocardium;
+  } else if (name == "epi") {
+    *layer = LvTagLayer::kEpicardium;
   } else {
     return false;
   }
@@ -323,6 +328,8 @@ std::string LvTagLayerName(LvTagLayer layer) {
       return "wall";
     case LvTagLayer::kEndocardium:
       return "endo";
+    case LvTagLayer::kEpicardium:
+      return "epi";
     case LvTagLayer::kMidwall:
       break;
   }

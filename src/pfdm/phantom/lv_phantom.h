@@ -78,10 +78,10 @@
 namespace pfdm {
 
 // Where tags (or contours) lie: on the mid-wall, through the wall (both
-// walls' contours), or on the endocardium alone (its contours: a cavity's,
-// as biv-me's lv-cavity).
-enum class LvTagLayer { kMidwall, kWall, kEndocardium };
-// "midwall", "wall" or "endo"; false if unknown.
+// walls' contours), on the endocardium alone (its contours: a cavity's,
+// as biv-me's lv-cavity), or on the epicardium alone.
+enum class LvTagLayer { kMidwall, kWall, kEndocardium, kEpicardium };
+// "midwall", "wall", "endo" or "epi"; false if unknown.
 bool ParseLvTagLayer(const std::string& name, LvTagLayer* layer);
 std::string LvTagLayerName(LvTagLayer layer);
 

@@ -23,7 +23,7 @@ void SetLvPhantomNames(const LvPhantomNames& names, const std::string& prefix,
         "systole, cycle, rigid-axial, rigid-lateral, rigid-tilt, rigid-spin, "
         "static");
   Check(ParseLvTagLayer(names.wall_tags, &options->tags), prefix, "wall_tags",
-        names.wall_tags, "midwall, wall, endo");
+        names.wall_tags, "midwall, wall, endo, epi");
   Check(ParseLvRegion(names.region, &options->region), prefix, "region",
         names.region, "full, midventricular");
   Check(ParseLvSampling(names.sampling, &options->sampling), prefix, "sampling",

@@ -38,6 +38,10 @@ TEST(LvPhantomNamesTest, SetsEveryChoiceByName) {
   SetLvPhantomNames(names, "--", &options);
   EXPECT_EQ(options.tags, LvTagLayer::kEndocardium);
   EXPECT_EQ(LvTagLayerName(options.tags), "endo");
+  names.wall_tags = "epi";
+  SetLvPhantomNames(names, "--", &options);
+  EXPECT_EQ(options.tags, LvTagLayer::kEpicardium);
+  EXPECT_EQ(LvTagLayerName(options.tags), "epi");
 }
 
 TEST(LvPhantomNamesTest, UnknownNamesAreNamedWithTheirChoices) {

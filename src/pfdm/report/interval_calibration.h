@@ -5,8 +5,7 @@
 // 30's rule); every other interval is not (fit.json's
 // uncertainty_calibrated says which, the report stars the others): too
 // narrow or too wide.  Data of another kind (tags and contours mixed,
-// tags some frames lose, the mid-wall's or the epicardium's contours
-// alone) have no calibrated interval.
+// tags some frames lose) have no calibrated interval.
 #ifndef PFDM_REPORT_INTERVAL_CALIBRATION_H_
 #define PFDM_REPORT_INTERVAL_CALIBRATION_H_
 
@@ -22,24 +21,27 @@ enum class Calibration { kCalibrated, kNotCalibrated };
 // The kinds of data calibrated: tags on one surface (a mid-wall fit), tags
 // through the wall (a solid), both walls' contours (no frame tracked, a
 // solid), the endocardium's contours alone (no frame tracked, one
-// surface: the endocardium); kOther: none.
+// surface: the endocardium), the epicardium's alone (likewise), contours
+// of neither wall (no frame tracked, one surface: the mid-wall); kOther:
+// none.
 enum class IntervalData {
   kMidwallTags,
   kWallTags,
   kContours,
   kEndoContours,
+  kEpiContours,
+  kMidwallContours,
   kOther
 };
 
 // The fit's kind: tags where every frame is tracked, by whether the model
 // is a solid; where none is (FrameFit::tracked), wall contours if the
-// model is a solid and endocardial contours if it is the endocardium's
-// surface; else kOther (a mix, contours of the mid-wall or the
-// epicardium).
+// model is a solid, else by the wall of its one surface: endocardial,
+// epicardial or mid-wall contours; else kOther (a mix).
 IntervalData IntervalDataOf(const SequenceFit& fit);
 
-// "midwall tags", "wall tags", "wall contours", "endocardial contours" or
-// "other".
+// "midwall tags", "wall tags", "wall contours", "endocardial contours",
+// "epicardial contours", "midwall contours" or "other".
 std::string IntervalDataName(IntervalData data);
 
 // fit.json keys of data's calibrated numbers: a key holds wherever it

@@ -18,7 +18,9 @@ bool In(const std::vector<std::string>& names, const std::string& key) {
 
 constexpr IntervalData kAll[] = {
     IntervalData::kMidwallTags, IntervalData::kWallTags,
-    IntervalData::kContours, IntervalData::kEndoContours, IntervalData::kOther};
+    IntervalData::kContours,    IntervalData::kEndoContours,
+    IntervalData::kEpiContours, IntervalData::kMidwallContours,
+    IntervalData::kOther};
 
 // Every calibrated key names a number fit.json gives an interval: a
 // frame's clinical or strain number, a segment's, the ejection's ratio,
@@ -91,6 +93,29 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
                           "thickening_percent", "rotation_deg"}) {
     EXPECT_FALSE(Has(D::kEndoContours, key)) << key;
   }
+  // The mid-wall's contours alone: every number they measure held it in
+  // 90-97 %, the segments' Ell included; no wall, no turn seen.
+  for (const char* key :
+       {"ratio", "edv_ml", "esv_ml", "longitudinal_shortening_percent",
+        "radial_contraction_percent", "gcs_percent", "gls_percent",
+        "ecc_percent", "ell_percent"}) {
+    EXPECT_TRUE(Has(D::kMidwallContours, key)) << key;
+  }
+  for (const char* key :
+       {"wall_thickening_percent", "lv_mass_g", "thickening_percent",
+        "rotation_deg", "net_twist_deg"}) {
+    EXPECT_FALSE(Has(D::kMidwallContours, key)) << key;
+  }
+  // The epicardium's: the same but EDV (0.88).
+  for (const char* key : {"ratio", "esv_ml", "longitudinal_shortening_percent",
+                          "radial_contraction_percent", "gcs_percent",
+                          "gls_percent", "ecc_percent", "ell_percent"}) {
+    EXPECT_TRUE(Has(D::kEpiContours, key)) << key;
+  }
+  for (const char* key : {"edv_ml", "wall_thickening_percent", "lv_mass_g",
+                          "thickening_percent", "rotation_deg"}) {
+    EXPECT_FALSE(Has(D::kEpiContours, key)) << key;
+  }
   // No kind's apex rotation or shear angle was shown calibrated, and
   // nothing on data of another kind.
   for (IntervalData data : kAll) {
@@ -118,22 +143,29 @@ TEST(IntervalCalibrationTest, KindOfTheFitsData) {
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kContours);
   fit.frames[0].tracked = true;
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kOther);
-  // One surface's contours: the endocardium's were calibrated, the
-  // mid-wall's and the epicardium's were not.
+  // One surface's contours: by its wall, the endocardium's, the
+  // epicardium's or the mid-wall's (a surface of neither wall).
   fit.config = ModelConfig::Paper(9);
   for (FrameFit& f : fit.frames) f.tracked = false;
   fit.surface = WallLayer::kEndocardium;
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kEndoContours);
   fit.surface = WallLayer::kEpicardium;
-  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kOther);
+  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kEpiContours);
   fit.surface = WallLayer::kAnywhere;
+  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kMidwallContours);
+  fit.frames[2].tracked = true;
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kOther);
+  fit.frames[2].tracked = false;
   fit.surface = WallLayer::kEndocardium;
   fit.frames[1].tracked = true;
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kOther);
   EXPECT_EQ(IntervalDataName(IntervalData::kContours), "wall contours");
   EXPECT_EQ(IntervalDataName(IntervalData::kEndoContours),
             "endocardial contours");
+  EXPECT_EQ(IntervalDataName(IntervalData::kMidwallContours),
+            "midwall contours");
+  EXPECT_EQ(IntervalDataName(IntervalData::kEpiContours),
+            "epicardial contours");
 }
 
 }  // namespace
