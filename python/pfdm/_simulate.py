@@ -33,11 +33,12 @@ def simulate(phantom="model", *, frames=None, tags=2000, noise=0.5,
         "lv" only, as the CLI's flags of the same names: kinematics
         "systole", "cycle", "rigid-axial", "rigid-lateral", "rigid-tilt",
         "rigid-spin" or "static"; wall_tags "midwall", "wall" (through
-        the wall), "endo" or "epi" (one wall); lesion a hypokinetic mid anteroseptal sector; breathing
-        a rigid drift; region "full" or "midventricular"; sampling "tags"
-        or "sax-slices" with `slices` planes (0: the default); geometry
-        "prolate" or "cylinder" (a mid-ventricular segment without apex);
-        thickening "designed" or "incompressible".
+        the wall), "endo" or "epi" (one wall); lesion a hypokinetic mid
+        anteroseptal sector; breathing a rigid drift; region "full" or
+        "midventricular"; sampling "tags" or "sax-slices" with `slices`
+        planes (0: the default); geometry "prolate" or "cylinder" (a
+        mid-ventricular segment without apex); thickening "designed" or
+        "incompressible".
 
     Returns
     -------
