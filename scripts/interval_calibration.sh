@@ -9,17 +9,25 @@
 # tags, 7 s for both walls' contours, 1.3-1.5 s for each of the others (two
 # fits each, noisy and noise-free), and one dense noise-free fit per kind.
 # Given a log of that test already run with PFDM_CALIBRATION_SEEDS=seeds,
-# the table is taken from it instead.
+# the table is taken from it instead.  What follows the line $KEEP in the
+# old file (the run's circumstances and the reading, written by hand) is
+# kept after the new tables.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
 seeds=${2:-100}
 out=docs/uncertainty_calibration.md
+KEEP='<!-- written by hand, kept by scripts/interval_calibration.sh -->'
+kept=$(mktemp)
+trap 'rm -f "$kept"' EXIT
+if [[ -f $out ]]; then
+  sed -n "\|^$KEEP\$|,\$p" "$out" >"$kept"
+fi
 if [[ $# -ge 3 ]]; then
   log=$3
 else
   log=$(mktemp)
-  trap 'rm -f "$log"' EXIT
+  trap 'rm -f "$log" "$kept"' EXIT
   PFDM_CALIBRATION_SEEDS=$seeds "$build/pfdm_tests" \
     --gtest_filter='LvIntervalCalibrationTest.*' >"$log" 2>&1 || true
 fi
@@ -50,5 +58,8 @@ fi
   echo "tables show is read in docs/uncertainty.md, Calibration."
   echo
   grep -E '^(\||## |$|pooled)' "$log" | sed 's/^pooled/Pooled/' | cat -s
-} >"$out"
+  cat "$kept"
+} >"$out.new"
+mv "$out.new" "$out"
+rm -f "$kept"
 echo "wrote $out"
