@@ -38,11 +38,11 @@ std::string ParametersCsv(const std::vector<Model>& frames,
 // The standard deviation of ReportedValue(model, f, knot k's u) from the
 // frame's covariance (a1..a3 as a0 a_i: to first order in a0 and a_i).
 // a3's length along the axis also carries `length_variance`, the length's
-// relative error that the highest points' noise puts in (LengthVariance):
-// frame 0 holds a0 where they set it, and neither its held a3 nor a
-// tracked frame's, whose tags' material points frame 0 placed, takes it
-// back (the radii do).  Without it a tracked frame's a3 held the
-// noise-free fit in 75-85 % of the LV phantom's draws, with it 93-97 %.
+// relative error that the highest points' noise and the fitted apex's put
+// in (LengthVariance): frame 0 holds a0 where they set it, and neither its held
+// a3 nor a tracked frame's, whose tags' material points frame 0 placed, takes
+// it back (the radii do).  Without it a tracked frame's a3 held the noise-free
+// fit in 75-85 % of the LV phantom's draws, with it 93-97 %.
 double ReportedSd(const Model& model, const FrameCovariance& covariance, int f,
                   int k, double length_variance = 0.0);
 

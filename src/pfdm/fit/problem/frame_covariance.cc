@@ -145,11 +145,28 @@ double FrameCovariance::LengthNoiseMean() const {
 }
 
 double FrameCovariance::LengthNoiseVariance() const {
-  if (length_noise.size() < 2) return 0.0;
+  if (length_noise.size() < 2) return apex_length_variance;
   const Eigen::Map<const Eigen::VectorXd> f(length_noise.data(),
                                             length_noise.size());
   return (f.array() - f.mean()).square().sum() /
-         (static_cast<double>(f.size()) - 1);
+             (static_cast<double>(f.size()) - 1) +
+         apex_length_variance;
+}
+
+double ApexAxialVariance(const FrameCovariance& covariance,
+                         const Model& model) {
+  if (!covariance.computed) return 0.0;
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  double variance = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const int a = covariance.IndexOf(CovarianceEntry::Kind::kCenter, -1, i);
+    for (int j = 0; j < 3; ++j) {
+      const int b = covariance.IndexOf(CovarianceEntry::Kind::kCenter, -1, j);
+      if (a < 0 || b < 0) continue;
+      variance += axis[i] * axis[j] * covariance.covariance(a, b);
+    }
+  }
+  return std::max(0.0, variance);
 }
 
 double FrameCovariance::KnotSd(const ModelConfig& config, int f, int k) const {

@@ -81,6 +81,41 @@ TEST(FrameCovarianceTest, LengthDrawsGiveTheirMeanAndSampleVariance) {
   EXPECT_NEAR(covariance.LengthNoiseVariance(), 4e-4, 1e-15);
 }
 
+// The apex's variance along the axis is the centre's there, and adds to
+// the length draws' as a share of the squared length.
+TEST(FrameCovarianceTest, ApexVarianceIsTheCentresAlongTheAxis) {
+  using Kind = CovarianceEntry::Kind;
+  Model model;
+  // A quarter turn about x: the long axis along -y.
+  model.state.quaternion = {std::sqrt(0.5), std::sqrt(0.5), 0.0, 0.0};
+  ASSERT_NEAR(model.Rotation().col(2).y(), -1.0, 1e-15);
+  FrameCovariance covariance;
+  covariance.computed = true;
+  covariance.entries = {{Kind::kCenter, -1, 0},
+                        {Kind::kCenter, -1, 1},
+                        {Kind::kCenter, -1, 2},
+                        {Kind::kGlobal, -1, kA0}};
+  Eigen::Matrix4d sigma;
+  sigma << 1.0, 0.5, 0.2, 0.1,  //
+      0.5, 4.0, 0.3, 0.7,       //
+      0.2, 0.3, 9.0, 0.4,       //
+      0.1, 0.7, 0.4, 2.0;
+  covariance.covariance = sigma;
+  EXPECT_NEAR(ApexAxialVariance(covariance, model), 4.0, 1e-12);
+  // Tilted: axis' S axis over the centre's block.
+  model.state.quaternion = {std::cos(0.3), 0.0, std::sin(0.3), 0.0};
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  EXPECT_NEAR(ApexAxialVariance(covariance, model),
+              axis.dot(sigma.topLeftCorner<3, 3>() * axis), 1e-12);
+  // The pose held: nothing moves the apex.
+  covariance.entries = {{Kind::kGlobal, -1, kA0}};
+  covariance.covariance = Eigen::Matrix<double, 1, 1>(2.0);
+  EXPECT_EQ(ApexAxialVariance(covariance, model), 0.0);
+  covariance.length_noise = {0.01, -0.01, 0.03};
+  covariance.apex_length_variance = 1e-4;
+  EXPECT_NEAR(covariance.LengthNoiseVariance(), 5e-4, 1e-15);
+}
+
 // A full-rank linear problem: sigma^2 (X'X)^-1, to round-off, and what
 // ceres::Covariance gives.
 TEST(FrameCovarianceTest, LinearProblemGivesTheTextbookCovariance) {

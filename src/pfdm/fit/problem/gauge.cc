@@ -103,6 +103,12 @@ double ApexHeight(const Model& model) {
   return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u);
 }
 
+double AxialLength(const Model& model) {
+  const double u = model.config.u_max;
+  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) -
+         ApexHeight(model);
+}
+
 double TopHeight(const std::vector<Eigen::Vector3d>& points,
                  const FitOptions& options, const Model& model) {
   const Eigen::Vector3d axis = model.Rotation().col(2);

@@ -52,6 +52,10 @@ double ApexExtent(const Model& model);
 // as TopHeight's.
 double ApexHeight(const Model& model);
 
+// Frame 0's length along its axis from the apex pole to the base ring,
+// a0 (a3(u_max) sin(u_max) - ApexExtent): what SpanAxialExtent sets.
+double AxialLength(const Model& model);
+
 // Height along the model axis of the highest data point that is not an
 // outlier: with a robust loss, points farther than OutlierBandMm
 // (fit/residuals/robust_loss.h) from the surface (a solid's wall) do not

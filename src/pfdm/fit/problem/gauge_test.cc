@@ -52,6 +52,7 @@ TEST(GaugeTest, SpanAxialExtentReachesTheTopPointKeepingApexAndRadii) {
   // The rim (u_max) centre reaches the top point.
   const double rim = model.WorldPoint(model.config.u_max, 0.0).z();
   EXPECT_NEAR(rim, 42.0, 1e-9);
+  EXPECT_NEAR(AxialLength(model), 42.0 - apex_before, 1e-9);
   // Radii in mm are kept at the same height fraction of a0 a_i.
   EXPECT_NEAR(model.state.globals[kA0] * model.FunctionAt(kA1, 0.0),
               radius_before, 1e-9);

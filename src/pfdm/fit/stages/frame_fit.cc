@@ -184,6 +184,13 @@ FrameFit FitFrame(const Frame& frame, bool reference,
           points, fit.material, WithLossScale(options, fit.loss_scale_mm),
           model, fit.covariance.sigma_mm);
     }
+    // Frame 0's length is the top less the fitted apex: the draws move the
+    // top, the covariance the apex.
+    const double length = AxialLength(model);
+    if (fit.covariance.computed && reference && length > 0.0) {
+      fit.covariance.apex_length_variance =
+          ApexAxialVariance(fit.covariance, model) / (length * length);
+    }
   }
   CheckInterrupt(options.solver);
   if (options.local.enabled) {

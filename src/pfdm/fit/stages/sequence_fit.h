@@ -142,14 +142,14 @@ void AddSolverCounts(const SolverReport& report, FrameFit* fit);
 // termination: "; closest points unsettled (0.94 mm in the last search)".
 std::string UnsettledNote(const FrameFit& frame);
 
-// The sample variance of frame 0's length draws (FrameCovariance::
-// length_noise: the length's relative error) for frame 0 and the tracked
-// frames, whose material points frame 0 placed: a uniform stretch, frame
-// 0's scale gauge.  0 for an untracked later frame (its base rim is held
-// at its own highest points by a residual on the last knot, which moves
-// the knots below it little: with its draws as a stretch, short-axis
-// contours' a3 read sd 0.243 mm at knots 2-6 against 0.127 without, both
-// holding the noise-free fit in every draw), and with fewer than two.
+// Frame 0's relative length variance (FrameCovariance::LengthNoiseVariance:
+// its top's draws and its apex's) for frame 0 and the tracked frames,
+// whose material points frame 0 placed: a uniform stretch, frame 0's scale
+// gauge.  0 for an untracked later frame (its base rim is held at its own
+// highest points by a residual on the last knot, which moves the knots
+// below it little: with its draws as a stretch, short-axis contours' a3
+// read sd 0.243 mm at knots 2-6 against 0.127 without, both holding the
+// noise-free fit in every draw, and its own covariance places its apex).
 double LengthVariance(const SequenceFit& fit, size_t t);
 
 }  // namespace pfdm
