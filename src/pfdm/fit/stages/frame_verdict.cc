@@ -9,6 +9,7 @@
 #include "Eigen/Dense"
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/problem/frame_problem.h"
+#include "pfdm/fit/stages/cloud_length.h"
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/loss_scale.h"
 #include "pfdm/fit/stages/top_slice.h"
@@ -299,6 +300,21 @@ void JudgeTopSlice(const Frame& points, const Model& model, Verdict* verdict) {
                        top.points, top.tilt_deg, top.rms_mm));
 }
 
+// A whole ventricle's points spread most along its long axis; a model
+// whose axis lies across that length fits another shape (a squat one, its
+// length less than its width) to them.
+void JudgeAxis(const Frame& points, const Model& model, Verdict* verdict) {
+  const CloudLength length = LengthOf(Positions(points));
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  if (!length.Across(axis)) return;
+  verdict->Fail(kAxisAcrossCode,
+                Format("the model's long axis lies %.0f deg from the data's "
+                       "length (their largest spread %.2f times the next): "
+                       "it runs across the ventricle, whose numbers these "
+                       "are not (give --apex and --base)",
+                       length.DegreesFrom(axis), length.ratio));
+}
+
 void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
   if (spreads[0] >= kFlatDataRatio * spreads[2]) return;
   verdict->Fail("flat_data",
@@ -354,6 +370,7 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     if (!sequence.base_from_labels) {
       JudgeTopSlice(sequence.frames[t], fit->ModelAt(t), &frame.verdict);
     }
+    JudgeAxis(sequence.frames[t], fit->ModelAt(t), &frame.verdict);
     JudgeShape(spreads, &frame.verdict);
   }
 }

@@ -19,6 +19,8 @@
 //   top_slice    the highest data one short-axis slice: the base not in
 //                the data (top_slice.h; not asked of a segmentation's,
 //                whose labels close the base);
+//   axis_across  the model's long axis across an elongated cloud's length
+//                (cloud_length.h);
 //   flat_data    points nearly in a plane, no ventricle.
 // The clinical numbers' plausibility is the analysis' (report/).
 #ifndef PFDM_FIT_STAGES_FRAME_VERDICT_H_
@@ -60,6 +62,7 @@ constexpr double kMinSpanShare = 0.75;
 inline constexpr char kShortSpanCode[] = "short_span";
 constexpr double kFlatDataRatio = 0.02;
 inline constexpr char kTopSliceCode[] = "top_slice";
+inline constexpr char kAxisAcrossCode[] = "axis_across";
 
 // The RMS (mm) of the material points' move from `before` to `after`,
 // over every k-th of them, at most kMoveSamples: an RMS of thousands of

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Eigen/Dense"
+#include "pfdm/fit/stages/cloud_length.h"
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/fit/stages/global_rounds.h"
@@ -35,11 +36,6 @@ constexpr int kChoiceRounds = 5;
 constexpr double kCloseCall = 1.25;
 constexpr size_t kFinalists = 3;
 constexpr size_t kFinalPoints = 800;
-// Largest over the next principal spread (standard deviations) below which
-// the cloud counts as squat, no direction clearly its longest: 1.01-1.04 on
-// mid-ventricular segments, 1.5-2.0 on whole ventricles (the LV phantoms,
-// biv-me's patient 1).
-constexpr double kSquatRatio = 1.25;
 // Knots of a whole ventricle's screened candidates: their linear solves are
 // most of the start's time and shrink with the cube of the knots; the
 // principal axis still wins by 4 times the others' cost (the 2,000-tag
@@ -51,7 +47,6 @@ constexpr double kSquatRatio = 1.25;
 // screened model sampled at the model's knots (ResampleKnots): the same
 // functions, 5 knots uniform in sin u being among 17's.
 constexpr int kChoiceKnots = 5;
-constexpr size_t kPrincipalAxes = 3;
 
 // At most `most` of frame 0's points, evenly spread over their order, with
 // ids of their own.
@@ -84,7 +79,7 @@ CandidateFit BestCandidate(const Frame& first, const ModelConfig& config,
   const std::vector<Eigen::Vector3d> points = Positions(first);
   const std::vector<DataPoint> screen = ChoicePoints(first, kChoicePoints);
   ModelConfig choice_config = config;
-  if (candidates.size() == kPrincipalAxes) {
+  if (LengthOf(points).Elongated()) {
     choice_config.num_knots = std::min(config.num_knots, kChoiceKnots);
   }
   std::vector<CandidateFit> fits;
@@ -121,15 +116,7 @@ std::vector<Eigen::Vector3d> CandidateAxes(
   const Eigen::Matrix3d axes = PrincipalAxes(points);
   std::vector<Eigen::Vector3d> candidates{axes.col(2), axes.col(1),
                                           axes.col(0)};
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const auto& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  Eigen::Vector3d variance = Eigen::Vector3d::Zero();
-  for (const auto& p : points) {
-    variance += (axes.transpose() * (p - mean)).cwiseAbs2();
-  }
-  // Variances along the axes, ascending as the axes are.
-  if (variance[2] < kSquatRatio * kSquatRatio * variance[1]) {
+  if (!LengthOf(points).Elongated()) {
     for (int i = 0; i < 3; ++i) {
       for (int j = i + 1; j < 3; ++j) {
         candidates.push_back((axes.col(i) + axes.col(j)).normalized());
@@ -188,13 +175,23 @@ StartAxis ChooseStartAxis(const Frame& first, const ModelConfig& config,
   }
   std::vector<Eigen::Vector3d> candidates;
   std::string axis_source;
-  if (const auto planes = FindParallelPlanes(points)) {
+  const auto planes = FindParallelPlanes(points);
+  if (planes && !LengthOf(points).Across(planes->normal)) {
     candidates = {planes->normal};
     axis_source = PlanesSource(planes->count);
   } else {
     candidates = CandidateAxes(points);
     axis_source = "point cloud, best of " + std::to_string(candidates.size()) +
                   " candidate axes";
+    // Planes across the cloud's length are no short-axis stack of it (on
+    // 100-150 random tags, chance clumps passed FindParallelPlanes with a
+    // normal 68-90 degrees from it; real stacks' lie within 7): their
+    // normal competes with the cloud's axes, and pays 4 times the cost.
+    if (planes) {
+      candidates.push_back(planes->normal);
+      axis_source +=
+          " and the " + PlanesSource(planes->count) + " across its length";
+    }
   }
   if (candidates.size() == 1) {
     return {InitializeModelAlong(config, points, candidates[0]), axis_source};

@@ -17,25 +17,28 @@ namespace pfdm {
 struct StartAxis {
   Model model;
   // "--apex/--base", the landmarks' AxisHint::source, "normal of 3
-  // parallel planes" or "point cloud, best of 3 candidate axes".
+  // parallel planes", "point cloud, best of 3 candidate axes" (with " and
+  // the normal of 7 parallel planes across its length" where they
+  // competed).
   std::string source;
 };
 
 // In this order: options.hint (--apex/--base, or landmarks in the data);
 // the normal of the parallel planes most of frame 0's points lie on
-// (parallel_planes.h: short-axis slices, tag planes); else the point
-// cloud's candidate axes (CandidateAxes), each tried by fitting frame 0's
-// global rounds to a subset of its points (a whole ventricle's three on 5
-// knots, the close calls on the model's), the lowest cost kept: the
-// principal axis as it is, another along the axis its fit turned to.
+// (parallel_planes.h: short-axis slices, tag planes), unless it lies
+// across the cloud's length (cloud_length.h), where it only competes; else
+// the point cloud's candidate axes (CandidateAxes), each tried by fitting
+// frame 0's global rounds to a subset of its points (a whole ventricle's
+// three on 5 knots, the close calls on the model's), the lowest cost kept:
+// the principal axis as it is, another along the axis its fit turned to.
 // Every model but the hint's is InitializeModelAlong its axis, on all of
 // frame 0's points: the principal axis gives InitializeModel's.
 StartAxis ChooseStartAxis(const Frame& first, const ModelConfig& config,
                           const FitOptions& options, const std::string& source);
 
 // The cloud's principal axes, largest spread first; where the cloud is
-// squat (its largest spread under kSquatRatio times the next), also the six
-// directions halfway between two of them.
+// squat (not CloudLength::Elongated), also the six directions halfway
+// between two of them.
 std::vector<Eigen::Vector3d> CandidateAxes(
     const std::vector<Eigen::Vector3d>& points);
 
