@@ -237,8 +237,19 @@ TEST(FrameVerdictTest, SaysWhenALaterFramesDataSpanLessOfTheAxis) {
 TEST(FrameVerdictTest, FailsAFrameZeroThatNeverMoved) {
   const SequenceFit fit = Judged([](SequenceFit* f) {
     f->frames[0].trace = {{0, 0.0, 0.0, 100.0, 1.0}, {1, 0.0, 0.0, 99.99, 1.0}};
+    f->frames[0].costs = TermCosts{99.99};
   });
   EXPECT_EQ(Codes(fit.frames[0]), "not_moved/failed");
+}
+
+// Rounds that ran out and went back to their best state: the last round's
+// cost is no end of the fit, the kept state's is.
+TEST(FrameVerdictTest, AFrameZeroBackAtItsBestRoundMoved) {
+  const SequenceFit fit = Judged([](SequenceFit* f) {
+    f->frames[0].trace = {{0, 0.0, 0.0, 100.0, 1.0}, {9, 0.0, 0.0, 900.0, 1.0}};
+    f->frames[0].costs = TermCosts{2.0, 0.5};
+  });
+  EXPECT_EQ(Codes(fit.frames[0]), "");
 }
 
 // A later frame's model turned a quarter turn about x: its axis lies
