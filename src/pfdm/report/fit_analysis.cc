@@ -136,6 +136,15 @@ void LeaveOutShortSpanVolumes(const SequenceFit& fit, FitAnalysis* analysis) {
   }
 }
 
+// Whether frame t's contours end at fixed image planes (JudgeClinical's
+// slab): untracked, with no data near the apex or the highest data one
+// short-axis slice.  Tags are material points, whose myocardium is theirs.
+bool EndsAtImagePlanes(const SequenceFit& fit, size_t t) {
+  const FrameFit& frame = fit.frames[t];
+  return !frame.tracked &&
+         (!fit.apex_in_data || frame.verdict.Has(kTopSliceCode));
+}
+
 }  // namespace
 
 RingSpan ClinicalRingSpan(const SequenceFit& fit, bool show_extrapolated) {
@@ -187,9 +196,9 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   analysis.ejection_fraction = EjectionFractionOf(analysis.clinical, ed);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.verdicts.push_back(fit.frames[t].verdict);
-    analysis.verdicts.back().Add(JudgeClinical(analysis.clinical,
-                                               analysis.ejection_fraction,
-                                               analysis.volume_surface, t));
+    analysis.verdicts.back().Add(
+        JudgeClinical(analysis.clinical, analysis.ejection_fraction,
+                      analysis.volume_surface, t, EndsAtImagePlanes(fit, t)));
   }
   analysis.layout = layout;
   analysis.regions = Regions(layout);

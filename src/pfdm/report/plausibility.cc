@@ -35,18 +35,23 @@ void JudgeMass(const ClinicalSummary& c, Verdict* verdict) {
 }
 
 void JudgeMyocardium(const ClinicalSummary& first, const ClinicalSummary& c,
-                     Verdict* verdict) {
+                     bool slab, Verdict* verdict) {
   if (!c.solid || !(first.myocardial_volume_ml > 0.0) ||
       !Measured(c.myocardial_volume_ml)) {
     return;
   }
   const double change = c.myocardial_volume_ml / first.myocardial_volume_ml - 1;
   if (std::abs(change) <= kMyocardiumWarn) return;
-  const std::string text = Format(
+  std::string text = Format(
       "the myocardium's volume changes %+.0f %% from frame 0's "
       "(%.1f to %.1f ml; muscle keeps its volume within a few %%)",
       100.0 * change, first.myocardial_volume_ml, c.myocardial_volume_ml);
-  if (std::abs(change) > kMyocardiumFail) {
+  if (slab) {
+    text +=
+        ", but these contours end at image planes that muscle moves "
+        "through, where it need not";
+  }
+  if (std::abs(change) > kMyocardiumFail && !slab) {
     verdict->Fail("myocardium", text);
   } else {
     verdict->Warn("myocardium", text);
@@ -71,12 +76,12 @@ void JudgeFrameMotion(const ClinicalSummary& before, const ClinicalSummary& c,
 
 Verdict JudgeClinical(const std::vector<ClinicalSummary>& clinical,
                       const EjectionFraction& ejection,
-                      const std::string& volume_surface, size_t t) {
+                      const std::string& volume_surface, size_t t, bool slab) {
   Verdict verdict;
   const ClinicalSummary& c = clinical[t];
   JudgeVolume(c, volume_surface, &verdict);
   JudgeMass(c, &verdict);
-  JudgeMyocardium(clinical.front(), c, &verdict);
+  JudgeMyocardium(clinical.front(), c, slab, &verdict);
   if (t > 0) JudgeFrameMotion(clinical[t - 1], c, volume_surface, &verdict);
   if (volume_surface == "cavity" && static_cast<int>(t) == ejection.es_frame &&
       ejection.ratio > kMaxEjectionFraction) {
