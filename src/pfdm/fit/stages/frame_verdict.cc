@@ -13,6 +13,7 @@
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/loss_scale.h"
 #include "pfdm/fit/stages/top_slice.h"
+#include "pfdm/util/median.h"
 #include "pfdm/util/stride.h"
 
 namespace pfdm {
@@ -23,13 +24,6 @@ std::string Format(const char* format, double a, double b = 0.0,
   char text[256];
   std::snprintf(text, sizeof(text), format, a, b, c);
   return text;
-}
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const size_t middle = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + middle, values.end());
-  return values[middle];
 }
 
 // The RMS the verdict judges: over every point, or with a robust loss over

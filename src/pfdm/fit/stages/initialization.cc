@@ -6,6 +6,7 @@
 #include "Eigen/Dense"
 #include "ceres/rotation.h"
 #include "glog/logging.h"
+#include "pfdm/util/median.h"
 
 namespace pfdm {
 namespace {
@@ -17,13 +18,6 @@ constexpr double kInitialA3 = 0.8;
 // the extrapolation goes at most this many times the points' extent.
 constexpr double kMinExtrapolation = 0.1;
 constexpr double kMaxExtrapolation = 1.0;
-
-double Median(std::vector<double> values) {
-  CHECK(!values.empty());
-  auto middle = values.begin() + values.size() / 2;
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 // Mean distance from the axis of the points in the lowest and highest
 // fifths along it.

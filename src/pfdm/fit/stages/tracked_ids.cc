@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pfdm/util/error.h"
+#include "pfdm/util/median.h"
 #include "pfdm/util/point_cloud_tree.h"
 #include "pfdm/util/stride.h"
 
@@ -19,13 +20,6 @@ namespace {
 // distances: fewer points only lengthen them, which makes a refusal less
 // likely, and a million-point frame costs a tree of 20,000.
 constexpr size_t kNearestSample = 20000;
-
-double Median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  auto middle = values.begin() + values.size() / 2;
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 // Every stride-th point, stride chosen to keep at most `most`.
 std::vector<const DataPoint*> Sample(const Frame& frame, size_t most) {
