@@ -169,9 +169,11 @@ void AddLengthNoise(const SequenceFit& fit, const FitAnalysis& analysis,
   }
 }
 
-bool HasLengthDraws(const SequenceFit& fit) {
+// Whether some frame's length has a variance to add (AddLengthNoiseOf):
+// its top's draws, or frame 0's apex.
+bool HasLengthNoise(const SequenceFit& fit) {
   for (const FrameFit& frame : fit.frames) {
-    if (frame.covariance.length_noise.size() >= 2) return true;
+    if (frame.covariance.LengthNoiseVariance() > 0.0) return true;
   }
   return false;
 }
@@ -245,7 +247,7 @@ NumberSd AddLocalFieldNoise(const SequenceFit& fit, const FitAnalysis& analysis,
   NumberSd bias;
   if (!sd->computed || fit.frames.empty()) return bias;
   const size_t local_draws = LocalDraws(fit);
-  if (local_draws < 2 && !HasLengthDraws(fit)) return bias;
+  if (local_draws < 2 && !HasLengthNoise(fit)) return bias;
   const Moments m = Sample(fit, analysis, local_draws);
   const size_t frames = fit.frames.size();
   bias.clinical.resize(frames);
