@@ -11,6 +11,7 @@
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/parallel_planes.h"
 #include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/testing/false_planes_phantom.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -273,12 +274,7 @@ TEST(FrameVerdictTest, FailsAModelAcrossTheDatasLength) {
 // of the data's radius, under rms_size's bound, and CONVERGENCE; only this
 // reason says so.  Fitted from its own start, no frame has it.
 TEST(FrameVerdictTest, FailsTheFitThatFalsePlanesStarted) {
-  LvPhantomOptions phantom_options;
-  phantom_options.num_frames = 2;
-  phantom_options.num_tags = 150;
-  phantom_options.tags = LvTagLayer::kWall;
-  phantom_options.seed = 1011;
-  const LvPhantom phantom = MakeLvPhantom(phantom_options);
+  const LvPhantom phantom = FalsePlanesPhantom();
   const std::vector<Eigen::Vector3d> points =
       Positions(phantom.points.frames[0]);
   const auto planes = FindParallelPlanes(points);

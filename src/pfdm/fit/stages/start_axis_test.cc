@@ -10,6 +10,7 @@
 #include "pfdm/fit/stages/initialization.h"
 #include "pfdm/fit/stages/parallel_planes.h"
 #include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/testing/false_planes_phantom.h"
 
 namespace pfdm {
 namespace {
@@ -62,12 +63,7 @@ TEST(StartAxisTest, ThenTheNormalOfParallelPlanes) {
 // cloud's length, the normal now competes with its axes and loses; a real
 // stack's normal (the full LV's slices) lies along the length and is kept.
 TEST(StartAxisTest, PlanesAcrossTheCloudsLengthOnlyCompete) {
-  LvPhantomOptions options;
-  options.num_frames = 2;
-  options.num_tags = 150;
-  options.tags = LvTagLayer::kWall;
-  options.seed = 1011;
-  const LvPhantom phantom = MakeLvPhantom(options);
+  const LvPhantom phantom = FalsePlanesPhantom();
   const std::vector<Eigen::Vector3d> points =
       Positions(phantom.points.frames[0]);
   const auto planes = FindParallelPlanes(points);
