@@ -62,6 +62,17 @@ class GlobalRounds {
   const SolverReport& report() const { return report_; }
 
  private:
+  // A round's outcome: its search's move, model, material points, found
+  // points, report and costs.
+  struct Snapshot {
+    double moved = std::numeric_limits<double>::infinity();
+    ModelState state;
+    std::vector<MaterialPoint> material;
+    std::vector<Eigen::Vector3d> found, normals;
+    SolverReport report;
+    TermCosts costs;
+  };
+
   void SolveCoarse();
   // A round's solve; a predictor takes one step only (PredictsRound).
   SolverReport SolveRound(TrajectoryRecorder* recorder, bool predictor);
@@ -78,6 +89,10 @@ class GlobalRounds {
   // least, or, after the last round, goes back to the best one.
   void KeepBest();
   void BackToBest();
+  Snapshot Take() const;
+  void Restore(Snapshot snapshot);
+  // Sum of the untracked points' squared distances to their closest points.
+  double SquaredDistanceToFound() const;
   // Searches the untracked points' closest material points and returns how
   // far (mm) the farthest one's model point moved from `now`, its model
   // point before the search (computed when not given).
@@ -111,17 +126,8 @@ class GlobalRounds {
   // untracked points' first material points (every k-th of many).
   std::optional<RoundAcceleration> acceleration_;
   std::vector<MaterialPoint> probes_;
-  // The round whose search moved the points least: its model, material
-  // points, found points, report and costs.
-  struct Best {
-    double moved = std::numeric_limits<double>::infinity();
-    ModelState state;
-    std::vector<MaterialPoint> material;
-    std::vector<Eigen::Vector3d> found, normals;
-    SolverReport report;
-    TermCosts costs;
-  };
-  std::optional<Best> best_;
+  // The round whose search moved the points least.
+  std::optional<Snapshot> best_;
 };
 
 }  // namespace pfdm

@@ -58,13 +58,17 @@ Eigen::VectorXd ProbePoints(const Model& model,
   return stacked;
 }
 
+void RoundAcceleration::Restart() {
+  solutions_.clear();
+  changes_.clear();
+  ++restarts_;
+}
+
 Eigen::VectorXd RoundAcceleration::Next(Eigen::VectorXd change,
                                         Eigen::VectorXd solution) {
   const double size = change.norm();
   if (!changes_.empty() && size > kRestartGrowth * smallest_change_) {
-    solutions_.clear();
-    changes_.clear();
-    ++restarts_;
+    Restart();
   }
   if (changes_.empty() || size < smallest_change_) smallest_change_ = size;
   solutions_.push_back(std::move(solution));

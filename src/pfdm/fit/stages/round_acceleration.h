@@ -41,6 +41,9 @@ class RoundAcceleration {
   // region where it models the map.
   Eigen::VectorXd Next(Eigen::VectorXd change, Eigen::VectorXd solution);
 
+  // Forgets the recorded rounds (after a mix that was not taken).
+  void Restart();
+
   int restarts() const { return restarts_; }
 
  private:
