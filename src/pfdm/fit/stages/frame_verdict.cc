@@ -81,10 +81,22 @@ void JudgeUnsettled(const FrameFit& frame, double median_rms,
   }
 }
 
+// Whether one surface was fitted to a frame with both walls' contours: its
+// RMS is then about half the wall's thickness, whatever the fit does.
+bool BothWallsOnOneSurface(const Frame& points, const ModelConfig& config) {
+  if (config.Solid()) return false;
+  bool endo = false, epi = false;
+  for (const DataPoint& p : points.points) {
+    endo = endo || p.layer == WallLayer::kEndocardium;
+    epi = epi || p.layer == WallLayer::kEpicardium;
+  }
+  return endo && epi;
+}
+
 // The RMS against the other frames' and against the data's size: the
 // radius (RMS distance from the centroid) of the frame's points.
 void JudgeRms(const FrameFit& frame, double median_rms, double radius,
-              Verdict* verdict) {
+              bool both_walls_on_one_surface, Verdict* verdict) {
   const double rms = JudgedRmsMm(frame);
   const char* which = frame.loss_weights.empty() ? "RMS" : "RMS of the kept";
   if (rms > kRmsFramesRatio * median_rms &&
@@ -101,7 +113,11 @@ void JudgeRms(const FrameFit& frame, double median_rms, double radius,
       Format(
           " %.2f mm is %.0f %% of the data's radius (%.1f mm): the model does "
           "not describe these points",
-          rms, 100.0 * share, radius);
+          rms, 100.0 * share, radius) +
+      (both_walls_on_one_surface
+           ? " (one surface through both walls' contours; --wall solid fits "
+             "each wall)"
+           : "");
   if (share > kRmsSizeFail) {
     verdict->Fail("rms_size", text);
   } else {
@@ -349,7 +365,9 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     const Eigen::Vector3d spreads = PrincipalSpreads(sequence.frames[t]);
     JudgeSolver(frame, &frame.verdict);
     JudgeUnsettled(frame, median_rms, &frame.verdict);
-    JudgeRms(frame, median_rms, spreads.norm(), &frame.verdict);
+    JudgeRms(frame, median_rms, spreads.norm(),
+             BothWallsOnOneSurface(sequence.frames[t], fit->config),
+             &frame.verdict);
     JudgeDownWeighted(frame, &frame.verdict);
     // The pull is what the prior holds back only where the data's pull
     // balances it: at rest.  A frame short of rest has the solver's warning.

@@ -88,6 +88,38 @@ TEST(FrameVerdictTest, WeighsTheRmsAgainstTheFramesAndTheDataSize) {
   EXPECT_EQ(Codes(warned.frames[0]), "rms_frames/warning,rms_size/warning");
 }
 
+// Both walls' contours fitted as one surface (--wall midwall): the RMS is
+// about half the 10 mm wall's thickness, and the reason says why and what
+// to do; the solid the walls choose by default fits them (no rms_size).
+TEST(FrameVerdictTest, NamesBothWallsOnOneSurfaceAsTheMisfitsCause) {
+  LvPhantomOptions phantom;
+  phantom.region = LvRegion::kMidventricular;
+  phantom.sampling = LvSampling::kSaxSlices;
+  phantom.tags = LvTagLayer::kWall;
+  phantom.num_tags = 400;
+  phantom.num_frames = 1;
+  const PointSequence walls = MakeLvPhantom(phantom).points;
+  FitOptions one_surface;
+  one_surface.wall = WallModel::kMidwall;
+  one_surface.local.enabled = false;
+  const SequenceFit midwall =
+      FitSequence(walls, ModelConfig::Paper(9), one_surface);
+  EXPECT_GT(midwall.frames[0].rms_mm, 3.5);
+  std::string text;
+  for (const VerdictReason& reason : midwall.frames[0].verdict.reasons()) {
+    if (reason.code == "rms_size") text = reason.text;
+  }
+  EXPECT_NE(text.find("(one surface through both walls' contours; --wall "
+                      "solid fits each wall)"),
+            std::string::npos)
+      << text;
+  FitOptions solid = one_surface;
+  solid.wall = WallModel::kAuto;
+  const SequenceFit both = FitSequence(walls, ModelConfig::Paper(9), solid);
+  EXPECT_LT(both.frames[0].rms_mm, 1.0);
+  EXPECT_EQ(Codes(both.frames[0]).find("rms_size"), std::string::npos);
+}
+
 // With a robust loss the RMS reasons judge the points it keeps (weight at
 // least 0.5): frame 0 with 10 % of its points 30 mm off reads RMS 9.5 mm,
 // 24 % of the radius, a failure without the weights; with them its kept
