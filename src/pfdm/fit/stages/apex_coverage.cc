@@ -37,12 +37,12 @@ bool EnoughNearTheApex(int near_apex, size_t num_points) {
 
 }  // namespace
 
-bool ApexInData(const Model& model,
-                const std::vector<Eigen::Vector3d>& points) {
+bool ApexInData(const Model& model, const std::vector<Eigen::Vector3d>& points,
+                double reach) {
   const ApexFrame frame(model);
   int near_apex = 0;
   for (const Eigen::Vector3d& p : points) {
-    near_apex += frame.Reach(p) < kApexReach;
+    near_apex += frame.Reach(p) < reach;
   }
   return EnoughNearTheApex(near_apex, points.size());
 }

@@ -22,10 +22,11 @@ namespace pfdm {
 constexpr double kApexReach = 0.15;
 constexpr int kApexPoints = 3;
 
-// Whether at least kApexPoints of `points` lie within kApexReach of the
-// model's length of its apex pole: MeasureApexCoverage's test, asked of
-// any model (FitFrame asks it of frame 0's start).
-bool ApexInData(const Model& model, const std::vector<Eigen::Vector3d>& points);
+// Whether at least kApexPoints of `points` lie within `reach` of the
+// model's length of its apex pole: with kApexReach MeasureApexCoverage's
+// test, asked of any model (FitFrame asks it of frame 0's start).
+bool ApexInData(const Model& model, const std::vector<Eigen::Vector3d>& points,
+                double reach = kApexReach);
 
 // Sets fit->apex_in_data, apex_data_distance, lowest_data_height,
 // highest_data_height and lowest_data_u from frame

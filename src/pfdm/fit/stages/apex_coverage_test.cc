@@ -56,6 +56,9 @@ TEST(ApexCoverageTest, NoDataNearTheApex) {
   const double height = 40 * (std::sin(-0.7) + 1);
   const double radius = 25 * std::cos(0.7);
   EXPECT_NEAR(fit.apex_data_distance, std::hypot(height, radius) / 60.0, 1e-9);
+  // 0.40 of the length away: within a wider reach.
+  EXPECT_FALSE(ApexInData(fit.ModelAt(0), points, 0.39));
+  EXPECT_TRUE(ApexInData(fit.ModelAt(0), points, 0.41));
 }
 
 // Two points near the apex are not enough (kApexPoints): an outlier or two
