@@ -145,21 +145,6 @@ ModelSurface SampleSurface(const Model& model, int rings, int meridians,
   return surface;
 }
 
-// Where a solid's wall w != 0 ends without a base plane: the least-squares
-// plane of the mid-wall's rim, which the fit puts at the data's top.  Each
-// wall's own rim lies off it along the mid-wall's normal, by w h / 2 times
-// the normal's axial part: the flat lid at the endocardium's rim left the
-// cavity of both walls' short-axis contours 1.7 ml under the endocardial
-// contours' alone (noise-free LV phantom, ED; 1.8 at ES).
-BasePlane RimPlane(const Model& model) {
-  std::vector<Eigen::Vector3d> rim;
-  for (int j = 0; j < kVolumeMeridians; ++j) {
-    rim.push_back(model.WorldPoint(model.config.u_max,
-                                   -kPi + 2.0 * kPi * j / kVolumeMeridians));
-  }
-  return *FitBasePlane(rim);
-}
-
 }  // namespace
 
 ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
@@ -169,10 +154,6 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
 
 ModelSurface CavitySurface(const Model& model, const BasePlane* base,
                            double w) {
-  if (base == nullptr && w != 0.0) {
-    const BasePlane rim = RimPlane(model);
-    return CavitySurface(model, &rim, w);
-  }
   if (base == nullptr) {
     return MakeModelSurface(model, kVolumeRings, kVolumeMeridians, {}, w);
   }
@@ -204,10 +185,6 @@ void ReplaceVertices(const Model& model, double u_low, double u_high, double w,
 
 double CavityVolumeMl(const Model& model, const ModelSurface& surface,
                       const BasePlane* base) {
-  if (base == nullptr && surface.w != 0.0) {
-    const BasePlane rim = RimPlane(model);
-    return CavityVolumeMl(model, surface, &rim);
-  }
   if (base == nullptr) {
     return CappedVolume(surface.mesh, kVolumeMeridians,
                         IsPole(model.config.u_min),
@@ -227,6 +204,15 @@ double CavityVolumeMl(const Model& model, const ModelSurface& surface,
         base);
   }
   return VolumeBelowPlane(surface.mesh, base->point, normal) / 1000.0;
+}
+
+BasePlane MidwallRimPlane(const Model& model) {
+  std::vector<Eigen::Vector3d> rim;
+  for (int j = 0; j < kVolumeMeridians; ++j) {
+    rim.push_back(model.WorldPoint(model.config.u_max,
+                                   -kPi + 2.0 * kPi * j / kVolumeMeridians));
+  }
+  return *FitBasePlane(rim);
 }
 
 double CavityVolumeMl(const Model& model, const BasePlane* base, double w) {

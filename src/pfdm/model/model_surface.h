@@ -36,14 +36,19 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
 // w = -1 of a solid, or of a surface fitted to endocardial contours).
 // Without a base plane: the model surface
 // closed at the base by a fan of triangles around the rim's centroid (a
-// flat lid for a planar rim); a solid's wall w != 0 is cut, as by a base
-// plane, by the plane of the mid-wall's rim, where the data end.  With one: the
+// flat lid for a planar rim).  With one: the
 // model continued past its rim (see MakeModelSurface) and cut by the plane,
 // keeping the apex's side, so a tilted annulus is followed where the flat lid
 // would cut across it. Sampled finely enough that a sphere comes out within 0.1
 // %.
 double CavityVolumeMl(const Model& model, const BasePlane* base = nullptr,
                       double w = 0.0);
+
+// The least-squares plane of the mid-wall's base rim (u_max, w = 0): where
+// a solid's walls end when its data end at one short-axis slice, which the
+// fit's rim reaches; each wall's own rim lies off it along the mid-wall's
+// normal, by w h / 2 times the normal's axial part.
+BasePlane MidwallRimPlane(const Model& model);
 
 // CavityVolumeMl in two steps, for a model measured again after a move
 // confined to a range of u (the delta method's knot steps,

@@ -23,8 +23,13 @@
 namespace pfdm {
 
 struct FitAnalysis {
-  std::vector<Model> models;              // Per frame.
-  std::vector<BasePlane> base_planes;     // Empty: flat lid at the rim.
+  std::vector<Model> models;           // Per frame.
+  std::vector<BasePlane> base_planes;  // Empty: flat lid at the rim.
+  // Without base planes, per frame of a solid whose data end at one
+  // short-axis slice (the verdict's top_slice): the plane of the mid-wall's
+  // rim, which the fit put at that slice, where both walls' volumes end
+  // (MidwallRimPlane); empty elsewhere.  VolumePlaneOf picks the plane.
+  std::vector<std::optional<BasePlane>> slice_planes;
   std::vector<ClinicalSummary> clinical;  // Per frame, against frame 0.
   EjectionFraction ejection_fraction;
   RegionLayout layout;
@@ -107,6 +112,10 @@ std::vector<bool> RotationMeasured(const SequenceFit& fit);
 // data reach the apex (or show_extrapolated), else from the lowest data
 // point to the highest (clamped to the rim): the rings frame 0 has data in.
 RingSpan ClinicalRingSpan(const SequenceFit& fit, bool show_extrapolated);
+
+// The plane frame t's volumes are closed at: its base plane, else its
+// slice plane; nullptr for each surface's flat lid at its own rim.
+const BasePlane* VolumePlaneOf(const FitAnalysis& analysis, size_t t);
 
 // base_planes: one per frame to close the cavity there (see
 // CavityVolumeMl), or empty for the flat lid at the base rim.

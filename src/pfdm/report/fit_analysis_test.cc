@@ -1,8 +1,12 @@
 #include "pfdm/report/fit_analysis.h"
 
+#include <algorithm>
+
 #include "gtest/gtest.h"
+#include "pfdm/fit/stages/fitter.h"
 #include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/model/model_surface.h"
+#include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/testing/truth_as_fit.h"
 
@@ -183,6 +187,50 @@ TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
 // volume, and then the ejection fraction has no ESV nor ratio, whichever
 // frame it is: end-systole may be that frame (the LV phantom's three
 // short-axis slices lost the basal one at ES).  --extrapolated shows them.
+// Both walls' short-axis contours (noise-free LV phantom): the solid's
+// walls end at the highest slice, where the mid-wall's rim is, and its
+// cavity is the endocardial contours' alone to 1 ml.  Each wall's flat lid
+// at its own rim read it 1.6-1.8 ml under.  Tags through the wall end on a
+// surface across it, as the walls' rims do: no slice plane.
+TEST(FitAnalysisTest, ASolidsWallsEndAtTheHighestSlice) {
+  LvPhantomOptions phantom;
+  phantom.sampling = LvSampling::kSaxSlices;
+  phantom.tags = LvTagLayer::kWall;
+  phantom.num_frames = 2;
+  phantom.noise_mm = 0.0;
+  const PointSequence walls = MakeLvPhantom(phantom).points;
+  PointSequence endo = walls;
+  for (Frame& frame : endo.frames) {
+    auto& points = frame.points;
+    points.erase(std::remove_if(points.begin(), points.end(),
+                                [](const DataPoint& p) {
+                                  return p.layer == WallLayer::kEpicardium;
+                                }),
+                 points.end());
+  }
+  FitOptions options;
+  options.local.enabled = false;
+  const SequenceFit solid = FitSequence(walls, ModelConfig::Paper(9), options);
+  ASSERT_TRUE(solid.config.Solid());
+  const FitAnalysis analysis = AnalyzeFit(solid);
+  const FitAnalysis endo_analysis =
+      AnalyzeFit(FitSequence(endo, ModelConfig::Paper(9), options));
+  for (size_t t = 0; t < 2; ++t) {
+    ASSERT_NE(VolumePlaneOf(analysis, t), nullptr) << t;
+    const double volume = analysis.clinical[t].volume_ml;
+    EXPECT_NEAR(volume, endo_analysis.clinical[t].volume_ml, 1.0) << t;
+    EXPECT_LT(CavityVolumeMl(analysis.models[t], nullptr, -1.0), volume - 1.2)
+        << t;
+  }
+  phantom.sampling = LvSampling::kTags;
+  phantom.num_tags = 1000;
+  const FitAnalysis tags = AnalyzeFit(FitSequence(
+      MakeLvPhantom(phantom).points, ModelConfig::Paper(9), options));
+  ASSERT_TRUE(tags.models[0].config.Solid());
+  EXPECT_EQ(VolumePlaneOf(tags, 0), nullptr);
+  EXPECT_EQ(VolumePlaneOf(tags, 1), nullptr);
+}
+
 TEST(FitAnalysisTest, AFrameSpanningTooLittleOfTheAxisHasNoVolume) {
   const Phantom phantom = OnePointPhantom();
   SequenceFit fit = TruthAsFit(phantom);

@@ -118,6 +118,12 @@ std::string PageHead(const PointSequence& points, const SequenceFit& fit,
 }
 
 // How the numbers are measured, and what the volumes are of.
+bool HasSlicePlane(const FitAnalysis& analysis) {
+  return std::any_of(
+      analysis.slice_planes.begin(), analysis.slice_planes.end(),
+      [](const std::optional<BasePlane>& plane) { return plane.has_value(); });
+}
+
 std::string MeasurementNote(const SequenceFit& fit,
                             const FitAnalysis& analysis) {
   const bool cavity = analysis.volume_surface == "cavity";
@@ -147,10 +153,13 @@ std::string MeasurementNote(const SequenceFit& fit,
                    "tags through the wall or contours of both walls for "
                    "that. ")
     << "Volumes close the fitted surface "
-    << (analysis.base_planes.empty()
-            ? "with a flat lid at the base rim"
-            : "at each frame's mitral valve plane (through the MITRAL_VALVE "
-              "guide points)")
+    << (!analysis.base_planes.empty()
+            ? "at each frame's mitral valve plane (through the MITRAL_VALVE "
+              "guide points)"
+        : HasSlicePlane(analysis)
+            ? "at the highest short-axis slice, both walls at the plane of "
+              "the mid-wall's rim there (each wall's own rim lies off it)"
+            : "with a flat lid at the base rim")
     << ".</p>\n";
   return h.str();
 }

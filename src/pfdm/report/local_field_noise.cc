@@ -21,10 +21,9 @@ size_t VolumeIndex() {
 Eigen::VectorXd MeasureOne(const FitAnalysis& analysis,
                            const std::vector<Model>& models, size_t ed,
                            const ReferenceSamples& samples, size_t t) {
-  const BasePlane* plane =
-      analysis.base_planes.empty() ? nullptr : &analysis.base_planes[t];
-  const std::vector<double> values = Flatten(
-      MeasureFrame(models[ed], samples, analysis.regions, models[t], plane));
+  const std::vector<double> values =
+      Flatten(MeasureFrame(models[ed], samples, analysis.regions, models[t],
+                           VolumePlaneOf(analysis, t)));
   return Eigen::Map<const Eigen::VectorXd>(values.data(), values.size());
 }
 

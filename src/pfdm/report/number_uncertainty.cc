@@ -251,10 +251,6 @@ EjectionFraction EjectionSd(const FitAnalysis& analysis, const NumberSd& sd) {
   return out;
 }
 
-const BasePlane* PlaneOf(const FitAnalysis& analysis, size_t t) {
-  return analysis.base_planes.empty() ? nullptr : &analysis.base_planes[t];
-}
-
 // Each frame's numbers' variance from its own parameters, ED held.
 std::vector<Eigen::VectorXd> OwnVariances(const SequenceFit& fit,
                                           const FitAnalysis& analysis) {
@@ -265,7 +261,7 @@ std::vector<Eigen::VectorXd> OwnVariances(const SequenceFit& fit,
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (t == ed) continue;
     const FrameMeasurer frame(ed_model, samples, analysis.regions,
-                              analysis.models[t], PlaneOf(analysis, t));
+                              analysis.models[t], VolumePlaneOf(analysis, t));
     const MovedNumbersOf numbers = [&](const Model& model,
                                        const MovedU& range) {
       return Flatten(frame.Moved(model, range));
@@ -321,7 +317,7 @@ Eigen::VectorXd EdVariances(const SequenceFit& fit,
   std::vector<FrameMeasurer> frames;
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     frames.emplace_back(fitted_ed, fitted_samples, analysis.regions,
-                        analysis.models[t], PlaneOf(analysis, t));
+                        analysis.models[t], VolumePlaneOf(analysis, t));
   }
   // Moved samples, taken again only where a step of a knot moves ED and
   // set back after each step (assigned, not copied anew: no allocation).
@@ -352,7 +348,7 @@ Eigen::VectorXd EdVariances(const SequenceFit& fit,
         measured =
             MeasureFrame(ed_model, samples, analysis.regions,
                          SpunWith(fitted_ed, ed_model, analysis.models[t]),
-                         PlaneOf(analysis, t));
+                         VolumePlaneOf(analysis, t));
       }
       const std::vector<double> values = Flatten(measured);
       all.insert(all.end(), values.begin(), values.end());
