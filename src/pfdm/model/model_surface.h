@@ -36,11 +36,10 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
 // w = -1 of a solid, or of a surface fitted to endocardial contours).
 // Without a base plane: the model surface
 // closed at the base by a fan of triangles around the rim's centroid (a
-// flat lid for a planar rim).  With one: the
-// model continued past its rim (see MakeModelSurface) and cut by the plane,
-// keeping the apex's side, so a tilted annulus is followed where the flat lid
-// would cut across it. Sampled finely enough that a sphere comes out within 0.1
-// %.
+// flat lid for a planar rim).  With one: the model continued past its rim
+// (see MakeModelSurface) and cut by the plane, keeping the apex's side, so a
+// tilted annulus is followed where the flat lid would cut across it.
+// Sampled finely enough that a sphere comes out within 0.1 %.
 double CavityVolumeMl(const Model& model, const BasePlane* base = nullptr,
                       double w = 0.0);
 

@@ -189,6 +189,12 @@ const BasePlane* VolumePlaneOf(const FitAnalysis& analysis, size_t t) {
   return nullptr;
 }
 
+bool HasSlicePlanes(const FitAnalysis& analysis) {
+  return std::any_of(
+      analysis.slice_planes.begin(), analysis.slice_planes.end(),
+      [](const std::optional<BasePlane>& plane) { return plane.has_value(); });
+}
+
 RingSpan ClinicalRingSpan(const SequenceFit& fit, bool show_extrapolated) {
   RingSpan span;
   if (fit.apex_in_data || show_extrapolated) return span;

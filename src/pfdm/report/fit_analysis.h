@@ -116,6 +116,8 @@ RingSpan ClinicalRingSpan(const SequenceFit& fit, bool show_extrapolated);
 // The plane frame t's volumes are closed at: its base plane, else its
 // slice plane; nullptr for each surface's flat lid at its own rim.
 const BasePlane* VolumePlaneOf(const FitAnalysis& analysis, size_t t);
+// Whether some frame's volumes end at its slice plane.
+bool HasSlicePlanes(const FitAnalysis& analysis);
 
 // base_planes: one per frame to close the cavity there (see
 // CavityVolumeMl), or empty for the flat lid at the base rim.

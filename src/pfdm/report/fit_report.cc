@@ -118,12 +118,6 @@ std::string PageHead(const PointSequence& points, const SequenceFit& fit,
 }
 
 // How the numbers are measured, and what the volumes are of.
-bool HasSlicePlane(const FitAnalysis& analysis) {
-  return std::any_of(
-      analysis.slice_planes.begin(), analysis.slice_planes.end(),
-      [](const std::optional<BasePlane>& plane) { return plane.has_value(); });
-}
-
 std::string MeasurementNote(const SequenceFit& fit,
                             const FitAnalysis& analysis) {
   const bool cavity = analysis.volume_surface == "cavity";
@@ -156,7 +150,7 @@ std::string MeasurementNote(const SequenceFit& fit,
     << (!analysis.base_planes.empty()
             ? "at each frame's mitral valve plane (through the MITRAL_VALVE "
               "guide points)"
-        : HasSlicePlane(analysis)
+        : HasSlicePlanes(analysis)
             ? "at the highest short-axis slice, both walls at the plane of "
               "the mid-wall's rim there (each wall's own rim lies off it)"
             : "with a flat lid at the base rim")
