@@ -9,7 +9,7 @@
 #include "pfdm/fit/stages/apex_coverage.h"
 #include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/start.h"
-#include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/testing/segment_contours_phantom.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -114,13 +114,7 @@ TEST(FrameFitTest, ContoursAreNotTracked) {
 // data's lowest point lies 0.42 of the model's length above its apex, as on
 // the phantom's mid-wall (slices at 0.30 to 0.72 of its length).
 TEST(FrameFitTest, ContoursWithoutTheApexKeepTheStartsApex) {
-  LvPhantomOptions phantom;
-  phantom.region = LvRegion::kMidventricular;
-  phantom.sampling = LvSampling::kSaxSlices;
-  phantom.tags = LvTagLayer::kWall;
-  phantom.num_tags = 400;
-  phantom.num_frames = 1;
-  const PointSequence sequence = MakeLvPhantom(phantom).points;
+  const PointSequence sequence = SegmentWallContours();
   const FitOptions options;
   SequenceStart start = StartSequence(sequence, ModelConfig::Paper(9), options);
   ASSERT_FALSE(ApexInData(start.model, Positions(sequence.frames[0])));

@@ -12,6 +12,7 @@
 #include "pfdm/fit/stages/parallel_planes.h"
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/testing/false_planes_phantom.h"
+#include "pfdm/testing/segment_contours_phantom.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -92,13 +93,7 @@ TEST(FrameVerdictTest, WeighsTheRmsAgainstTheFramesAndTheDataSize) {
 // about half the 10 mm wall's thickness, and the reason says why and what
 // to do; the solid the walls choose by default fits them (no rms_size).
 TEST(FrameVerdictTest, NamesBothWallsOnOneSurfaceAsTheMisfitsCause) {
-  LvPhantomOptions phantom;
-  phantom.region = LvRegion::kMidventricular;
-  phantom.sampling = LvSampling::kSaxSlices;
-  phantom.tags = LvTagLayer::kWall;
-  phantom.num_tags = 400;
-  phantom.num_frames = 1;
-  const PointSequence walls = MakeLvPhantom(phantom).points;
+  const PointSequence walls = SegmentWallContours();
   FitOptions one_surface;
   one_surface.wall = WallModel::kMidwall;
   one_surface.local.enabled = false;

@@ -10,6 +10,7 @@
 #include "pfdm/fit/stages/start.h"
 #include "pfdm/fit/stages/wall_stage.h"
 #include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/testing/segment_contours_phantom.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -169,13 +170,7 @@ TEST(GlobalRoundsTest, ASegmentsApexStaysNearTheStarts) {
 // crossed the walls (h -10 to -55 mm, RMS 5 mm); dropped for the plain
 // round, the wall keeps its 10 mm where the data are.
 TEST(GlobalRoundsTest, AMixThatLeapsFromTheDataIsNotTaken) {
-  LvPhantomOptions phantom;
-  phantom.region = LvRegion::kMidventricular;
-  phantom.sampling = LvSampling::kSaxSlices;
-  phantom.tags = LvTagLayer::kWall;
-  phantom.num_tags = 400;
-  phantom.num_frames = 1;
-  const ContourFrame frame(MakeLvPhantom(phantom).points, 9);
+  const ContourFrame frame(SegmentWallContours(), 9);
   ASSERT_TRUE(frame.start.model.config.Solid());
   FrameFit fit = frame.fit;
   Model model = frame.start.model;
