@@ -213,11 +213,18 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   }
   const int ed = fit.ed_frame;
   analysis.ring_span = ClinicalRingSpan(fit, show_extrapolated);
-  // With a base plane per frame the volumes are closed there (below), and
-  // the flat lids' are not measured: a third of the analysis's volumes.
   const bool planes = base_planes.size() == fit.frames.size();
-  analysis.clinical =
-      SummarizeSequence(analysis.models, ed, analysis.ring_span, !planes);
+  if (planes) analysis.base_planes = base_planes;
+  analysis.slice_planes = SlicePlanes(fit, analysis.models, planes);
+  // With a plane for every frame the volumes are closed there (below), and
+  // the flat lids' are not measured: a third of the analysis's volumes.
+  bool every_frame_planed = true;
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    every_frame_planed =
+        every_frame_planed && VolumePlaneOf(analysis, t) != nullptr;
+  }
+  analysis.clinical = SummarizeSequence(analysis.models, ed, analysis.ring_span,
+                                        !every_frame_planed);
   if (fit.time_ms.size() == fit.frames.size()) {
     for (size_t t = 0; t < fit.frames.size(); ++t) {
       analysis.clinical[t].time_ms = fit.time_ms[t];
@@ -225,8 +232,6 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   }
   analysis.volume_surface = VolumeSurfaceName(fit);
   analysis.interval_data = IntervalDataOf(fit);
-  if (planes) analysis.base_planes = base_planes;
-  analysis.slice_planes = SlicePlanes(fit, analysis.models, planes);
   CloseVolumesAtPlanes(fit.config.Solid(), &analysis);
   analysis.volume_measured.assign(fit.frames.size(), true);
   if (!show_extrapolated) LeaveOutShortSpanVolumes(fit, &analysis);
