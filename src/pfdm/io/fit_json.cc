@@ -36,7 +36,8 @@ json Values(const std::vector<double>& values) {
 std::string CavityClosure(const FitAnalysis& analysis) {
   if (analysis.base_planes.empty() && HasSlicePlanes(analysis)) {
     return "the highest short-axis slice: both walls cut by the plane of the "
-           "mid-wall's base rim, each continued past its own rim with its "
+           "lowest wall's base rim, which the fit puts there, each "
+           "continued past its own rim with its "
            "functions held (frames whose data end at one slice; in any "
            "other, a flat lid at each wall's rim)";
   }

@@ -206,13 +206,41 @@ double CavityVolumeMl(const Model& model, const ModelSurface& surface,
   return VolumeBelowPlane(surface.mesh, base->point, normal) / 1000.0;
 }
 
-BasePlane MidwallRimPlane(const Model& model) {
+BasePlane RimPlane(const Model& model, double w) {
   std::vector<Eigen::Vector3d> rim;
   for (int j = 0; j < kVolumeMeridians; ++j) {
     rim.push_back(model.WorldPoint(model.config.u_max,
-                                   -kPi + 2.0 * kPi * j / kVolumeMeridians));
+                                   -kPi + 2.0 * kPi * j / kVolumeMeridians, w));
   }
   return *FitBasePlane(rim);
+}
+
+namespace {
+
+// The rims of a model's layers, lowest first along its axis.
+std::vector<BasePlane> RimsFromLowest(const Model& model) {
+  std::vector<BasePlane> rims = {RimPlane(model)};
+  if (model.config.Solid()) {
+    rims.push_back(RimPlane(model, -1.0));
+    rims.push_back(RimPlane(model, 1.0));
+  }
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  std::stable_sort(rims.begin(), rims.end(),
+                   [&](const BasePlane& a, const BasePlane& b) {
+                     return axis.dot(a.point) < axis.dot(b.point);
+                   });
+  return rims;
+}
+
+}  // namespace
+
+BasePlane LowestRimPlane(const Model& model) {
+  return RimsFromLowest(model).front();
+}
+
+double LowestRimDrop(const Model& model) {
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  return axis.dot(RimPlane(model).point - LowestRimPlane(model).point);
 }
 
 double CavityVolumeMl(const Model& model, const BasePlane* base, double w) {

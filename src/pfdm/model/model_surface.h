@@ -43,11 +43,20 @@ ModelSurface MakeModelSurface(const Model& model, int rings, int meridians,
 double CavityVolumeMl(const Model& model, const BasePlane* base = nullptr,
                       double w = 0.0);
 
-// The least-squares plane of the mid-wall's base rim (u_max, w = 0): where
-// a solid's walls end when its data end at one short-axis slice, which the
-// fit's rim reaches; each wall's own rim lies off it along the mid-wall's
-// normal, by w h / 2 times the normal's axial part.
-BasePlane MidwallRimPlane(const Model& model);
+// The least-squares plane of layer w's base rim (u_max; w = 0 the mid-wall,
+// -1 and 1 a solid's walls).  Each wall's rim lies off the mid-wall's along
+// the mid-wall's normal, by w h / 2 times the normal's axial part.
+BasePlane RimPlane(const Model& model, double w = 0.0);
+
+// The lowest rim of a model's walls along its axis (a solid's endocardium
+// where the base widens, its epicardium where it narrows; the mid-wall's
+// for a surface): where a solid's walls end when its data end at one
+// short-axis slice, which the fit's lowest rim reaches (SolidTopLift).
+BasePlane LowestRimPlane(const Model& model);
+
+// How far a solid's lowest wall rim lies below its mid-wall's, along the
+// model's axis (0 for a surface).
+double LowestRimDrop(const Model& model);
 
 // CavityVolumeMl in two steps, for a model measured again after a move
 // confined to a range of u (the delta method's knot steps,

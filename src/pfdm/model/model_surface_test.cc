@@ -109,7 +109,7 @@ TEST(ModelSurfaceTest, BasePlaneCutsTheContinuedSurface) {
 // radius 40 mm with a 10 mm wall: its walls are spheres of 35 and 45 mm,
 // the mid-wall's rim at z = 40 sin(pi/6) = 20 mm, the endocardium's own at
 // 17.5 and the epicardium's at 22.5, where their flat lids close them.
-TEST(ModelSurfaceTest, ASolidsWallsEndAtTheMidwallsRimPlane) {
+TEST(ModelSurfaceTest, ASolidsWallsEndAtARimPlane) {
   ModelConfig config = ModelConfig::Paper(17);
   config.MakeSolid();
   FunctionValues values = DefaultFunctionValues();
@@ -117,7 +117,7 @@ TEST(ModelSurfaceTest, ASolidsWallsEndAtTheMidwallsRimPlane) {
   values[kA1] = values[kA2] = values[kA3] = 1.0;
   values[kH] = 10.0;
   const Model sphere = Model::Uniform(config, values);
-  const BasePlane rim = MidwallRimPlane(sphere);
+  const BasePlane rim = RimPlane(sphere);
   EXPECT_NEAR(rim.point.z(), 20.0, 1e-9);
   EXPECT_NEAR(std::abs(rim.normal.z()), 1.0, 1e-12);
   for (double radius : {35.0, 45.0}) {
@@ -129,6 +129,30 @@ TEST(ModelSurfaceTest, ASolidsWallsEndAtTheMidwallsRimPlane) {
     EXPECT_NEAR(CavityVolumeMl(sphere, nullptr, w), lidded, 0.002 * lidded)
         << w;
   }
+  // Each wall's rim on its own sphere at u_max (sin = 0.5): the
+  // endocardium's, 2.5 mm below the mid-wall's, is the lowest.
+  EXPECT_NEAR(RimPlane(sphere, -1.0).point.z(), 17.5, 1e-9);
+  EXPECT_NEAR(RimPlane(sphere, 1.0).point.z(), 22.5, 1e-9);
+  EXPECT_NEAR(LowestRimPlane(sphere).point.z(), 17.5, 1e-9);
+  EXPECT_NEAR(LowestRimDrop(sphere), 2.5, 1e-9);
+}
+
+// Below the equator the walls' rims swap: the epicardium's is the lowest.
+// A surface has one rim.
+TEST(ModelSurfaceTest, TheLowestRimIsTheWallsWhoseRimDrops) {
+  ModelConfig config = ModelConfig::Paper(17);
+  config.MakeSolid();
+  config.u_max = -kPi / 6;  // The mid-wall's rim at -20 mm.
+  FunctionValues values = DefaultFunctionValues();
+  values[kA0] = 40.0;
+  values[kA1] = values[kA2] = values[kA3] = 1.0;
+  values[kH] = 10.0;
+  const Model sphere = Model::Uniform(config, values);
+  EXPECT_NEAR(LowestRimPlane(sphere).point.z(), -22.5, 1e-9);
+  EXPECT_NEAR(LowestRimDrop(sphere), 2.5, 1e-9);
+  ModelConfig surface_config = ModelConfig::Paper(17);
+  const Model surface = Model::Uniform(surface_config, values);
+  EXPECT_EQ(LowestRimDrop(surface), 0.0);
 }
 
 // With a base plane the surface stops at the first ring past the rim wholly

@@ -146,19 +146,20 @@ bool EndsAtImagePlanes(const SequenceFit& fit, size_t t) {
 }
 
 // Per frame, a solid's slice plane where its data end at one short-axis
-// slice and no base plane closes it (FitAnalysis::slice_planes).  The flat
-// lid at each wall's own rim, which lies off the slice along the mid-wall's
-// normal, left the cavity of both walls' short-axis contours 1.7 ml under
-// the endocardial contours' alone (noise-free LV phantom, ED; 1.8 at ES).
-// The phantom's tags end on a surface across the wall, as the walls' rims
-// do, and keep the flat lids.
+// slice and no base plane closes it (FitAnalysis::slice_planes): the
+// lowest wall's rim, which the fit put at the slice (RimLift); the other
+// wall's rim lies above it, along the mid-wall's normal.  Closed by a flat
+// lid at each wall's own rim, the cavity of both walls' short-axis contours
+// read 1.7 ml under the endocardial contours' alone (noise-free LV phantom,
+// ED; 1.8 at ES).  The phantom's tags end on a surface across the wall, as
+// the walls' rims do, and keep the flat lids.
 std::vector<std::optional<BasePlane>> SlicePlanes(
     const SequenceFit& fit, const std::vector<Model>& models, bool planes) {
   std::vector<std::optional<BasePlane>> slice(fit.frames.size());
   if (planes || !fit.config.Solid()) return slice;
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (fit.frames[t].verdict.Has(kTopSliceCode)) {
-      slice[t] = MidwallRimPlane(models[t]);
+      slice[t] = LowestRimPlane(models[t]);
     }
   }
   return slice;

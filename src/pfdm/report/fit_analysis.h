@@ -26,9 +26,9 @@ struct FitAnalysis {
   std::vector<Model> models;           // Per frame.
   std::vector<BasePlane> base_planes;  // Empty: flat lid at the rim.
   // Without base planes, per frame of a solid whose data end at one
-  // short-axis slice (the verdict's top_slice): the plane of the mid-wall's
-  // rim, which the fit put at that slice, where both walls' volumes end
-  // (MidwallRimPlane); empty elsewhere.  VolumePlaneOf picks the plane.
+  // short-axis slice (the verdict's top_slice): the plane of the lowest
+  // wall's rim, which the fit put at that slice, where both walls' volumes
+  // end (LowestRimPlane); empty elsewhere.  VolumePlaneOf picks the plane.
   std::vector<std::optional<BasePlane>> slice_planes;
   std::vector<ClinicalSummary> clinical;  // Per frame, against frame 0.
   EjectionFraction ejection_fraction;

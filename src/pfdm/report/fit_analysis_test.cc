@@ -187,11 +187,15 @@ TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
 // volume, and then the ejection fraction has no ESV nor ratio, whichever
 // frame it is: end-systole may be that frame (the LV phantom's three
 // short-axis slices lost the basal one at ES).  --extrapolated shows them.
-// Both walls' short-axis contours (noise-free LV phantom): the solid's
-// walls end at the highest slice, where the mid-wall's rim is, and its
-// cavity is the endocardial contours' alone to 1 ml.  Each wall's flat lid
-// at its own rim read it 1.6-1.8 ml under.  Tags through the wall end on a
-// surface across it, as the walls' rims do: no slice plane.
+// Both walls' short-axis contours (noise-free LV phantom): the fit puts
+// the solid's lowest rim, the endocardium's, at the highest slice
+// (RimLift), its walls end there, and its cavity is the endocardial
+// contours' alone to 1 ml.  The rim residual is soft: at end-systole the
+// rim ends 0.5 mm above the slice (a surface's on the endocardial contours
+// 0.3 mm).  With the mid-wall's rim at the slice, the endocardium's lay
+// 1.3-1.8 mm below it, frame 0 read RMS 0.47 mm (now 0.12) and each wall's
+// flat lid at its own rim 1.6-1.8 ml under.  Tags through the wall end on
+// a surface across it, as the walls' rims do: no slice plane.
 TEST(FitAnalysisTest, ASolidsWallsEndAtTheHighestSlice) {
   LvPhantomOptions phantom;
   phantom.sampling = LvSampling::kSaxSlices;
@@ -216,12 +220,19 @@ TEST(FitAnalysisTest, ASolidsWallsEndAtTheHighestSlice) {
   const FitAnalysis endo_analysis =
       AnalyzeFit(FitSequence(endo, ModelConfig::Paper(9), options));
   for (size_t t = 0; t < 2; ++t) {
-    ASSERT_NE(VolumePlaneOf(analysis, t), nullptr) << t;
+    const BasePlane* plane = VolumePlaneOf(analysis, t);
+    ASSERT_NE(plane, nullptr) << t;
     const double volume = analysis.clinical[t].volume_ml;
     EXPECT_NEAR(volume, endo_analysis.clinical[t].volume_ml, 1.0) << t;
-    EXPECT_LT(CavityVolumeMl(analysis.models[t], nullptr, -1.0), volume - 1.2)
-        << t;
+    const Eigen::Vector3d axis = analysis.models[t].Rotation().col(2);
+    double top = -1e9;
+    for (const DataPoint& p : walls.frames[t].points) {
+      top = std::max(top, axis.dot(p.position));
+    }
+    EXPECT_NEAR(axis.dot(plane->point), top, 0.6) << t;
+    EXPECT_EQ(solid.frames[t].unsettled_mm, 0.0) << t;
   }
+  EXPECT_LT(solid.frames[0].rms_mm, 0.2);
   phantom.sampling = LvSampling::kTags;
   phantom.num_tags = 1000;
   const FitAnalysis tags = AnalyzeFit(FitSequence(

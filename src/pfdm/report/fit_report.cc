@@ -152,7 +152,8 @@ std::string MeasurementNote(const SequenceFit& fit,
               "guide points)"
         : HasSlicePlanes(analysis)
             ? "at the highest short-axis slice, both walls at the plane of "
-              "the mid-wall's rim there (each wall's own rim lies off it)"
+              "the lowest wall's rim, which the fit puts there (the other "
+              "wall's rim lies above it)"
             : "with a flat lid at the base rim")
     << ".</p>\n";
   return h.str();

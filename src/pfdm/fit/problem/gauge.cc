@@ -126,8 +126,8 @@ double TopHeight(const std::vector<Eigen::Vector3d>& points,
 }
 
 void SpanAxialExtent(const std::vector<Eigen::Vector3d>& points,
-                     const FitOptions& options, Model* model) {
-  const double z_base = TopHeight(points, options, *model);
+                     const FitOptions& options, Model* model, double lift) {
+  const double z_base = TopHeight(points, options, *model) + lift;
   if (!std::isfinite(z_base)) return;
   const Eigen::Vector3d axis = model->Rotation().col(2);
   const Eigen::Vector3d center(model->state.center.data());

@@ -66,10 +66,11 @@ double TopHeight(const std::vector<Eigen::Vector3d>& points,
 
 // The scale gauge of frame 0: sets a0 so that the model, a3 held, reaches
 // from its fitted apex to the highest data point along its axis (the base
-// rim), keeping the apex, the radii in mm and the orientation where they
-// are.
+// rim) raised by `lift` (a solid's, frame_fit's RimLift), keeping the apex,
+// the radii in mm and the orientation where they are.
 void SpanAxialExtent(const std::vector<Eigen::Vector3d>& points,
-                     const FitOptions& options, Model* model);
+                     const FitOptions& options, Model* model,
+                     double lift = 0.0);
 
 }  // namespace pfdm
 

@@ -26,9 +26,15 @@ namespace {
 // point the data of a section of ellipticity 0.1 keep their spin against a
 // 0.2 rad pull to within 0.015 rad in one solve (FrameProblemTest), and
 // the start's x axis, the data's widest direction across the axis, is near
-// their choice anyway; 1e-4 left the rounds creeping.  Contours are left as
-// they were: on biv-me's they settle without it, and with it two frames
-// ended 0.05 mm unsettled (docs/performance.md, 2026-12-04).
+// their choice anyway; 1e-4 left the rounds creeping.  A solid's contours
+// need it too: their point-to-plane pulls, fixed along the normals of the
+// last search, let the pose spin a round section at no cost to first
+// order and take in 1 mm of radius (the chord's second order) for the
+// prior's sake; the noise-free LV phantom's both walls' short-axis contours
+// spun 0.25 rad a solve, every other search jumped 9 mm and frame 0 never
+// settled.  A mid-wall's contours are left as they were: on biv-me's they
+// settle without it, and with it two frames ended 0.05 mm unsettled
+// (docs/performance.md, 2026-12-04).
 constexpr double kReferenceSpinWeight = 1e-3;
 // Frame 0's pull toward the start's apex height (ApexGaugeResidual) where
 // no data reach the apex (ApexInData, asked of the start), as weak as the
@@ -183,9 +189,13 @@ FrameFit FitFrame(const Frame& frame, bool reference,
     if (!ApexInData(model, points.positions)) {
       options.reference_apex_weight = kReferenceApexWeight;
     }
-  } else if (reference &&
-             !ApexInData(model, points.positions, kContourApexPullReach)) {
-    options.reference_apex_weight = kReferenceContourApexWeight;
+  } else if (reference) {
+    if (model.config.Solid()) {
+      options.reference_spin_weight = kReferenceSpinWeight;
+    }
+    if (!ApexInData(model, points.positions, kContourApexPullReach)) {
+      options.reference_apex_weight = kReferenceContourApexWeight;
+    }
   }
   CheckInterrupt(options.solver);
   FitGlobal(points, prior, options, source, wall, carried, &fit);

@@ -6,6 +6,7 @@
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/fit/problem/gauge.h"
+#include "pfdm/fit/stages/top_slice.h"
 
 namespace pfdm {
 
@@ -18,7 +19,9 @@ FrameCovariance MeasureFrameCovariance(
   std::optional<double> rim_height;
   if (points.kind != FrameKind::kReference && !points.untracked.empty()) {
     const double top = TopHeight(points.positions, options, model);
-    if (std::isfinite(top)) rim_height = top;
+    const bool top_is_slice =
+        model.config.Solid() && TopIsSlice(points.positions, model);
+    if (std::isfinite(top)) rim_height = top + RimLift(top_is_slice, model);
   }
   const std::vector<Eigen::Vector3d> normals =
       SlidingNormals(model, material, points.sliding);

@@ -10,6 +10,7 @@
 #include "pfdm/fit/correspondence/frame_correspondence.h"
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/fit/problem/gauge.h"
+#include "pfdm/fit/stages/top_slice.h"
 #include "pfdm/util/error.h"
 #include "pfdm/util/stopwatch.h"
 
@@ -104,6 +105,8 @@ GlobalRounds::GlobalRounds(const FramePoints& frame, const ModelState& prior,
   ranks_tags_ =
       std::any_of(frame.untracked.begin(), frame.untracked.end(),
                   [&frame](size_t i) { return frame.assign_depth[i]; });
+  top_is_slice_ = model->config.Solid() && !frame.untracked.empty() &&
+                  TopIsSlice(frame.positions, *model);
 }
 
 void GlobalRounds::set_rank_band_mm(double band_mm) {
@@ -151,7 +154,8 @@ void GlobalRounds::SolveCoarse() {
                   FrameKind::kReference, prior_, reference_},
                  coarse_options, model_);
   AddSolverCounts(coarse_report, fit_);
-  SpanAxialExtent(frame_.positions, options_, model_);
+  SpanAxialExtent(frame_.positions, options_, model_,
+                  RimLift(top_is_slice_, *model_));
 }
 
 void GlobalRounds::Search() { moved_ = UpdateClosest(); }
@@ -257,7 +261,8 @@ SolverReport GlobalRounds::SolveRound(TrajectoryRecorder* recorder,
   std::optional<double> rim_height;
   if (frame_.kind != FrameKind::kReference && !frame_.untracked.empty()) {
     const double top = TopHeight(frame_.positions, options_, *model_);
-    if (std::isfinite(top)) rim_height = top;
+    rim_lift_ = RimLift(top_is_slice_, *model_);
+    if (std::isfinite(top)) rim_height = top + rim_lift_;
   }
   const SolverTracePoint last =
       fit_->trace.empty() ? SolverTracePoint{-1} : fit_->trace.back();
@@ -320,18 +325,25 @@ bool GlobalRounds::Settled(int round, int max_rounds) {
   }
   if (frame_.untracked.empty()) return true;
   if (frame_.kind == FrameKind::kReference) {
-    SpanAxialExtent(frame_.positions, options_, model_);
+    SpanAxialExtent(frame_.positions, options_, model_,
+                    RimLift(top_is_slice_, *model_));
   }
   // Near convergence, how far the solve moved the surface under the
   // points bounds how far their closest points can move (about that far,
   // the points being close to a gently curved surface): under half the
   // tolerance, the search that would confirm it is skipped.
+  // A later frame's rim target took its walls' drop as the solve began
+  // (RimLift): the rounds go on while the drop moves.
+  const double rim_moved =
+      frame_.kind == FrameKind::kReference
+          ? 0.0
+          : std::abs(RimLift(top_is_slice_, *model_) - rim_lift_);
   std::vector<Eigen::Vector3d> now;
-  if (moved_ < kConfirmBelow * tolerance) {
+  if (moved_ < kConfirmBelow * tolerance && rim_moved < 0.5 * tolerance) {
     now = WorldPoints(*model_, Listed(fit_->material, frame_.untracked));
     if (MaxDistance(now, found_) < 0.5 * tolerance) return true;
   }
-  moved_ = UpdateClosest(std::move(now));
+  moved_ = std::max(UpdateClosest(std::move(now)), rim_moved);
   if (moved_ < tolerance) return true;
   if (acceleration_) KeepBest();
   if (round + 1 == max_rounds) {

@@ -119,6 +119,11 @@ class GlobalRounds {
   // then held at their depths (global_rounds.cc, kRerankRounds).
   bool ranks_tags_ = false;
   int ranked_searches_ = 0;
+  // A solid's data end at one short-axis slice, which its walls' rims reach
+  // (RimLift); decided on the model the rounds start from.  The last
+  // solve's lift.
+  bool top_is_slice_ = false;
+  double rim_lift_ = 0.0;
   SurfaceGrid* grid_ = nullptr;
   SolverReport report_;
   // Frames whose untracked points are all contour points: the rounds are

@@ -7,6 +7,7 @@
 
 #include "Eigen/Geometry"
 #include "pfdm/model/base_plane.h"
+#include "pfdm/model/model_surface.h"
 
 namespace pfdm {
 namespace {
@@ -83,6 +84,16 @@ TopSlice FindTopSlice(const std::vector<Eigen::Vector3d>& points,
               top.off_slice_share <= kMaxOffSliceShare &&
               top.tilt_deg <= kTopSliceTiltDeg && top.sectors >= kMinTopSectors;
   return top;
+}
+
+double RimLift(bool top_is_slice, const Model& model) {
+  return top_is_slice && model.config.Solid() ? LowestRimDrop(model) : 0.0;
+}
+
+bool TopIsSlice(const std::vector<Eigen::Vector3d>& points,
+                const Model& model) {
+  const Eigen::Vector3d center(model.state.center.data());
+  return FindTopSlice(points, center, model.Rotation().col(2)).found;
 }
 
 }  // namespace pfdm
