@@ -328,16 +328,16 @@ bool GlobalRounds::Settled(int round, int max_rounds) {
     SpanAxialExtent(frame_.positions, options_, model_,
                     RimLift(top_is_slice_, *model_));
   }
-  // Near convergence, how far the solve moved the surface under the
-  // points bounds how far their closest points can move (about that far,
-  // the points being close to a gently curved surface): under half the
-  // tolerance, the search that would confirm it is skipped.
   // A later frame's rim target took its walls' drop as the solve began
   // (RimLift): the rounds go on while the drop moves.
   const double rim_moved =
       frame_.kind == FrameKind::kReference
           ? 0.0
           : std::abs(RimLift(top_is_slice_, *model_) - rim_lift_);
+  // Near convergence, how far the solve moved the surface under the
+  // points bounds how far their closest points can move (about that far,
+  // the points being close to a gently curved surface): under half the
+  // tolerance, the search that would confirm it is skipped.
   std::vector<Eigen::Vector3d> now;
   if (moved_ < kConfirmBelow * tolerance && rim_moved < 0.5 * tolerance) {
     now = WorldPoints(*model_, Listed(fit_->material, frame_.untracked));
