@@ -49,9 +49,10 @@ double CavityVolumeMl(const Model& model, const BasePlane* base = nullptr,
 BasePlane RimPlane(const Model& model, double w = 0.0);
 
 // The lowest rim of a model's walls along its axis (a solid's endocardium
-// where the base widens, its epicardium where it narrows; the mid-wall's
-// for a surface): where a solid's walls end when its data end at one
-// short-axis slice, which the fit's lowest rim reaches (SolidTopLift).
+// where the mid-wall narrows toward its rim, as above its widest ring; its
+// epicardium where it widens; the mid-wall's for a surface): where a
+// solid's walls end when its data end at one short-axis slice, which the
+// fit's lowest rim reaches (fit/stages/top_slice.h, RimLift).
 BasePlane LowestRimPlane(const Model& model);
 
 // How far a solid's lowest wall rim lies below its mid-wall's, along the

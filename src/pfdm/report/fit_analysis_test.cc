@@ -183,10 +183,6 @@ TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
   }
 }
 
-// A frame whose data span too little of the axis (short_span) has no
-// volume, and then the ejection fraction has no ESV nor ratio, whichever
-// frame it is: end-systole may be that frame (the LV phantom's three
-// short-axis slices lost the basal one at ES).  --extrapolated shows them.
 // Both walls' short-axis contours (noise-free LV phantom): the fit puts
 // the solid's lowest rim, the endocardium's, at the highest slice
 // (RimLift), its walls end there, and its cavity is the endocardial
@@ -242,6 +238,10 @@ TEST(FitAnalysisTest, ASolidsWallsEndAtTheHighestSlice) {
   EXPECT_EQ(VolumePlaneOf(tags, 1), nullptr);
 }
 
+// A frame whose data span too little of the axis (short_span) has no
+// volume, and then the ejection fraction has no ESV nor ratio, whichever
+// frame it is: end-systole may be that frame (the LV phantom's three
+// short-axis slices lost the basal one at ES).  --extrapolated shows them.
 TEST(FitAnalysisTest, AFrameSpanningTooLittleOfTheAxisHasNoVolume) {
   const Phantom phantom = OnePointPhantom();
   SequenceFit fit = TruthAsFit(phantom);
