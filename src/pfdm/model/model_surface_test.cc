@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 #include "pfdm/util/angles.h"
 
 namespace pfdm {
@@ -105,25 +106,20 @@ TEST(ModelSurfaceTest, BasePlaneCutsTheContinuedSurface) {
               EllipsoidVolumeBelow(30, 25, 40, 0.75), 0.005 * 120.0);
 }
 
-// A solid's walls cut by the plane of the mid-wall's rim.  A sphere of
-// radius 40 mm with a 10 mm wall: its walls are spheres of 35 and 45 mm,
-// the mid-wall's rim at z = 40 sin(pi/6) = 20 mm, the endocardium's own at
-// 17.5 and the epicardium's at 22.5, where their flat lids close them.
+// A solid's walls cut by the plane of the mid-wall's rim.  TestShell's
+// sphere of radius 30 mm with a 10 mm wall: its walls are spheres of 25 and
+// 35 mm, the mid-wall's rim at z = 30 sin(pi/6) = 15 mm, the endocardium's
+// own at 12.5 and the epicardium's at 17.5, where their flat lids close
+// them.
 TEST(ModelSurfaceTest, ASolidsWallsEndAtARimPlane) {
-  ModelConfig config = ModelConfig::Paper(17);
-  config.MakeSolid();
-  FunctionValues values = DefaultFunctionValues();
-  values[kA0] = 40.0;
-  values[kA1] = values[kA2] = values[kA3] = 1.0;
-  values[kH] = 10.0;
-  const Model sphere = Model::Uniform(config, values);
+  const Model sphere = TestShell(17);
   const BasePlane rim = RimPlane(sphere);
-  EXPECT_NEAR(rim.point.z(), 20.0, 1e-9);
+  EXPECT_NEAR(rim.point.z(), 15.0, 1e-9);
   EXPECT_NEAR(std::abs(rim.normal.z()), 1.0, 1e-12);
-  for (double radius : {35.0, 45.0}) {
-    const double w = radius < 40.0 ? -1.0 : 1.0;
+  for (double radius : {25.0, 35.0}) {
+    const double w = radius < 30.0 ? -1.0 : 1.0;
     const double cut =
-        EllipsoidVolumeBelow(radius, radius, radius, 20.0 / radius);
+        EllipsoidVolumeBelow(radius, radius, radius, 15.0 / radius);
     EXPECT_NEAR(CavityVolumeMl(sphere, &rim, w), cut, 0.002 * cut) << w;
     const double lidded = EllipsoidVolumeBelow(radius, radius, radius, 0.5);
     EXPECT_NEAR(CavityVolumeMl(sphere, nullptr, w), lidded, 0.002 * lidded)
@@ -131,28 +127,20 @@ TEST(ModelSurfaceTest, ASolidsWallsEndAtARimPlane) {
   }
   // Each wall's rim on its own sphere at u_max (sin = 0.5): the
   // endocardium's, 2.5 mm below the mid-wall's, is the lowest.
-  EXPECT_NEAR(RimPlane(sphere, -1.0).point.z(), 17.5, 1e-9);
-  EXPECT_NEAR(RimPlane(sphere, 1.0).point.z(), 22.5, 1e-9);
-  EXPECT_NEAR(LowestRimPlane(sphere).point.z(), 17.5, 1e-9);
+  EXPECT_NEAR(RimPlane(sphere, -1.0).point.z(), 12.5, 1e-9);
+  EXPECT_NEAR(RimPlane(sphere, 1.0).point.z(), 17.5, 1e-9);
+  EXPECT_NEAR(LowestRimPlane(sphere).point.z(), 12.5, 1e-9);
   EXPECT_NEAR(LowestRimDrop(sphere), 2.5, 1e-9);
 }
 
 // Below the equator the walls' rims swap: the epicardium's is the lowest.
 // A surface has one rim.
 TEST(ModelSurfaceTest, TheLowestRimIsTheWallsWhoseRimDrops) {
-  ModelConfig config = ModelConfig::Paper(17);
-  config.MakeSolid();
-  config.u_max = -kPi / 6;  // The mid-wall's rim at -20 mm.
-  FunctionValues values = DefaultFunctionValues();
-  values[kA0] = 40.0;
-  values[kA1] = values[kA2] = values[kA3] = 1.0;
-  values[kH] = 10.0;
-  const Model sphere = Model::Uniform(config, values);
-  EXPECT_NEAR(LowestRimPlane(sphere).point.z(), -22.5, 1e-9);
+  Model sphere = TestShell(17);
+  sphere.config.u_max = -kPi / 6;  // The mid-wall's rim at -15 mm.
+  EXPECT_NEAR(LowestRimPlane(sphere).point.z(), -17.5, 1e-9);
   EXPECT_NEAR(LowestRimDrop(sphere), 2.5, 1e-9);
-  ModelConfig surface_config = ModelConfig::Paper(17);
-  const Model surface = Model::Uniform(surface_config, values);
-  EXPECT_EQ(LowestRimDrop(surface), 0.0);
+  EXPECT_EQ(LowestRimDrop(TestSpheroid(17)), 0.0);
 }
 
 // With a base plane the surface stops at the first ring past the rim wholly

@@ -5,6 +5,7 @@
 
 #include "Eigen/Geometry"
 #include "gtest/gtest.h"
+#include "pfdm/testing/test_models.h"
 
 namespace pfdm {
 namespace {
@@ -116,30 +117,16 @@ TEST(TopSliceTest, TooFewPoints) {
 }
 
 // A solid whose data end at a slice lifts its mid-wall's rim by its lowest
-// wall's drop (a sphere's endocardium at u_max = pi/6: h/2 sin(pi/6));
-// found on a ring at the mid-wall rim's height, as TopIsSlice reads it
-// about the model's axis.  A surface, or a top that is no slice, keeps it.
+// wall's drop (TestShell's endocardium at u_max = pi/6: h/2 sin(pi/6)),
+// TopIsSlice reading the stack about the model's axis through its centre.
+// A surface, or a top that is no slice, keeps it.
 TEST(TopSliceTest, ASolidsRimRisesByItsLowestWallsDrop) {
-  ModelConfig config = ModelConfig::Paper(9);
-  config.MakeSolid();
-  FunctionValues values = DefaultFunctionValues();
-  values[kA0] = 40.0;
-  values[kA1] = values[kA2] = values[kA3] = 1.0;
-  values[kH] = 10.0;
-  const Model sphere = Model::Uniform(config, values);
-  std::vector<Eigen::Vector3d> slices;
-  for (double z : {-20.0, -10.0, 0.0, 10.0, 20.0}) {
-    for (int k = 0; k < 60; ++k) {
-      const double angle = 2.0 * M_PI * k / 60;
-      const double r = std::sqrt(1600.0 - z * z);
-      slices.push_back({r * std::cos(angle), r * std::sin(angle), z});
-    }
-  }
-  ASSERT_TRUE(TopIsSlice(slices, sphere));
-  EXPECT_NEAR(RimLift(true, sphere), 2.5, 1e-9);
-  EXPECT_EQ(RimLift(false, sphere), 0.0);
-  const Model surface = Model::Uniform(ModelConfig::Paper(9), values);
-  EXPECT_EQ(RimLift(true, surface), 0.0);
+  std::mt19937 random(1);
+  const Model shell = TestShell(9);
+  ASSERT_TRUE(TopIsSlice(Stack(&random), shell));
+  EXPECT_NEAR(RimLift(true, shell), 2.5, 1e-9);
+  EXPECT_EQ(RimLift(false, shell), 0.0);
+  EXPECT_EQ(RimLift(true, TestSpheroid(9)), 0.0);
 }
 
 }  // namespace
