@@ -81,6 +81,12 @@ struct FitOptions {
   // frame to frame (on biv-me's contours the functions then come back to
   // frame 0's at the end of the cycle; 0.001 leaves them 4-25 % off).
   double untracked_prior_weight = 0.01;
+  // Whether that pull (and the temporal one) holds a3, the length, too;
+  // FitFrame lets it go where the data reach the apex (ApexInData), since
+  // the apical data and the base rim's residual then say how long the
+  // model is (fit/stages/frame_fit.cc).  The meridian gauge keeps a3 equal
+  // at every knot, so the length is all it frees.
+  bool untracked_prior_holds_length = true;
   // And toward the frame before, with this weight (fit/stages/
   // temporal_prior.h says what it does); 0: off.
   double temporal_prior_weight = 0.05;

@@ -32,7 +32,7 @@ constexpr const char* kExtrapolatedDefinition =
 constexpr const char* kShortSpanDefinition =
     "In the frames listed the data span under 75 % of frame 0's along the "
     "long axis (the verdict's short_span: contours that lost a slice): "
-    "their walls beyond the data are the model's continuation, and unless "
+    "the ventricle beyond the data is not in them, and unless "
     "shown (--extrapolated) their volumes, mass and myocardial volume "
     "change are null, and so are the ejection fraction's esv_ml and ratio "
     "(end-systole may be such a frame).";

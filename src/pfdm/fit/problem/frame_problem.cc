@@ -320,17 +320,21 @@ void FrameProblem::AddPrior(size_t num_points, const ModelState& prior) {
   const ModelConfig& config = model_->config;
   const double sqrt_weight =
       std::sqrt(prior_weight * PointsPerKnot(num_points));
-  const FunctionValues knot_scales = KnotScales();
+  FunctionValues knot_scales = KnotScales();
+  FunctionValues global_scales =
+      RegularizerScales(*model_, HeldEntries(config, kind_, kGlobalsBlock));
+  if (kind_ == FrameKind::kUntracked &&
+      !options_.untracked_prior_holds_length) {
+    knot_scales[kA3] = global_scales[kA3] = 0.0;
+  }
   for (int k = 0; k < config.num_knots; ++k) {
     prior_ids_.push_back(blocks_.AddResidual(
         PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
         nullptr, false, {k}));
   }
   prior_ids_.push_back(blocks_.AddResidual(
-      PriorResidual::Create(
-          std::sqrt(prior_weight * num_points),
-          RegularizerScales(*model_, HeldEntries(config, kind_, kGlobalsBlock)),
-          prior.globals),
+      PriorResidual::Create(std::sqrt(prior_weight * num_points), global_scales,
+                            prior.globals),
       nullptr, false, {kGlobalsBlock}));
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "Eigen/Geometry"
@@ -164,6 +165,36 @@ TEST(FrameProblemTest, AStepLandsWhereTheSolvesFirstIterationDoes) {
                  (a - model.WorldPoint(material[i].u, material[i].v)).norm());
   }
   EXPECT_GT(largest_move, 0.1);
+}
+
+// An untracked frame of the model's own surface 15 % shorter than the
+// prior's (a3 x 0.85 at every knot), each point pulling along its normal:
+// the prior toward the longer state holds the length back unless it lets
+// a3 go (FitOptions::untracked_prior_holds_length), and then the solve
+// reads the data's length.
+TEST(FrameProblemTest, AnUntrackedPriorThatLetsTheLengthGoReadsTheData) {
+  const Model longer = TestSpheroid(9);
+  Model truth = longer;
+  for (FunctionValues& knot : truth.state.knots) knot[kA3] *= 0.85;
+  std::vector<MaterialPoint> material;
+  const std::vector<Eigen::Vector3d> points = OwnPoints(truth, &material);
+  const std::vector<Eigen::Vector3d> normals =
+      SlidingNormals(truth, material, std::vector<bool>(points.size(), true));
+  const auto a3_read = [&](bool holds_length) {
+    FitOptions options;
+    options.untracked_prior_weight = 0.1;
+    options.untracked_prior_holds_length = holds_length;
+    Model model = truth;
+    EXPECT_TRUE(SolveFrame({points, material, normals, std::nullopt,
+                            FrameKind::kUntracked, longer.state, longer.state},
+                           options, &model)
+                    .usable);
+    return model.state.knots[4][kA3] / longer.state.knots[4][kA3];
+  };
+  const double free = a3_read(false), held = a3_read(true);
+  std::printf("a3 ratio: length free %.5f, held %.5f\n", free, held);
+  EXPECT_NEAR(free, 0.85, 1e-4);
+  EXPECT_GT(held, 0.95);  // 0.988
 }
 
 }  // namespace

@@ -234,25 +234,42 @@ TEST(FrameVerdictTest, SaysWhenKnotSpansInsideTheDataAreEmpty) {
   EXPECT_EQ(Codes(fit.frames[1]), "sparse_rings/warning");
 }
 
-// Frame 0's data span from their lowest to their highest latitude; a later
-// frame's points above `share` of that span (in sin u, as heights go)
-// brought down to it, as contours that lost their upper slices.
-void CutAbove(double share, const std::vector<MaterialPoint>& first,
-              std::vector<MaterialPoint>* material) {
-  const auto [low, high] = std::minmax_element(
-      first.begin(), first.end(),
-      [](const MaterialPoint& a, const MaterialPoint& b) { return a.u < b.u; });
-  const double cut = std::asin(std::sin(low->u) +
-                               share * (std::sin(high->u) - std::sin(low->u)));
-  for (MaterialPoint& m : *material) m.u = std::min(m.u, cut);
+// Heights along the model's long axis of its material points.
+std::vector<double> AxialHeights(const Model& model,
+                                 const std::vector<MaterialPoint>& material) {
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  std::vector<double> heights;
+  for (const Eigen::Vector3d& x : WorldPoints(model, material)) {
+    heights.push_back(x.dot(axis));
+  }
+  return heights;
+}
+
+// Frame t made a frame of contours (untracked) that lost its upper slices:
+// its points above `share` of frame 0's span in mm from its own lowest one
+// left out.
+void CutAbove(double share, int t, SequenceFit* fit) {
+  const std::vector<double> first =
+      AxialHeights(fit->ModelAt(0), fit->frames[0].material);
+  const auto [low0, high0] = std::minmax_element(first.begin(), first.end());
+  std::vector<MaterialPoint>& material = fit->frames[t].material;
+  const std::vector<double> heights = AxialHeights(fit->ModelAt(t), material);
+  const double cut = *std::min_element(heights.begin(), heights.end()) +
+                     share * (*high0 - *low0);
+  std::vector<MaterialPoint> kept;
+  for (size_t i = 0; i < material.size(); ++i) {
+    if (heights[i] <= cut) kept.push_back(material[i]);
+  }
+  material = kept;
+  fit->frames[t].tracked = false;
 }
 
 // Half of frame 0's span is a warning; 85 % of it (9 slices less the
 // basal one keep 7/8) is none.
 TEST(FrameVerdictTest, SaysWhenALaterFramesDataSpanLessOfTheAxis) {
   const SequenceFit fit = Judged([](SequenceFit* f) {
-    CutAbove(0.5, f->frames[0].material, &f->frames[2].material);
-    CutAbove(0.85, f->frames[0].material, &f->frames[1].material);
+    CutAbove(0.5, 2, f);
+    CutAbove(0.85, 1, f);
   });
   EXPECT_EQ(Codes(fit.frames[2]), "short_span/warning");
   EXPECT_NE(fit.frames[2].verdict.reasons()[0].text.find("span 50 %"),
@@ -260,6 +277,17 @@ TEST(FrameVerdictTest, SaysWhenALaterFramesDataSpanLessOfTheAxis) {
       << fit.frames[2].verdict.reasons()[0].text;
   EXPECT_EQ(Codes(fit.frames[1]), "");
   EXPECT_EQ(Codes(fit.frames[0]), "");
+}
+
+// Tracked points keep their material points, whatever the model's length:
+// a tracked frame's span is not judged.
+TEST(FrameVerdictTest, ATrackedFramesSpanIsNotJudged) {
+  const SequenceFit fit = Judged([](SequenceFit* f) {
+    CutAbove(0.5, 2, f);
+    f->frames[2].tracked = true;
+  });
+  EXPECT_FALSE(fit.frames[2].verdict.Has(kShortSpanCode))
+      << Codes(fit.frames[2]);
 }
 
 TEST(FrameVerdictTest, FailsAFrameZeroThatNeverMoved) {
