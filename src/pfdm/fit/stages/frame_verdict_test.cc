@@ -290,6 +290,27 @@ TEST(FrameVerdictTest, ATrackedFramesSpanIsNotJudged) {
       << Codes(fit.frames[2]);
 }
 
+// A solid's thickness below 0 at two knots of frame 1: its walls cross
+// there, said once with the count and the least h; the others are fine.
+TEST(FrameVerdictTest, SaysWhereASolidsWallsCross) {
+  const SequenceFit fit = Judged([](SequenceFit* f) {
+    f->config.MakeSolid();
+    for (FrameFit& frame : f->frames) {
+      for (FunctionValues& knot : frame.state.knots) knot[kH] = 8.0;
+    }
+    f->frames[1].state.knots[15][kH] = -1.0;
+    f->frames[1].state.knots[16][kH] = -2.5;
+  });
+  ASSERT_TRUE(fit.frames[1].verdict.Has("walls_cross")) << Codes(fit.frames[1]);
+  for (const VerdictReason& reason : fit.frames[1].verdict.reasons()) {
+    if (reason.code != "walls_cross") continue;
+    EXPECT_NE(reason.text.find("at 2 knots (least -2.5 mm)"), std::string::npos)
+        << reason.text;
+  }
+  EXPECT_FALSE(fit.frames[0].verdict.Has("walls_cross"));
+  EXPECT_FALSE(fit.frames[2].verdict.Has("walls_cross"));
+}
+
 TEST(FrameVerdictTest, FailsAFrameZeroThatNeverMoved) {
   const SequenceFit fit = Judged([](SequenceFit* f) {
     f->frames[0].trace = {{0, 0.0, 0.0, 100.0, 1.0}, {1, 0.0, 0.0, 99.99, 1.0}};
