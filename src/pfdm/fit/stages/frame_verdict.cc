@@ -221,8 +221,8 @@ void JudgeBounds(const ModelConfig& config, const FrameFit& frame,
 // A solid whose thickness h is negative at a knot has its endocardium
 // outside its epicardium there: its mass and thickening there are no
 // wall's.  biv-me's both walls (--contours lv-cavity,lv-epi) read h down to
-// -5.0 mm at the top knot, by the valve points above the epicardial
-// contours, in 11 of 25 frames, and the fit exited 0 with nothing said.
+// -5.0 mm at the top knot in 11 of 25 frames, and the fit exited 0 with
+// nothing said.
 void JudgeWallThickness(const ModelConfig& config, const FrameFit& frame,
                         Verdict* verdict) {
   if (!config.Solid()) return;
