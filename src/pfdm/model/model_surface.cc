@@ -215,27 +215,15 @@ BasePlane RimPlane(const Model& model, double w) {
   return *FitBasePlane(rim);
 }
 
-namespace {
-
-// The rims of a model's layers, lowest first along its axis.
-std::vector<BasePlane> RimsFromLowest(const Model& model) {
-  std::vector<BasePlane> rims = {RimPlane(model)};
-  if (model.config.Solid()) {
-    rims.push_back(RimPlane(model, -1.0));
-    rims.push_back(RimPlane(model, 1.0));
-  }
-  const Eigen::Vector3d axis = model.Rotation().col(2);
-  std::stable_sort(rims.begin(), rims.end(),
-                   [&](const BasePlane& a, const BasePlane& b) {
-                     return axis.dot(a.point) < axis.dot(b.point);
-                   });
-  return rims;
-}
-
-}  // namespace
-
 BasePlane LowestRimPlane(const Model& model) {
-  return RimsFromLowest(model).front();
+  BasePlane lowest = RimPlane(model);
+  if (!model.config.Solid()) return lowest;
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  for (const double w : {-1.0, 1.0}) {
+    const BasePlane rim = RimPlane(model, w);
+    if (axis.dot(rim.point) < axis.dot(lowest.point)) lowest = rim;
+  }
+  return lowest;
 }
 
 double LowestRimDrop(const Model& model) {

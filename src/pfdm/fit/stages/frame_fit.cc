@@ -200,8 +200,8 @@ FrameFit FitFrame(const Frame& frame, bool reference,
     // Where the data reach the apex, they and the base rim say how long
     // the model is; the pull toward frame 0's length held end-systole long
     // (the LV phantom's short- and long-axis contours: shortening 14.6 %
-    // against 17.0, now 16.6; biv-me's, against its meshes' apex to mitral
-    // plane: 11.1 % at frame 10 against 21.3, now 17.5).
+    // against 17.0, now 16.6; biv-me's, against its meshes' own apex to rim
+    // centroid: 11.1 % at frame 10 against 19.4, now 17.5).
     options.untracked_prior_holds_length = !ApexInData(model, points.positions);
   }
   CheckInterrupt(options.solver);

@@ -287,10 +287,9 @@ double AxialSpanMm(const Model& model, const std::vector<MaterialPoint>& at) {
 // that ends at the highest slice left, under the base.  Not asked of
 // tracked frames: their points keep their material points, so they span
 // the same stretch of the model however far it shortens.
-void JudgeSpan(const SequenceFit& fit, int t, Verdict* verdict) {
-  if (fit.frames[t].tracked) return;
-  const double reference = AxialSpanMm(fit.ModelAt(0), fit.frames[0].material);
-  if (reference <= 0.0) return;
+void JudgeSpan(const SequenceFit& fit, int t, double reference,
+               Verdict* verdict) {
+  if (fit.frames[t].tracked || reference <= 0.0) return;
   const double share =
       AxialSpanMm(fit.ModelAt(t), fit.frames[t].material) / reference;
   if (share >= kMinSpanShare) return;
@@ -391,6 +390,10 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
   std::vector<double> rms;
   for (const FrameFit& frame : fit->frames) rms.push_back(JudgedRmsMm(frame));
   const double median_rms = Median(rms);
+  const double reference_span =
+      fit->frames.empty()
+          ? 0.0
+          : AxialSpanMm(fit->ModelAt(0), fit->frames[0].material);
   for (size_t t = 0; t < fit->frames.size(); ++t) {
     FrameFit& frame = fit->frames[t];
     const Eigen::Vector3d spreads = PrincipalSpreads(sequence.frames[t]);
@@ -413,7 +416,9 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     JudgeWallThickness(fit->config, frame, &frame.verdict);
     JudgeRings(fit->config, frame, &frame.verdict);
     if (t == 0) JudgeMoved(frame, &frame.verdict);
-    if (t > 0) JudgeSpan(*fit, static_cast<int>(t), &frame.verdict);
+    if (t > 0) {
+      JudgeSpan(*fit, static_cast<int>(t), reference_span, &frame.verdict);
+    }
     JudgeApex(*fit, &frame.verdict);
     if (!sequence.base_from_labels) {
       JudgeTopSlice(sequence.frames[t], fit->ModelAt(t), &frame.verdict);
