@@ -109,6 +109,8 @@ TEST_F(EndocardialMeshTest, GetsTheCavityAndAnEjectionFraction) {
       << fit.output;
   const nlohmann::json json = FitJsonAt(dir_ + "/fit");
   EXPECT_EQ(json["settings"]["surface"], "auto");
+  // Not a flag, but it shapes untracked frames' radii (docs/gauge.md).
+  EXPECT_EQ(json["settings"]["untracked_prior_covered_radii_scale"], 0.3);
   EXPECT_EQ(json["model"]["wall_reason"],
             "tracked points of the endocardium only");
   EXPECT_EQ(json["model"]["volume_surface"], "cavity");

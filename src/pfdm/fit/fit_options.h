@@ -87,6 +87,14 @@ struct FitOptions {
   // model is (fit/stages/frame_fit.cc).  The meridian gauge keeps a3 equal
   // at every knot, so the length is all it frees.
   bool untracked_prior_holds_length = true;
+  // Its (and the temporal pull's) scale on a1 and a2 at knots the points
+  // cover all round (CoveredKnots, fit/problem/knot_coverage.h): there the
+  // ring's radii are the data's.  Held fully, the LV phantom's short- and
+  // long-axis contours read radial contraction at end-systole 20.3 % against
+  // 21.9; at 0.3, 21.7; at 0, 21.8, but biv-me's contours' closest points
+  // then cycle (frame 8 unsettled after 20 rounds) and its strain jumps 3.5
+  // points between frames.
+  double untracked_prior_covered_radii_scale = 0.3;
   // And toward the frame before, with this weight (fit/stages/
   // temporal_prior.h says what it does); 0: off.
   double temporal_prior_weight = 0.05;

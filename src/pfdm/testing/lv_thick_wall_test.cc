@@ -256,10 +256,12 @@ TEST(LvThickWallTest, IncompressibleContoursKeepTheirVolume) {
   // the free fit's material myocardium reads +15 % and the constraint
   // thins the wall for it, thickening 8 points under the truth.
   phantom.num_long_axis_planes = 3;
-  // Untracked frames are pulled toward frame 0's radii: the endocardium's
-  // radial contraction reads 1.4-2.9 points under the truth's (27.1 % at
-  // end-systole against 30.0), as LvTemporalPriorTest's mid-wall.
-  ExpectIncompressibleKeepsVolume(phantom, 1.0, 4.0, 3.2);
+  // Untracked frames are pulled toward frame 0's radii, at 0.3 of the
+  // strength where the slices cover a ring (FitOptions::
+  // untracked_prior_covered_radii_scale): the endocardium's radial
+  // contraction reads 0.8-1.5 points under the truth's (28.6 % at
+  // end-systole against 30.0; 27.1 with the full pull).
+  ExpectIncompressibleKeepsVolume(phantom, 1.0, 4.0);
 }
 
 }  // namespace

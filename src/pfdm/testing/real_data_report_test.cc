@@ -33,7 +33,11 @@ namespace {
 // there, a surface 0.21 mm outside the points on average; with the local
 // field, which follows the contours (0.12 mm inside), 11.4 and 10.7 %.
 // With the contours alone, end-systole's outflow tract is extrapolated and
-// frames 10 and 11 come out lower still.
+// frames 10 and 11 come out lower still.  With the pull toward frame 0's
+// radii eased where the contours cover a ring (0.3, FitOptions::
+// untracked_prior_covered_radii_scale) they read 9.4 and 9.2 % low (8.0
+// and 8.3 at full pull); the points' mean signed distance from the surface
+// there, -0.08 mm against -0.01, cannot tell the two apart.
 TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
@@ -61,7 +65,8 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
     // 0.35 mm here (frames 6 and 13) against a free drift.
     EXPECT_LT(fit.frames[t].rms_mm, 2.5) << "frame " << t;
   }
-  EXPECT_LT(sum_deviation / 25, 0.035);  // 0.031; the global model: 0.022.
+  // 0.023; 0.018 with the covered radii pulled as hard as the rest.
+  EXPECT_LT(sum_deviation / 25, 0.035);
   // Frame 24 is end-diastole again (the meshes: +2.6 % volume): the cycle
   // closes, with no drift of the functions or of what they say.
   const ClinicalSummary& last = analysis.clinical[24];
@@ -69,15 +74,17 @@ TEST(RealDataReportTest, BivMeContourVolumesFollowItsMeshes) {
               last.longitudinal_shortening_percent,
               last.radial_contraction_percent);
   // The meshes' own frame 24 is as long as frame 0 (MeasureMeshMotion:
-  // -0.02 %); the fit's, 3.0 % longer (1.3 % while untracked frames'
+  // -0.02 %); the fit's, 2.6 % longer (1.3 % while untracked frames'
   // length was held at frame 0's).
   EXPECT_NEAR(last.longitudinal_shortening_percent, 0.0, 3.5);
   EXPECT_NEAR(last.radial_contraction_percent, 0.0, 3.0);
   // The shortening, measured a second way: on the meshes' own vertices,
   // apex to rim centroid (MeasureMeshMotion), as the fit's apex pole to
-  // base rim centroid; it follows them within 2.5 points rms over the cycle
-  // (end-systole, frame 10: 17.5 % against 19.4).  With the length of
-  // untracked frames held at frame 0's, 4.9 points (11.1 % at frame 10).
+  // base rim centroid; it follows them within 2.7 points rms over the cycle
+  // (end-systole, frame 10: 16.6 % against 19.4; 2.5 points and 17.5 %
+  // with the covered radii pulled toward frame 0's as hard as the rest).
+  // With the length of untracked frames held at frame 0's, 4.9 points
+  // (11.1 % at frame 10).
   const std::vector<MeshFrameMotion> motion = MeasureMeshMotion(meshes);
   double square_sum = 0.0;
   for (int t = 0; t < 25; ++t) {
@@ -179,7 +186,11 @@ TEST(RealDataReportTest, BivMeContourRoundsSettle) {
 // Ecc at frame 14).  With the local field's nodes held to the surface's
 // normal (node_normals.h): 163 rounds, pooled RMS 0.860 mm, the largest
 // spike 2.78 points (apical Ecc at frame 14), and the cavity closer to
-// biv-me's meshes (mean deviation 1.8 % against 2.6 %).
+// biv-me's meshes (mean deviation 1.8 % against 2.6 %).  With the pull on
+// the radii at 0.3 where the contours cover a ring (FitOptions::
+// untracked_prior_covered_radii_scale): 167 rounds, 0.856 mm, the largest
+// spike 2.87 points (the same); with no pull there, 3.47 (apical Ecc at
+// frame 8).
 TEST(RealDataReportTest, BivMeTemporalPriorSettlesEveryFrame) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";

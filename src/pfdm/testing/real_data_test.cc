@@ -44,13 +44,13 @@ TEST(RealDataTest, BivMePatientContoursFitWithinTwoAndAHalfMillimetres) {
 
 // The landmarks give the axis (APEX_POINT to the valves' centroid), as
 // `pfdm fit` takes them: the contours (lv-cavity) fit as well as from the
-// points' own axis (pooled RMS 0.8599 mm against 0.8596; no frame more than
-// 0.002 mm worse) and the cavity volumes, closed at the mitral valve
-// planes, are the same within 0.1 % (ED 175.05 ml against 175.12, ES 70.42
-// against 70.45, frame 17 149.13 against 149.14).  The own axis' numbers:
-// FitSequence without AddLandmarkAxis, with the local field held to the
-// surface's normal (node_normals.h; 0.7959 mm, and ES 68.2 ml, when it slid
-// along the wall).
+// points' own axis (pooled RMS 0.8557 mm against 0.8550; frame 15 0.012 mm
+// worse, the rest at most 0.002) and the cavity volumes, closed at the
+// mitral valve planes, are the same within 0.1 % (ED 175.05 ml against
+// 175.12, ES 69.27 against 69.27, frame 17 149.70 against 149.70).  The own
+// axis' numbers: FitSequence without AddLandmarkAxis, with the local field held
+// to the surface's normal (node_normals.h; 0.7959 mm, and ES 68.2 ml, when it
+// slid along the wall).
 TEST(RealDataTest, BivMeLandmarksGiveTheAxis) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
@@ -69,9 +69,9 @@ TEST(RealDataTest, BivMeLandmarksGiveTheAxis) {
     squares += frame.rms_mm * frame.rms_mm * frame.residuals.size();
     points += static_cast<int>(frame.residuals.size());
   }
-  EXPECT_LE(std::sqrt(squares / points), 0.8596 + 0.001);
+  EXPECT_LE(std::sqrt(squares / points), 0.8550 + 0.001);
   const FitAnalysis analysis = AnalyzeFit(fit, MitralValvePlanes(gp));
-  const double today[][2] = {{0, 175.12}, {9, 70.45}, {17, 149.14}};
+  const double today[][2] = {{0, 175.12}, {9, 69.27}, {17, 149.70}};
   for (const auto& [frame, volume] : today) {
     EXPECT_NEAR(analysis.clinical[static_cast<int>(frame)].volume_ml, volume,
                 0.005 * volume)

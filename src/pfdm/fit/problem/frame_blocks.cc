@@ -103,4 +103,19 @@ void FrameBlocks::Add(double* values, const std::vector<int>& held) {
   blocks_.push_back(std::move(block));
 }
 
+void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
+                      const DampingGroups& groups, Model* model,
+                      SolverOptions* solver) {
+  blocks.ForEachFree([&](double* block, const std::vector<int>& free) {
+    std::vector<double>& scales = solver->damping_scale[block];
+    for (int f : free) scales.push_back(groups.Of(Function(f)));
+  });
+  for (double* pose :
+       {model->state.center.data(), model->state.quaternion.data()}) {
+    if (problem.IsParameterBlockConstant(pose)) continue;
+    solver->damping_scale[pose].assign(problem.ParameterBlockTangentSize(pose),
+                                       groups.pose);
+  }
+}
+
 }  // namespace pfdm

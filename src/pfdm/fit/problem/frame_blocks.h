@@ -11,6 +11,8 @@
 #include "pfdm/fit/problem/gauge.h"
 #include "pfdm/fit/residuals/free_entries.h"
 #include "pfdm/model/model.h"
+#include "pfdm/solvers/damping_groups.h"
+#include "pfdm/solvers/solver.h"
 
 namespace pfdm {
 
@@ -77,6 +79,12 @@ class FrameBlocks {
   ceres::Problem* problem_;
   std::vector<Block> blocks_;  // The globals, then the knots.
 };
+
+// The integrator's damping: the groups' multipliers per free entry of each
+// free block of `blocks`, and for the pose when it is free in `problem`.
+void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
+                      const DampingGroups& groups, Model* model,
+                      SolverOptions* solver);
 
 }  // namespace pfdm
 

@@ -13,6 +13,7 @@
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/problem/frame_blocks.h"
 #include "pfdm/fit/problem/gauss_newton_step.h"
+#include "pfdm/fit/problem/knot_coverage.h"
 #include "pfdm/fit/residuals/apex_gauge_residual.h"
 #include "pfdm/fit/residuals/axis_gauge_chain.h"
 #include "pfdm/fit/residuals/data_cost.h"
@@ -33,23 +34,6 @@ namespace {
 // frame took 31 ms an iteration with 512, 26.5 with 1,024 or 2,048 (one
 // thread; with two, 18 whichever).
 constexpr size_t kPointsPerGroup = 1024;
-
-// The groups' multipliers per free entry of each free block, and for the
-// pose when it is free.
-void AddDampingScales(const ceres::Problem& problem, const FrameBlocks& blocks,
-                      const DampingGroups& groups, Model* model,
-                      SolverOptions* solver) {
-  blocks.ForEachFree([&](double* block, const std::vector<int>& free) {
-    std::vector<double>& scales = solver->damping_scale[block];
-    for (int f : free) scales.push_back(groups.Of(Function(f)));
-  });
-  for (double* pose :
-       {model->state.center.data(), model->state.quaternion.data()}) {
-    if (problem.IsParameterBlockConstant(pose)) continue;
-    solver->damping_scale[pose].assign(problem.ParameterBlockTangentSize(pose),
-                                       groups.pose);
-  }
-}
 
 // One frame's ceres::Problem as it is built up, term by term, and solved.
 // The terms go in a fixed order (data, smoothness, rim, gauges, prior, the
@@ -79,7 +63,8 @@ class FrameProblem {
   // its centre as the solve starts.
   void AddRim(size_t num_points, double rim_height);
   void AddGauges(size_t num_points, const ModelState& reference);
-  void AddPrior(size_t num_points, const ModelState& prior);
+  void AddPrior(const std::vector<MaterialPoint>& material,
+                const ModelState& prior);
   // A solid's wall keeps the reference's volume (after frame 0, with
   // FitOptions::incompressible_weight).
   void AddIncompressibility(size_t num_points, const ModelState& reference);
@@ -312,7 +297,9 @@ void FrameProblem::AddAxisGauge(double sqrt_weight) {
       new AxisGaugeResidual(num_knots, sqrt_weight), nullptr, false, knots));
 }
 
-void FrameProblem::AddPrior(size_t num_points, const ModelState& prior) {
+void FrameProblem::AddPrior(const std::vector<MaterialPoint>& material,
+                            const ModelState& prior) {
+  const size_t num_points = material.size();
   const double prior_weight = kind_ == FrameKind::kUntracked
                                   ? options_.untracked_prior_weight
                                   : options_.prior_weight;
@@ -327,10 +314,17 @@ void FrameProblem::AddPrior(size_t num_points, const ModelState& prior) {
       !options_.untracked_prior_holds_length) {
     knot_scales[kA3] = global_scales[kA3] = 0.0;
   }
+  // Where the points cover a ring, its radii are theirs; held at frame 0's
+  // they read the LV phantom's radial contraction 1.6 points under.
+  const std::vector<FunctionValues> scales =
+      kind_ == FrameKind::kUntracked
+          ? CoveredRadiiScales(config.Grid(), material, knot_scales,
+                               options_.untracked_prior_covered_radii_scale)
+          : std::vector<FunctionValues>(config.num_knots, knot_scales);
   for (int k = 0; k < config.num_knots; ++k) {
     prior_ids_.push_back(blocks_.AddResidual(
-        PriorResidual::Create(sqrt_weight, knot_scales, prior.knots[k]),
-        nullptr, false, {k}));
+        PriorResidual::Create(sqrt_weight, scales[k], prior.knots[k]), nullptr,
+        false, {k}));
   }
   prior_ids_.push_back(blocks_.AddResidual(
       PriorResidual::Create(std::sqrt(prior_weight * num_points), global_scales,
@@ -464,7 +458,7 @@ void BuildFrameProblem(const FrameInputs& frame, FrameProblem* problem) {
   problem->AddSmoothness(num_points);
   if (frame.rim_height) problem->AddRim(num_points, *frame.rim_height);
   problem->AddGauges(num_points, frame.reference);
-  problem->AddPrior(num_points, frame.prior);
+  problem->AddPrior(frame.material, frame.prior);
   problem->AddIncompressibility(num_points, frame.reference);
 }
 

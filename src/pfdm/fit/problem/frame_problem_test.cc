@@ -8,6 +8,7 @@
 #include "Eigen/Geometry"
 #include "gtest/gtest.h"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/problem/knot_coverage.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -195,6 +196,51 @@ TEST(FrameProblemTest, AnUntrackedPriorThatLetsTheLengthGoReadsTheData) {
   std::printf("a3 ratio: length free %.5f, held %.5f\n", free, held);
   EXPECT_NEAR(free, 0.85, 1e-4);
   EXPECT_GT(held, 0.95);  // 0.988
+}
+
+// The same with the ring 20 % narrower (a1 x 0.8): where the points
+// cover a ring (knot_coverage.h), the prior pulls its radii toward the
+// prior's at FitOptions::untracked_prior_covered_radii_scale of its
+// strength: the covered knots' a1 reads 0.814 of the prior's against the
+// data's 0.8 (0.799 with no pull; 0.877 held as hard as the rest).
+TEST(FrameProblemTest, AnUntrackedPriorPullsLessOnTheRadiiTheDataCover) {
+  const Model wider = TestSpheroid(9);
+  Model truth = wider;
+  for (FunctionValues& knot : truth.state.knots) knot[kA1] *= 0.8;
+  std::vector<MaterialPoint> material;
+  const std::vector<Eigen::Vector3d> points = OwnPoints(truth, &material);
+  const std::vector<bool> covered = CoveredKnots(
+      truth.config.Grid(), material, kCoveredKnotShare, kCoveredKnotSectors);
+  ASSERT_TRUE(covered[4]);
+  const std::vector<Eigen::Vector3d> normals =
+      SlidingNormals(truth, material, std::vector<bool>(points.size(), true));
+  // The covered knots' a1 against the prior's, on average.
+  const auto a1_read = [&](double radii_scale) {
+    FitOptions options;
+    options.untracked_prior_weight = 0.1;
+    options.untracked_prior_covered_radii_scale = radii_scale;
+    Model model = truth;
+    EXPECT_TRUE(SolveFrame({points, material, normals, std::nullopt,
+                            FrameKind::kUntracked, wider.state, wider.state},
+                           options, &model)
+                    .usable);
+    double sum = 0.0;
+    int count = 0;
+    for (int k = 0; k < truth.config.num_knots; ++k) {
+      if (!covered[k]) continue;
+      sum += model.state.knots[k][kA1] / wider.state.knots[k][kA1];
+      ++count;
+    }
+    return sum / count;
+  };
+  const double free = a1_read(0.0);
+  const double pulled =
+      a1_read(FitOptions().untracked_prior_covered_radii_scale);
+  const double held = a1_read(1.0);
+  std::printf("a1 ratio: radii free %.5f, pulled at 0.3 %.5f, held %.5f\n",
+              free, pulled, held);
+  EXPECT_NEAR(free, 0.8, 0.005);
+  EXPECT_GT(held - 0.8, 2.0 * std::abs(pulled - 0.8));
 }
 
 }  // namespace
