@@ -105,10 +105,9 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
   // The mid-wall's contours alone: every number they measure but ESV
   // (0.87) and the volume fraction (0.89) held it in 91-96 %, the
   // segments' Ell included; no wall, no turn seen.
-  for (const char* key :
-       {"edv_ml", "longitudinal_shortening_percent",
-        "radial_contraction_percent", "gcs_percent", "gls_percent",
-        "ecc_percent", "ell_percent"}) {
+  for (const char* key : {"edv_ml", "longitudinal_shortening_percent",
+                          "radial_contraction_percent", "gcs_percent",
+                          "gls_percent", "ecc_percent", "ell_percent"}) {
     EXPECT_TRUE(Has(D::kMidwallContours, key)) << key;
   }
   for (const char* key :
