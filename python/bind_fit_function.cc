@@ -145,9 +145,9 @@ std::shared_ptr<FitResult> FitWithFlags(
     const py::object& rv_insertion, const std::string& model, int knots,
     const std::string& wall, const std::string& surface, int ed_frame,
     double smoothness, double prior, double untracked_prior,
-    double temporal_prior, double incompressible, const std::string& loss,
-    const py::object& loss_scale, int threads, const py::object& apex,
-    const py::object& base, const std::string& solver,
+    double untracked_prior_radii, double temporal_prior, double incompressible,
+    const std::string& loss, const py::object& loss_scale, int threads,
+    const py::object& apex, const py::object& base, const std::string& solver,
     const std::string& linear_solver, double time_step, double rest_tolerance,
     int max_steps, const std::string& damping, const std::string& damping_scale,
     const std::string& jacobian, const std::string& local,
@@ -166,6 +166,7 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.smoothness = smoothness;
   s.prior = prior;
   s.untracked_prior = untracked_prior;
+  s.untracked_prior_radii = untracked_prior_radii;
   s.temporal_prior = temporal_prior;
   s.incompressible = incompressible;
   s.loss = loss;
@@ -207,6 +208,7 @@ void BindFitFunction(py::module_& m) {
         py::arg("smoothness") = fit_defaults.smoothness,
         py::arg("prior") = fit_defaults.prior,
         py::arg("untracked_prior") = fit_defaults.untracked_prior,
+        py::arg("untracked_prior_radii") = fit_defaults.untracked_prior_radii,
         py::arg("temporal_prior") = fit_defaults.temporal_prior,
         py::arg("incompressible") = fit_defaults.incompressible,
         py::arg("loss") = fit_defaults.loss,

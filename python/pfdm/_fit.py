@@ -60,7 +60,8 @@ def _without_dashes(message, keywords):
 
 
 _INTS = ("knots", "ed_frame", "threads", "max_steps")
-_FLOATS = ("smoothness", "prior", "untracked_prior", "temporal_prior",
+_FLOATS = ("smoothness", "prior", "untracked_prior", "untracked_prior_radii",
+           "temporal_prior",
            "incompressible", "time_step", "rest_tolerance", "local_stiffness")
 
 
@@ -68,7 +69,7 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         contours=("lv-cavity",), base_plane="auto", rv_insertion=None,
         model="paper", knots=17, wall="auto", surface="auto", ed_frame=0,
         smoothness=1.0, prior=0.001, untracked_prior=0.01,
-        temporal_prior=0.05, incompressible=0.0, loss="none",
+        untracked_prior_radii=0.3, temporal_prior=0.05, incompressible=0.0, loss="none",
         loss_scale="auto", threads=1, apex=None, base=None, solver="direct",
         linear_solver="DENSE_SCHUR", time_step=0.0,
         rest_tolerance=1e-6, max_steps=20000, damping="model",
@@ -120,6 +121,10 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         Pull toward the previous frame's functions.
     untracked_prior : float
         Frames without tracked points (contours): pull toward frame 0.
+    untracked_prior_radii : float
+        That pull's (and temporal_prior's) share on the radii a1 and a2 at
+        knots the points cover all round: 0 leaves them to the data, 1
+        pulls as elsewhere (docs/gauge.md, Radii).
     temporal_prior : float
         Frames without tracked points, in sequences of 20 frames or more:
         pull toward the previous frame (the default settles every frame of

@@ -47,6 +47,10 @@ DEFINE_double(prior, kDefaults.prior,
 DEFINE_double(untracked_prior, kDefaults.untracked_prior,
               "frames without tracked points (contours): pull toward frame "
               "0, same units, 0 to 1e6");
+DEFINE_double(untracked_prior_radii, kDefaults.untracked_prior_radii,
+              "that pull's (and --temporal_prior's) share on the radii a1 "
+              "and a2 at knots the points cover all round, 0 (the data's) "
+              "to 1 (as elsewhere) (docs/gauge.md, Radii)");
 DEFINE_double(temporal_prior, kDefaults.temporal_prior,
               "frames without tracked points, in sequences of 20 frames or "
               "more: pull toward the previous frame too, same units, 0 (off) "
@@ -152,6 +156,7 @@ FitSettings FitSettingsFromFlags() {
   s.smoothness = FLAGS_smoothness;
   s.prior = FLAGS_prior;
   s.untracked_prior = FLAGS_untracked_prior;
+  s.untracked_prior_radii = FLAGS_untracked_prior_radii;
   s.temporal_prior = FLAGS_temporal_prior;
   s.incompressible = FLAGS_incompressible;
   s.loss = FLAGS_loss;

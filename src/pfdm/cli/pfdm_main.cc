@@ -43,7 +43,7 @@ struct Command {
 // The model's and the fit's, FitSettings' but for the solver and outputs.
 const std::string kFitFlags =
     "format contours model knots wall surface ed_frame smoothness prior "
-    "untracked_prior temporal_prior incompressible loss "
+    "untracked_prior untracked_prior_radii temporal_prior incompressible loss "
     "loss_scale threads apex base linear_solver time_step rest_tolerance "
     "max_steps integrator damping damping_scale jacobian local local_grid "
     "local_stiffness local_transmural uncertainty ";

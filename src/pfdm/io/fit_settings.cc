@@ -214,6 +214,8 @@ FitOptions OptionsFrom(const FitSettings& s, bool every_solver) {
   options.smoothness_weight = Weight("smoothness", s.smoothness);
   options.prior_weight = Weight("prior", s.prior);
   options.untracked_prior_weight = Weight("untracked_prior", s.untracked_prior);
+  options.untracked_prior_covered_radii_scale = InRange(
+      "untracked_prior_radii", s.untracked_prior_radii, 0.0, 1.0, "0 and 1");
   options.temporal_prior_weight = Weight("temporal_prior", s.temporal_prior);
   options.incompressible_weight = Weight("incompressible", s.incompressible);
   options.wall = WallModelFromName(s.wall);

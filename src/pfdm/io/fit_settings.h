@@ -35,6 +35,8 @@ struct FitSettings {
   double smoothness = 1.0;
   double prior = 0.001;
   double untracked_prior = FitOptions().untracked_prior_weight;
+  double untracked_prior_radii =
+      FitOptions().untracked_prior_covered_radii_scale;
   double temporal_prior = FitOptions().temporal_prior_weight;
   double incompressible = FitOptions().incompressible_weight;
   std::string loss = "none";

@@ -28,6 +28,8 @@ TEST(FitSettingsTest, DefaultsAreTheLibrarys) {
   EXPECT_EQ(options.smoothness_weight, library.smoothness_weight);
   EXPECT_EQ(options.prior_weight, library.prior_weight);
   EXPECT_EQ(options.untracked_prior_weight, library.untracked_prior_weight);
+  EXPECT_EQ(options.untracked_prior_covered_radii_scale,
+            library.untracked_prior_covered_radii_scale);
   EXPECT_EQ(options.temporal_prior_weight, library.temporal_prior_weight);
   EXPECT_EQ(options.local.enabled, library.local.enabled);
   EXPECT_EQ(options.local.rows, library.local.rows);
@@ -103,6 +105,15 @@ TEST(FitSettingsTest, LossScaleIsAutoOrANumber) {
   EXPECT_EQ(options.loss_scale_mm, 2.5);
 }
 
+// --untracked_prior_radii reaches the option it names, ends included.
+TEST(FitSettingsTest, TheRadiiShareReachesTheFit) {
+  FitSettings s;
+  for (double share : {0.0, 0.5, 1.0}) {
+    s.untracked_prior_radii = share;
+    EXPECT_EQ(FitOptionsFrom(s).untracked_prior_covered_radii_scale, share);
+  }
+}
+
 TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   FitSettings s;
   s.apex = "1,2,3";
@@ -112,6 +123,10 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   s = FitSettings();
   s.untracked_prior = -1.0;
   EXPECT_EQ(ErrorOf(s), "--untracked_prior must be between 0 and 1e6, got -1");
+  s = FitSettings();
+  s.untracked_prior_radii = 1.5;
+  EXPECT_EQ(ErrorOf(s),
+            "--untracked_prior_radii must be between 0 and 1, got 1.5");
   s = FitSettings();
   s.temporal_prior = -0.5;
   EXPECT_EQ(ErrorOf(s), "--temporal_prior must be between 0 and 1e6, got -0.5");
