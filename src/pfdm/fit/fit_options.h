@@ -91,9 +91,9 @@ struct FitOptions {
   // cover all round (CoveredKnots, fit/problem/knot_coverage.h): there the
   // ring's radii are the data's.  Held fully, the LV phantom's short- and
   // long-axis contours read radial contraction at end-systole 20.3 % against
-  // 21.9; at 0.3, 21.7; at 0, 21.8, but biv-me's contours' closest points
-  // then cycle (frame 8 unsettled after 20 rounds) and its strain jumps 3.5
-  // points between frames.
+  // 21.9; at 0.3, 21.7; at 0, 21.8, but biv-me's strain then jumps 3.5
+  // points between frames and, without the temporal pull, its frame 8's
+  // closest points still move after 20 rounds.
   double untracked_prior_covered_radii_scale = 0.3;
   // And toward the frame before, with this weight (fit/stages/
   // temporal_prior.h says what it does); 0: off.

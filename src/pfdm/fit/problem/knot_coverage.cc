@@ -1,6 +1,5 @@
 #include "pfdm/fit/problem/knot_coverage.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace pfdm {

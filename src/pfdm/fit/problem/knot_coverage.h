@@ -1,6 +1,6 @@
 // Which knots a frame's points cover well enough that their radii are the
-// data's: the untracked prior lets a1 and a2 go there (FrameProblem::
-// AddPrior), and keeps holding them where the data are thin.
+// data's: the untracked prior pulls a1 and a2 less there (FrameProblem::
+// AddPrior), and holds them fully where the data are thin.
 #ifndef PFDM_FIT_PROBLEM_KNOT_COVERAGE_H_
 #define PFDM_FIT_PROBLEM_KNOT_COVERAGE_H_
 
