@@ -52,6 +52,28 @@ TEST(KnotCoverageTest, LongAxisCrossingsAloneLeaveARingUncovered) {
   EXPECT_TRUE(CoveredKnots(Grid(), material, 0.5, 4)[2]);
 }
 
+// Three long-axis planes 60 degrees apart cross a ring at six angles, one
+// in each of six sectors: enough to pin the ring's ellipse, so the ring
+// counts as covered (with long-axis contours alone too); two planes'
+// crossings (above) do not.
+TEST(KnotCoverageTest, ThreeLongAxisPlanesCoverARing) {
+  std::vector<MaterialPoint> material;
+  for (int plane = 0; plane < 3; ++plane) {
+    for (double side : {0.0, M_PI}) {
+      const double v = std::remainder(plane * M_PI / 3 + side, 2 * M_PI);
+      for (int i = 0; i < 10; ++i) {
+        material.push_back({Grid().KnotU(2), v, 0.0});
+      }
+    }
+  }
+  const SectorCounts counts = KnotSectorCounts(Grid(), material);
+  int filled = 0;
+  for (double count : counts[2]) filled += count > 0.0;
+  EXPECT_EQ(filled, 6);
+  EXPECT_TRUE(CoveredKnots(Grid(), material, 0.5, 6)[2]);
+  EXPECT_FALSE(CoveredKnots(Grid(), material, 0.5, 7)[2]);
+}
+
 // A knot with points all round but far fewer than its share.
 TEST(KnotCoverageTest, AThinRingIsNotCovered) {
   std::vector<MaterialPoint> material;
