@@ -29,6 +29,17 @@ std::vector<Eigen::Vector3d> WorldPoints(
               &material[0].w, 3, points.data());
   return points;
 }
+
+std::vector<double> AxialHeights(const Model& model,
+                                 const std::vector<MaterialPoint>& material) {
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  std::vector<double> heights;
+  heights.reserve(material.size());
+  for (const Eigen::Vector3d& x : WorldPoints(model, material)) {
+    heights.push_back(x.dot(axis));
+  }
+  return heights;
+}
 namespace {
 
 constexpr int kRefinementSteps = 10;

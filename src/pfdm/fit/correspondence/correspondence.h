@@ -20,6 +20,11 @@ struct MaterialPoint {
 std::vector<Eigen::Vector3d> WorldPoints(
     const Model& model, const std::vector<MaterialPoint>& material);
 
+// Each material point's height along the model's long axis (axis 3, apex
+// to base) in mm, from the world origin.
+std::vector<double> AxialHeights(const Model& model,
+                                 const std::vector<MaterialPoint>& material);
+
 // The model's world-space point x(u, v, w), for any scalar (a Jet when u
 // and v are differentiated).
 template <typename T>

@@ -65,6 +65,28 @@ TEST(CorrespondenceTest, PointsNearTheApexFindTheirMeridian) {
   }
 }
 
+// A material point's height is its world point's component along the
+// model's axis 3, measured a second way: one at a time, against the axis
+// through the model's centre; the apex pole lies lowest.
+TEST(CorrespondenceTest, AxialHeightsAreAlongTheModelsAxis) {
+  const Model model = TwistedTestModel();
+  const std::vector<MaterialPoint> material = {{-M_PI / 2, 0.0, 0.0},
+                                               {-0.7, 1.0, 0.0},
+                                               {0.3, -2.0, 0.0},
+                                               {0.5, 3.0, 0.0}};
+  const std::vector<double> heights = AxialHeights(model, material);
+  ASSERT_EQ(heights.size(), material.size());
+  const Eigen::Vector3d axis = model.Rotation().col(2);
+  const Eigen::Vector3d center(model.state.center.data());
+  for (size_t i = 0; i < material.size(); ++i) {
+    const Eigen::Vector3d x = model.WorldPoint(material[i].u, material[i].v);
+    EXPECT_NEAR(heights[i] - axis.dot(center), (x - center).dot(axis), 1e-9)
+        << i;
+  }
+  EXPECT_EQ(std::min_element(heights.begin(), heights.end()), heights.begin());
+  EXPECT_TRUE(AxialHeights(model, {}).empty());
+}
+
 TEST(CorrespondenceTest, NormalIsUnitAndOrthogonalToTheSurface) {
   const Model model = TwistedTestModel();
   for (double u : {-M_PI / 2, -1.0, 0.1, 0.5}) {  // Not at knots.

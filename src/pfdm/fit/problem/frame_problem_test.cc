@@ -168,6 +168,22 @@ TEST(FrameProblemTest, AStepLandsWhereTheSolvesFirstIterationDoes) {
   EXPECT_GT(largest_move, 0.1);
 }
 
+// `truth`'s own surface as an untracked frame's points, each pulling along
+// its normal, solved from `truth` with `options` against the prior `prior`.
+Model SolveOwnSurfaceUntracked(const Model& truth, const ModelState& prior,
+                               const FitOptions& options,
+                               std::vector<MaterialPoint>* material) {
+  const std::vector<Eigen::Vector3d> points = OwnPoints(truth, material);
+  const std::vector<Eigen::Vector3d> normals =
+      SlidingNormals(truth, *material, std::vector<bool>(points.size(), true));
+  Model model = truth;
+  EXPECT_TRUE(SolveFrame({points, *material, normals, std::nullopt,
+                          FrameKind::kUntracked, prior, prior},
+                         options, &model)
+                  .usable);
+  return model;
+}
+
 // An untracked frame of the model's own surface 15 % shorter than the
 // prior's (a3 x 0.85 at every knot), each point pulling along its normal:
 // the prior toward the longer state holds the length back unless it lets
@@ -177,19 +193,13 @@ TEST(FrameProblemTest, AnUntrackedPriorThatLetsTheLengthGoReadsTheData) {
   const Model longer = TestSpheroid(9);
   Model truth = longer;
   for (FunctionValues& knot : truth.state.knots) knot[kA3] *= 0.85;
-  std::vector<MaterialPoint> material;
-  const std::vector<Eigen::Vector3d> points = OwnPoints(truth, &material);
-  const std::vector<Eigen::Vector3d> normals =
-      SlidingNormals(truth, material, std::vector<bool>(points.size(), true));
   const auto a3_read = [&](bool holds_length) {
     FitOptions options;
     options.untracked_prior_weight = 0.1;
     options.untracked_prior_holds_length = holds_length;
-    Model model = truth;
-    EXPECT_TRUE(SolveFrame({points, material, normals, std::nullopt,
-                            FrameKind::kUntracked, longer.state, longer.state},
-                           options, &model)
-                    .usable);
+    std::vector<MaterialPoint> material;
+    const Model model =
+        SolveOwnSurfaceUntracked(truth, longer.state, options, &material);
     return model.state.knots[4][kA3] / longer.state.knots[4][kA3];
   };
   const double free = a3_read(false), held = a3_read(true);
@@ -208,22 +218,18 @@ TEST(FrameProblemTest, AnUntrackedPriorPullsLessOnTheRadiiTheDataCover) {
   Model truth = wider;
   for (FunctionValues& knot : truth.state.knots) knot[kA1] *= 0.8;
   std::vector<MaterialPoint> material;
-  const std::vector<Eigen::Vector3d> points = OwnPoints(truth, &material);
+  OwnPoints(truth, &material);
   const std::vector<bool> covered = CoveredKnots(
       truth.config.Grid(), material, kCoveredKnotShare, kCoveredKnotSectors);
   ASSERT_TRUE(covered[4]);
-  const std::vector<Eigen::Vector3d> normals =
-      SlidingNormals(truth, material, std::vector<bool>(points.size(), true));
   // The covered knots' a1 against the prior's, on average.
   const auto a1_read = [&](double radii_scale) {
     FitOptions options;
     options.untracked_prior_weight = 0.1;
     options.untracked_prior_covered_radii_scale = radii_scale;
-    Model model = truth;
-    EXPECT_TRUE(SolveFrame({points, material, normals, std::nullopt,
-                            FrameKind::kUntracked, wider.state, wider.state},
-                           options, &model)
-                    .usable);
+    std::vector<MaterialPoint> solved;
+    const Model model =
+        SolveOwnSurfaceUntracked(truth, wider.state, options, &solved);
     double sum = 0.0;
     int count = 0;
     for (int k = 0; k < truth.config.num_knots; ++k) {

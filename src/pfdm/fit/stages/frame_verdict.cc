@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -269,14 +268,9 @@ void JudgeRings(const ModelConfig& config, const FrameFit& frame,
 // frame that lost its basal slice spans all of its shorter model.
 double AxialSpanMm(const Model& model, const std::vector<MaterialPoint>& at) {
   if (at.empty()) return 0.0;
-  const Eigen::Vector3d axis = model.Rotation().col(2);
-  double low = std::numeric_limits<double>::infinity();
-  double high = -low;
-  for (const Eigen::Vector3d& x : WorldPoints(model, at)) {
-    low = std::min(low, x.dot(axis));
-    high = std::max(high, x.dot(axis));
-  }
-  return high - low;
+  const std::vector<double> heights = AxialHeights(model, at);
+  const auto [low, high] = std::minmax_element(heights.begin(), heights.end());
+  return *high - *low;
 }
 
 // A later frame of contours whose data span much less of the axis than

@@ -234,17 +234,6 @@ TEST(FrameVerdictTest, SaysWhenKnotSpansInsideTheDataAreEmpty) {
   EXPECT_EQ(Codes(fit.frames[1]), "sparse_rings/warning");
 }
 
-// Heights along the model's long axis of its material points.
-std::vector<double> AxialHeights(const Model& model,
-                                 const std::vector<MaterialPoint>& material) {
-  const Eigen::Vector3d axis = model.Rotation().col(2);
-  std::vector<double> heights;
-  for (const Eigen::Vector3d& x : WorldPoints(model, material)) {
-    heights.push_back(x.dot(axis));
-  }
-  return heights;
-}
-
 // Frame t made a frame of contours (untracked) that lost its upper slices:
 // its points above `share` of frame 0's span in mm from its own lowest one
 // left out.
