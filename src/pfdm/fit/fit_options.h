@@ -130,6 +130,11 @@ struct FitOptions {
   // mixing the last rounds' solutions (round_acceleration.h): on biv-me's
   // contours 12 of the 15 frames that ran out of 10 rounds then settle.
   int max_accelerated_rounds = 20;
+  // A later frame's contour rounds that swing back and forth are each
+  // pulled toward the state they start from with this weight (one knot's
+  // share of the points, as the priors'), until they settle
+  // (fit/stages/global_rounds.cc, kSwingCosine); 0: never.
+  double swing_pull_weight = 1.0;
   // Rounds stop when no material point's model position moves more.
   double correspondence_tolerance_mm = 0.05;
   SolverOptions solver;

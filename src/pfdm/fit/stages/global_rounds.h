@@ -76,15 +76,24 @@ class GlobalRounds {
   void SolveCoarse();
   // A round's solve; a predictor takes one step only (PredictsRound).
   SolverReport SolveRound(TrajectoryRecorder* recorder, bool predictor);
+  // Throws InputError naming the frame when the last solve is unusable.
+  void CheckUsable() const;
   // Whether this round only brings the model near enough to rank a solid's
   // tags against it before the solve that counts.
   bool PredictsRound(int round) const;
   // Whether the rounds end after this solve.
   bool Settled(int round, int max_rounds);
-  // After a round that did not settle: the round is recorded and, past
+  // The settled frame's last solve, on the settled closest points, without
+  // the rounds' pull toward their start (global_rounds.cc, kSwingCosine).
+  void SolveUnpulled(TrajectoryRecorder* recorder);
+  // After a contour round that did not settle, its `change` at the probes:
+  // whether it swung back against the last round's, which turns the
+  // rounds' pull toward their start on (global_rounds.cc, kSwingCosine).
+  void NoteSwing(const Eigen::VectorXd& change);
+  // And the round is recorded and, past
   // FitOptions::max_correspondence_rounds, the next one starts from the
   // mix of the last rounds' solutions, its closest points searched there.
-  void Accelerate(int round, const Model& before);
+  void Accelerate(int round, Eigen::VectorXd change);
   // Keeps this round as the best so far when its search moved the points
   // least, or, after the last round, goes back to the best one.
   void KeepBest();
@@ -131,6 +140,13 @@ class GlobalRounds {
   // untracked points' first material points (every k-th of many).
   std::optional<RoundAcceleration> acceleration_;
   std::vector<MaterialPoint> probes_;
+  // The last round's change at the probes; whether its rounds have swung
+  // back, and each is pulled toward the state it starts from.  Only later
+  // frames' contour rounds may be (no tag among the untracked points; not
+  // frame 0 or the start's candidates: global_rounds.cc, kSwingCosine).
+  Eigen::VectorXd last_change_;
+  bool may_pull_ = false;
+  bool pulled_ = false;
   // The round whose search moved the points least.
   std::optional<Snapshot> best_;
 };

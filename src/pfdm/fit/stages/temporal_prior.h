@@ -70,6 +70,15 @@ FramePrior PriorOfFrame(FrameKind kind, const ModelState& reference,
                         const ModelState& previous, bool previous_is_reference,
                         const FitOptions& options);
 
+// A correspondence round's pull toward the state it starts from, mixed
+// into the frame's prior as above (`prior` toward `start`, `weight` added
+// to the weight of the frame's kind: untracked_prior_weight for an
+// untracked frame, prior_weight otherwise).  GlobalRounds uses it where
+// rounds swing back and forth (global_rounds.cc, kSwingCosine).
+FramePrior PulledTowardStart(FrameKind kind, const ModelState& prior,
+                             const FitOptions& options, const ModelState& start,
+                             double weight);
+
 }  // namespace pfdm
 
 #endif  // PFDM_FIT_STAGES_TEMPORAL_PRIOR_H_

@@ -74,6 +74,34 @@ TEST(TemporalPriorTest, OtherFramesAndNoWeightKeepTheirPriors) {
                    options.untracked_prior_weight);
 }
 
+// A round's pull toward its start adds to the weight of the frame's kind:
+// an untracked frame's prior (0.01) and a pull of 1 toward 12 are one pull
+// of 1.01 toward 12 - 10 / 101; the reference's (prior_weight, 0.001)
+// likewise, the other weight untouched.
+TEST(TemporalPriorTest, ARoundsPullTowardItsStartJoinsTheFramesPrior) {
+  FitOptions options;
+  options.untracked_prior_weight = 0.01;
+  options.prior_weight = 0.001;
+  const ModelState prior = StateOf(2.0, 3), start = StateOf(12.0, 3);
+  const FramePrior untracked =
+      PulledTowardStart(FrameKind::kUntracked, prior, options, start, 1.0);
+  EXPECT_DOUBLE_EQ(untracked.options.untracked_prior_weight, 1.01);
+  EXPECT_DOUBLE_EQ(untracked.options.prior_weight, 0.001);
+  EXPECT_DOUBLE_EQ(untracked.state.knots[2][kH], 12.0 - 10.0 / 101.0);
+  EXPECT_DOUBLE_EQ(untracked.state.globals[kA0], 12.0 - 10.0 / 101.0);
+  const FramePrior reference =
+      PulledTowardStart(FrameKind::kReference, prior, options, start, 1.0);
+  EXPECT_DOUBLE_EQ(reference.options.prior_weight, 1.001);
+  EXPECT_DOUBLE_EQ(reference.options.untracked_prior_weight, 0.01);
+  EXPECT_DOUBLE_EQ(reference.state.knots[0][kA1], 12.0 - 10.0 / 1001.0);
+  // Without a prior of its own, the pull's target is the start.
+  options.prior_weight = 0.0;
+  const FramePrior alone =
+      PulledTowardStart(FrameKind::kTracked, prior, options, start, 1.0);
+  EXPECT_DOUBLE_EQ(alone.options.prior_weight, 1.0);
+  EXPECT_DOUBLE_EQ(alone.state.knots[1][kTau], 12.0);
+}
+
 // By default, sequences of a cine's length; shorter ones not at all.
 TEST(TemporalPriorTest, CineLengthSequencesArePulledByDefault) {
   const FitOptions options;
