@@ -159,7 +159,7 @@ echo "array of 5 tasks over 20 cases: summary equals the local batch's"
 # whole: its finished cases are kept, the rest fitted.
 resume="$out/resume"
 mkdir -p "$resume"
-cp "$cohort"/cases.csv "$cohort"/case*.csv "$resume/"
+cp "$cohort"/cases.csv "$cohort"/case[0-9]*.csv "$resume/"
 job=$(submit "$resume" --array=0-4)
 for _ in $(seq 2000); do
   [ -n "$(ls "$resume"/fits/case*/fit.json 2> /dev/null)" ] && break
