@@ -1,8 +1,10 @@
 #include "pfdm/solvers/solver.h"
 
 #include <exception>
+#include <utility>
 
 #include "ceres/solver.h"
+#include "pfdm/solvers/active_bounds.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -111,16 +113,30 @@ class StepObserver : public ceres::IterationCallback {
   std::exception_ptr error_;
 };
 
-}  // namespace
-
-SolverReport SolveDirect(ceres::Problem* problem,
-                         const SolverOptions& options) {
-  ceres::Solver::Options solver_options;
-  StepObserver observer(options);
-  if (options.on_step || options.interrupt) {
-    solver_options.callbacks.push_back(&observer);
-    solver_options.update_state_every_iteration = bool(options.on_step);
+// Stops the solve when an entry not held reaches one of its bounds, so
+// that it is held there for the rest (ActiveBounds).
+class BoundWatcher : public ceres::IterationCallback {
+ public:
+  explicit BoundWatcher(ActiveBounds* bounds) : bounds_(*bounds) {}
+  ceres::CallbackReturnType operator()(
+      const ceres::IterationSummary&) override {
+    if (!bounds_.NewlyActive()) return ceres::SOLVER_CONTINUE;
+    hit_ = true;
+    return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
   }
+  bool TakeHit() { return std::exchange(hit_, false); }
+
+ private:
+  ActiveBounds& bounds_;
+  bool hit_ = false;
+};
+
+// Solves at most this many times: holding what became active, releasing
+// what the data pull off its bound.
+constexpr int kMaxBoundPasses = 6;
+
+ceres::Solver::Options DirectSolverOptions(const SolverOptions& options) {
+  ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = options.linear_solver;
   solver_options.sparse_linear_algebra_library_type = options.sparse_library;
   solver_options.max_num_iterations = options.max_iterations;
@@ -128,8 +144,8 @@ SolverReport SolveDirect(ceres::Problem* problem,
   solver_options.function_tolerance = 1e-9;
   // With bounds Ceres line-searches along every step, bound in sight or
   // not: one more evaluation per iteration (a whole Jacobian with cubic
-  // interpolation).  Ours (0 < a <= 1, the exponents' range) are seldom
-  // active, and a step past one is clipped to it all the same.
+  // interpolation).  Ours (0 < a <= 1, the exponents' range, h >= 0) are
+  // held once active (ActiveBounds), and a step past one is clipped.
   solver_options.max_num_line_search_step_size_iterations = 0;
   solver_options.logging_type = ceres::SILENT;
   // Nearly undamped Gauss-Newton steps from the start (Ceres' default
@@ -146,33 +162,88 @@ SolverReport SolveDirect(ceres::Problem* problem,
     solver_options.initial_trust_region_radius =
         solver_options.max_trust_region_radius;
   }
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver_options, problem, &summary);
-  observer.RethrowError();
+  return solver_options;
+}
 
-  SolverReport report;
-  report.iterations = static_cast<int>(summary.iterations.size()) - 1;
-  report.usable =
-      summary.IsSolutionUsable() && summary.termination_type != ceres::FAILURE;
-  report.converged = summary.termination_type == ceres::CONVERGENCE;
-  report.termination = ceres::TerminationTypeToString(summary.termination_type);
-  if (options.linear && report.usable && summary.iterations.size() == 2 &&
-      summary.iterations.back().step_is_successful) {
-    report.converged = true;  // One exact step is the whole solve.
-    report.termination = ceres::TerminationTypeToString(ceres::CONVERGENCE);
-  }
-  report.message = summary.message;
-  report.residual_evaluations = summary.num_residual_evaluations;
-  report.jacobian_evaluations = summary.num_jacobian_evaluations;
-  report.evaluation_seconds = summary.residual_evaluation_time_in_seconds +
-                              summary.jacobian_evaluation_time_in_seconds;
-  report.linear_solver_seconds = summary.linear_solver_time_in_seconds;
-  report.minimizer_seconds = summary.minimizer_time_in_seconds;
+// Adds one Ceres solve to `report`: its iterations after the ones before
+// (the trace's start once), its evaluations and times.
+void AddSolve(const ceres::Solver::Summary& summary, SolverReport* report) {
+  const int first_iteration = report->iterations;
+  const double first_second =
+      report->trace.empty() ? 0.0 : report->trace.back().wall_seconds;
   for (const ceres::IterationSummary& iteration : summary.iterations) {
-    report.trace.push_back({iteration.iteration, 0.0,
-                            iteration.cumulative_time_in_seconds,
-                            iteration.cost, iteration.gradient_norm});
+    if (!report->trace.empty() && iteration.iteration == 0) continue;
+    report->trace.push_back(
+        {first_iteration + iteration.iteration, 0.0,
+         first_second + iteration.cumulative_time_in_seconds, iteration.cost,
+         iteration.gradient_norm});
   }
+  report->iterations += static_cast<int>(summary.iterations.size()) - 1;
+  report->residual_evaluations += summary.num_residual_evaluations;
+  report->jacobian_evaluations += summary.num_jacobian_evaluations;
+  report->evaluation_seconds += summary.residual_evaluation_time_in_seconds +
+                                summary.jacobian_evaluation_time_in_seconds;
+  report->linear_solver_seconds += summary.linear_solver_time_in_seconds;
+  report->minimizer_seconds += summary.minimizer_time_in_seconds;
+}
+
+// The last solve's outcome.
+void SetOutcome(const ceres::Solver::Summary& summary,
+                const SolverOptions& options, SolverReport* report) {
+  report->usable =
+      summary.IsSolutionUsable() && summary.termination_type != ceres::FAILURE;
+  report->converged = summary.termination_type == ceres::CONVERGENCE;
+  report->termination =
+      ceres::TerminationTypeToString(summary.termination_type);
+  if (options.linear && report->usable && summary.iterations.size() == 2 &&
+      summary.iterations.back().step_is_successful) {
+    report->converged = true;  // One exact step is the whole solve.
+    report->termination = ceres::TerminationTypeToString(ceres::CONVERGENCE);
+  }
+  report->message = summary.message;
+}
+
+}  // namespace
+
+SolverReport SolveDirect(ceres::Problem* problem,
+                         const SolverOptions& options) {
+  ceres::Solver::Options solver_options = DirectSolverOptions(options);
+  StepObserver observer(options);
+  if (options.on_step || options.interrupt) {
+    solver_options.callbacks.push_back(&observer);
+    solver_options.update_state_every_iteration = bool(options.on_step);
+  }
+  ActiveBounds bounds(problem);
+  BoundWatcher watcher(&bounds);
+  const bool watch = options.hold_bounds && !options.linear && !bounds.empty();
+  if (watch) {
+    // The watcher reads the iterate from the parameter blocks.
+    solver_options.callbacks.push_back(&watcher);
+    solver_options.update_state_every_iteration = true;
+    // Held from the start where the last solve left them (a round after
+    // another): a solve stopped at its first iterate costs an evaluation.
+    bounds.HoldActive();
+  }
+  SolverReport report;
+  ceres::Solver::Summary summary;
+  for (int pass = 0; pass < kMaxBoundPasses; ++pass) {
+    if (pass > 0) {
+      solver_options.max_num_iterations =
+          options.max_iterations - report.iterations;
+      if (solver_options.max_num_iterations <= 0) break;
+    }
+    ceres::Solve(solver_options, problem, &summary);
+    observer.RethrowError();
+    AddSolve(summary, &report);
+    if (!watch) break;
+    if (watcher.TakeHit()) {
+      if (bounds.HoldActive() > 0) continue;
+      solver_options.callbacks.pop_back();  // None to hold: Ceres clips.
+      continue;
+    }
+    if (bounds.held() == 0 || bounds.ReleaseInward() == 0) break;
+  }
+  SetOutcome(summary, options, &report);
   return report;
 }
 

@@ -266,8 +266,10 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
     // End-systole's outflow tract is where the contours say least: frames
     // 10 and 11 read 9.8 and 9.5 % below the meshes, which lie 0.5 mm
     // outside the contours (11.5 and 10.3 % when the local field slid
-    // along the wall; the cavity-only fit then: 11.4 and 10.7 %).
-    EXPECT_LT(std::abs(deviation), 0.12) << "frame " << t;
+    // along the wall; the cavity-only fit then: 11.4 and 10.7 %); 12.4
+    // and 11.3 % since h's floor at 0 keeps the endocardium's top ring
+    // (the aortic valve's points) from reaching outside the epicardium.
+    EXPECT_LT(std::abs(deviation), 0.13) << "frame " << t;
     EXPECT_LT(fit.frames[t].rms_mm, 2.5) << "frame " << t;
     // The myocardium keeps its volume within 10 % over the cycle.
     EXPECT_NEAR(c.myocardial_volume_ml,
@@ -275,11 +277,13 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
                 0.10 * analysis.clinical[0].myocardial_volume_ml)
         << "frame " << t;
     // The material myocardium (material_myocardium.h) drifts beyond issue
-    // 32's 5 %: +5.6 % at ES (frame 9), +7.5 % at frames 10-11, where the
-    // cavity reads 10 % under the meshes (docs/accuracy.md; +11.1 % at
-    // frame 13 before its outflow-tract slice was left out).  The bound is
-    // the measured worst, so that it cannot grow unseen.
-    EXPECT_NEAR(c.myocardial_volume_change_percent, 0.0, 8.0) << "frame " << t;
+    // 32's 5 %: +7.7 % at ES (frame 9), +9.7 % at frame 10, where the
+    // cavity reads 12 % under the meshes (docs/accuracy.md; +11.1 % at
+    // frame 13 before its outflow-tract slice was left out).  It read 1-2
+    // points less while the walls crossed at the top knot, whose negative
+    // thickness took volume off.  The bound is the measured worst, so that
+    // it cannot grow unseen.
+    EXPECT_NEAR(c.myocardial_volume_change_percent, 0.0, 10.0) << "frame " << t;
   }
   const double mass = analysis.clinical[0].lv_mass_g;
   std::printf(
@@ -298,7 +302,8 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
 }
 
 // --incompressible 1 on the same contours: the material myocardium within
-// 2 % of ED at every frame (without: +7.7 % at frame 11, the test above),
+// 3.5 % of ED at every frame (+3.0 at frame 10; without: +9.7 %, the test
+// above; within 2 % while the walls could cross at the top knot),
 // at the same fit (pooled RMS 0.937 mm against 0.938), the cavity no
 // further from biv-me's meshes on average (ES 69.9 ml against 68.4; mesh
 // 72.0).  With the local field's nodes held to the surface's normal
@@ -323,7 +328,7 @@ TEST(RealDataReportTest, BivMeIncompressibleWallKeepsItsVolume) {
         "frame %2d  material myocardium %+5.2f %%  cavity %6.1f ml "
         "(mesh %6.1f)\n",
         t, c.myocardial_volume_change_percent, c.volume_ml, mesh[t]);
-    EXPECT_NEAR(c.myocardial_volume_change_percent, 0.0, 2.0) << "frame " << t;
+    EXPECT_NEAR(c.myocardial_volume_change_percent, 0.0, 3.5) << "frame " << t;
     // The term is in every frame's problem but frame 0's, its reference.
     if (t > 0) EXPECT_GT(fit.frames[t].costs.incompressibility, 0.0) << t;
     sum_deviation += std::abs(c.volume_ml / mesh[t] - 1.0);

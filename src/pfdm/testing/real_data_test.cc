@@ -84,7 +84,13 @@ TEST(RealDataTest, BivMeLandmarksGiveTheAxis) {
 // mm along the axis and back, round after round), and frames 8-10 ran out
 // of rounds 0.18-0.42 mm unsettled (206 solves in all).  Pulled toward
 // each round's start once they swing (FitOptions::swing_pull_weight), the
-// frames all settle, in 172 solves, and fit as well.
+// frames all settle, in 172 solves.  What swung most was the top knot's
+// thickness h, below 0 there in frames 2-12 (the walls crossed).  With h's
+// floor at 0 (FrameBlocks) held as an active set (solvers/active_bounds.h)
+// the plain rounds still swing (207 solves, 3 frames unsettled) and the
+// pulled ones settle in 181; clipped at the floor instead (no active set)
+// they settled in 140 without the pull, each solve zig-zagging along the
+// bound in 100-237 iterations a frame.
 TEST(RealDataTest, BivMeBothWallsRoundsSettle) {
   const std::string shared = SharedDataDirectory();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent";
@@ -122,7 +128,7 @@ TEST(RealDataTest, BivMeBothWallsRoundsSettle) {
       pulled.unsettled, pulled.pooled_rms_mm);
   EXPECT_GE(plain.unsettled, 3);
   EXPECT_EQ(pulled.unsettled, 0);
-  EXPECT_LT(pulled.solves, 185);
+  EXPECT_LT(pulled.solves, 195);
   EXPECT_LT(pulled.pooled_rms_mm, plain.pooled_rms_mm + 0.002);
 }
 

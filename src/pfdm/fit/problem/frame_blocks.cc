@@ -1,6 +1,7 @@
 #include "pfdm/fit/problem/frame_blocks.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace pfdm {
@@ -100,6 +101,10 @@ void FrameBlocks::Add(double* values, const std::vector<int>& held) {
   };
   for (int f : {kA1, kA2, kA3}) bound(f, 1e-3, 1.0);
   for (int f : {kEps1, kEps2}) bound(f, 0.1, 4.0);
+  // A wall may thin to nothing (where both walls' long-axis contours end
+  // together at the valve's hinge), never turn inside out: biv-me's both
+  // walls read h down to -5 mm at the top knot without this floor.
+  bound(kH, 0.0, std::numeric_limits<double>::max());
   blocks_.push_back(std::move(block));
 }
 

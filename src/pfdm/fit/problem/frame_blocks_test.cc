@@ -50,6 +50,31 @@ TEST(FrameBlocksTest, TrackedFrameVariesThePoseAndStoresItsEntries) {
   EXPECT_EQ(free_blocks, 5);
 }
 
+// A solid's thickness h is kept from below 0 (walls that cross), a1..a3
+// and the exponents within their ranges; a mid-wall surface has no h.
+TEST(FrameBlocksTest, ASolidsThicknessHasTheFloorZero) {
+  Model model = TestSpheroid(5);
+  model.config.MakeSolid();
+  ceres::Problem problem;
+  FrameBlocks blocks(FrameKind::kTracked, &model, &problem);
+  const FreeEntries* knot = blocks.entries(4);
+  ASSERT_NE(knot, nullptr);
+  double* parameters = const_cast<double*>(blocks.parameters(4));
+  const int h = knot->IndexOf(kH);
+  ASSERT_GE(h, 0);
+  EXPECT_EQ(problem.GetParameterLowerBound(parameters, h), 0.0);
+  EXPECT_GT(problem.GetParameterUpperBound(parameters, h), 1e300);
+  const int a1 = knot->IndexOf(kA1);
+  ASSERT_GE(a1, 0);
+  EXPECT_EQ(problem.GetParameterLowerBound(parameters, a1), 1e-3);
+  EXPECT_EQ(problem.GetParameterUpperBound(parameters, a1), 1.0);
+
+  Model surface = TestSpheroid(5);
+  ceres::Problem surface_problem;
+  FrameBlocks surface_blocks(FrameKind::kTracked, &surface, &surface_problem);
+  EXPECT_EQ(surface_blocks.entries(4)->IndexOf(kH), -1);
+}
+
 // A cost over the held globals alone is a constant and is not added; one
 // over a knot's free entries is.
 TEST(FrameBlocksTest, ACostOverConstantBlocksOnlyIsNotAdded) {

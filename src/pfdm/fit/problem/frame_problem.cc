@@ -367,6 +367,7 @@ SolverReport FrameProblem::Solve() {
   // the results, and waking them cost more than that at a few thousand
   // points.
   if (precomputed_) solver.num_threads = 1;
+  solver.hold_bounds = kind_ != FrameKind::kReference;  // solver.h says why.
   if (solver.kind == SolverKind::kIntegrator) {
     AddDampingScales(problem_, blocks_, options_.damping_groups, model_,
                      &solver);

@@ -217,27 +217,29 @@ void JudgeBounds(const ModelConfig& config, const FrameFit& frame,
   }
 }
 
-// A solid whose thickness h is negative at a knot has its endocardium
-// outside its epicardium there: its mass and thickening there are no
-// wall's.  biv-me's both walls (--contours lv-cavity,lv-epi) read h down to
-// -5.0 mm at the top knot in 11 of 25 frames, and the fit exited 0 with
-// nothing said.
+// A solid's thickness h has the floor 0 (FrameBlocks): its walls may meet,
+// never cross.  At the top knot they meet where both walls' long-axis
+// contours end together at the valve's hinge: biv-me's both walls
+// (--contours lv-cavity,lv-epi) hold h at 0 there in frames 2-12, where the
+// data put the endocardium outside the epicardium (h down to -5.0 mm
+// before the floor, the fit exiting 0 with nothing said).  Below the top
+// knot a wall of no thickness is no heart's: its mass and thickening there
+// are the floor's.
 void JudgeWallThickness(const ModelConfig& config, const FrameFit& frame,
                         Verdict* verdict) {
-  if (!config.Solid()) return;
-  int crossed = 0;
-  double least = 0.0;
-  for (const FunctionValues& knot : frame.state.knots) {
-    if (knot[kH] >= 0.0) continue;
-    ++crossed;
-    least = std::min(least, knot[kH]);
+  if (!config.Solid() || frame.state.knots.empty()) return;
+  const size_t top = frame.state.knots.size() - 1;
+  int met = 0;
+  for (size_t k = 0; k < top; ++k) {
+    if (frame.state.knots[k][kH] <= 0.0) ++met;
   }
-  if (crossed == 0) return;
-  verdict->Warn("walls_cross",
-                Format("the wall's thickness h below 0 at %.0f knots (least "
-                       "%.1f mm): the endocardium lies outside the epicardium "
-                       "there, where the mass and thickening are no wall's",
-                       crossed, least));
+  if (met == 0) return;
+  verdict->Warn("walls_meet",
+                Format("the wall's thickness h at its floor 0 at %.0f knots "
+                       "below the top one: the data put the endocardium on "
+                       "or outside the epicardium there, where the mass and "
+                       "thickening are the floor's, no wall's",
+                       met));
 }
 
 // Knots between the lowest and the highest data point's with no point in

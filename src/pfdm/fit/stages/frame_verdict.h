@@ -11,7 +11,7 @@
 //                move it: one solver step from the solution without the
 //                prior moves the points by a share of the frame's RMS;
 //   at_bound     a shape function pressed against its bound;
-//   walls_cross  a solid's thickness h below 0 at a knot;
+//   walls_meet   a solid's thickness h at its floor 0 below the top knot;
 //   sparse_rings knot spans inside the data with almost no points;
 //   short_span   a later frame's data spanning much less of the axis than
 //                frame 0's (contours that lost a slice);

@@ -279,25 +279,29 @@ TEST(FrameVerdictTest, ATrackedFramesSpanIsNotJudged) {
       << Codes(fit.frames[2]);
 }
 
-// A solid's thickness below 0 at two knots of frame 1: its walls cross
-// there, said once with the count and the least h; the others are fine.
-TEST(FrameVerdictTest, SaysWhereASolidsWallsCross) {
+// A solid's thickness at its floor 0 at knots 14 and 16 (the top one) of
+// frame 1: its walls meet below the top knot, said once with the count;
+// frame 2's meet at the top knot alone (the valve's hinge), not a reason.
+TEST(FrameVerdictTest, SaysWhereASolidsWallsMeetBelowTheTopKnot) {
   const SequenceFit fit = Judged([](SequenceFit* f) {
     f->config.MakeSolid();
     for (FrameFit& frame : f->frames) {
       for (FunctionValues& knot : frame.state.knots) knot[kH] = 8.0;
     }
-    f->frames[1].state.knots[15][kH] = -1.0;
-    f->frames[1].state.knots[16][kH] = -2.5;
+    f->frames[1].state.knots[14][kH] = 0.0;
+    f->frames[1].state.knots[16][kH] = 0.0;
+    f->frames[2].state.knots[16][kH] = 0.0;
   });
-  ASSERT_TRUE(fit.frames[1].verdict.Has("walls_cross")) << Codes(fit.frames[1]);
+  ASSERT_EQ(fit.frames[1].state.knots.size(), 17u);
+  ASSERT_TRUE(fit.frames[1].verdict.Has("walls_meet")) << Codes(fit.frames[1]);
   for (const VerdictReason& reason : fit.frames[1].verdict.reasons()) {
-    if (reason.code != "walls_cross") continue;
-    EXPECT_NE(reason.text.find("at 2 knots (least -2.5 mm)"), std::string::npos)
+    if (reason.code != "walls_meet") continue;
+    EXPECT_NE(reason.text.find("at 1 knots below the top one"),
+              std::string::npos)
         << reason.text;
   }
-  EXPECT_FALSE(fit.frames[0].verdict.Has("walls_cross"));
-  EXPECT_FALSE(fit.frames[2].verdict.Has("walls_cross"));
+  EXPECT_FALSE(fit.frames[0].verdict.Has("walls_meet"));
+  EXPECT_FALSE(fit.frames[2].verdict.Has("walls_meet")) << Codes(fit.frames[2]);
 }
 
 TEST(FrameVerdictTest, FailsAFrameZeroThatNeverMoved) {
