@@ -33,8 +33,9 @@ ActiveBounds::ActiveBounds(ceres::Problem* problem) : problem_(problem) {
 }
 
 ActiveBounds::~ActiveBounds() {
-  const std::vector<double*> blocks = BlocksWithHolds();
-  for (double* block : blocks) problem_->SetManifold(block, nullptr);
+  for (const auto& [block, indices] : applied_) {
+    if (!indices.empty()) problem_->SetManifold(block, nullptr);
+  }
 }
 
 int ActiveBounds::held() const {
@@ -75,9 +76,12 @@ int ActiveBounds::HoldActive() {
 }
 
 int ActiveBounds::ReleaseInward() {
-  const std::vector<double*> blocks = BlocksWithHolds();
+  std::vector<double*> blocks;
+  for (const auto& [block, indices] : applied_) {
+    if (!indices.empty()) blocks.push_back(block);
+  }
   if (blocks.empty()) return 0;
-  for (double* block : blocks) problem_->SetManifold(block, nullptr);
+  for (double* block : blocks) SetHeld(block, {});
   ceres::Problem::EvaluateOptions options;
   options.parameter_blocks = blocks;
   std::vector<double> gradient;
@@ -105,30 +109,26 @@ int ActiveBounds::ReleaseInward() {
   return released;
 }
 
-std::vector<double*> ActiveBounds::BlocksWithHolds() const {
-  std::vector<double*> blocks;
-  for (const Entry& entry : entries_) {
-    if (entry.held &&
-        std::find(blocks.begin(), blocks.end(), entry.block) == blocks.end()) {
-      blocks.push_back(entry.block);
-    }
-  }
-  return blocks;
-}
-
 void ActiveBounds::ApplyHolds() {
   std::map<double*, std::vector<int>> held;
   for (const Entry& entry : entries_) {
-    std::vector<int>& indices = held[entry.block];
-    if (entry.held) indices.push_back(entry.index);
+    if (entry.held) held[entry.block].push_back(entry.index);
   }
-  for (const auto& [block, indices] : held) {
-    problem_->SetManifold(
-        block, indices.empty()
-                   ? nullptr
-                   : new ceres::SubsetManifold(
-                         problem_->ParameterBlockSize(block), indices));
+  for (const auto& [block, indices] : applied_) {
+    if (!indices.empty() && !held.count(block)) SetHeld(block, {});
   }
+  for (const auto& [block, indices] : held) SetHeld(block, indices);
+}
+
+void ActiveBounds::SetHeld(double* block, const std::vector<int>& indices) {
+  std::vector<int>& applied = applied_[block];
+  if (applied == indices) return;
+  problem_->SetManifold(
+      block, indices.empty()
+                 ? nullptr
+                 : new ceres::SubsetManifold(
+                       problem_->ParameterBlockSize(block), indices));
+  applied = indices;
 }
 
 }  // namespace pfdm

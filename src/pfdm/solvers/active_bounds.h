@@ -10,6 +10,7 @@
 #ifndef PFDM_SOLVERS_ACTIVE_BOUNDS_H_
 #define PFDM_SOLVERS_ACTIVE_BOUNDS_H_
 
+#include <map>
 #include <vector>
 
 #include "ceres/problem.h"
@@ -54,12 +55,14 @@ class ActiveBounds {
     return !entry.held && !entry.released && AtBound(entry);
   }
   bool AtBound(const Entry& entry) const;
-  // Sets each block's SubsetManifold to its held entries, or none.
+  // Sets each block's SubsetManifold to its held entries, or none, where
+  // that changed.
   void ApplyHolds();
-  std::vector<double*> BlocksWithHolds() const;
+  void SetHeld(double* block, const std::vector<int>& indices);
 
   ceres::Problem* problem_;
   std::vector<Entry> entries_;
+  std::map<double*, std::vector<int>> applied_;  // The manifolds as set.
 };
 
 }  // namespace pfdm
