@@ -245,6 +245,19 @@ TEST(RealDataReportTest, BivMeBothWallsGiveTheCavityAndTheMass) {
                   ModelConfig::Paper(17), FitOptions());
   ASSERT_TRUE(fit.config.Solid()) << fit.wall_reason;
   EXPECT_EQ(fit.wall_reason, "endocardial and epicardial contours");
+  // The walls meet at the top knot in frames 2-12 (h at its floor 0, where
+  // it read down to -5 mm before the floor) and nowhere below it; every
+  // frame's verdict is ok.
+  int top_at_floor = 0;
+  for (const FrameFit& frame : fit.frames) {
+    for (const FunctionValues& knot : frame.state.knots) {
+      EXPECT_GE(knot[kH], 0.0) << "frame " << frame.frame;
+    }
+    top_at_floor += frame.state.knots.back()[kH] == 0.0 ? 1 : 0;
+    EXPECT_TRUE(frame.verdict.reasons().empty())
+        << "frame " << frame.frame << ": " << frame.verdict.reasons()[0].code;
+  }
+  EXPECT_EQ(top_at_floor, 11);
   const FitAnalysis analysis = AnalyzeFit(fit, planes);
   EXPECT_EQ(analysis.volume_surface, "cavity");
   double worst = 0.0, sum_deviation = 0.0;
