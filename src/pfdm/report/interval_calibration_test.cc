@@ -102,31 +102,23 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
                           "thickening_percent", "rotation_deg"}) {
     EXPECT_FALSE(Has(D::kEndoContours, key)) << key;
   }
-  // The mid-wall's contours alone: every number they measure but ESV
-  // (0.87) and the volume fraction (0.89) held it in 91-96 %, the
-  // segments' Ell included; no wall, no turn seen.
-  for (const char* key : {"edv_ml", "longitudinal_shortening_percent",
-                          "radial_contraction_percent", "gcs_percent",
-                          "gls_percent", "ecc_percent", "ell_percent"}) {
-    EXPECT_TRUE(Has(D::kMidwallContours, key)) << key;
-  }
-  for (const char* key :
-       {"ratio", "esv_ml", "wall_thickening_percent", "lv_mass_g",
-        "thickening_percent", "rotation_deg", "net_twist_deg"}) {
-    EXPECT_FALSE(Has(D::kMidwallContours, key)) << key;
-  }
-  // The epicardium's: the same but the volumes and their ratio (EDV 0.88,
-  // the apex's length term notwithstanding; ESV 0.88 and the ratio 0.89
-  // since untracked frames' length is the data's).
-  for (const char* key :
-       {"longitudinal_shortening_percent", "radial_contraction_percent",
-        "gcs_percent", "gls_percent", "ecc_percent", "ell_percent"}) {
-    EXPECT_TRUE(Has(D::kEpiContours, key)) << key;
-  }
-  for (const char* key :
-       {"ratio", "edv_ml", "esv_ml", "wall_thickening_percent", "lv_mass_g",
-        "thickening_percent", "rotation_deg"}) {
-    EXPECT_FALSE(Has(D::kEpiContours, key)) << key;
+  // The mid-wall's contours alone and the epicardium's: every number they
+  // measure, the volumes and their ratio since the length's derivative is
+  // the top's rise (mid-wall ESV 0.94 and ratio 0.91, epicardial EDV,
+  // ESV and ratio 0.95, 0.94, 0.92; 0.87-0.89 with a uniform stretch); no
+  // wall, no turn seen.
+  for (D data : {D::kMidwallContours, D::kEpiContours}) {
+    for (const char* key :
+         {"ratio", "edv_ml", "esv_ml", "longitudinal_shortening_percent",
+          "radial_contraction_percent", "gcs_percent", "gls_percent",
+          "ecc_percent", "ell_percent"}) {
+      EXPECT_TRUE(Has(data, key)) << key;
+    }
+    for (const char* key :
+         {"wall_thickening_percent", "lv_mass_g", "thickening_percent",
+          "rotation_deg", "net_twist_deg"}) {
+      EXPECT_FALSE(Has(data, key)) << key;
+    }
   }
   // No kind's apex rotation or shear angle was shown calibrated, and
   // nothing on data of another kind.

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "Eigen/Core"
+#include "pfdm/model/raised_top.h"
 #include "pfdm/report/number_uncertainty.h"
 
 namespace pfdm {
@@ -75,13 +76,6 @@ Model WithDraw(const Model& model, const std::vector<double>& draw) {
   return out;
 }
 
-// `model` made longer by the fraction `stretch` along its axis, its radii
-// kept: a3 (the half-length, of every knot) scaled.
-void Stretch(double stretch, Model* model) {
-  model->state.globals[kA3] *= 1.0 + stretch;
-  for (FunctionValues& knot : model->state.knots) knot[kA3] *= 1.0 + stretch;
-}
-
 // The draws' mean shift from `at` and their variance, per number.
 struct Moments {
   std::vector<Eigen::VectorXd> bias, variance;
@@ -150,7 +144,7 @@ void AddLengthNoiseOf(size_t source, const SequenceFit& fit,
   std::vector<bool> stretched(models.size(), false);
   for (size_t t = 0; t < models.size(); ++t) {
     stretched[t] = StretchedWith(source, t, fit);
-    if (stretched[t]) Stretch(step, &models[t]);
+    if (stretched[t]) models[t] = RaisedTop(models[t], step);
   }
   const std::vector<Eigen::VectorXd> y = MeasureChanged(
       analysis, models, static_cast<size_t>(fit.ed_frame), stretched, at);

@@ -20,10 +20,15 @@
 // LengthNoiseDraws): its a0 is set by the highest noisy points and held,
 // which moves every volume; so is each untracked later frame's, whose base
 // rim its own highest points hold.  Taken as linear, each number's
-// derivative by a stretch along the axis (frame 0's draws: frame 0's and
-// the tracked frames' a3; an untracked frame's: its own; one more
-// measurement each) times the draws' mean and variance is added to b and
-// var, the frames' draws independent.
+// derivative by the top's rise (model/raised_top.h: the apex and the shape
+// below the old top kept, as a fit to the same data keeps them; frame 0's
+// draws raise frame 0 and the tracked frames, an untracked frame's its
+// own; one more measurement each) times the draws' mean and variance is
+// added to b and var, the frames' draws independent.  A uniform stretch
+// along the axis (a3 scaled) moved the volumes by the mean cross-section
+// instead of the top's: on the LV phantom's mid-wall contours (100 seeds)
+// ESV's interval then held the noise-free fit in 87 % of draws, EDV's in
+// 93 %, against 94 and 96 % now.
 // Without a local field only this is added.
 #ifndef PFDM_REPORT_LOCAL_FIELD_NOISE_H_
 #define PFDM_REPORT_LOCAL_FIELD_NOISE_H_

@@ -67,8 +67,10 @@ TEST(LocalFieldNoiseTest, ANearLinearNumberHasNoBias) {
 
 // Without a local field only frame 0's length is drawn
 // (LengthNoiseDraws): the volumes widen and take a bias, the same relative
-// one at ED and ES, so the volume fraction barely moves; GCS, which a
-// stretch along the axis does not change, keeps the delta method's sd.
+// one at ED and ES, so the volume fraction barely moves; GCS, which the
+// top's rise barely changes (model/raised_top.h: the material rings take
+// the radii at their new heights), keeps the delta method's sd within
+// 1 % (0.13 %).
 TEST(LocalFieldNoiseTest, WithoutALocalFieldOnlyTheLengthIsDrawn) {
   const SequenceFit fit = FitLvSequence(1000, 0.5, true, /*local=*/false);
   const FitAnalysis a = AnalyzeFit(fit);
@@ -84,7 +86,7 @@ TEST(LocalFieldNoiseTest, WithoutALocalFieldOnlyTheLengthIsDrawn) {
               0.2 * bias.edv_ml / value.edv_ml);
   EXPECT_LT(std::abs(bias.ratio), 0.1 * sd.ratio);
   EXPECT_NEAR(a.sd.strain[1].gcs_percent, global.strain[1].gcs_percent,
-              1e-3 * global.strain[1].gcs_percent);
+              1e-2 * global.strain[1].gcs_percent);
 }
 
 // Contours: each frame's base rim is held at its own highest points, so
