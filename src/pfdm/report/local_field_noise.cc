@@ -123,15 +123,16 @@ Moments SampleLocalField(const SequenceFit& fit, const FitAnalysis& analysis,
 // Whether frame t's length moves with frame `source`'s length draws: frame
 // 0's places the material points of frame 0 and of the tracked frames; an
 // untracked later frame's (contours) holds its own base rim alone.
-bool StretchedWith(size_t source, size_t t, const SequenceFit& fit) {
+bool LengthMovesWith(size_t source, size_t t, const SequenceFit& fit) {
   if (source == 0) return t == 0 || fit.frames[t].tracked;
   return t == source;
 }
 
 // Frame `source`'s length draws, taken as linear: each number's derivative
 // by the length's relative change (from one measurement with the frames it
-// moves stretched by the draws' sd) times the draws' mean and sd.  Draws of
-// different frames are of different points' noise: independent.
+// moves with their tops raised by the draws' sd, model/raised_top.h) times
+// the draws' mean and sd.  Draws of different frames are of different
+// points' noise: independent.
 void AddLengthNoiseOf(size_t source, const SequenceFit& fit,
                       const FitAnalysis& analysis,
                       const std::vector<Eigen::VectorXd>& at, Moments* m) {
@@ -141,13 +142,13 @@ void AddLengthNoiseOf(size_t source, const SequenceFit& fit,
   const double step = std::sqrt(variance);
   if (!(step > 0.0)) return;
   std::vector<Model> models = analysis.models;
-  std::vector<bool> stretched(models.size(), false);
+  std::vector<bool> raised(models.size(), false);
   for (size_t t = 0; t < models.size(); ++t) {
-    stretched[t] = StretchedWith(source, t, fit);
-    if (stretched[t]) models[t] = RaisedTop(models[t], step);
+    raised[t] = LengthMovesWith(source, t, fit);
+    if (raised[t]) models[t] = RaisedTop(models[t], step);
   }
   const std::vector<Eigen::VectorXd> y = MeasureChanged(
-      analysis, models, static_cast<size_t>(fit.ed_frame), stretched, at);
+      analysis, models, static_cast<size_t>(fit.ed_frame), raised, at);
   for (size_t i = 0; i < y.size(); ++i) {
     const Eigen::VectorXd slope = (y[i] - at[i]) / step;
     m->bias[i] += mean * slope;
