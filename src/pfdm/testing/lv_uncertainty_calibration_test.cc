@@ -32,9 +32,10 @@ namespace {
 
 constexpr int kKnots = 9;
 
-// 100 seeds take about 20 minutes a case on the project's 2-core VM: run
-// by scripts/uncertainty_calibration.py (PFDM_CALIBRATION_SEEDS set), not
-// by CI, where UncertaintyCalibrationTest checks the model phantom.
+// 100 seeds take 12-31 s a case on the project's 2-core VM (2026-12-06;
+// 20 minutes at a load of 20-30 on 2026-12-02): run by
+// scripts/uncertainty_calibration.py (PFDM_CALIBRATION_SEEDS set), not by
+// CI, where UncertaintyCalibrationTest checks the model phantom.
 bool FullCalibrationAsked() {
   return std::getenv("PFDM_CALIBRATION_SEEDS") != nullptr;
 }
@@ -63,7 +64,9 @@ struct Case {
 
 // The judged values: a1, a2, a3 (mm) at the knots away from the apex pole
 // on both frames (frame 0's a3, held, has the length's sd alone), tau
-// (rad) on the second where tags track the turn.
+// (rad) on the second where tags track the turn, and a solid's thickness h
+// (mm; of tags through the wall, h after their noise is taken out of it,
+// TakeOutTagNoise, a shift the covariance does not see).
 struct Judged {
   int frame, function, knot;
 };
@@ -71,12 +74,14 @@ struct Judged {
 // With frame 0 exact its values are the reference's: not judged.
 std::vector<Judged> JudgedValues(const Case& c) {
   const bool tracked = c.sampling == LvSampling::kTags;
+  std::vector<int> functions = {kA1, kA2, kA3};
+  if (c.tags == LvTagLayer::kWall) functions.push_back(kH);
   std::vector<Judged> judged;
   for (int k : {2, 4, 6}) {
     if (!c.exact_frame0) {
-      for (int f : {kA1, kA2, kA3}) judged.push_back({0, f, k});
+      for (int f : functions) judged.push_back({0, f, k});
     }
-    for (int f : {kA1, kA2, kA3}) judged.push_back({1, f, k});
+    for (int f : functions) judged.push_back({1, f, k});
     if (tracked) judged.push_back({1, kTau, k});
   }
   return judged;
@@ -251,19 +256,19 @@ TEST(LvUncertaintyCalibrationTest, MidwallTagsWithFrameZeroExact) {
 // Tags through the wall: the fit makes the model a solid, whose thickness,
 // transmural twist and shift are in the covariance with the rest; each
 // tag's depth w, ranked across the wall from the noisy data, is held.
-// The radii's intervals are too narrow: 79-91 % coverage (pooled 0.83)
-// over 100 draws on 2026-12-05 (54-77 % in 2026-12-02's table; the
-// solid's fit has changed since), shrinking by 0.50-0.57 at 4 times the
-// tags; tau covers 96-98 %.  Not sigma: it reads 0.38-0.59 mm on frame 0
-// and 0.67-0.81 on frame 1 for noise of 0.5 (frame 1's tags carry frame
-// 0's noise too), and sds scaled to the tags' tangential noise
-// (SequenceFit::tag_noise_mm) covered less, 0.61-0.78.  Frame 0 is where
-// it goes wrong (below, WallTagsWithFrameZeroExact), and the tracked frame
-// inherits its error.  Why frame 0: its depths, ranked in whole rings,
-// leave the section's shape about the axis (a1 - a2) where the rounds'
-// start puts it (lv_wall_rank_shape_test.cc): the mean radius (a1 + a2) /
-// 2 covered 87-98 %, (a1 - a2) / 2 68-78 % (60 draws).  The test shows
-// it: the radii's pooled coverage under 0.88, tau in 90-99 %.
+// The radii's intervals are too narrow: 79-91 % coverage over 100 draws
+// (2026-12-06), shrinking by 0.50-0.57 at 4 times the tags; tau covers
+// 96-99 %, h 93-99 % on frame 0 and 99-100 % on frame 1 (too wide: frame
+// 1's sigma carries frame 0's noise through the material points).  Frame
+// 0 is where the radii go wrong (below, WallTagsWithFrameZeroExact), and
+// the tracked frame inherits its error.  Why frame 0: its depths, ranked
+// in whole rings, keep the shape of the rounds' start, the mid-wall fit
+// before the wall is decided (lv_wall_rank_shape_test.cc), and that fit's
+// error from the noise is two to three times its Gauss-Newton sd: its
+// residuals, the wall's spread (2.5 mm), are large beside the section's
+// ellipticity, which the linearization leaves out (docs/uncertainty.md,
+// "The solid's start").  The test shows it: the radii's pooled coverage
+// under 0.88, tau in 90-99 %, h at least 90 %.
 TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
   SKIP_UNLESS_ASKED();
   Case c{"wall-tags"};
@@ -276,9 +281,11 @@ TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
       tau_inside += r.inside[j];
       tau_count += r.seeds;
       EXPECT_NEAR(r.sd_4n[j] / r.sd_n[j], 0.5, 0.06) << j;
-    } else if (judged.function != kA3) {
+    } else if (judged.function == kA1 || judged.function == kA2) {
       radii_inside += r.inside[j];
       radii_count += r.seeds;
+    } else if (judged.function == kH) {
+      EXPECT_GE(r.inside[j], 0.90 * r.seeds) << j;
     }
   }
   EXPECT_LT(radii_inside, 0.88 * radii_count);
@@ -335,6 +342,24 @@ TEST(LvUncertaintyCalibrationTest, SaxOneWallsContours) {
     c.sampling = LvSampling::kSaxSlices;
     ExpectCalibrated(c, e);
   }
+}
+
+// Both walls' contours on the same slices (biv-me's lv-cavity,lv-epi): a
+// solid, each wall's points sought on its own wall every round; h judged
+// besides the radii.  100 draws (2026-12-06): pooled 0.963, each value
+// 0.89-0.99 (h 0.98-0.99; the later frame's a3 0.89 at every knot, one
+// length shared by them), sd ratio 0.42-0.48 (frame 0's a3 0.66): like
+// the mid-wall's contours, a little faster than 1/sqrt(4) as the
+// regularizers scale with the points.
+TEST(LvUncertaintyCalibrationTest, SaxWallContours) {
+  SKIP_UNLESS_ASKED();
+  Case c{"sax-wall-contours"};
+  c.tags = LvTagLayer::kWall;
+  c.sampling = LvSampling::kSaxSlices;
+  Expected e;
+  e.high = 0.99;
+  e.ratio_tolerance = 0.09;
+  ExpectCalibrated(c, e);
 }
 
 // The lesion: a segment's contraction the global model cannot follow.
