@@ -34,17 +34,23 @@ constexpr int kKnots = 9;
 
 // 100 seeds take 12-31 s a case on the project's 2-core VM (2026-12-06;
 // 20 minutes at a load of 20-30 on 2026-12-02): run by
-// scripts/uncertainty_calibration.py (PFDM_CALIBRATION_SEEDS set), not by
-// CI, where UncertaintyCalibrationTest checks the model phantom.
+// scripts/uncertainty_calibration.py (PFDM_CALIBRATION_SEEDS set), which
+// judges coverage and the shrinking at 4N.  Without it (CI) each case runs
+// kCiSeeds draws, 1-3 s, and judges the errors in their sds: their rms
+// about 1 where the intervals hold (kCiZ), above it where they are too
+// narrow.
 bool FullCalibrationAsked() {
   return std::getenv("PFDM_CALIBRATION_SEEDS") != nullptr;
 }
 
-#define SKIP_UNLESS_ASKED()                       \
-  if (!FullCalibrationAsked())                    \
-  GTEST_SKIP() << "the LV calibration runs with " \
-                  "PFDM_CALIBRATION_SEEDS set "   \
-                  "(scripts/uncertainty_calibration.py)"
+constexpr int kCiSeeds = 10;
+// 10 draws of some 20 correlated values: a calibrated case's pooled rms of
+// (fit - reference) / sd read 0.74-0.91 over the cases (2026-12-06).
+constexpr double kCiZLow = 0.5, kCiZHigh = 1.4;
+// Tags through the wall: the radii's errors are larger than their sds say
+// (rms 2.6 in sds over the 10 draws, 1.6 over 100, 2026-12-06; about 1
+// where they hold).
+constexpr double kWallRadiiZ = 1.5;
 
 int EnvInt(const char* name, int fallback) {
   const char* value = std::getenv(name);
@@ -137,11 +143,28 @@ struct Calibration {
   std::vector<Judged> judged;
   std::vector<int> inside;
   std::vector<double> sd_n, sd_4n;
+  // Per value, the sum over the draws of ((fit - reference) / sd)^2.
+  std::vector<double> z_square;
   int seeds = 0, ratio_seeds = 0;
   double Pooled() const {
     int sum = 0;
     for (int i : inside) sum += i;
     return sum / static_cast<double>(seeds * inside.size());
+  }
+  // The rms of the errors in sds over the draws and the values `take`s.
+  template <typename Take>
+  double ZRms(const Take& take) const {
+    double sum = 0.0;
+    int count = 0;
+    for (size_t j = 0; j < judged.size(); ++j) {
+      if (!take(judged[j])) continue;
+      sum += z_square[j];
+      count += seeds;
+    }
+    return std::sqrt(sum / count);
+  }
+  double ZRms() const {
+    return ZRms([](const Judged&) { return true; });
   }
 };
 
@@ -156,6 +179,7 @@ Calibration Calibrate(const Case& c, int seeds, int ratio_seeds) {
   result.inside.assign(m, 0);
   result.sd_n.assign(m, 0.0);
   result.sd_4n.assign(m, 0.0);
+  result.z_square.assign(m, 0.0);
   result.seeds = seeds;
   result.ratio_seeds = ratio_seeds;
   for (int s = 0; s < seeds; ++s) {
@@ -163,8 +187,9 @@ Calibration Calibrate(const Case& c, int seeds, int ratio_seeds) {
     const Draw reference = FitDraw(c, seed, n, 0.0);
     const Draw noisy = FitDraw(c, seed, n, 0.5);
     for (size_t j = 0; j < m; ++j) {
-      result.inside[j] +=
-          std::abs(noisy.value[j] - reference.value[j]) <= 1.96 * noisy.sd[j];
+      const double z = (noisy.value[j] - reference.value[j]) / noisy.sd[j];
+      result.inside[j] += std::abs(z) <= 1.96;
+      result.z_square[j] += z * z;
       if (s < ratio_seeds) result.sd_n[j] += noisy.sd[j] / ratio_seeds;
     }
     if (s < ratio_seeds) {
@@ -177,20 +202,21 @@ Calibration Calibrate(const Case& c, int seeds, int ratio_seeds) {
   return result;
 }
 
-// "calibration CASE frame F FUNCTION knot K coverage C sd S -> S4 ratio R"
-// per value, then the case's pooled coverage: the script's table.
+// "calibration CASE frame F FUNCTION knot K coverage C sd S -> S4 ratio R
+// z Z" per value (Z the rms of its errors in sds), then the case's pooled
+// coverage and rms: the script's table.
 void Print(const Case& c, const Calibration& r) {
   for (size_t j = 0; j < r.judged.size(); ++j) {
     std::printf(
         "calibration %s frame %d %s knot %d coverage %.3f sd %.4g -> %.4g "
-        "ratio %.3f\n",
+        "ratio %.3f z %.2f\n",
         c.name.c_str(), r.judged[j].frame, FunctionName(r.judged[j].function),
         r.judged[j].knot, r.inside[j] / double(r.seeds), r.sd_n[j], r.sd_4n[j],
-        r.sd_4n[j] / r.sd_n[j]);
+        r.sd_4n[j] / r.sd_n[j], std::sqrt(r.z_square[j] / r.seeds));
   }
-  std::printf("calibration %s pooled %.3f seeds %d points %d\n", c.name.c_str(),
-              r.Pooled(), r.seeds,
-              c.num_points * EnvInt("PFDM_CALIBRATION_SCALE", 1));
+  std::printf("calibration %s pooled %.3f seeds %d points %d z %.2f\n",
+              c.name.c_str(), r.Pooled(), r.seeds,
+              c.num_points * EnvInt("PFDM_CALIBRATION_SCALE", 1), r.ZRms());
 }
 
 // What a case must show: its pooled coverage in [low, high], each value's
@@ -201,14 +227,20 @@ struct Expected {
 };
 
 Calibration RunCase(const Case& c) {
-  const int seeds = EnvInt("PFDM_CALIBRATION_SEEDS", 100);
-  const Calibration r = Calibrate(c, seeds, std::min(seeds, 10));
+  const bool full = FullCalibrationAsked();
+  const int seeds = full ? EnvInt("PFDM_CALIBRATION_SEEDS", 100) : kCiSeeds;
+  const Calibration r = Calibrate(c, seeds, full ? std::min(seeds, 10) : 0);
   Print(c, r);
   return r;
 }
 
 void ExpectCalibrated(const Case& c, const Expected& e = Expected()) {
   const Calibration r = RunCase(c);
+  if (!FullCalibrationAsked()) {
+    EXPECT_GT(r.ZRms(), kCiZLow) << c.name;
+    EXPECT_LT(r.ZRms(), kCiZHigh) << c.name;
+    return;
+  }
   EXPECT_GE(r.Pooled(), e.low) << c.name;
   EXPECT_LE(r.Pooled(), e.high) << c.name;
   for (size_t j = 0; j < r.judged.size(); ++j) {
@@ -227,13 +259,25 @@ void ExpectCalibrated(const Case& c, const Expected& e = Expected()) {
   }
 }
 
+// Every value's coverage at least 90 % (CI: the errors' rms in sds
+// within kCiZLow-kCiZHigh).
+void ExpectEachHolds(const Calibration& r) {
+  if (!FullCalibrationAsked()) {
+    EXPECT_GT(r.ZRms(), kCiZLow);
+    EXPECT_LT(r.ZRms(), kCiZHigh);
+    return;
+  }
+  for (size_t j = 0; j < r.judged.size(); ++j) {
+    EXPECT_GE(r.inside[j], 0.90 * r.seeds) << j;
+  }
+}
+
 // 100 draws (seed 1000-1099), 150 tags: pooled 0.961, each value
 // 0.93-1.00, sd ratio 0.46-0.51 (a3 0.65-0.79).  a3 carries frame 0's
 // length error, its top's and its apex's (ReportedSd): without it the
 // tracked frame's a3 covered 75-85 %, its material points sharing frame
 // 0's error (below, MidwallTagsWithFrameZeroExact; docs/uncertainty.md).
 TEST(LvUncertaintyCalibrationTest, MidwallTags) {
-  SKIP_UNLESS_ASKED();
   ExpectCalibrated({"midwall-tags"});
 }
 
@@ -244,13 +288,9 @@ TEST(LvUncertaintyCalibrationTest, MidwallTags) {
 // frame 1 alone nothing else is missing.  Frame 0's own values are the
 // noise-free fit's and not judged.
 TEST(LvUncertaintyCalibrationTest, MidwallTagsWithFrameZeroExact) {
-  SKIP_UNLESS_ASKED();
   Case c{"midwall-tags-exact-frame0"};
   c.exact_frame0 = true;
-  const Calibration r = RunCase(c);
-  for (size_t j = 0; j < r.judged.size(); ++j) {
-    EXPECT_GE(r.inside[j], 0.90 * r.seeds) << j;
-  }
+  ExpectEachHolds(RunCase(c));
 }
 
 // Tags through the wall: the fit makes the model a solid, whose thickness,
@@ -270,10 +310,19 @@ TEST(LvUncertaintyCalibrationTest, MidwallTagsWithFrameZeroExact) {
 // "The solid's start").  The test shows it: the radii's pooled coverage
 // under 0.88, tau in 90-99 %, h at least 90 %.
 TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
-  SKIP_UNLESS_ASKED();
   Case c{"wall-tags"};
   c.tags = LvTagLayer::kWall;
   const Calibration r = RunCase(c);
+  if (!FullCalibrationAsked()) {
+    const auto radius = [](const Judged& j) {
+      return j.function == kA1 || j.function == kA2;
+    };
+    const auto tau = [](const Judged& j) { return j.function == kTau; };
+    EXPECT_GT(r.ZRms(radius), kWallRadiiZ);
+    EXPECT_GT(r.ZRms(tau), kCiZLow);
+    EXPECT_LT(r.ZRms(tau), kCiZHigh);
+    return;
+  }
   int tau_inside = 0, tau_count = 0, radii_inside = 0, radii_count = 0;
   for (size_t j = 0; j < r.judged.size(); ++j) {
     const Judged& judged = r.judged[j];
@@ -298,14 +347,10 @@ TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
 // own ranking of depths, afresh from its noisy tags, costs its intervals
 // nothing; what it lacks above is frame 0's error.
 TEST(LvUncertaintyCalibrationTest, WallTagsWithFrameZeroExact) {
-  SKIP_UNLESS_ASKED();
   Case c{"wall-tags-exact-frame0"};
   c.tags = LvTagLayer::kWall;
   c.exact_frame0 = true;
-  const Calibration r = RunCase(c);
-  for (size_t j = 0; j < r.judged.size(); ++j) {
-    EXPECT_GE(r.inside[j], 0.90 * r.seeds) << j;
-  }
+  ExpectEachHolds(RunCase(c));
 }
 
 // Short-axis contours, re-searched every round: no tracked points, so tau
@@ -314,7 +359,6 @@ TEST(LvUncertaintyCalibrationTest, WallTagsWithFrameZeroExact) {
 // noise, so the intervals are a little wide; frame 1's a3 covers 100 %
 // (docs/uncertainty.md).
 TEST(LvUncertaintyCalibrationTest, SaxContours) {
-  SKIP_UNLESS_ASKED();
   Case c{"sax-contours"};
   c.sampling = LvSampling::kSaxSlices;
   Expected e;
@@ -332,7 +376,6 @@ TEST(LvUncertaintyCalibrationTest, SaxContours) {
 // variance added (FrameCovariance::apex_length_variance) it covers 0.95
 // (sd 0.244 mm; docs/uncertainty.md).
 TEST(LvUncertaintyCalibrationTest, SaxOneWallsContours) {
-  SKIP_UNLESS_ASKED();
   Expected e;
   e.high = 0.99;
   e.ratio_tolerance = 0.07;
@@ -346,19 +389,20 @@ TEST(LvUncertaintyCalibrationTest, SaxOneWallsContours) {
 
 // Both walls' contours on the same slices (biv-me's lv-cavity,lv-epi): a
 // solid, each wall's points sought on its own wall every round; h judged
-// besides the radii.  100 draws (2026-12-06): pooled 0.963, each value
-// 0.89-0.99 (h 0.98-0.99; the later frame's a3 0.89 at every knot, one
-// length shared by them), sd ratio 0.42-0.48 (frame 0's a3 0.66): like
-// the mid-wall's contours, a little faster than 1/sqrt(4) as the
-// regularizers scale with the points.
+// besides the radii.  100 draws (2026-12-06): pooled 0.986, each value
+// 0.97-1.00, sd ratio 0.44-0.48 (frame 0's a3 0.66): like the mid-wall's
+// contours, a little wide (the slices' misfit counts in sigma) and
+// shrinking a little faster than 1/sqrt(4) as the regularizers scale with
+// the points.  The later frame's a3 covered 0.89 while a top slice of 16
+// points was read as no slice in a quarter of the fits (its rim 1 mm
+// lower: NeededTopSectors).
 TEST(LvUncertaintyCalibrationTest, SaxWallContours) {
-  SKIP_UNLESS_ASKED();
   Case c{"sax-wall-contours"};
   c.tags = LvTagLayer::kWall;
   c.sampling = LvSampling::kSaxSlices;
   Expected e;
   e.high = 0.99;
-  e.ratio_tolerance = 0.09;
+  e.ratio_tolerance = 0.08;
   ExpectCalibrated(c, e);
 }
 
@@ -366,7 +410,6 @@ TEST(LvUncertaintyCalibrationTest, SaxWallContours) {
 // Pooled 0.972, each value 0.93-1.00 (without a3's length term 0.923, the
 // tracked frame's a3 79-90 %).
 TEST(LvUncertaintyCalibrationTest, LesionMidwallTags) {
-  SKIP_UNLESS_ASKED();
   Case c{"lesion-midwall-tags"};
   c.lesion = true;
   ExpectCalibrated(c);

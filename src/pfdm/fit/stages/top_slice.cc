@@ -41,16 +41,18 @@ void MeasureFlatness(const std::vector<Eigen::Vector3d>& band,
 }
 
 // The sectors about the axis that hold a point within kOnSliceMm of the
-// plane; -1 when a point lies more than that above it.
+// plane, and those points' count; -1 when a point lies more than that
+// above it.
 int SectorsOnPlane(const std::vector<Eigen::Vector3d>& points,
                    const BasePlane& plane, const Eigen::Vector3d& on_axis,
-                   const Eigen::Vector3d& axis) {
+                   const Eigen::Vector3d& axis, int* on_plane) {
   std::vector<Eigen::Vector3d> on;
   for (const Eigen::Vector3d& p : points) {
     const double above = plane.normal.dot(p - plane.point);
     if (above > kOnSliceMm) return -1;
     if (above >= -kOnSliceMm) on.push_back(p);
   }
+  *on_plane = static_cast<int>(on.size());
   const Eigen::Vector3d x = axis.unitOrthogonal();
   const Eigen::Vector3d y = axis.cross(x);
   std::vector<bool> filled(kTopSectors, false);
@@ -66,6 +68,18 @@ int SectorsOnPlane(const std::vector<Eigen::Vector3d>& points,
 
 }  // namespace
 
+int NeededTopSectors(int points_on_plane) {
+  const double s = kTopSectors, n = points_on_plane;
+  // Each sector's chance of staying empty, and a pair's.
+  const double p1 = std::pow(1.0 - 1.0 / s, n), p2 = std::pow(1.0 - 2.0 / s, n);
+  const double mean = s * (1.0 - p1);
+  const double variance =
+      std::max(0.0, s * p1 * (1.0 - p1) + s * (s - 1.0) * (p2 - p1 * p1));
+  const int needed =
+      static_cast<int>(std::floor(mean - 2.0 * std::sqrt(variance)));
+  return std::clamp(needed, kMinSparseTopSectors, kMinTopSectors);
+}
+
 TopSlice FindTopSlice(const std::vector<Eigen::Vector3d>& points,
                       const Eigen::Vector3d& on_axis,
                       const Eigen::Vector3d& axis) {
@@ -79,10 +93,13 @@ TopSlice FindTopSlice(const std::vector<Eigen::Vector3d>& points,
   MeasureFlatness(band, *plane, &top);
   top.tilt_deg =
       std::acos(std::min(1.0, plane->normal.dot(axis))) * 180.0 / M_PI;
-  top.sectors = SectorsOnPlane(points, *plane, on_axis, axis);
+  int on_plane = 0;
+  top.sectors = SectorsOnPlane(points, *plane, on_axis, axis, &on_plane);
+  top.needed_sectors = NeededTopSectors(on_plane);
   top.found = top.rms_mm <= kTopPlaneRmsMm &&
               top.off_slice_share <= kMaxOffSliceShare &&
-              top.tilt_deg <= kTopSliceTiltDeg && top.sectors >= kMinTopSectors;
+              top.tilt_deg <= kTopSliceTiltDeg &&
+              top.sectors >= top.needed_sectors;
   return top;
 }
 

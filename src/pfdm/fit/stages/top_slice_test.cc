@@ -92,6 +92,41 @@ TEST(TopSliceTest, WhatIsNotAllRound) {
   EXPECT_GT(tops.rms_mm, kTopPlaneRmsMm);
 }
 
+// Few points fill fewer sectors by chance: E - 2 sd of the count a whole
+// ring's n random points fill, within 7-9.
+TEST(TopSliceTest, FewPointsNeedFewerSectors) {
+  EXPECT_EQ(NeededTopSectors(4), kMinSparseTopSectors);
+  EXPECT_EQ(NeededTopSectors(16), 7);  // 9.0 +- 1.1 filled.
+  EXPECT_EQ(NeededTopSectors(24), 8);  // 10.5 +- 1.0.
+  EXPECT_EQ(NeededTopSectors(40), kMinTopSectors);
+  EXPECT_EQ(NeededTopSectors(1000), kMinTopSectors);
+}
+
+// A top slice of 16 points at random angles all round (both walls' 8 each,
+// as the LV phantom's 150 contour points a frame leave them) on a stack:
+// 9 sectors were needed and about half of such slices filled fewer.  Over
+// 100 draws every slice is found; 30 of them fill fewer than 9.
+TEST(TopSliceTest, ASparseSliceIsStillASlice) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  int found = 0, under_nine = 0;
+  for (int draw = 0; draw < 100; ++draw) {
+    std::vector<Eigen::Vector3d> points = Stack(&random);
+    points.resize(8 * 40);
+    for (int k = 0; k < 16; ++k) {
+      const double a = angle(random), r = k % 2 == 0 ? 24.0 : 32.0;
+      points.push_back({r * std::cos(a), r * std::sin(a), 80.0});
+    }
+    const TopSlice top =
+        FindTopSlice(points, kOrigin, Eigen::Vector3d::UnitZ());
+    EXPECT_EQ(top.needed_sectors, 7);
+    found += top.found;
+    under_nine += top.sectors < kMinTopSectors;
+  }
+  EXPECT_EQ(found, 100);
+  EXPECT_GT(under_nine, 20);
+}
+
 // Tags filling the wall's height: the top band is 5 mm thick, no plane.
 TEST(TopSliceTest, TagsFillTheHeight) {
   std::mt19937 random(4);
