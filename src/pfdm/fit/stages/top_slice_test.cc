@@ -104,7 +104,7 @@ TEST(TopSliceTest, FewPointsNeedFewerSectors) {
 
 // A top slice of 16 points at random angles all round (both walls' 8 each,
 // as the LV phantom's 150 contour points a frame leave them) on a stack:
-// 9 sectors were needed and about half of such slices filled fewer.  Over
+// 9 sectors were needed and about a third of such slices filled fewer.  Over
 // 100 draws every slice is found; 30 of them fill fewer than 9.
 TEST(TopSliceTest, ASparseSliceIsStillASlice) {
   std::mt19937 random(5);
