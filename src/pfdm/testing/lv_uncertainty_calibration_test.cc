@@ -304,11 +304,11 @@ TEST(LvUncertaintyCalibrationTest, MidwallTagsWithFrameZeroExact) {
 // the tracked frame inherits its error.  Why frame 0: its depths, ranked
 // in whole rings, keep the shape of the rounds' start, the mid-wall fit
 // before the wall is decided (lv_wall_rank_shape_test.cc), and that fit's
-// error from the noise is two to three times its Gauss-Newton sd: its
-// residuals, the wall's spread (2.5 mm), are large beside the section's
-// ellipticity, which the linearization leaves out (docs/uncertainty.md,
-// "The solid's start").  The test shows it: the radii's pooled coverage
-// under 0.88, tau in 90-99 %, h at least 90 %.
+// error from the noise is two to three times its Gauss-Newton sd; its
+// spin, which its data fix least, follows the start's, which moves with
+// the noise (docs/uncertainty.md, "The solid's start").  The test shows
+// it: the radii's pooled coverage under 0.88, tau in 90-99 %, h at least
+// 90 %.
 TEST(LvUncertaintyCalibrationTest, WallTagsRadiiAreTooNarrow) {
   Case c{"wall-tags"};
   c.tags = LvTagLayer::kWall;
