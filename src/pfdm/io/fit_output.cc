@@ -16,6 +16,7 @@
 #include "pfdm/report/bullseye_plot.h"
 #include "pfdm/report/fit_plots.h"
 #include "pfdm/report/fit_report.h"
+#include "pfdm/report/material_rings.h"
 #include "pfdm/util/angles.h"
 #include "pfdm/util/atomic_file.h"
 #include "pfdm/util/error.h"
@@ -27,11 +28,6 @@ bool IsLength(int f) {
   return f == kA0 || f == kA1 || f == kA2 || f == kA3 || f == kB0 || f == kB2 ||
          f == kE1o || f == kE2o || f == kE3o || f == kH || f == kWallShift ||
          f == kWallSqueeze;
-}
-
-double KnotRingZ(const Model& model, double u) {
-  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
-         model.FunctionAt(kE3o, u);
 }
 
 const std::regex& OutputNamePattern() {
@@ -191,7 +187,7 @@ std::string ParametersCsv(const std::vector<Model>& frames,
       for (int k = 0; k < grid.num_knots(); ++k) {
         const double u = grid.KnotU(k);
         out << t << ',' << FunctionName(f) << ',' << k << ',' << u << ','
-            << KnotRingZ(model, u) << ',' << ReportedValue(model, f, u);
+            << RingHeight(model, u) << ',' << ReportedValue(model, f, u);
         if (fit != nullptr) {
           const FrameCovariance& covariance = fit->frames[t].covariance;
           out << ',';

@@ -119,6 +119,10 @@ double Model::FunctionAt(int function, double u) const {
   return FunctionsAt(u)[function];
 }
 
+double Model::ShapeHeight(double u) const {
+  return state.globals[kA0] * FunctionAt(kA3, u) * std::sin(u);
+}
+
 Eigen::Vector3d Model::ModelPoint(double u, double v, double w) const {
   return ModelPointWith(FunctionsAt(u), u, v, w);
 }

@@ -91,6 +91,10 @@ struct Model {
                                  double w = 0.0) const;
   // Rotation world_from_model.
   Eigen::Matrix3d Rotation() const;
+  // The superellipsoid's height of the ring at u along the model's axis
+  // from its centre, a0 a3(u) sin u (eps1 = 1), its offset e3o and bends
+  // aside (report/material_rings.h RingHeight adds e3o).
+  double ShapeHeight(double u) const;
 
   // The bending gauge.  g(x, b + 2) = -g(x, b), so (b0, b1) and
   // (-b0, b1 + 2) are the same bend; shifting a whole shape function by a

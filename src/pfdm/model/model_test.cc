@@ -44,6 +44,18 @@ TEST(ModelTest, FreeFunctionsInterpolateAndOthersComeFromTheGlobals) {
   EXPECT_EQ(model.FunctionAt(kA0, u), 7.0);
 }
 
+// A ring's height along the axis is its points' model z where nothing
+// bends or offsets it (the paper's eps1 = 1), a3 varying along u.
+TEST(ModelTest, ShapeHeightIsTheRingsModelZ) {
+  FunctionValues f = DefaultFunctionValues();
+  f[kA0] = 10.0;
+  Model model = Model::Uniform(ModelConfig::Paper(5), f);
+  for (int k = 0; k < 5; ++k) model.state.knots[k][kA3] = 0.8 + 0.1 * k;
+  for (double u : {model.config.u_min, -0.3, 0.0, 0.4, model.config.u_max}) {
+    EXPECT_NEAR(model.ShapeHeight(u), model.ModelPoint(u, 0.7).z(), 1e-12) << u;
+  }
+}
+
 TEST(ModelTest, WorldPointAppliesThePose) {
   FunctionValues f = DefaultFunctionValues();
   f[kA0] = 10.0;

@@ -7,22 +7,16 @@
 namespace pfdm {
 namespace {
 
-// A ring's height along the axis from the model's centre (bends and
-// offsets aside).
-double RingHeight(const Model& model, double u) {
-  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u);
-}
-
 // The u whose ring lies at `height`, clamped to the model's ends.  Heights
 // rise with u from the apex to the top.
 double UAtHeight(const Model& model, double height) {
   const ModelConfig& config = model.config;
-  if (height >= RingHeight(model, config.u_max)) return config.u_max;
-  if (height <= RingHeight(model, config.u_min)) return config.u_min;
+  if (height >= model.ShapeHeight(config.u_max)) return config.u_max;
+  if (height <= model.ShapeHeight(config.u_min)) return config.u_min;
   double low = config.u_min, high = config.u_max;
   for (int i = 0; i < 60; ++i) {
     const double middle = 0.5 * (low + high);
-    (RingHeight(model, middle) < height ? low : high) = middle;
+    (model.ShapeHeight(middle) < height ? low : high) = middle;
   }
   return 0.5 * (low + high);
 }
@@ -42,11 +36,11 @@ double RadiusFactor(const Model& model, double from, double u) {
 Model RaisedTop(const Model& model, double stretch) {
   const ModelConfig& config = model.config;
   const KnotGrid grid(config.num_knots, config.u_min, config.u_max);
-  const double apex = RingHeight(model, config.u_min);
+  const double apex = model.ShapeHeight(config.u_min);
   Model raised = model;
   for (int k = 0; k < config.num_knots; ++k) {
     const double u = grid.KnotU(k);
-    const double height = RingHeight(model, u);
+    const double height = model.ShapeHeight(u);
     const double from = UAtHeight(model, height + stretch * (height - apex));
     FunctionValues& knot = raised.state.knots[k];
     for (int f : {kA1, kA2, kE1o, kE2o}) {

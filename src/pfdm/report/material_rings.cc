@@ -79,8 +79,7 @@ double WallThickness(const Model& model, double u, double v,
 }
 
 double RingHeight(const Model& model, double u) {
-  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) +
-         model.FunctionAt(kE3o, u);
+  return model.ShapeHeight(u) + model.FunctionAt(kE3o, u);
 }
 
 double RingAtHeightFraction(const Model& reference, double h) {

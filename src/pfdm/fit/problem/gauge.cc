@@ -99,14 +99,11 @@ double ApexExtent(const Model& model) {
 }
 
 double ApexHeight(const Model& model) {
-  const double u = model.config.u_min;
-  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u);
+  return model.ShapeHeight(model.config.u_min);
 }
 
 double AxialLength(const Model& model) {
-  const double u = model.config.u_max;
-  return model.state.globals[kA0] * model.FunctionAt(kA3, u) * std::sin(u) -
-         ApexHeight(model);
+  return model.ShapeHeight(model.config.u_max) - ApexHeight(model);
 }
 
 double TopHeight(const std::vector<Eigen::Vector3d>& points,
