@@ -1,6 +1,7 @@
 #include "pfdm/solvers/solver.h"
 
 #include <exception>
+#include <optional>
 #include <utility>
 
 #include "ceres/solver.h"
@@ -213,16 +214,19 @@ SolverReport SolveDirect(ceres::Problem* problem,
     solver_options.callbacks.push_back(&observer);
     solver_options.update_state_every_iteration = bool(options.on_step);
   }
-  ActiveBounds bounds(problem);
-  BoundWatcher watcher(&bounds);
-  const bool watch = options.hold_bounds && !options.linear && !bounds.empty();
+  // Listed only where they are to be held: a linear solve's one step, and
+  // frame 0's clipped solves, need no list.
+  std::optional<ActiveBounds> bounds;
+  std::optional<BoundWatcher> watcher;
+  if (options.hold_bounds && !options.linear) bounds.emplace(problem);
+  const bool watch = bounds && !bounds->empty();
   if (watch) {
     // The watcher reads the iterate from the parameter blocks.
-    solver_options.callbacks.push_back(&watcher);
+    solver_options.callbacks.push_back(&watcher.emplace(&*bounds));
     solver_options.update_state_every_iteration = true;
     // Held from the start where the last solve left them (a round after
     // another): a solve stopped at its first iterate costs an evaluation.
-    bounds.HoldActive();
+    bounds->HoldActive();
   }
   SolverReport report;
   ceres::Solver::Summary summary;
@@ -236,12 +240,12 @@ SolverReport SolveDirect(ceres::Problem* problem,
     observer.RethrowError();
     AddSolve(summary, &report);
     if (!watch) break;
-    if (watcher.TakeHit()) {
-      if (bounds.HoldActive() > 0) continue;
+    if (watcher->TakeHit()) {
+      if (bounds->HoldActive() > 0) continue;
       solver_options.callbacks.pop_back();  // None to hold: Ceres clips.
       continue;
     }
-    if (bounds.held() == 0 || bounds.ReleaseInward() == 0) break;
+    if (bounds->held() == 0 || bounds->ReleaseInward() == 0) break;
   }
   SetOutcome(summary, options, &report);
   return report;
