@@ -29,9 +29,9 @@
 //   RV insertion (thirds of the ED axis, basal first, 6/6/4 sectors of
 //   longitude counted counter-clockwise about +z from the body's -x; by the
 //   phantom's RV insertion, lv_phantom.h, basal and mid sector k is AHA
-//   sector (2 - k) mod 6, so "mid 2" is mid anteroseptal either way): area-weighted means
-//   (ED mid-wall area) of each point's rotation as above and of
-//   100 (1 - rho / rho0), rho its distance from its ring's centroid.
+//   sector (2 - k) mod 6, so "mid 2" is mid anteroseptal either way):
+//   area-weighted means (ED mid-wall area) of each point's rotation as above
+//   and of 100 (1 - rho / rho0), rho its distance from its ring's centroid.
 //   wall_thickening_percent (segments and per ring): 100 (T / T0 - 1), T
 //   the wall's thickness at a mid-wall material point: the vector from the
 //   endocardial to the epicardial material point at its (nu, phi) (a
@@ -76,6 +76,15 @@ struct LvSegmentTruth {
   double radial_contraction_percent = 0.0;
   double wall_thickening_percent = 0.0;
 };
+
+// The AHA segment (0-based; a fit's segments hung on the phantom's RV
+// insertion) of the phantom's basal or mid sector `phantom_segment`
+// (0-based, as LvFrameTruth::segments), and back: the map is its own
+// inverse.  Basal and mid sector k is AHA sector (2 - k) mod 6.
+inline int LvAhaSegmentIndex(int phantom_segment) {
+  const int level = phantom_segment < 6 ? 0 : 6;
+  return level + ((2 - (phantom_segment - level)) % 6 + 6) % 6;
+}
 
 struct LvFrameTruth {
   int frame = 0;

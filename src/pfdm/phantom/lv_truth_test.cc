@@ -83,5 +83,21 @@ TEST(LvPhantomTruthTest, RingValuesInterpolateAndExtrapolateToTheApex) {
   EXPECT_NEAR(LvRingValueAt(values, 0.475), 0.5 * (3.0 - 0.9 + 10.0), 1e-12);
 }
 
+// The phantom's sectors run counter-clockwise from the body's -x, the AHA
+// segments clockwise from the anterior insertion, 60 degrees on
+// (lv_phantom.h): mid 2, the lesion's, is mid anteroseptal (AHA 8) either
+// way, its neighbours trade places, and the map is its own inverse.
+TEST(LvPhantomTruthTest, SectorsMapToAhaSegmentsAndBack) {
+  EXPECT_EQ(LvAhaSegmentIndex(7), 7);
+  EXPECT_EQ(LvAhaSegmentIndex(6), 8);
+  EXPECT_EQ(LvAhaSegmentIndex(8), 6);
+  EXPECT_EQ(LvAhaSegmentIndex(0), 2);
+  EXPECT_EQ(LvAhaSegmentIndex(3), 5);
+  for (int k = 0; k < 12; ++k) {
+    EXPECT_EQ(LvAhaSegmentIndex(LvAhaSegmentIndex(k)), k);
+    EXPECT_EQ(LvAhaSegmentIndex(k) / 6, k / 6);
+  }
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -11,13 +11,16 @@
 //    noise and the model's bias together; a number whose bias is large
 //    against its sd is missed however calibrated the sd.
 // Each interval is centred on the number minus the bias the noise puts
-// into it (report/local_field_noise.h).  Six kinds of data: mid-wall
-// tags, tags through the wall, both walls' contours, and the endocardium's,
-// the epicardium's or the mid-wall's contours alone; pfdm claims a number's
+// into it (report/local_field_noise.h).  Seven kinds of data: mid-wall
+// tags, tags through the wall, both walls' contours, the endocardium's,
+// the epicardium's or the mid-wall's contours alone, and mid-wall tags of
+// the phantom with a hypokinetic segment, whose segments hang on the
+// phantom's RV insertion (is the lesion told from its neighbours, and
+// how near its truth?).  pfdm claims a number's
 // interval calibrated per kind (report/interval_calibration.h), and over
 // 100 seeds each claimed row held the noise-free fit in 90-98 % of draws
 // (docs/uncertainty_calibration.md).  PFDM_CALIBRATION_SEEDS (default 3,
-// about 80 s of one core for the six) sets the seeds;
+// about 85 s of one core for the seven) sets the seeds;
 // scripts/interval_calibration.sh runs 100 and writes
 // docs/uncertainty_calibration.md from the tables printed here.
 #include <cmath>
@@ -34,12 +37,17 @@
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/interval_calibration.h"
 #include "pfdm/report/number_uncertainty.h"
+#include "pfdm/report/rv_insertion.h"
+#include "pfdm/testing/interval_calibration_table.h"
 
 namespace pfdm {
 namespace {
 
 constexpr int kEs = 1;       // Frames: ED and ES.
 constexpr int kSegment = 8;  // 0-based: segment 9, mid.
+// 0-based: segment 8, mid anteroseptal, where the phantom's lesion is
+// (lv_phantom.h): it contracts 15.9 % against its neighbours' 22.5.
+constexpr int kLesionSegment = 7;
 
 // key: fit.json's name of the number, which says whether pfdm claims its
 // interval calibrated on the data fitted (interval_calibration.h); value
@@ -115,6 +123,12 @@ std::vector<Judged> Numbers(FitAnalysis a, const LvPhantom& phantom,
   const auto volume = [&](const LvFrameTruth& t) {
     return cavity ? t.endo_volume_ml : epi ? t.epi_volume_ml : t.volume_ml;
   };
+  // Without the lesion the mid segments contract alike; with it, segment
+  // 9 is the lesion's neighbour.
+  const double segment_truth =
+      phantom.options.deformation.lesion
+          ? t1.segments[LvAhaSegmentIndex(kSegment)].radial_contraction_percent
+          : MidSegmentTruth(t1);
   const double edv = volume(t0);
   const double esv = volume(t1);
   std::vector<Judged> judged = {
@@ -147,10 +161,28 @@ std::vector<Judged> Numbers(FitAnalysis a, const LvPhantom& phantom,
        kNotMeasured},
       {"seg 9 radial %", "radial_contraction_percent",
        seg.radial_contraction_percent, seg_sd.radial_contraction_percent,
-       one_wall ? kNotMeasured : MidSegmentTruth(t1)},
+       one_wall ? kNotMeasured : segment_truth},
       {"seg 9 rotation deg", "rotation_deg", seg.rotation_deg,
        seg_sd.rotation_deg, kNotMeasured},
   };
+  // With the lesion, its segment alone, against its own truth (the mid
+  // segments' mean is no segment's there).
+  if (phantom.options.deformation.lesion) {
+    const RegionMotion& lesion = a.region_motion[kEs][kLesionSegment];
+    const RegionMotion& lesion_sd =
+        with_sd ? a.sd.region_motion[kEs][kLesionSegment] : lesion;
+    const LvSegmentTruth& lesion_truth =
+        t1.segments[LvAhaSegmentIndex(kLesionSegment)];
+    judged.push_back({"seg 8 (lesion) Ecc %", "ecc_percent", lesion.ecc_percent,
+                      lesion_sd.ecc_percent, kNotMeasured});
+    judged.push_back({"seg 8 (lesion) radial %", "radial_contraction_percent",
+                      lesion.radial_contraction_percent,
+                      lesion_sd.radial_contraction_percent,
+                      lesion_truth.radial_contraction_percent});
+    judged.push_back({"seg 8 (lesion) rotation deg", "rotation_deg",
+                      lesion.rotation_deg, lesion_sd.rotation_deg,
+                      lesion_truth.rotation_deg});
+  }
   // Every segment's, pooled in one row each.
   for (size_t r = 0; r < a.region_motion[kEs].size(); ++r) {
     const RegionMotion& m = a.region_motion[kEs][r];
@@ -175,40 +207,49 @@ std::vector<Judged> Numbers(FitAnalysis a, const LvPhantom& phantom,
   return judged;
 }
 
+// With the lesion, the segments are anchored to the phantom's RV insertion
+// (as a user who reads segments would give it), so that the fit's segment
+// 8 is the phantom's.
 FitAnalysis FitLv(const LvPhantomOptions& options, bool uncertainty) {
   FitOptions fit_options;
   fit_options.uncertainty = uncertainty;
-  return AnalyzeFit(FitSequence(MakeLvPhantom(options).points,
-                                ModelConfig::Paper(9), fit_options));
+  const LvPhantom phantom = MakeLvPhantom(options);
+  const SequenceFit fit =
+      FitSequence(phantom.points, ModelConfig::Paper(9), fit_options);
+  RegionLayout layout;
+  if (options.deformation.lesion) {
+    RvInsertion insertion;
+    insertion.source = "phantom";
+    insertion.anterior = {phantom.rv_anterior};
+    insertion.inferior = {phantom.rv_inferior};
+    layout = AnatomicalLayout(fit.ModelAt(0), insertion);
+    EXPECT_TRUE(layout.anatomical) << layout.anchor;
+  }
+  return AnalyzeFit(fit, {}, layout);
 }
 
-// Sums over the draws (and, for the pooled rows, the segments).
-struct Tally {
-  bool calibrated = true;
-  int draws = 0, inside_fit = 0, inside_truth = 0, truths = 0;
-  double sd = 0.0, error_square = 0.0, error = 0.0, bias = 0.0;
-  double uncentred_error = 0.0;  // Of the number itself, not minus its bias.
-  int dense_draws = 0, inside_dense = 0;  // Where the dense fit measured it.
-  double dense_error = 0.0;
-  double MeanSd() const { return sd / draws; }
-  double RmsError() const { return std::sqrt(error_square / draws); }
-  double MeanError() const { return error / draws; }
-  double MeanUncentredError() const { return uncentred_error / draws; }
-  double MeanDenseError() const { return dense_error / dense_draws; }
-  double DenseCoverage() const {
-    return inside_dense / static_cast<double>(dense_draws);
-  }
-};
-
-int Seeds() {
-  const char* text = std::getenv("PFDM_CALIBRATION_SEEDS");
-  return text != nullptr ? std::max(1, std::atoi(text)) : 3;
+// Whether a reader could tell the lesion from fit noise: its radial
+// contraction's interval lies wholly below both its mid-ring neighbours'
+// (segments 7 and 9), each centred on the number minus its noise bias.
+bool LesionToldApart(FitAnalysis a) {
+  if (a.noise_bias.computed) CentreOnBias(&a);
+  const auto interval = [&a](int segment) {
+    const double value =
+        a.region_motion[kEs][segment].radial_contraction_percent;
+    const double half = HalfWidth95(
+        a.sd.region_motion[kEs][segment].radial_contraction_percent);
+    return std::pair{value - half, value + half};
+  };
+  const double lesion_high = interval(kLesionSegment).second;
+  return lesion_high < interval(kLesionSegment - 1).first &&
+         lesion_high < interval(kLesionSegment + 1).first;
 }
 
 // The data a case draws: ED and ES of the LV phantom, 0.5 mm noise.
 struct Case {
   LvTagLayer layer = LvTagLayer::kMidwall;
   LvSampling sampling = LvSampling::kTags;
+  bool lesion = false;  // Segment 8 contracting at 40 % of normal.
 };
 
 LvPhantomOptions PhantomOptions(const Case& c, int seed) {
@@ -219,6 +260,7 @@ LvPhantomOptions PhantomOptions(const Case& c, int seed) {
   options.sampling = c.sampling;
   // biv-me's views: short-axis slices and 3 long-axis planes.
   if (c.sampling == LvSampling::kSaxSlices) options.num_long_axis_planes = 3;
+  options.deformation.lesion = c.lesion;
   options.seed = 1000 + seed;
   return options;
 }
@@ -236,16 +278,19 @@ std::vector<Judged> DenseNumbers(const Case& c) {
   return Numbers(FitLv(options, false), MakeLvPhantom(options));
 }
 
-// Over Seeds() noise draws of c: per number, in the table's order.
-std::vector<std::pair<std::string, Tally>> Calibrate(const Case& c) {
+// Over CalibrationSeeds() noise draws of c: per number, in the table's order.
+// With the lesion, *told_apart counts the draws where LesionToldApart.
+std::vector<std::pair<std::string, Tally>> Calibrate(const Case& c,
+                                                     int* told_apart) {
   std::vector<std::string> names;
   std::map<std::string, Tally> tally;
   const std::vector<Judged> dense = DenseNumbers(c);
-  for (int s = 0; s < Seeds(); ++s) {
+  for (int s = 0; s < CalibrationSeeds(); ++s) {
     LvPhantomOptions options = PhantomOptions(c, s);
     const LvPhantom phantom = MakeLvPhantom(options);
     const FitAnalysis noisy = FitLv(options, true);
     EXPECT_TRUE(noisy.sd.computed);
+    if (c.lesion) *told_apart += LesionToldApart(noisy);
     options.noise_mm = 0.0;
     const FitAnalysis clean = FitLv(options, false);
     const std::vector<Judged> got = Numbers(noisy, phantom);
@@ -284,73 +329,13 @@ std::vector<std::pair<std::string, Tally>> Calibrate(const Case& c) {
   return rows;
 }
 
-// Over 100 seeds and more, a number whose interval pfdm claims calibrated
-// (interval_calibration.h, where coverage read 0.90-0.98) holds the
-// noise-free fit in 88-99 % of draws: the binomial's sd at 100 draws is
-// 2.2 points, and a change of the code moves a row by a draw or two.
-// Segment 9 alone is shown, not asserted (the claim is the pooled
-// segments'; it read 0.87 for Ecc on mid-wall tags).
-void ExpectCoverageClaimed(const std::string& name, const Tally& t) {
-  if (Seeds() < 100 || name.rfind("seg 9", 0) == 0) return;
-  const double coverage = t.inside_fit / static_cast<double>(t.draws);
-  EXPECT_GE(coverage, 0.88) << name;
-  EXPECT_LE(coverage, 0.99) << name;
-}
-
-// Prints the table (scripts/interval_calibration.sh copies it into docs/)
-// and returns the rms of the calibrated numbers' errors in their sds.
-double PrintTable(const std::string& title,
-                  const std::vector<std::pair<std::string, Tally>>& rows) {
-  std::printf("## %s\n\n", title.c_str());
-  std::printf(
-      "| number | claimed | coverage of the noise-free fit | mean sd | "
-      "rms error | mean error | mean error without the bias | "
-      "coverage of the dense fit | mean error against it | "
-      "coverage of the truth | mean bias |\n"
-      "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
-  int pooled = 0, total = 0, calibrated = 0;
-  double z_square = 0.0;
-  for (const auto& [name, t] : rows) {
-    pooled += t.inside_fit;
-    total += t.draws;
-    std::printf("| %s | %s | %.3f | %.4g | %.4g | %.3g | %.3g | %.3f | %.3g | ",
-                name.c_str(), t.calibrated ? "yes" : "",
-                t.inside_fit / double(t.draws), t.MeanSd(), t.RmsError(),
-                t.MeanError(), t.MeanUncentredError(), t.DenseCoverage(),
-                t.MeanDenseError());
-    if (t.truths > 0) {
-      std::printf("%.3f | %.4g |\n", t.inside_truth / double(t.truths),
-                  t.bias / t.truths);
-    } else {
-      std::printf("- | - |\n");
-    }
-    if (t.calibrated) {
-      z_square += std::pow(t.RmsError() / t.MeanSd(), 2);
-      ++calibrated;
-      ExpectCoverageClaimed(name, t);
-    }
-  }
-  std::printf("\npooled coverage of the noise-free fit: %.3f over %d seeds\n\n",
-              pooled / static_cast<double>(total), Seeds());
-  return std::sqrt(z_square / calibrated);
-}
-
-const Tally& Row(const std::vector<std::pair<std::string, Tally>>& rows,
-                 const std::string& name) {
-  for (const auto& row : rows) {
-    if (row.first == name) return row.second;
-  }
-  static const Tally none;
-  ADD_FAILURE() << "no row " << name;
-  return none;
-}
-
 // c's table, printed; the calibrated numbers' errors in sds have an rms
 // about 1 (0.5 to 2 over 3 seeds and correlated numbers; the 100-seed
 // tables in docs/).
 std::vector<std::pair<std::string, Tally>> CalibrateKind(
-    const Case& c, const std::string& title) {
-  const auto rows = Calibrate(c);
+    const Case& c, const std::string& title, int* told_apart = nullptr) {
+  int unused = 0;
+  const auto rows = Calibrate(c, told_apart ? told_apart : &unused);
   const double z_rms = PrintTable(title, rows);
   EXPECT_GT(z_rms, 0.5) << title;
   EXPECT_LT(z_rms, 2.0) << title;
@@ -376,6 +361,28 @@ TEST(LvIntervalCalibrationTest, WallTags) {
   // 100 seeds, -0.68 against the noise-free fit; 3 seeds: -0.24, -0.78).
   const Tally& gcs = Row(rows, "GCS %");
   EXPECT_LT(std::abs(gcs.MeanDenseError()), 0.5 * std::abs(gcs.MeanError()));
+}
+
+// Mid-wall tags of the LV phantom whose segment 8 contracts at 40 % of
+// normal (lv_phantom.h): a segment the global model cannot follow, which
+// the local field has to find, and whose interval a reader would use to
+// tell it from its neighbours.
+TEST(LvIntervalCalibrationTest, LesionMidwallTags) {
+  int told_apart = 0;
+  const auto rows =
+      CalibrateKind(Case{LvTagLayer::kMidwall, LvSampling::kTags, true},
+                    "400 mid-wall tags, segment 8 hypokinetic", &told_apart);
+  std::printf(
+      "Lesion told apart (its radial contraction's interval wholly below "
+      "both its mid-ring neighbours'): %d of %d draws\n\n",
+      told_apart, CalibrationSeeds());
+  EXPECT_GE(told_apart, 0.9 * CalibrationSeeds());
+  // The local field's smoothness draws the lesion a little toward its
+  // neighbours: over 100 seeds its radial contraction read 0.57 points
+  // above the truth (its sd 0.56; -0.11 over the first 3), and its
+  // interval held the truth in 74 % of draws, the noise-free fit in all.
+  const Tally& lesion = Row(rows, "seg 8 (lesion) radial %");
+  EXPECT_LT(std::abs(lesion.bias / lesion.truths), 1.5);
 }
 
 TEST(LvIntervalCalibrationTest, WallContours) {

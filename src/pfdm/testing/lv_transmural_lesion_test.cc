@@ -51,13 +51,8 @@ constexpr int kLesion = 7;
 constexpr int kNeighbours[] = {6, 8, 1};
 constexpr int kChecked[] = {7, 6, 8, 1, 10};
 
-// The fit's segments are anchored to the phantom's RV insertion (AHA); the
-// phantom's basal and mid sector k is AHA sector (2 - k) mod 6 (lv_truth.h).
-int AhaIndex(int phantom_index) {
-  const int level = phantom_index < 6 ? 0 : 6;
-  const int k = phantom_index - level;
-  return level + ((2 - k) % 6 + 6) % 6;
-}
+// The fit's segments are anchored to the phantom's RV insertion (AHA):
+// LvAhaSegmentIndex maps the phantom's sectors to them.
 
 struct Case {
   const char* name;
@@ -101,7 +96,7 @@ Fitted FitLesion(double outer_w) {
 }
 
 double EccAt(const Fitted& f, int phantom_index, int layer) {
-  return f.analysis.region_layers.back()[AhaIndex(phantom_index)]
+  return f.analysis.region_layers.back()[LvAhaSegmentIndex(phantom_index)]
       .layers[layer]
       .ecc_percent;
 }
@@ -110,10 +105,11 @@ Worst CompareAtEs(const Fitted& f) {
   Worst worst;
   const size_t es = f.analysis.region_motion.size() - 1;
   for (int r : kChecked) {
-    const RegionMotion& fit = f.analysis.region_motion[es][AhaIndex(r)];
+    const RegionMotion& fit =
+        f.analysis.region_motion[es][LvAhaSegmentIndex(r)];
     const LvSegmentTruth& truth = f.phantom.truth[es].segments[r];
     std::printf("ES %-20s radial %5.1f (%5.1f) thickening %5.1f (%5.1f)",
-                f.analysis.regions[AhaIndex(r)].Name().c_str(),
+                f.analysis.regions[LvAhaSegmentIndex(r)].Name().c_str(),
                 fit.radial_contraction_percent,
                 truth.radial_contraction_percent, fit.thickening_percent,
                 truth.wall_thickening_percent);
