@@ -3,11 +3,12 @@
 # LV phantom: runs LvIntervalCalibrationTest (mid-wall tags, tags through
 # the wall, both walls' contours, the endocardium's, the epicardium's or
 # the mid-wall's contours alone, and mid-wall tags of the phantom with a
-# hypokinetic segment) over SEEDS noise draws (default 100) and
+# hypokinetic segment, mid-wall or through the wall) over SEEDS noise
+# draws (default 100) and
 # writes its tables into docs/uncertainty_calibration.md.
 #   scripts/interval_calibration.sh [build dir] [seeds] [log]
 # Per seed about 3.5 s of one core for the mid-wall tags (with the lesion
-# too), 8 s for the wall's
+# too), 5-8 s for the wall's (with the lesion too)
 # tags, 7 s for both walls' contours, 1.3-1.5 s for each of the others (two
 # fits each, noisy and noise-free), and one dense noise-free fit per kind.
 # Given a log of that test already run with PFDM_CALIBRATION_SEEDS=seeds,
@@ -39,14 +40,15 @@ fi
   echo "Written by \`scripts/interval_calibration.sh\` ($(date -u +%Y-%m-%d)):"
   echo "$seeds noise seeds of the LV phantom (\`phantom/lv_phantom.h\`, the"
   echo "model did not make it), noise 0.5 mm per coordinate, ED and ES, the"
-  echo "paper's model with 9 knots, --uncertainty on; seven kinds of data:"
-  echo "400 mid-wall tags (and the same of the phantom whose segment 8"
-  echo "contracts at 40 % of normal, its segments hung on the phantom's RV"
-  echo "insertion), 400 tags through the wall (a solid), both walls'"
+  echo "paper's model with 9 knots, --uncertainty on; six kinds of data:"
+  echo "400 mid-wall tags, 400 tags through the wall (a solid), both walls'"
   echo "contours on 9 short-axis slices and 3 long-axis planes (a solid),"
   echo "and on the same planes the endocardium's contours alone (one"
   echo "surface, as biv-me's lv-cavity), the epicardium's alone and the"
-  echo "mid-wall's alone.  Per number at ES (the mass at ED):"
+  echo "mid-wall's alone; and the tags (mid-wall, through the wall, and"
+  echo "through it with --local_transmural on) of the phantom whose segment"
+  echo "8 contracts at 40 % of normal, its segments hung on the phantom's RV"
+  echo "insertion.  Per number at ES (the mass at ED):"
   echo "whether pfdm claims its"
   echo "interval calibrated on that kind of data (fit.json's"
   echo "uncertainty_calibrated, report/interval_calibration.h), how often the"

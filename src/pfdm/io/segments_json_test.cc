@@ -45,5 +45,20 @@ TEST(SegmentsJsonTest, NoWallNoLayers) {
   EXPECT_TRUE(RegionErrJson(analysis, 3).is_null());
 }
 
+// Where a solid's segments read as their ring (FitAnalysis::
+// segments_read_as_ring), the segments' section says so and what to do;
+// elsewhere it has no such key.
+TEST(SegmentsJsonTest, SaysWhenSegmentsReadAsTheirRing) {
+  FitAnalysis analysis;
+  analysis.regions = Regions(RegionLayout());
+  EXPECT_FALSE(SegmentsSection(analysis).contains("through_the_wall"));
+  analysis.segments_read_as_ring = true;
+  const nlohmann::ordered_json section = SegmentsSection(analysis);
+  ASSERT_TRUE(section.contains("through_the_wall"));
+  EXPECT_NE(section["through_the_wall"].get<std::string>().find(
+                "--local_transmural on"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -54,6 +54,47 @@ TEST(FitReportTest, WhatIsNotMeasuredReadsNA) {
   EXPECT_EQ(CountOf(mixed, "<td>n/a</td>"), 4);
 }
 
+// A solid of tags whose field moves every layer alike cannot show a
+// segment moving unlike its ring, and says so; with the field through the
+// wall, or without tracked points (contours), it does not.
+TEST(FitReportTest, SaysWhenSegmentsReadAsTheirRing) {
+  PhantomOptions options;
+  options.num_points = 50;
+  const Phantom phantom = MakePhantom(options);
+  SequenceFit fit = TruthAsFit(phantom);
+  const auto page = [&phantom](const SequenceFit& f) {
+    const FitAnalysis analysis = AnalyzeFit(f);
+    const std::string html =
+        WithoutScripts(FitReportHtml(phantom.points, f, analysis, ""));
+    // fit.json's segments say it as the page does.
+    EXPECT_EQ(
+        analysis.segments_read_as_ring,
+        html.find("A regional defect through the wall") != std::string::npos);
+    return html;
+  };
+  const std::string note = "A regional defect through the wall does not show";
+  EXPECT_EQ(page(fit).find(note), std::string::npos);  // A mid-wall.
+  fit.config.MakeSolid();
+  LocalGrid grid;
+  grid.rows = 5;
+  grid.cols = 8;
+  grid.u_min = fit.config.u_min;
+  grid.u_max = fit.config.u_max;
+  for (FrameFit& frame : fit.frames) {
+    frame.state.globals[kH] = 8.0;
+    for (FunctionValues& knot : frame.state.knots) knot[kH] = 8.0;
+    frame.state.local = LocalField::Zero(grid);
+  }
+  EXPECT_NE(page(fit).find(note), std::string::npos);
+  SequenceFit transmural = fit;
+  for (FrameFit& frame : transmural.frames) {
+    frame.state.local = LocalField::Zero(grid, /*transmural=*/true);
+  }
+  EXPECT_EQ(page(transmural).find(note), std::string::npos);
+  for (FrameFit& frame : fit.frames) frame.tracked = false;
+  EXPECT_EQ(page(fit).find(note), std::string::npos);
+}
+
 // Contours the reader left out (io/partial_rings.h) are named on the page;
 // without any, nothing is said.
 TEST(FitReportTest, NamesTheContoursLeftOut) {
