@@ -2,15 +2,15 @@
 # Issue 30's full calibration of the derived numbers' 95 % intervals on the
 # LV phantom: runs LvIntervalCalibrationTest (mid-wall tags, tags through
 # the wall, both walls' contours, the endocardium's, the epicardium's or
-# the mid-wall's contours alone, and mid-wall tags of the phantom with a
-# hypokinetic segment, mid-wall or through the wall) over SEEDS noise
-# draws (default 100) and
-# writes its tables into docs/uncertainty_calibration.md.
+# the mid-wall's contours alone, and the phantom with a hypokinetic
+# segment: mid-wall tags, tags through the wall, with and without
+# --local_transmural, and both walls' contours) over SEEDS noise draws
+# (default 100) and writes its tables into docs/uncertainty_calibration.md.
 #   scripts/interval_calibration.sh [build dir] [seeds] [log]
-# Per seed about 3.5 s of one core for the mid-wall tags (with the lesion
-# too), 5-8 s for the wall's (with the lesion too)
-# tags, 7 s for both walls' contours, 1.3-1.5 s for each of the others (two
-# fits each, noisy and noise-free), and one dense noise-free fit per kind.
+# Per seed about 3.5 s of one core for the mid-wall tags, 5-8 s for the
+# wall's, 6-7 s for both walls' contours (with the lesion alike), 1.3-1.5 s
+# for each of the others (two fits each, noisy and noise-free), and one
+# dense noise-free fit per kind.
 # Given a log of that test already run with PFDM_CALIBRATION_SEEDS=seeds,
 # the table is taken from it instead.  What follows the line $KEEP in the
 # old file (the run's circumstances and the reading, written by hand) is
@@ -46,9 +46,10 @@ fi
   echo "and on the same planes the endocardium's contours alone (one"
   echo "surface, as biv-me's lv-cavity), the epicardium's alone and the"
   echo "mid-wall's alone; and the tags (mid-wall, through the wall, and"
-  echo "through it with --local_transmural on) of the phantom whose segment"
-  echo "8 contracts at 40 % of normal, its segments hung on the phantom's RV"
-  echo "insertion.  Per number at ES (the mass at ED):"
+  echo "through it with --local_transmural on) and both walls' contours of"
+  echo "the phantom whose segment 8 contracts at 40 % of normal, its"
+  echo "segments hung on the phantom's RV insertion.  Per number at ES (the"
+  echo "mass at ED):"
   echo "whether pfdm claims its"
   echo "interval calibrated on that kind of data (fit.json's"
   echo "uncertainty_calibrated, report/interval_calibration.h), how often the"

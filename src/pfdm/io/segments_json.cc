@@ -61,13 +61,8 @@ json SegmentsSection(const FitAnalysis& analysis) {
                   {"definition", layout.anatomical ? kAnatomicalDefinition
                                                    : kPlainDefinition}};
   if (layout.anatomical) section["rv_insertion"] = Insertion(layout);
-  if (analysis.segments_read_as_ring) {
-    section["through_the_wall"] =
-        "a regional defect through the wall does not show: the tags' depths "
-        "were ranked within their ring and the local field moves every "
-        "layer alike (--local_transmural off), so a segment that moves "
-        "unlike its ring reads as its ring, its thickening too; fit with "
-        "--local_transmural on to look for one";
+  if (analysis.regional_limit != RegionalLimit::kNone) {
+    section["through_the_wall"] = RegionalLimitNote(analysis.regional_limit);
   }
   if (layout.apex_cap_fraction > 0) {
     section["apex_cap"] = {

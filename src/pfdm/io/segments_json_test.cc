@@ -45,14 +45,14 @@ TEST(SegmentsJsonTest, NoWallNoLayers) {
   EXPECT_TRUE(RegionErrJson(analysis, 3).is_null());
 }
 
-// Where a solid's segments read as their ring (FitAnalysis::
-// segments_read_as_ring), the segments' section says so and what to do;
-// elsewhere it has no such key.
-TEST(SegmentsJsonTest, SaysWhenSegmentsReadAsTheirRing) {
+// Where a solid's segments cannot show what moves unlike its ring
+// (FitAnalysis::regional_limit), the segments' section says so and what
+// to do; elsewhere it has no such key.
+TEST(SegmentsJsonTest, SaysWhatTheSegmentsCannotShowThroughTheWall) {
   FitAnalysis analysis;
   analysis.regions = Regions(RegionLayout());
   EXPECT_FALSE(SegmentsSection(analysis).contains("through_the_wall"));
-  analysis.segments_read_as_ring = true;
+  analysis.regional_limit = RegionalLimit::kRing;
   const nlohmann::ordered_json section = SegmentsSection(analysis);
   ASSERT_TRUE(section.contains("through_the_wall"));
   EXPECT_NE(section["through_the_wall"].get<std::string>().find(

@@ -183,14 +183,6 @@ void CloseVolumesAtPlanes(bool solid, FitAnalysis* analysis) {
   }
 }
 
-// FitAnalysis::segments_read_as_ring.
-bool SegmentsReadAsTheirRing(const SequenceFit& fit) {
-  const auto tracked = [](const FrameFit& f) { return f.tracked; };
-  return fit.config.Solid() &&
-         std::any_of(fit.frames.begin(), fit.frames.end(), tracked) &&
-         !fit.frames.back().state.local.transmural();
-}
-
 }  // namespace
 
 const BasePlane* VolumePlaneOf(const FitAnalysis& analysis, size_t t) {
@@ -244,7 +236,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   }
   analysis.volume_surface = VolumeSurfaceName(fit);
   analysis.interval_data = IntervalDataOf(fit);
-  analysis.segments_read_as_ring = SegmentsReadAsTheirRing(fit);
+  analysis.regional_limit = RegionalLimitOf(fit);
   CloseVolumesAtPlanes(fit.config.Solid(), &analysis);
   analysis.volume_measured.assign(fit.frames.size(), true);
   if (!show_extrapolated) LeaveOutShortSpanVolumes(fit, &analysis);

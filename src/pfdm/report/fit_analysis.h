@@ -15,6 +15,7 @@
 #include "pfdm/report/interval_calibration.h"
 #include "pfdm/report/layer_strain.h"
 #include "pfdm/report/number_sd.h"
+#include "pfdm/report/regional_limit.h"
 #include "pfdm/report/segment_timing.h"
 #include "pfdm/report/wall_motion.h"
 #include "pfdm/segmentation/segmentation_record.h"
@@ -41,15 +42,9 @@ struct FitAnalysis {
   // out (below), so are its layers'; where a frame's rotation is, the
   // thirds' thickening (contours place no layer inside the wall).
   std::vector<std::vector<RegionLayers>> region_layers;
-  // A solid of tags through the wall fitted with ranks taken in each ring
-  // and a field that moves every layer alike (--local_transmural off): a
-  // segment that moves unlike its ring reads as its ring (the ranks take
-  // its motion into its tags' depths).  The LV phantom's hypokinetic
-  // segment read 3.5 points of radial contraction and 24 of thickening
-  // above its truth, as its neighbours (LvIntervalCalibrationTest.
-  // LesionWallTags; docs/local_deformations.md).  The report and fit.json
-  // say so.
-  bool segments_read_as_ring = false;
+  // What the segments cannot show through the wall (regional_limit.h);
+  // the report and fit.json say it.
+  RegionalLimit regional_limit = RegionalLimit::kNone;
   // Per frame, whether its turn about the long axis is measured
   // (RotationMeasured).  Where it is not, clinical's rotations, twists,
   // torsion and shear angle, the regions' rotation and Ecl and strain's

@@ -332,13 +332,9 @@ std::string RegionalSection(const SequenceFit& fit, const FitAnalysis& analysis,
                 "no map")
       << ". Each scale is symmetric about 0.</p>\n";
   }
-  if (analysis.segments_read_as_ring) {
-    h << "<p class=\"note\"><b>A regional defect through the wall does not "
-         "show here:</b> the tags' depths were ranked within their ring and "
-         "the local field moves every layer alike (--local_transmural off), "
-         "so a segment that moves unlike its ring reads as its ring, its "
-         "thickening too. Fit with --local_transmural on to look for "
-         "one.</p>\n";
+  if (analysis.regional_limit != RegionalLimit::kNone) {
+    h << "<p class=\"note\"><b>Through the wall:</b> "
+      << EscapeMarkup(RegionalLimitNote(analysis.regional_limit)) << "</p>\n";
   }
   h << "<table><tr><th>segment</th><th class=\"l\">region</th>"
     << "<th>longitude v, &deg;</th><th>rotation &deg;</th>"

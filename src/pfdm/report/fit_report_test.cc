@@ -54,26 +54,21 @@ TEST(FitReportTest, WhatIsNotMeasuredReadsNA) {
   EXPECT_EQ(CountOf(mixed, "<td>n/a</td>"), 4);
 }
 
-// A solid of tags whose field moves every layer alike cannot show a
-// segment moving unlike its ring, and says so; with the field through the
-// wall, or without tracked points (contours), it does not.
-TEST(FitReportTest, SaysWhenSegmentsReadAsTheirRing) {
+// A solid whose field moves every layer alike says under its segments'
+// table what they cannot show (regional_limit.h): tags, that a segment
+// reads as its ring; contours, that its thickening is its ring's.  With
+// the field through the wall, or on a surface, nothing is said.
+TEST(FitReportTest, SaysWhatTheSegmentsCannotShowThroughTheWall) {
   PhantomOptions options;
   options.num_points = 50;
   const Phantom phantom = MakePhantom(options);
   SequenceFit fit = TruthAsFit(phantom);
   const auto page = [&phantom](const SequenceFit& f) {
-    const FitAnalysis analysis = AnalyzeFit(f);
-    const std::string html =
-        WithoutScripts(FitReportHtml(phantom.points, f, analysis, ""));
-    // fit.json's segments say it as the page does.
-    EXPECT_EQ(
-        analysis.segments_read_as_ring,
-        html.find("A regional defect through the wall") != std::string::npos);
-    return html;
+    return WithoutScripts(FitReportHtml(phantom.points, f, AnalyzeFit(f), ""));
   };
-  const std::string note = "A regional defect through the wall does not show";
-  EXPECT_EQ(page(fit).find(note), std::string::npos);  // A mid-wall.
+  const std::string ring = "a segment that moves unlike its ring reads as";
+  const std::string thickening = "A segment's thickening here is its ring";
+  EXPECT_EQ(page(fit).find("Through the wall:"), std::string::npos);
   fit.config.MakeSolid();
   LocalGrid grid;
   grid.rows = 5;
@@ -85,14 +80,17 @@ TEST(FitReportTest, SaysWhenSegmentsReadAsTheirRing) {
     for (FunctionValues& knot : frame.state.knots) knot[kH] = 8.0;
     frame.state.local = LocalField::Zero(grid);
   }
-  EXPECT_NE(page(fit).find(note), std::string::npos);
+  EXPECT_NE(page(fit).find(ring), std::string::npos);
   SequenceFit transmural = fit;
   for (FrameFit& frame : transmural.frames) {
     frame.state.local = LocalField::Zero(grid, /*transmural=*/true);
   }
-  EXPECT_EQ(page(transmural).find(note), std::string::npos);
+  EXPECT_EQ(page(transmural).find("Through the wall:"), std::string::npos);
   for (FrameFit& frame : fit.frames) frame.tracked = false;
-  EXPECT_EQ(page(fit).find(note), std::string::npos);
+  const std::string contours = page(fit);
+  EXPECT_EQ(contours.find(ring), std::string::npos);
+  EXPECT_NE(contours.find(thickening), std::string::npos)
+      << contours.substr(contours.find("Through the wall:"), 200);
 }
 
 // Contours the reader left out (io/partial_rings.h) are named on the page;

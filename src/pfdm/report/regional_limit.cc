@@ -1,0 +1,38 @@
+#include "pfdm/report/regional_limit.h"
+
+#include <algorithm>
+
+namespace pfdm {
+
+RegionalLimit RegionalLimitOf(const SequenceFit& fit) {
+  if (!fit.config.Solid() || fit.frames.empty() ||
+      fit.frames.back().state.local.transmural()) {
+    return RegionalLimit::kNone;
+  }
+  const auto tracked = [](const FrameFit& f) { return f.tracked; };
+  return std::any_of(fit.frames.begin(), fit.frames.end(), tracked)
+             ? RegionalLimit::kRing
+             : RegionalLimit::kThickening;
+}
+
+std::string RegionalLimitNote(RegionalLimit limit) {
+  switch (limit) {
+    case RegionalLimit::kRing:
+      return "A regional defect through the wall does not show here: the "
+             "tags' depths were ranked within their ring and the local field "
+             "moves every layer alike (--local_transmural off), so a segment "
+             "that moves unlike its ring reads as its ring, its thickening "
+             "too. Fit with --local_transmural on to look for one.";
+    case RegionalLimit::kThickening:
+      return "A segment's thickening here is its ring's: the local field "
+             "moves both walls alike (--local_transmural off), so a segment "
+             "that thickens unlike its ring does not show in it, though its "
+             "motion does. With --local_transmural on each wall has its own "
+             "field.";
+    case RegionalLimit::kNone:
+      break;
+  }
+  return "";
+}
+
+}  // namespace pfdm
