@@ -89,8 +89,7 @@ TEST(FitReportTest, SaysWhatTheSegmentsCannotShowThroughTheWall) {
   for (FrameFit& frame : fit.frames) frame.tracked = false;
   const std::string contours = page(fit);
   EXPECT_EQ(contours.find(ring), std::string::npos);
-  EXPECT_NE(contours.find(thickening), std::string::npos)
-      << contours.substr(contours.find("Through the wall:"), 200);
+  EXPECT_NE(contours.find(thickening), std::string::npos);
 }
 
 // Contours the reader left out (io/partial_rings.h) are named on the page;

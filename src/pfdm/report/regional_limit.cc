@@ -19,16 +19,16 @@ std::string RegionalLimitNote(RegionalLimit limit) {
   switch (limit) {
     case RegionalLimit::kRing:
       return "A regional defect through the wall does not show here: the "
-             "tags' depths were ranked within their ring and the local field "
-             "moves every layer alike (--local_transmural off), so a segment "
-             "that moves unlike its ring reads as its ring, its thickening "
-             "too. Fit with --local_transmural on to look for one.";
+             "tags' depths were ranked within their ring and the local field, "
+             "if any, moves every layer alike (--local_transmural off), so a "
+             "segment that moves unlike its ring reads as its ring, its "
+             "thickening too. Fit with --local_transmural on to look for one.";
     case RegionalLimit::kThickening:
-      return "A segment's thickening here is its ring's: the local field "
-             "moves both walls alike (--local_transmural off), so a segment "
-             "that thickens unlike its ring does not show in it, though its "
-             "motion does. With --local_transmural on each wall has its own "
-             "field.";
+      return "A segment's thickening here is its ring's: the local field, "
+             "if any, moves both walls alike (--local_transmural off), so a "
+             "segment that thickens unlike its ring does not show in it, "
+             "though its motion does. With --local_transmural on each wall "
+             "has its own field.";
     case RegionalLimit::kNone:
       break;
   }
