@@ -190,6 +190,14 @@ void DefFitJson(FitClass& fit) {
           "time_to_peak and peak_frame per segment (None where not "
           "measured).")
       .def_property_readonly(
+          "segments",
+          [](const FitResult& r) { return FitJsonMember(r, "segments"); },
+          "dict: fit.json's segments: anatomical, anchor (the RV "
+          "insertion's source, or why the segments are not anatomical), "
+          "definition, rv_insertion, apex_cap, and through_the_wall where a "
+          "solid was fitted without --local_transmural: what its segments "
+          "cannot show (a regional defect through the wall).")
+      .def_property_readonly(
           "regions",
           [](const FitResult& r) { return FitJsonMember(r, "regions"); },
           "list of dict: the 16 AHA-style segments with rotation_deg and "

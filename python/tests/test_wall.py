@@ -51,6 +51,15 @@ def test_tags_through_the_wall_fit_a_solid(wall_tags):
     assert ours == cli
 
 
+def test_segments_say_what_they_cannot_show_through_the_wall(wall_tags):
+    _, csv = wall_tags
+    through = pfdm.fit(str(csv), local=False).segments["through_the_wall"]
+    assert "reads as its ring" in through
+    assert "--local_transmural on" in through
+    transmural = pfdm.fit(str(csv), local_transmural="on").segments
+    assert "through_the_wall" not in transmural
+
+
 def test_strain_per_layer_in_the_long_table(wall_tags):
     _, csv = wall_tags
     fit = pfdm.fit(str(csv), local=False)
