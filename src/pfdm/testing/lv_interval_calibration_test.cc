@@ -214,16 +214,14 @@ std::vector<Judged> Numbers(FitAnalysis a, const LvPhantom& phantom,
 // With the lesion, the segments are anchored to the phantom's RV insertion
 // (as a user who reads segments would give it), so that the fit's segment
 // 8 is the phantom's.
-FitAnalysis FitLv(const LvPhantomOptions& options, bool uncertainty,
-                  bool transmural) {
+FitAnalysis FitLv(const LvPhantom& phantom, bool uncertainty, bool transmural) {
   FitOptions fit_options;
   fit_options.uncertainty = uncertainty;
   fit_options.local.transmural = transmural;
-  const LvPhantom phantom = MakeLvPhantom(options);
   const SequenceFit fit =
       FitSequence(phantom.points, ModelConfig::Paper(9), fit_options);
   RegionLayout layout;
-  if (options.deformation.lesion) {
+  if (phantom.options.deformation.lesion) {
     RvInsertion insertion;
     insertion.source = "phantom";
     insertion.anterior = {phantom.rv_anterior};
@@ -282,7 +280,8 @@ std::vector<Judged> DenseNumbers(const Case& c) {
   LvPhantomOptions options = PhantomOptions(c, 0);
   options.num_tags *= 10;
   options.noise_mm = 0.0;
-  return Numbers(FitLv(options, false, c.transmural), MakeLvPhantom(options));
+  const LvPhantom phantom = MakeLvPhantom(options);
+  return Numbers(FitLv(phantom, false, c.transmural), phantom);
 }
 
 // Over CalibrationSeeds() noise draws of c: per number, in the table's order.
@@ -295,11 +294,12 @@ std::vector<std::pair<std::string, Tally>> Calibrate(const Case& c,
   for (int s = 0; s < CalibrationSeeds(); ++s) {
     LvPhantomOptions options = PhantomOptions(c, s);
     const LvPhantom phantom = MakeLvPhantom(options);
-    const FitAnalysis noisy = FitLv(options, true, c.transmural);
+    const FitAnalysis noisy = FitLv(phantom, true, c.transmural);
     EXPECT_TRUE(noisy.sd.computed);
     if (c.lesion) *told_apart += LesionToldApart(noisy);
     options.noise_mm = 0.0;
-    const FitAnalysis clean = FitLv(options, false, c.transmural);
+    const FitAnalysis clean =
+        FitLv(MakeLvPhantom(options), false, c.transmural);
     const std::vector<Judged> got = Numbers(noisy, phantom);
     const std::vector<Judged> reference = Numbers(clean, phantom);
     const std::vector<Judged> uncentred = Numbers(noisy, phantom, false);
