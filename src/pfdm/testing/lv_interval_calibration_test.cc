@@ -362,12 +362,16 @@ TEST(LvIntervalCalibrationTest, WallTags) {
   const auto rows =
       CalibrateKind(Case{LvTagLayer::kWall}, "400 tags through the wall");
   // The same 400 tags' noise-free fit is not GCS's yardstick through the
-  // wall: the tags' ranked depths put wiggles of their own into it, which
-  // the noise bias, scaled by the residual of both, takes out too.  The
-  // interval's centre lies at the dense fit's GCS (mean error +0.06 over
-  // 100 seeds, -0.68 against the noise-free fit; 3 seeds: -0.24, -0.78).
+  // wall: the tags' ranked depths put wiggles of their own into it, 0.74
+  // points less negative than the dense fit's.  The noise bias, measured with the
+  // tags' noise alone (directional_noise.h), takes out the noise's
+  // share: the interval's centre lies between the two (mean error -0.32
+  // against the noise-free fit and +0.42 against the dense over 100 seeds;
+  // while the bias was measured with the residual of both, -0.68 and
+  // +0.06).
   const Tally& gcs = Row(rows, "GCS %");
-  EXPECT_LT(std::abs(gcs.MeanDenseError()), 0.5 * std::abs(gcs.MeanError()));
+  EXPECT_LT(gcs.MeanError(), 0.0);
+  EXPECT_GT(gcs.MeanDenseError(), 0.0);
 }
 
 // Mid-wall tags of the LV phantom whose segment 8 contracts at 40 % of
@@ -415,8 +419,8 @@ TEST(LvIntervalCalibrationTest, LesionMidwallTags) {
 // depths (docs/local_deformations.md) and the lesion reads as its ring:
 // over 100 seeds its radial contraction 3.5 points above the truth (3 seeds:
 // 4.0), its thickening 24 (16.9 % true; 3 seeds: 24.4), told apart from
-// its neighbours in 1 draw, while every claimed interval held the same
-// tags' noise-free fit in 0.94-0.98 of draws.  The report says so
+// its neighbours in 2 draws, while every claimed interval held the same
+// tags' noise-free fit in 0.93-0.98 of draws.  The report says so
 // (report/regional_limit.h).
 TEST(LvIntervalCalibrationTest, LesionWallTags) {
   const LesionRows lesion =
@@ -429,7 +433,7 @@ TEST(LvIntervalCalibrationTest, LesionWallTags) {
 
 // The same with the field through the wall and ranks among neighbours
 // (--local_transmural on): the lesion's radial contraction 2.05 points
-// above the truth over 100 seeds (3 seeds: 2.48), told apart in 56 of 100
+// above the truth over 100 seeds (3 seeds: 2.48), told apart in 59 of 100
 // draws; its thickening still 22 points above (at 400 tags a neighbourhood
 // of 24 tags is a sixth of the ring).
 TEST(LvIntervalCalibrationTest, LesionWallTagsTransmural) {

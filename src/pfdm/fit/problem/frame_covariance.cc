@@ -189,9 +189,19 @@ bool NormalMatrices(ceres::Problem* problem,
   if (!problem->Evaluate(options, nullptr, nullptr, nullptr, &jacobian)) {
     return false;
   }
-  *normal = GaussNewtonMatrix(jacobian);
+  if (normal != nullptr) *normal = GaussNewtonMatrix(jacobian);
   *data_normal = GaussNewtonMatrix(jacobian, data_rows);
   return true;
+}
+
+int CountDataRows(ceres::Problem* problem,
+                  const std::vector<ceres::ResidualBlockId>& data) {
+  int rows = 0;
+  for (ceres::ResidualBlockId id : data) {
+    if (id == nullptr) continue;  // A constant, left out (frame_blocks.h).
+    rows += problem->GetCostFunctionForResidualBlock(id)->num_residuals();
+  }
+  return rows;
 }
 
 }  // namespace
@@ -217,10 +227,11 @@ std::vector<double*> ColumnOrder(ceres::Problem* problem,
   return order;
 }
 
-FrameCovariance BlockCovariance(
-    ceres::Problem* problem, const std::vector<CovarianceBlock>& blocks,
-    double sigma_mm, double degrees_of_freedom,
-    const std::vector<ceres::ResidualBlockId>& data) {
+FrameCovariance BlockCovariance(ceres::Problem* problem,
+                                const std::vector<CovarianceBlock>& blocks,
+                                double sigma_mm, double degrees_of_freedom,
+                                const std::vector<ceres::ResidualBlockId>& data,
+                                NormalParts* parts) {
   const auto start = Clock::now();
   FrameCovariance result;
   result.sigma_mm = sigma_mm;
@@ -237,14 +248,9 @@ FrameCovariance BlockCovariance(
   // condition number, which the cut at kMinReciprocalCondition (singular
   // values 1e-5 of the largest) stays far above double's round-off.
   const std::vector<double*> columns = ColumnOrder(problem, blocks);
-  int data_rows = 0;
-  for (ceres::ResidualBlockId id : data) {
-    if (id == nullptr) continue;  // A constant, left out (frame_blocks.h).
-    data_rows += problem->GetCostFunctionForResidualBlock(id)->num_residuals();
-  }
   Eigen::MatrixXd normal, data_normal;
-  if (n == 0 ||
-      !NormalMatrices(problem, columns, data_rows, &normal, &data_normal)) {
+  if (n == 0 || !NormalMatrices(problem, columns, CountDataRows(problem, data),
+                                &normal, &data_normal)) {
     result.seconds = SecondsSince(start);
     return result;
   }
@@ -262,9 +268,26 @@ FrameCovariance BlockCovariance(
   const auto head_scale = scale.head(n).asDiagonal();
   result.covariance = sigma_mm * sigma_mm *
                       (head_scale * inverse.topLeftCorner(n, n) * head_scale);
+  if (parts != nullptr) {
+    parts->pseudo_inverse = scale.asDiagonal() * inverse * scale.asDiagonal();
+    parts->data_normal = std::move(data_normal);
+  }
   result.computed = true;
   result.seconds = SecondsSince(start);
   return result;
+}
+
+Eigen::MatrixXd DataRows(ceres::Problem* problem,
+                         const std::vector<CovarianceBlock>& blocks,
+                         const std::vector<ceres::ResidualBlockId>& data) {
+  const int rows = CountDataRows(problem, data);
+  ceres::Problem::EvaluateOptions options;
+  options.parameter_blocks = ColumnOrder(problem, blocks);
+  ceres::CRSMatrix jacobian;
+  if (!problem->Evaluate(options, nullptr, nullptr, nullptr, &jacobian)) {
+    return {};
+  }
+  return Eigen::MatrixXd(SparseView(jacobian).topRows(rows));
 }
 
 void DataSigma(const Model& model, const std::vector<Eigen::Vector3d>& points,

@@ -1,7 +1,9 @@
 // How sure a frame's global fit is of its parameters: their covariance at
 // the solution, the Gauss-Newton one, sigma^2 (J'J)^+, J the Jacobian of
 // every residual of the frame's problem (data, smoothness, rim, gauges,
-// prior) and sigma^2 the data's residual variance the fit measures.
+// prior) and sigma^2 the data's residual variance the fit measures (on a
+// frame of tracked tags alone, the data's rows weighed by the residual's
+// variance across the wall instead: directional_noise.h).
 //
 // Every residual of the problem is a length in mm with its weight, so the
 // regularizers enter as what they are, Gaussian priors whose strength
@@ -56,6 +58,17 @@ struct FrameCovariance {
   // n the free parameters' effective number (effective_parameters).
   double sigma_mm = 0.0;
   double degrees_of_freedom = 0.0;
+  // On a frame whose every point has three residual rows (tracked tags),
+  // the residual's sd along each point's wall normal and across it, each
+  // coordinate's; the data's rows are weighed by the one across
+  // (directional_noise.h).  0 elsewhere, where sigma_mm weighs them.
+  double normal_sigma_mm = 0.0;
+  double tangent_sigma_mm = 0.0;
+  // The data's noise the covariance is scaled by: tangent_sigma_mm where
+  // measured, else sigma_mm.
+  double NoiseSigma() const {
+    return tangent_sigma_mm > 0.0 ? tangent_sigma_mm : sigma_mm;
+  }
   // n above: the trace of the data's hat matrix, tr((J'J)^+ J_d'J_d), J_d
   // the data's rows.  The regularizers and the gauge take part of the
   // parameters' freedom, so it is less than their count: dividing by the
@@ -136,10 +149,26 @@ struct CovarianceBlock {
 // as the solve did.  `data`: the data's residual blocks, the problem's
 // first, for effective_parameters.  computed false when the problem cannot
 // be evaluated.
+//
+// `parts`, when given, gets the unscaled (J'J)^+ and J_d'J_d over every
+// free column (ColumnOrder's: `blocks` first), for a caller that weighs the
+// data's rows unlike sigma_mm^2 alike (directional_noise.h).
+struct NormalParts {
+  Eigen::MatrixXd pseudo_inverse;  // (J'J)^+.
+  Eigen::MatrixXd data_normal;     // J_d'J_d.
+};
 FrameCovariance BlockCovariance(
     ceres::Problem* problem, const std::vector<CovarianceBlock>& blocks,
     double sigma_mm, double degrees_of_freedom,
-    const std::vector<ceres::ResidualBlockId>& data = {});
+    const std::vector<ceres::ResidualBlockId>& data = {},
+    NormalParts* parts = nullptr);
+
+// The Jacobian's rows of `problem`'s data (`data`, its first residual
+// blocks) over ColumnOrder(problem, blocks), dense; empty when the problem
+// cannot be evaluated.
+Eigen::MatrixXd DataRows(ceres::Problem* problem,
+                         const std::vector<CovarianceBlock>& blocks,
+                         const std::vector<ceres::ResidualBlockId>& data);
 
 // The data's residual standard deviation at the model (FrameCovariance::
 // sigma_mm) and its degrees of freedom, for num_parameters free

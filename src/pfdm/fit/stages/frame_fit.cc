@@ -233,8 +233,9 @@ FrameFit FitFrame(const Frame& frame, bool reference,
     FitLocalStage(points, local_options, source, &model, &fit,
                   &carried->local_solver, &carried->local_surface_grid);
     if (fit.covariance.computed) {
-      fit.covariance.local_noise = LocalNoiseDraws(
-          points, fit.material, local_options, model, fit.covariance.sigma_mm);
+      fit.covariance.local_noise =
+          LocalNoiseDraws(points, fit.material, local_options, model,
+                          fit.covariance.NoiseSigma());
     }
   }
   Summarize(model, points.positions, &fit);
