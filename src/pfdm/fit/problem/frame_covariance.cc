@@ -277,17 +277,15 @@ FrameCovariance BlockCovariance(ceres::Problem* problem,
   return result;
 }
 
-Eigen::MatrixXd DataRows(ceres::Problem* problem,
-                         const std::vector<CovarianceBlock>& blocks,
-                         const std::vector<ceres::ResidualBlockId>& data) {
-  const int rows = CountDataRows(problem, data);
-  ceres::Problem::EvaluateOptions options;
-  options.parameter_blocks = ColumnOrder(problem, blocks);
-  ceres::CRSMatrix jacobian;
-  if (!problem->Evaluate(options, nullptr, nullptr, nullptr, &jacobian)) {
+Eigen::MatrixXd DataNormalMatrix(
+    ceres::Problem* problem, const std::vector<CovarianceBlock>& blocks,
+    const std::vector<ceres::ResidualBlockId>& data) {
+  Eigen::MatrixXd data_normal;
+  if (!NormalMatrices(problem, ColumnOrder(problem, blocks),
+                      CountDataRows(problem, data), nullptr, &data_normal)) {
     return {};
   }
-  return Eigen::MatrixXd(SparseView(jacobian).topRows(rows));
+  return data_normal;
 }
 
 void DataSigma(const Model& model, const std::vector<Eigen::Vector3d>& points,

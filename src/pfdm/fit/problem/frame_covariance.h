@@ -163,12 +163,12 @@ FrameCovariance BlockCovariance(
     const std::vector<ceres::ResidualBlockId>& data = {},
     NormalParts* parts = nullptr);
 
-// The Jacobian's rows of `problem`'s data (`data`, its first residual
-// blocks) over ColumnOrder(problem, blocks), dense; empty when the problem
-// cannot be evaluated.
-Eigen::MatrixXd DataRows(ceres::Problem* problem,
-                         const std::vector<CovarianceBlock>& blocks,
-                         const std::vector<ceres::ResidualBlockId>& data);
+// J_d'J_d of `problem`'s data rows (`data`, its first residual blocks)
+// over ColumnOrder(problem, blocks); empty when the problem cannot be
+// evaluated.
+Eigen::MatrixXd DataNormalMatrix(
+    ceres::Problem* problem, const std::vector<CovarianceBlock>& blocks,
+    const std::vector<ceres::ResidualBlockId>& data);
 
 // The data's residual standard deviation at the model (FrameCovariance::
 // sigma_mm) and its degrees of freedom, for num_parameters free

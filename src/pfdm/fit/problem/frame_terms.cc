@@ -344,23 +344,21 @@ FrameCovariance FrameProblem::Covariance(
             &result.sigma_mm, &result.degrees_of_freedom);
   result.covariance *= result.sigma_mm * result.sigma_mm;
   if (wall_normals == nullptr) return result;
-  // The data's rows along the wall normals, for each direction's share of
-  // the parameters: the same problem, every point its own block pulling
-  // along its normal.
+  // The data's J'J along the wall normals, for each direction's share of
+  // the parameters: the same problem, every point pulling along its
+  // normal (its groups' moments, as the solve's).
   const FrameInputs along{frame.points,     frame.material, *wall_normals,
                           frame.rim_height, frame.kind,     frame.prior,
                           frame.reference};
-  FitOptions per_point = options_;
-  per_point.jacobian = JacobianKind::kAutodiff;
   Model at = *model_;
-  FrameProblem across(kind_, per_point, &at);
+  FrameProblem across(kind_, options_, &at);
   BuildFrameProblem(along, &across);
-  const Eigen::MatrixXd rows =
-      DataRows(&across.problem_, across.CovarianceBlocks(), across.data_ids_);
+  const Eigen::MatrixXd normal_data_normal = DataNormalMatrix(
+      &across.problem_, across.CovarianceBlocks(), across.data_ids_);
   // Built alike, it has the same columns; a problem that cannot be
   // evaluated has none.
-  if (rows.cols() != parts.pseudo_inverse.cols()) return result;
-  ScaleByDirectionalNoise(parts, rows.transpose() * rows, *model_, frame.points,
+  if (normal_data_normal.cols() != parts.pseudo_inverse.cols()) return result;
+  ScaleByDirectionalNoise(parts, normal_data_normal, *model_, frame.points,
                           frame.material, *wall_normals, options_.loss,
                           options_.loss_scale_mm, &result);
   return result;
