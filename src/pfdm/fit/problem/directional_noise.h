@@ -12,8 +12,8 @@
 // segments' thickening's 1.32, each interval holding it in 99-100 % of the
 // draws.
 //
-// So on a frame of tracked tags alone the data's rows are weighed by the
-// residual's sd across the normal, s_t, where depths do not err:
+// So on a solid's frame of tracked tags alone the data's rows are weighed by
+// the residual's sd across the normal, s_t, where depths do not err:
 //
 //   C = A^+ (sigma^2 (A - D) + s_t^2 D) A^+ = sigma^2 A^+ + (s_t^2 - sigma^2)
 //   A^+ D A^+,

@@ -2,8 +2,8 @@
 // the solution, the Gauss-Newton one, sigma^2 (J'J)^+, J the Jacobian of
 // every residual of the frame's problem (data, smoothness, rim, gauges,
 // prior) and sigma^2 the data's residual variance the fit measures (on a
-// frame of tracked tags alone, the data's rows weighed by the residual's
-// variance across the wall instead: directional_noise.h).
+// solid's frame of tracked tags alone, the data's rows weighed by the
+// residual's variance across the wall instead: directional_noise.h).
 //
 // Every residual of the problem is a length in mm with its weight, so the
 // regularizers enter as what they are, Gaussian priors whose strength
@@ -58,9 +58,9 @@ struct FrameCovariance {
   // n the free parameters' effective number (effective_parameters).
   double sigma_mm = 0.0;
   double degrees_of_freedom = 0.0;
-  // On a frame whose every point has three residual rows (tracked tags),
-  // the residual's sd along each point's wall normal and across it, each
-  // coordinate's; the data's rows are weighed by the one across
+  // On a solid's frame of tracked tags alone (three residual rows a
+  // point), the residual's sd along each tag's wall normal and across it,
+  // each coordinate's; the data's rows are weighed by the one across
   // (directional_noise.h).  0 elsewhere, where sigma_mm weighs them.
   double normal_sigma_mm = 0.0;
   double tangent_sigma_mm = 0.0;

@@ -72,7 +72,7 @@ bool StepFrame(const FrameInputs& frame, const FitOptions& options,
 
 // The covariance of the frame's free parameters at `model` (a solution of
 // SolveFrame with the same inputs), from the same problem, not solved
-// again (frame_covariance.h says what it is and is not).  A frame of
+// again (frame_covariance.h says what it is and is not).  A solid's frame of
 // tracked tags alone weighs its data by the residual's sd across the
 // wall's normal, where the tags' depths do not err (directional_noise.h).
 FrameCovariance EstimateFrameCovariance(const FrameInputs& frame,
