@@ -1,8 +1,9 @@
 // A tracked frame's residuals are not its tags' noise alone.  Through the
 // wall a tag sits at the depth its rank gave it, which errs by about a
 // tenth of the wall, along the wall's normal: on the LV phantom's 400 tags
-// through the wall (local field off, 10 seeds) the residual along the
-// normal read 0.95 mm rms at ES and 0.51 across it, with 0.5 mm of noise.
+// through the wall with 0.5 mm of noise the residual along the normal read
+// 0.95 mm rms at ES (local field off, 10 seeds; with it 0.77 along and
+// 0.51 across).
 // That error is the sampling's, not the noise's: the same tags without
 // noise left residuals of 0.95 mm along the normal, correlated 0.77 tag by
 // tag with the noisy fit's.  One sigma for every coordinate (DataSigma)
