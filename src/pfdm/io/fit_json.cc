@@ -290,6 +290,7 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
     const FrameCovariance& covariance = frame.covariance;
     entry["uncertainty"] = {
         {"sigma_mm", covariance.sigma_mm},
+        {"noise_sigma_mm", covariance.NoiseSigma()},
         {"degrees_of_freedom", covariance.degrees_of_freedom},
         {"parameters", covariance.entries.size()},
         {"rank_deficiency", covariance.rank_deficiency},

@@ -81,6 +81,28 @@ TEST(IntervalsJsonTest, BesideEveryNumberWithUncertainty) {
   EXPECT_FALSE(json["regions"][3].contains("area_mm2_ci95"));
 }
 
+// Each frame's residual sd, and the data's noise its covariance is
+// scaled by: the same but on a solid's tracked frame of tags alone, whose
+// sd across the wall it is (fit/problem/directional_noise.h).
+TEST(IntervalsJsonTest, FramesSayWhichNoiseScalesTheirCovariance) {
+  const FittedPhantom& f = SmallPhantomFit();
+  SequenceFit fit = f.fit;
+  for (FrameFit& frame : fit.frames) {
+    frame.covariance.computed = true;
+    frame.covariance.sigma_mm = 0.6;
+  }
+  fit.frames[1].covariance.normal_sigma_mm = 0.9;
+  fit.frames[1].covariance.tangent_sigma_mm = 0.4;
+  const nlohmann::json json =
+      nlohmann::json::parse(FitJson(f.phantom.points, fit, FitOptions()));
+  const nlohmann::json& first = json["frames"][0]["uncertainty"];
+  EXPECT_EQ(first["sigma_mm"], 0.6);
+  EXPECT_EQ(first["noise_sigma_mm"], 0.6);
+  const nlohmann::json& second = json["frames"][1]["uncertainty"];
+  EXPECT_EQ(second["sigma_mm"], 0.6);
+  EXPECT_EQ(second["noise_sigma_mm"], 0.4);
+}
+
 TEST(IntervalsJsonTest, AbsentWithoutUncertainty) {
   const FittedPhantom& f = SmallPhantomFit();
   const std::string text = FitJson(f.phantom.points, f.fit, FitOptions());
