@@ -297,6 +297,11 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
         {"deficient_directions", covariance.deficient_directions},
         {"held", HeldByCovariance(frame, solid)},
         {"seconds", covariance.seconds}};
+    // Where the noise was measured across the wall, the sd along it too:
+    // mostly the ranked depths' error (directional_noise.h).
+    if (covariance.tangent_sigma_mm > 0.0) {
+      entry["uncertainty"]["normal_sigma_mm"] = covariance.normal_sigma_mm;
+    }
   }
   return entry;
 }

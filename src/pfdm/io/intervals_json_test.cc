@@ -98,9 +98,11 @@ TEST(IntervalsJsonTest, FramesSayWhichNoiseScalesTheirCovariance) {
   const nlohmann::json& first = json["frames"][0]["uncertainty"];
   EXPECT_EQ(first["sigma_mm"], 0.6);
   EXPECT_EQ(first["noise_sigma_mm"], 0.6);
+  EXPECT_FALSE(first.contains("normal_sigma_mm"));
   const nlohmann::json& second = json["frames"][1]["uncertainty"];
   EXPECT_EQ(second["sigma_mm"], 0.6);
   EXPECT_EQ(second["noise_sigma_mm"], 0.4);
+  EXPECT_EQ(second["normal_sigma_mm"], 0.9);
 }
 
 TEST(IntervalsJsonTest, AbsentWithoutUncertainty) {

@@ -150,6 +150,31 @@ TEST(LvThickWallTest, TagsThroughTheWallMakeASolid) {
 }
 
 // The same tags on the mid-wall only: one surface, as before the solid.
+// The tags' noise is measured on the global model's residuals: the local
+// field, with nearly as many unknowns as 400 tags have coordinates, fits
+// part of it, and measured after the field 0.5 mm read 0.36-0.39 (seeds
+// 1000-1002; 0.48-0.50 without the field), so that h kept part of its
+// widening (wall_stage.h).
+TEST(LvThickWallTest, TagNoiseIsMeasuredAlikeWithAndWithoutTheLocalField) {
+  LvPhantomOptions options;
+  options.num_frames = 2;
+  options.num_tags = 400;
+  options.tags = LvTagLayer::kWall;
+  options.seed = 1000;
+  const LvPhantom phantom = MakeLvPhantom(options);
+  double noise[2];
+  for (bool local : {false, true}) {
+    FitOptions fit_options;
+    fit_options.local.enabled = local;
+    const SequenceFit fit =
+        FitSequence(phantom.points, ModelConfig::Paper(9), fit_options);
+    ASSERT_TRUE(fit.config.Solid()) << fit.wall_reason;
+    noise[local] = fit.tag_noise_mm;
+  }
+  EXPECT_NEAR(noise[0], 0.5, 0.04);
+  EXPECT_NEAR(noise[1], noise[0], 0.005);
+}
+
 TEST(LvThickWallTest, MidwallTagsKeepOneSurface) {
   const ThickFit f = FitThickPhantom(LvTagLayer::kMidwall);
   EXPECT_FALSE(f.fit.config.Solid()) << f.fit.wall_reason;

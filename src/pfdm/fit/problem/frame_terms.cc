@@ -23,6 +23,7 @@
 #include "pfdm/fit/residuals/regularizer.h"
 #include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/fit/residuals/spin_gauge_residual.h"
+#include "pfdm/util/stopwatch.h"
 
 namespace pfdm {
 namespace {
@@ -330,6 +331,15 @@ std::vector<CovarianceBlock> FrameProblem::CovarianceBlocks() {
 }
 
 FrameCovariance FrameProblem::Covariance(
+    const FrameInputs& frame,
+    const std::vector<Eigen::Vector3d>* wall_normals) {
+  const auto start = Clock::now();
+  FrameCovariance result = ScaledCovariance(frame, wall_normals);
+  result.seconds = SecondsSince(start);
+  return result;
+}
+
+FrameCovariance FrameProblem::ScaledCovariance(
     const FrameInputs& frame,
     const std::vector<Eigen::Vector3d>* wall_normals) {
   // sigma's degrees of freedom need the covariance's effective number of

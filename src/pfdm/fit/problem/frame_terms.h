@@ -70,12 +70,16 @@ class FrameProblem {
   TermCosts Costs(const SolverReport& report) const;
   // The free parameters' covariance at their current values; with
   // wall_normals (a frame of tracked tags alone), its data's rows weighed
-  // by the residual's sd across them (directional_noise.h).
+  // by the residual's sd across them (directional_noise.h).  Its seconds
+  // are all of this call's.
   FrameCovariance Covariance(
       const FrameInputs& frame,
       const std::vector<Eigen::Vector3d>* wall_normals = nullptr);
 
  private:
+  FrameCovariance ScaledCovariance(
+      const FrameInputs& frame,
+      const std::vector<Eigen::Vector3d>* wall_normals);
   std::vector<CovarianceBlock> CovarianceBlocks();
   static std::unique_ptr<PrecomputedGroups> MakePrecomputed(
       const FitOptions& options);

@@ -49,9 +49,10 @@ bool DecideWallFromTags(const FramePoints& frame,
 
 // A solid's tags were ranked across the wall in every frame, which widens
 // each frame's h by their noise, a thin wall's more (DeconvolvedThickness):
-// measures the noise on the tracked frames and takes it out of every
-// frame's h, then summarizes the frames again.  `robust` (a fit with a
-// robust loss): the noise measured robustly (TangentialNoiseMm).
+// measures the noise on the tracked frames (on the global model's
+// residuals: the local field fits part of the noise) and takes it out of
+// every frame's h, then summarizes the frames again.  `robust` (a fit with
+// a robust loss): the noise measured robustly (TangentialNoiseMm).
 void TakeOutTagNoise(const PointSequence& sequence,
                      const FramesPerId& frames_per_id, SequenceFit* result,
                      bool robust = false);
