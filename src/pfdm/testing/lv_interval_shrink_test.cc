@@ -83,10 +83,9 @@ void ExpectRatios(const std::map<std::string, double>& ratios,
 // and the number of points").  The volumes' less (0.64-0.67): part of their
 // sd is the length's, which the highest points and the apex set, and more
 // points spread along the wall put more of them near the top but not
-// higher (the knots' a3, docs/uncertainty.md).  GCS's more (0.41): the
-// local field's noise draws, whose grid does not grow with the points, and
-// its bias.  At 1,600 points the intervals still held the noise-free fit
-// in 0.935 of 30 draws, pooled.
+// higher (the knots' a3, docs/uncertainty.md).  GCS's more (0.41; why
+// was not looked into).  At 1,600 points the intervals still held the
+// noise-free fit in 0.935 of 30 draws, pooled (GCS 0.967).
 TEST(LvIntervalShrinkTest, HalfWidthsShrinkWithMidwallTags) {
   const auto ratios = ShrinkRatios(Case(), "mid-wall tags");
   ExpectRatios(
