@@ -52,7 +52,7 @@ std::string FitFrameRepr(const FitFrame& f) {
          std::to_string(frame.rms_mm) + " mm>";
 }
 
-// stats, pose and clinical: fit.json's frame entry, in parts.
+// stats, pose, clinical and uncertainty: fit.json's frame entry, in parts.
 void DefEntryDicts(FitFrameClass& fit_frame) {
   fit_frame
       .def_property_readonly(
@@ -75,7 +75,21 @@ void DefEntryDicts(FitFrameClass& fit_frame) {
           "lv_mass_g.  None where fit.json has null: the rotations, twists, "
           "torsion, shear angle and gcl_percent of a frame without tracked "
           "points (contours), and the volumes and mass of a frame whose "
-          "data span too little of the axis (short_span).");
+          "data span too little of the axis (short_span).")
+      .def_property_readonly(
+          "uncertainty",
+          [](const FitFrame& f) -> py::object {
+            const py::dict entry = f.Entry();
+            if (!entry.contains("uncertainty")) return py::none();
+            return entry["uncertainty"];
+          },
+          "dict or None: how the frame's covariance was scaled, fit.json's "
+          "frame `uncertainty` (sigma_mm, the data's pooled residual sd; "
+          "noise_sigma_mm, the noise its data's rows are weighed by; "
+          "normal_sigma_mm where that was measured across the wall; "
+          "degrees_of_freedom, parameters, rank_deficiency, "
+          "deficient_directions, held, seconds).  None with uncertainty "
+          "off.");
 }
 
 // ids, points, material, residuals and loss weights: a row per data

@@ -38,6 +38,13 @@ def test_intervals_are_arrays_beside_the_values_and_fit_json():
     assert "gls_percent" in got["calibrated"]
     assert "gcs_percent" not in got["calibrated"]  # 98 %, a draw from 99
     assert "esv_ml" not in got["calibrated"]  # 90 %, a draw from 89
+    # Each frame says how its covariance was scaled, as fit.json does.
+    assert off.frames[1].uncertainty is None
+    scaled = fit.frames[1].uncertainty
+    assert scaled == document["frames"][1]["uncertainty"]
+    assert 0.0 < scaled["sigma_mm"] < 1.0  # the simulation's 0.5 mm noise
+    assert scaled["noise_sigma_mm"] == scaled["sigma_mm"]  # one surface
+    assert "normal_sigma_mm" not in scaled
 
 
 def test_one_walls_contours_name_their_kind_and_its_calibrated_numbers():
