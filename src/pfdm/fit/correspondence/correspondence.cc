@@ -30,6 +30,14 @@ std::vector<Eigen::Vector3d> WorldPoints(
   return points;
 }
 
+std::vector<Eigen::Vector3d> Residuals(
+    const Model& model, const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material) {
+  std::vector<Eigen::Vector3d> residuals = WorldPoints(model, material);
+  for (size_t i = 0; i < residuals.size(); ++i) residuals[i] -= points[i];
+  return residuals;
+}
+
 std::vector<double> AxialHeights(const Model& model,
                                  const std::vector<MaterialPoint>& material) {
   const Eigen::Vector3d axis = model.Rotation().col(2);

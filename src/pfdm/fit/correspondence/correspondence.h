@@ -20,6 +20,12 @@ struct MaterialPoint {
 std::vector<Eigen::Vector3d> WorldPoints(
     const Model& model, const std::vector<MaterialPoint>& material);
 
+// Model point minus data point at each material point (mm): points[i]'s
+// residual at material[i].
+std::vector<Eigen::Vector3d> Residuals(
+    const Model& model, const std::vector<Eigen::Vector3d>& points,
+    const std::vector<MaterialPoint>& material);
+
 // Each material point's height along the model's long axis (axis 3, apex
 // to base) in mm, from the world origin.
 std::vector<double> AxialHeights(const Model& model,

@@ -87,6 +87,22 @@ TEST(CorrespondenceTest, AxialHeightsAreAlongTheModelsAxis) {
   EXPECT_TRUE(AxialHeights(model, {}).empty());
 }
 
+TEST(CorrespondenceTest, ResidualsAreModelPointMinusDataPoint) {
+  const Model model = TwistedTestModel();
+  const std::vector<MaterialPoint> material = {{-0.7, 1.0, 0.0},
+                                               {0.3, -2.0, 0.0}};
+  const std::vector<Eigen::Vector3d> points = {{1.0, 2.0, 3.0},
+                                               {-4.0, 0.5, 7.0}};
+  const std::vector<Eigen::Vector3d> residuals =
+      Residuals(model, points, material);
+  ASSERT_EQ(residuals.size(), points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d x = model.WorldPoint(material[i].u, material[i].v);
+    EXPECT_NEAR((residuals[i] - (x - points[i])).norm(), 0.0, 1e-12) << i;
+  }
+  EXPECT_TRUE(Residuals(model, {}, {}).empty());
+}
+
 TEST(CorrespondenceTest, NormalIsUnitAndOrthogonalToTheSurface) {
   const Model model = TwistedTestModel();
   for (double u : {-M_PI / 2, -1.0, 0.1, 0.5}) {  // Not at knots.

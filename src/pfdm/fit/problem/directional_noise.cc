@@ -12,9 +12,8 @@ DirectionalSigma DirectionalDataSigma(
     const std::vector<MaterialPoint>& material,
     const std::vector<Eigen::Vector3d>& wall_normals, const std::string& loss,
     double loss_scale_mm, double normal_parameters, double tangent_parameters) {
-  const std::vector<Eigen::Vector3d> at = WorldPoints(model, material);
-  std::vector<Eigen::Vector3d> residuals(points.size());
-  for (size_t i = 0; i < points.size(); ++i) residuals[i] = at[i] - points[i];
+  const std::vector<Eigen::Vector3d> residuals =
+      Residuals(model, points, material);
   const std::vector<double> weights =
       LossWeights(loss, loss_scale_mm, residuals);
   double normal_sum = 0.0, tangent_sum = 0.0, count = 0.0;

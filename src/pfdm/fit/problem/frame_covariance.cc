@@ -294,11 +294,9 @@ void DataSigma(const Model& model, const std::vector<Eigen::Vector3d>& points,
                const std::string& loss, double loss_scale_mm,
                double num_parameters, double* sigma_mm,
                double* degrees_of_freedom) {
-  const std::vector<Eigen::Vector3d> at = WorldPoints(model, material);
-  std::vector<Eigen::Vector3d> residuals(points.size());
+  std::vector<Eigen::Vector3d> residuals = Residuals(model, points, material);
   std::vector<int> dimensions(points.size(), 3);
   for (size_t i = 0; i < points.size(); ++i) {
-    residuals[i] = at[i] - points[i];
     if (normals[i] != Eigen::Vector3d::Zero()) {
       residuals[i] = normals[i] * normals[i].dot(residuals[i]);
       dimensions[i] = 1;

@@ -31,12 +31,8 @@ bool StateFinite(const ModelState& state) {
 void Summarize(const Model& model, const std::vector<Eigen::Vector3d>& points,
                FrameFit* fit) {
   double sum_squared = 0.0, sum = 0.0, max = 0.0;
-  fit->residuals.clear();
-  const std::vector<Eigen::Vector3d> model_points =
-      WorldPoints(model, fit->material);
-  for (size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3d r = model_points[i] - points[i];
-    fit->residuals.push_back(r);
+  fit->residuals = Residuals(model, points, fit->material);
+  for (const Eigen::Vector3d& r : fit->residuals) {
     sum_squared += r.squaredNorm();
     sum += r.norm();
     max = std::max(max, r.norm());

@@ -105,24 +105,15 @@ std::string MakeSolidOfTags(const std::vector<double>& distances,
          " beyond the wall left out)";
 }
 
-// Frame t's global model: its fit without the local field.
+// Frame t's global model: its fit without the local field.  The tags'
+// noise is measured on its residuals, not on the fit's: the local field has
+// nearly as many unknowns as 400 tags have coordinates and fits part of
+// their noise (0.5 mm of it read 0.36-0.39 mm after the field, 0.48-0.50
+// before, on the LV phantom's tags through the wall).
 Model GlobalModelAt(const SequenceFit& result, size_t t) {
   Model global = result.ModelAt(static_cast<int>(t));
   global.state.local = LocalField();
   return global;
-}
-
-// The global model's residuals at the frame's material points.  The noise
-// is measured on them, not on the fit's: the local field has nearly as
-// many unknowns as 400 tags have coordinates and fits part of their
-// noise (0.5 mm of it read 0.36-0.39 mm after the field, 0.48-0.50
-// before, on the LV phantom's tags through the wall).
-std::vector<Eigen::Vector3d> GlobalResiduals(
-    const Model& global, const std::vector<Eigen::Vector3d>& points,
-    const FrameFit& frame) {
-  std::vector<Eigen::Vector3d> residuals = WorldPoints(global, frame.material);
-  for (size_t i = 0; i < residuals.size(); ++i) residuals[i] -= points[i];
-  return residuals;
 }
 
 }  // namespace
@@ -222,7 +213,8 @@ void TakeOutTagNoise(const PointSequence& sequence,
     if (tags.empty()) continue;
     const Model global = GlobalModelAt(*result, t);
     const double sigma = TangentialNoiseMm(
-        global, GlobalResiduals(global, Positions(sequence.frames[t]), frame),
+        global,
+        Residuals(global, Positions(sequence.frames[t]), frame.material),
         frame.material, tags, robust);
     sum_squared += sigma * sigma;
     ++frames;
