@@ -45,9 +45,10 @@ inline SequenceFit TimedFits(benchmark::State& state,
 // tracked from it, with as many tags as the first argument says.
 inline SequenceFit TimedLvPhantomFits(benchmark::State& state,
                                       LvPhantomOptions phantom_options,
-                                      const FitOptions& options) {
+                                      const FitOptions& options,
+                                      int num_frames = 2) {
   phantom_options.num_tags = static_cast<int>(state.range(0));
-  phantom_options.num_frames = 2;
+  phantom_options.num_frames = num_frames;
   const LvPhantom phantom = MakeLvPhantom(phantom_options);
   return TimedFits(state, phantom.points, options);
 }

@@ -152,7 +152,8 @@ std::shared_ptr<FitResult> FitWithFlags(
     int max_steps, const std::string& damping, const std::string& damping_scale,
     const std::string& jacobian, const std::string& local,
     const std::string& local_grid, double local_stiffness,
-    const std::string& local_transmural, const std::string& uncertainty) {
+    const std::string& local_transmural, const std::string& tag_depths,
+    const std::string& uncertainty) {
   FitSettings s;
   s.format = format;
   s.contours = contours;
@@ -186,6 +187,7 @@ std::shared_ptr<FitResult> FitWithFlags(
   s.local_grid = local_grid;
   s.local_stiffness = local_stiffness;
   s.local_transmural = local_transmural;
+  s.tag_depths = tag_depths;
   s.uncertainty = uncertainty;
   return FitPoints(points, segmentation, labels, s);
 }
@@ -226,6 +228,7 @@ void BindFitFunction(py::module_& m) {
         py::arg("local_grid") = fit_defaults.local_grid,
         py::arg("local_stiffness") = fit_defaults.local_stiffness,
         py::arg("local_transmural") = fit_defaults.local_transmural,
+        py::arg("tag_depths") = fit_defaults.tag_depths,
         py::arg("uncertainty") = fit_defaults.uncertainty,
         "pfdm.fit's compiled part, its keywords the CLI's strings.  Fits every "
         "frame, as `pfdm fit` does "

@@ -363,8 +363,11 @@ def wall_table(document):
         a = args(key)
         base = surface.get(a["points"])
         rows.append((a["points"], a["solid"], [
-            "{:,}".format(a["points"]), "solid" if a["solid"] else "midwall",
-            number(b["frame0_ms"], 1), number(b["frame_ms"], 1),
+            "{:,}".format(a["points"]),
+            ["midwall", "solid, ranked", "solid, held"][a["solid"]],
+            number(b["frame0_ms"], 1),
+            number(b.get("first_tracked_ms", float("nan")), 1),
+            number(b["frame_ms"], 1),
             number(b["frame_ms"] / base["frame_ms"], 2)
             if base and base["frame_ms"] > 0 else "-",
             "%d (%d)" % (b.get("solves", 0), b.get("iterations", 0)),
@@ -373,7 +376,8 @@ def wall_table(document):
             if base and base["per_point_ns"] > 0 else "-",
             "%.3f" % b["rms_mm"]]))
     rows.sort(key=lambda r: r[:2])
-    return table(["tags", "wall", "frame 0 ms", "tracked frame ms",
+    return table(["tags", "wall", "frame 0 ms", "frame 1 ms",
+                  "tracked frame (frame 2) ms",
                   "tracked frame vs one surface", "solves (steps)",
                   "evaluation ns per tag and iteration",
                   "evaluation vs one surface", "RMS mm"],

@@ -76,7 +76,7 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         rest_tolerance=1e-6, max_steps=20000, damping="model",
         damping_scale="", jacobian="analytic", local=True,
         local_grid=(13, 24), local_stiffness=0.02, local_transmural=False,
-        uncertainty=False):
+        tag_depths="ranked", uncertainty=False):
     """Fits every frame, as ``pfdm fit`` does with the flags of the same names.
 
     Parameters
@@ -163,6 +163,11 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         A solid's local field varies through the wall (the endocardium's
         apart from the epicardium's) and its tags' depths are ranked among
         their neighbours: regional defects through the wall show.
+    tag_depths : str
+        A solid's tags through the wall keep frame 0's depth in every frame,
+        as they keep its material point ("held"), or are ranked across the
+        wall in each ("ranked").  With ``local_transmural`` they are ranked
+        among their neighbours.
     uncertainty : bool
         Each knot value's standard deviation, from the frame's covariance
         (``Fit.function_sds``; ``write`` puts it in parameters.csv's sd

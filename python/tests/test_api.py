@@ -85,7 +85,7 @@ def test_fit_takes_the_clis_flags_with_their_defaults():
     cli = cli_defaults("fit")
     signature = inspect.signature(pfdm.fit).parameters
     ours = {name: p.default for name, p in signature.items() if name != "points"}
-    assert len(ours) == 35
+    assert len(ours) == 36
     for name, value in ours.items():
         assert name in cli, name
         assert same_default(value, cli[name]), (name, value, cli[name])

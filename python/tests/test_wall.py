@@ -9,6 +9,14 @@ import pfdm
 from conftest import run_cli, scratch
 
 
+def without_timing(document):
+    """fit.json without what differs between two runs of one fit."""
+    document.pop("timing")
+    for frame in document["frames"]:
+        frame.pop("solve_seconds")
+    return document
+
+
 @pytest.fixture(scope="module")
 def wall_tags():
     folder = scratch("wall")
@@ -44,11 +52,7 @@ def test_tags_through_the_wall_fit_a_solid(wall_tags):
     assert code == 0, err
     cli = json.loads((folder / "cli" / "fit.json").read_text())
     ours = fit.to_dict()
-    for document in (ours, cli):
-        document.pop("timing")
-        for frame in document["frames"]:
-            frame.pop("solve_seconds")
-    assert ours == cli
+    assert without_timing(ours) == without_timing(cli)
 
 
 def test_segments_say_what_they_cannot_show_through_the_wall(wall_tags):
@@ -154,10 +158,34 @@ def test_local_transmural_as_a_keyword(wall_tags):
     assert code == 0, err
     cli = json.loads((folder / "cli_transmural" / "fit.json").read_text())
     ours = layered.to_dict()
-    for document in (ours, cli):
-        document.pop("timing")
-        for frame in document["frames"]:
-            frame.pop("solve_seconds")
-    assert ours == cli
+    assert without_timing(ours) == without_timing(cli)
     with pytest.raises(pfdm.InputError, match="local_transmural"):
         pfdm.fit(str(csv), local=False, local_transmural=True)
+
+
+def test_tag_depths_as_a_keyword(wall_tags):
+    """--tag_depths as a keyword: in the settings and each tracked frame's
+    entry; held, a tracked frame after the first is one solve (no ranking);
+    the CLI's flag gives the same fit; a bad value, or one beside
+    --local_transmural on, names the keyword."""
+    folder, csv = wall_tags
+    ranked = pfdm.fit(str(csv), local=False)
+    held = pfdm.fit(str(csv), local=False, tag_depths="held")
+    assert ranked.to_dict()["settings"]["tag_depths"] == "ranked"
+    assert held.to_dict()["settings"]["tag_depths"] == "held"
+    frames = held.to_dict()["frames"]
+    assert len(frames) >= 3
+    assert "tag_depths" not in frames[0]
+    assert [f["tag_depths"] for f in frames[1:]] == ["held"] * (len(frames) - 1)
+    assert ranked.to_dict()["frames"][1]["tag_depths"] == "ranked"
+    assert frames[2]["correspondence_rounds"] == 1
+    code, _, err = run_cli("fit", "--tag_depths", "held", "--local", "off",
+                           "--points", csv, "--out", folder / "cli_held")
+    assert code == 0, err
+    cli = json.loads((folder / "cli_held" / "fit.json").read_text())
+    ours = held.to_dict()
+    assert without_timing(ours) == without_timing(cli)
+    with pytest.raises(pfdm.InputError, match="tag_depths"):
+        pfdm.fit(str(csv), tag_depths="kept")
+    with pytest.raises(pfdm.InputError, match="tag_depths"):
+        pfdm.fit(str(csv), local_transmural=True, tag_depths="held")

@@ -116,6 +116,10 @@ DEFINE_string(local_transmural, kDefaults.local_transmural.c_str(),
               "a solid's local deformations vary through the wall and its "
               "tags' depths are ranked among their neighbours, so that "
               "regional and subendocardial defects show: on or off");
+DEFINE_string(tag_depths, kDefaults.tag_depths.c_str(),
+              "a solid's tags through the wall keep frame 0's depth in every "
+              "frame, as they keep its material point (held), or are ranked "
+              "across the wall in each (ranked)");
 DEFINE_string(uncertainty, kDefaults.uncertainty.c_str(),
               "each frame's parameter covariance, a standard deviation per "
               "knot value in parameters.csv: on or off");
@@ -177,6 +181,7 @@ FitSettings FitSettingsFromFlags() {
   s.local_grid = FLAGS_local_grid;
   s.local_stiffness = FLAGS_local_stiffness;
   s.local_transmural = FLAGS_local_transmural;
+  s.tag_depths = FLAGS_tag_depths;
   s.uncertainty = FLAGS_uncertainty;
   s.vtk_format = FLAGS_vtk_format;
   s.vtk_precision = FLAGS_vtk_precision;

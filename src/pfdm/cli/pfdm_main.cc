@@ -46,7 +46,7 @@ const std::string kFitFlags =
     "untracked_prior untracked_prior_radii temporal_prior incompressible loss "
     "loss_scale threads apex base linear_solver time_step rest_tolerance "
     "max_steps integrator damping damping_scale jacobian local local_grid "
-    "local_stiffness local_transmural uncertainty ";
+    "local_stiffness local_transmural tag_depths uncertainty ";
 
 const Command kCommands[] = {
     {"fit", RunFit,

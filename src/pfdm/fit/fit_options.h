@@ -106,6 +106,17 @@ struct FitOptions {
   // lowest and highest u (FitFrame sets them after frame 0); equal: the
   // model's whole length.
   double incompressible_u_low = 0.0, incompressible_u_high = 0.0;
+  // A solid's tags keep frame 0's depth across the wall in every tracked
+  // frame, as they keep its (u, v) (held_depths.h; --tag_depths held),
+  // rather than being ranked anew in each (ranked, the default): ranks take
+  // up a segment's own motion, so that a hypokinetic one through the wall
+  // reads like its ring.  Not yet the default: on the wall segment
+  // phantoms' eight draws its thickening errs as the ranks' does but 0.2-0.8
+  // points higher on average, and one draw of the cylinder's incompressible
+  // law by 3.2 points (docs/gauge.md).  A transmural local field
+  // (LocalOptions::transmural) ranks its tags among their neighbours in
+  // every frame instead.
+  bool hold_tag_depths = false;
   // Frame 0's pose spins toward `reference`'s (the start's) about the long
   // axis with this weight, relative to the data's N points
   // (SpinGaugeResidual): where the section is round the data leave that

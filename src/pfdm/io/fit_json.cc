@@ -135,6 +135,7 @@ json Settings(const PointSequence& points, const SequenceFit& fit,
                          std::to_string(options.local.cols)},
       {"local_stiffness", options.local.stiffness},
       {"local_transmural", options.local.transmural},
+      {"tag_depths", options.hold_tag_depths ? "held" : "ranked"},
       {"uncertainty", options.uncertainty}};
   if (!points.contour_types.empty()) {
     settings["contour_types"] = points.contour_types;
@@ -280,6 +281,10 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
     entry["material_myocardium_ml"] = summary.material_myocardium_ml;
     entry["myocardial_volume_change_percent"] =
         summary.myocardial_volume_change_percent;
+    // A tracked frame's tags' depths: frame 0's held, or ranked in it.
+    if (frame.kind == FrameKind::kTracked) {
+      entry["tag_depths"] = frame.depths_held ? "held" : "ranked";
+    }
   }
   // Only when the input gave times: a frame number is no time.
   if (Measured(summary.time_ms)) entry["time_ms"] = summary.time_ms;

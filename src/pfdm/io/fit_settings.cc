@@ -176,6 +176,9 @@ void CheckSettingsApply(const FitSettings& s, bool every_solver) {
        s.local == "on", "--local on", "--local " + s.local},
       {"local_transmural", s.local_transmural != d.local_transmural,
        s.local == "on", "--local on", "--local " + s.local},
+      {"tag_depths", s.tag_depths != d.tag_depths,
+       s.local != "on" || s.local_transmural != "on", "--local_transmural off",
+       "--local_transmural on"},
   };
   for (const Use& use : uses) {
     if (use.given && !use.applies) {
@@ -232,6 +235,11 @@ FitOptions OptionsFrom(const FitSettings& s, bool every_solver) {
     throw InputError("--local_transmural must be on or off, got '" +
                      Clip(s.local_transmural) + "'");
   }
+  if (s.tag_depths != "held" && s.tag_depths != "ranked") {
+    throw InputError("--tag_depths must be held or ranked, got '" +
+                     Clip(s.tag_depths) + "'");
+  }
+  options.hold_tag_depths = s.tag_depths == "held";
   if (s.uncertainty != "on" && s.uncertainty != "off") {
     throw InputError("--uncertainty must be on or off, got '" +
                      Clip(s.uncertainty) + "'");

@@ -61,6 +61,9 @@ struct FitSettings {
   double local_stiffness = FitOptions().local.stiffness;
   // A solid's field through the wall (LocalOptions::transmural): on or off.
   std::string local_transmural = FitOptions().local.transmural ? "on" : "off";
+  // A solid's tags' depths across the wall (FitOptions::hold_tag_depths):
+  // held or ranked.
+  std::string tag_depths = FitOptions().hold_tag_depths ? "held" : "ranked";
   // Each frame's parameter covariance (FitOptions::uncertainty): on or off.
   std::string uncertainty = FitOptions().uncertainty ? "on" : "off";
   // The outputs.

@@ -86,6 +86,10 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   settings.local_transmural = "on";
   EXPECT_TRUE(FitOptionsFrom(settings).local.transmural);
   EXPECT_FALSE(FitOptionsFrom(FitSettings()).local.transmural);
+  EXPECT_FALSE(FitOptionsFrom(FitSettings()).hold_tag_depths);
+  FitSettings held;
+  held.tag_depths = "held";
+  EXPECT_TRUE(FitOptionsFrom(held).hold_tag_depths);
   EXPECT_EQ(FitOptionsFrom(settings).solver.linear_solver, ceres::DENSE_QR);
   EXPECT_EQ(FitOptionsFrom(settings).solver.rest_tolerance, 0.01);
   EXPECT_EQ(FitOptionsFrom(settings).solver.max_steps, 1000000);
@@ -136,6 +140,9 @@ TEST(FitSettingsTest, BadSettingsNameTheirFlag) {
   s = FitSettings();
   s.local_transmural = "1";
   EXPECT_EQ(ErrorOf(s), "--local_transmural must be on or off, got '1'");
+  s = FitSettings();
+  s.tag_depths = "kept";
+  EXPECT_EQ(ErrorOf(s), "--tag_depths must be held or ranked, got 'kept'");
   s = FitSettings();
   s.local_grid = "9x100";
   EXPECT_EQ(ErrorOf(s),
@@ -254,6 +261,12 @@ TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
          s->local_transmural = "on";
        },
        "--local_transmural applies to --local on, not --local off"},
+      {[](FitSettings* s) {
+         s->local_transmural = "on";
+         s->tag_depths = "held";
+       },
+       "--tag_depths applies to --local_transmural off, not "
+       "--local_transmural on"},
   };
   for (const Case& c : cases) {
     FitSettings s;

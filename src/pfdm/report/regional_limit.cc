@@ -10,9 +10,11 @@ RegionalLimit RegionalLimitOf(const SequenceFit& fit) {
     return RegionalLimit::kNone;
   }
   const auto tracked = [](const FrameFit& f) { return f.tracked; };
-  return std::any_of(fit.frames.begin(), fit.frames.end(), tracked)
-             ? RegionalLimit::kRing
-             : RegionalLimit::kThickening;
+  const auto held = [](const FrameFit& f) { return f.depths_held; };
+  const bool ranked =
+      std::any_of(fit.frames.begin(), fit.frames.end(), tracked) &&
+      std::none_of(fit.frames.begin(), fit.frames.end(), held);
+  return ranked ? RegionalLimit::kRing : RegionalLimit::kThickening;
 }
 
 std::string RegionalLimitNote(RegionalLimit limit) {
@@ -22,10 +24,11 @@ std::string RegionalLimitNote(RegionalLimit limit) {
              "tags' depths were ranked within their ring and the local field, "
              "if any, moves every layer alike (--local_transmural off), so a "
              "segment that moves unlike its ring reads as its ring, its "
-             "thickening too. Fit with --local_transmural on to look for one.";
+             "thickening too. Fit with --tag_depths held, or with "
+             "--local_transmural on, to look for one.";
     case RegionalLimit::kThickening:
       return "A segment's thickening here is its ring's: the local field, "
-             "if any, moves both walls alike (--local_transmural off), so a "
+             "if any, moves every layer alike (--local_transmural off), so a "
              "segment that thickens unlike its ring does not show in it, "
              "though its motion does. With --local_transmural on each wall "
              "has its own field.";

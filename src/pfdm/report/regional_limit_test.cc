@@ -28,7 +28,14 @@ TEST(RegionalLimitTest, BySurfaceFieldAndTracking) {
   fit.config.MakeSolid();
   const LocalGrid grid = SmallGrid(fit.config);
   for (FrameFit& frame : fit.frames) frame.state.local = LocalField::Zero(grid);
+  // Tags ranked in every tracked frame (--tag_depths ranked).
   EXPECT_EQ(RegionalLimitOf(fit), RegionalLimit::kRing);
+  // Held from frame 0: the segments' motion is theirs.
+  SequenceFit held = fit;
+  for (size_t t = 1; t < held.frames.size(); ++t) {
+    held.frames[t].depths_held = true;
+  }
+  EXPECT_EQ(RegionalLimitOf(held), RegionalLimit::kThickening);
   // --local off: no field at all moves the layers alike too.
   SequenceFit global_only = fit;
   for (FrameFit& frame : global_only.frames) frame.state.local = LocalField();

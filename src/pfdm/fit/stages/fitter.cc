@@ -1,5 +1,6 @@
 #include "pfdm/fit/stages/fitter.h"
 
+#include <optional>
 #include <utility>
 
 #include "pfdm/fit/stages/apex_coverage.h"
@@ -12,6 +13,89 @@
 #include "pfdm/util/stopwatch.h"
 
 namespace pfdm {
+namespace {
+
+// A transmural local field ranks its tags among their neighbours instead
+// (FitOptions::hold_tag_depths).
+bool HoldsTagDepths(const FitOptions& options) {
+  return options.hold_tag_depths &&
+         !(options.local.enabled && options.local.transmural);
+}
+
+// What a frame's fit changes of the carried state (the searches' grids and
+// the local solver's factors aside, which any frame may reuse).
+struct FrameStart {
+  explicit FrameStart(const CarriedState& carried)
+      : model(carried.model),
+        previous(carried.previous),
+        reference(carried.reference),
+        frames_fitted(carried.frames_fitted),
+        tracked_material(carried.tracked_material) {}
+  void Restore(CarriedState* carried) const {
+    carried->model = model;
+    carried->previous = previous;
+    carried->reference = reference;
+    carried->frames_fitted = frames_fitted;
+    carried->tracked_material = tracked_material;
+  }
+  Model model;
+  ModelState previous, reference;
+  int frames_fitted;
+  TrackedMaterial tracked_material;
+};
+
+// Whether some of the frame's points keep a material point from an earlier
+// frame (FrameKind::kTracked).
+bool TracksPoints(const Frame& frame, const TrackedMaterial& tracked) {
+  for (const DataPoint& p : frame.points) {
+    if (tracked.count(p.id) > 0) return true;
+  }
+  return false;
+}
+
+// The first tracked frame of a solid's tags is fitted once with its tags
+// ranked, the global model only (the pilot), to measure their noise
+// (FrameTagNoiseMm), which the held depths need.  Frame 0's tags then take
+// their held depths (HoldTagDepths) and *carried is as it was before the
+// pilot, but for them.  Returns the pilot, whose cost is its frame's.
+FrameFit FitPilot(const PointSequence& sequence, const Frame& frame,
+                  const FramesPerId& frames_per_id, const FitOptions& options,
+                  const FrameFit& first, WallDecision* wall,
+                  CarriedState* carried) {
+  const FrameStart before(*carried);
+  FitOptions pilot_options = options;
+  pilot_options.local.enabled = false;
+  pilot_options.uncertainty = false;
+  FrameFit pilot = FitFrame(frame, false, frames_per_id, pilot_options,
+                            sequence.source, wall, carried);
+  const ModelConfig& config = before.model.config;
+  const std::optional<double> sigma =
+      FrameTagNoiseMm(Model{config, pilot.state}, frame, pilot.material,
+                      frames_per_id, options.loss != "none");
+  before.Restore(carried);
+  if (!sigma) return pilot;
+  Model reference{config, first.state};
+  reference.state.local = LocalField();
+  HoldTagDepths(sequence.frames[0], reference, *sigma,
+                &carried->tracked_material);
+  carried->depths_held = true;
+  return pilot;
+}
+
+// The pilot's solves and searches counted in the frame's.
+void AddPilotCosts(const FrameFit& pilot, FrameFit* fit) {
+  fit->iterations += pilot.iterations;
+  fit->correspondence_rounds += pilot.correspondence_rounds;
+  fit->solve_seconds += pilot.solve_seconds;
+  fit->residual_evaluations += pilot.residual_evaluations;
+  fit->jacobian_evaluations += pilot.jacobian_evaluations;
+  fit->evaluation_seconds += pilot.evaluation_seconds;
+  fit->linear_solver_seconds += pilot.linear_solver_seconds;
+  fit->minimizer_seconds += pilot.minimizer_seconds;
+  fit->correspondence_seconds += pilot.correspondence_seconds;
+}
+
+}  // namespace
 
 SequenceFit FitSequence(const PointSequence& sequence,
                         const ModelConfig& config,
@@ -27,9 +111,17 @@ SequenceFit FitSequence(const PointSequence& sequence,
   SequenceFit result;
   for (const Frame& frame : sequence.frames) {
     const bool reference = frame.index == sequence.frames[0].index;
-    result.frames.push_back(FitFrame(frame, reference, start.frames_per_id,
-                                     options, sequence.source, &start.wall,
-                                     &carried));
+    std::optional<FrameFit> pilot;
+    if (!reference && HoldsTagDepths(options) && start.has_tags &&
+        carried.model.config.Solid() && !carried.depths_held &&
+        TracksPoints(frame, carried.tracked_material)) {
+      pilot = FitPilot(sequence, frame, start.frames_per_id, options,
+                       result.frames[0], &start.wall, &carried);
+    }
+    FrameFit fit = FitFrame(frame, reference, start.frames_per_id, options,
+                            sequence.source, &start.wall, &carried);
+    if (pilot) AddPilotCosts(*pilot, &fit);
+    result.frames.push_back(std::move(fit));
   }
   result.config = carried.model.config;
   result.wall_reason = start.wall.reason;

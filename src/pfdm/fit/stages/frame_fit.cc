@@ -76,6 +76,7 @@ void FitGlobal(const FramePoints& points, const ModelState& prior,
   GlobalRounds rounds(points, prior, carried->reference, round_options, source,
                       &model, fit);
   rounds.set_surface_grid(&carried->surface_grid);
+  if (carried->depths_held) rounds.hold_depths();
   if (options.loss != "none" && !measure) {
     fit->loss_scale_mm = options.loss_scale_mm;
     if (reference) carried->reference_loss_scale_mm = fit->loss_scale_mm;
@@ -177,6 +178,8 @@ FrameFit FitFrame(const Frame& frame, bool reference,
                       carried->tracked_material, &fit.material);
   fit.kind = points.kind;
   fit.tracked = HasTrackedPoints(points);
+  fit.depths_held = carried->depths_held && model.config.Solid() &&
+                    points.kind == FrameKind::kTracked;
   const FramePrior frame_prior = PriorOfFrame(
       points.kind, carried->reference, carried->previous,
       /*previous_is_reference=*/carried->frames_fitted <= 1, sequence_options);

@@ -33,6 +33,9 @@ struct CarriedState {
   // holds the wall's volume.
   double data_u_low = 0.0, data_u_high = 0.0;
   TrackedMaterial tracked_material;
+  // Its tags' depths are frame 0's (held_depths.h), not ranked in each
+  // frame: FitSequence sets it once it has measured their noise.
+  bool depths_held = false;
   // Frame 0's robust loss scale (0 without a loss), for the band of a
   // solid's ranks in every frame (RankBandMm).
   double reference_loss_scale_mm = 0.0;

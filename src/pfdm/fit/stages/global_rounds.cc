@@ -167,11 +167,13 @@ void GlobalRounds::Start() {
   }
   moved_ = UpdateClosest();
   CheckInterrupt(options_.solver);
-  // A solid's tracked tags keep (u, v) but take their depth from this
-  // frame's ranks (RerankDepths), first against the previous frame's fit:
+  // A solid's tracked tags keep (u, v) and, unless held (held_depths.h),
+  // take their depth from this frame's ranks (RerankDepths), first against
+  // the previous frame's fit:
   // a predictor's step from frame 0's depths instead read the wall
   // segment's thickening 3.1-3.3 points high (lv_wall_segment_test).
-  rerank_depths_ = model_->config.Solid() && !frame_.tracked.empty();
+  rerank_depths_ =
+      model_->config.Solid() && !frame_.tracked.empty() && !hold_depths_;
   if (rerank_depths_) {
     RerankDepths(*model_, frame_.positions, frame_.tracked, &fit_->material,
                  ranking_);

@@ -57,6 +57,9 @@ class GlobalRounds {
   // The searches' grid, kept from search to search (null, the default: a
   // grid per search); it outlives the rounds.
   void set_surface_grid(SurfaceGrid* grid) { grid_ = grid; }
+  // A solid's tracked tags keep the depths they carry (held_depths.h)
+  // instead of being ranked in this frame; before Start.
+  void hold_depths() { hold_depths_ = true; }
 
   // The last solve's report.
   const SolverReport& report() const { return report_; }
@@ -123,6 +126,7 @@ class GlobalRounds {
   bool found_closest_ = false;  // Then searches start from the last.
   double moved_ = 0.0;          // By the last search.
   bool rerank_depths_ = false;
+  bool hold_depths_ = false;
   DepthRanking ranking_;
   // Frame 0's tags through a solid's wall: ranked at the first searches,
   // then held at their depths (global_rounds.cc, kRerankRounds).

@@ -279,7 +279,8 @@ TEST(GlobalRoundsTest, ASolidsFirstFrameHoldsItsTagsDepthsOnceRanked) {
   EXPECT_GT(reranked, 100);
 }
 
-// A solid's tracked frame: a predictor's single step brings the model near
+// A solid's tracked frame with its tags ranked (--tag_depths ranked): a
+// predictor's single step brings the model near
 // the frame's fit, the tags are ranked against it, and the solve that
 // counts runs to convergence; past 8,192 tags the predictor takes every
 // k-th of them.  The last two solves of a two-frame fit are the tracked
@@ -296,6 +297,7 @@ TEST_P(GlobalRoundsPredictorTest,
   FitOptions options;
   options.wall = WallModel::kSolid;
   options.local.enabled = false;
+  options.hold_tag_depths = false;  // Held depths are not ranked.
   std::vector<int> steps_per_solve;
   options.solver.on_step = [&](const SolverTracePoint& point) {
     if (point.iteration == 0) {

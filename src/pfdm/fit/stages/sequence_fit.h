@@ -37,6 +37,9 @@ struct FrameFit {
   double max_distance_mm = 0.0;
   int iterations = 0;
   int correspondence_rounds = 0;
+  // A solid's tracked frame whose tags kept frame 0's depths
+  // (held_depths.h) rather than this frame's ranks.
+  bool depths_held = false;
   // When the rounds ran out (FitOptions::max_correspondence_rounds) with
   // closest points still moving by the tolerance or more: how far the last
   // search moved one (mm), the fit resting on correspondences that had not

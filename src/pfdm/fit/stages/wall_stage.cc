@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pfdm/fit/correspondence/held_depths.h"
 #include "pfdm/fit/correspondence/transmural.h"
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/util/error.h"
@@ -195,6 +196,39 @@ bool DecideWallFromTags(const FramePoints& frame,
   return false;
 }
 
+std::optional<double> FrameTagNoiseMm(
+    const Model& global, const Frame& frame,
+    const std::vector<MaterialPoint>& material,
+    const FramesPerId& frames_per_id, bool robust) {
+  // Tracked tags only: a contour point's closest point leaves it no
+  // residual along the wall.
+  std::vector<size_t> tags;
+  for (size_t i = 0; i < material.size(); ++i) {
+    if (frames_per_id.at(frame.points[i].id) > 1) tags.push_back(i);
+  }
+  if (tags.empty()) return std::nullopt;
+  return TangentialNoiseMm(global,
+                           Residuals(global, Positions(frame), material),
+                           material, tags, robust);
+}
+
+void HoldTagDepths(const Frame& first, const Model& reference, double sigma_mm,
+                   TrackedMaterial* tracked_material) {
+  std::vector<MaterialPoint*> tags;
+  std::vector<MaterialPoint> material;
+  std::vector<Eigen::Vector3d> points;
+  for (const DataPoint& p : first.points) {
+    const auto it = tracked_material->find(p.id);
+    if (it == tracked_material->end()) continue;
+    tags.push_back(&it->second);
+    material.push_back(it->second);
+    points.push_back(p.position);
+  }
+  const std::vector<MaterialPoint> held =
+      HeldMaterialPoints(reference, points, material, sigma_mm);
+  for (size_t j = 0; j < tags.size(); ++j) *tags[j] = held[j];
+}
+
 void TakeOutTagNoise(const PointSequence& sequence,
                      const FramesPerId& frames_per_id, SequenceFit* result,
                      bool robust) {
@@ -202,27 +236,18 @@ void TakeOutTagNoise(const PointSequence& sequence,
   int frames = 0;
   for (size_t t = 1; t < result->frames.size(); ++t) {
     const FrameFit& frame = result->frames[t];
-    // Tracked tags only: a contour point's closest point leaves it no
-    // residual along the wall.
-    std::vector<size_t> tags;
-    for (size_t i = 0; i < frame.material.size(); ++i) {
-      if (frames_per_id.at(sequence.frames[t].points[i].id) > 1) {
-        tags.push_back(i);
-      }
-    }
-    if (tags.empty()) continue;
-    const Model global = GlobalModelAt(*result, t);
-    const double sigma = TangentialNoiseMm(
-        global,
-        Residuals(global, Positions(sequence.frames[t]), frame.material),
-        frame.material, tags, robust);
-    sum_squared += sigma * sigma;
+    const std::optional<double> sigma =
+        FrameTagNoiseMm(GlobalModelAt(*result, t), sequence.frames[t],
+                        frame.material, frames_per_id, robust);
+    if (!sigma) continue;
+    sum_squared += *sigma * *sigma;
     ++frames;
   }
   if (frames == 0) return;
   result->tag_noise_mm = std::sqrt(sum_squared / frames);
   for (size_t t = 0; t < result->frames.size(); ++t) {
     FrameFit& frame = result->frames[t];
+    if (frame.depths_held) continue;
     Model model{result->config, frame.state};
     // Frame 0 and frames without tracked points hold the squeeze at 0.
     const bool squeezed =

@@ -5,6 +5,7 @@
 #ifndef PFDM_FIT_STAGES_WALL_STAGE_H_
 #define PFDM_FIT_STAGES_WALL_STAGE_H_
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,12 +48,28 @@ bool DecideWallFromTags(const FramePoints& frame,
                         bool converged, WallModel wall, WallDecision* decision,
                         Model* model);
 
-// A solid's tags were ranked across the wall in every frame, which widens
-// each frame's h by their noise, a thin wall's more (DeconvolvedThickness):
-// measures the noise on the tracked frames (on the global model's
-// residuals: the local field fits part of the noise) and takes it out of
-// every frame's h, then summarizes the frames again.  `robust` (a fit with
-// a robust loss): the noise measured robustly (TangentialNoiseMm).
+// The noise (mm per coordinate) of a tracked frame's tags, those of its
+// points seen in more than one frame, across their wall normals on the
+// frame's global model (TangentialNoiseMm: the local field fits part of the
+// noise); none without tags.  `robust` (a fit with a robust loss): measured
+// robustly.
+std::optional<double> FrameTagNoiseMm(
+    const Model& global, const Frame& frame,
+    const std::vector<MaterialPoint>& material,
+    const FramesPerId& frames_per_id, bool robust = false);
+
+// Each of frame 0's (`first`'s) tags in *tracked_material takes its held
+// depth (HeldDepths) on `reference`, frame 0's global model, for noise of
+// sigma_mm.
+void HoldTagDepths(const Frame& first, const Model& reference, double sigma_mm,
+                   TrackedMaterial* tracked_material);
+
+// A solid's tags ranked across the wall widen a frame's h by their noise, a
+// thin wall's more (DeconvolvedThickness): measures the noise on the
+// tracked frames (FrameTagNoiseMm) and takes it out of the h of every
+// frame that ranked them (frame 0 always; a tracked frame unless its
+// depths were held, which are free of it), then summarizes the frames
+// again.
 void TakeOutTagNoise(const PointSequence& sequence,
                      const FramesPerId& frames_per_id, SequenceFit* result,
                      bool robust = false);

@@ -277,5 +277,45 @@ TEST(WallStageTest, OutliersOffAWallLeaveItsThickness) {
       << decision.reason;
 }
 
+// Frame 0's tags (ids 0-2, in the tracked material) take the layer they lie
+// on and its (u, v); a contour point (id 9, not tracked) is left alone.  A
+// tracked frame's noise is read from its tags alone: none without them.
+TEST(WallStageTest, TagsHoldTheLayerTheyLieOn) {
+  Model model = TestSpheroid(9);
+  model.config.MakeSolid();
+  model.state.globals[kH] = 10.0;
+  for (FunctionValues& knot : model.state.knots) knot[kH] = 10.0;
+  const std::vector<MaterialPoint> truth = {
+      {-0.5, 1.0, -0.6}, {0.1, -2.0, 0.2}, {-0.2, 0.5, 0.9}};
+  Frame first;
+  TrackedMaterial tracked;
+  for (int i = 0; i < 3; ++i) {
+    DataPoint p;
+    p.id = i;
+    p.position = model.WorldPoint(truth[i].u, truth[i].v, truth[i].w);
+    first.points.push_back(p);
+    // Ranked at the mid-wall, 0.03 off in (u, v).
+    tracked[i] = {truth[i].u + 0.03, truth[i].v + 0.03, 0.0};
+  }
+  DataPoint contour;
+  contour.id = 9;
+  first.points.push_back(contour);
+  HoldTagDepths(first, model, 0.0, &tracked);
+  ASSERT_EQ(tracked.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(tracked[i].w, truth[i].w, 1e-5) << i;
+    EXPECT_NEAR(tracked[i].u, truth[i].u, 1e-5) << i;
+    EXPECT_NEAR(tracked[i].v, truth[i].v, 1e-5) << i;
+  }
+  // No point seen in two frames: no tags, no noise.
+  const FramesPerId once = {{0, 1}, {1, 1}, {2, 1}, {9, 1}};
+  const std::vector<MaterialPoint> material = {truth[0], truth[1], truth[2],
+                                               truth[0]};
+  EXPECT_FALSE(FrameTagNoiseMm(model, first, material, once).has_value());
+  const FramesPerId twice = {{0, 2}, {1, 2}, {2, 2}, {9, 1}};
+  first.points[3].position = first.points[0].position;
+  EXPECT_NEAR(*FrameTagNoiseMm(model, first, material, twice), 0.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace pfdm
