@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pfdm/fit/correspondence/transmural.h"
+#include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
@@ -15,7 +16,7 @@ constexpr double kFarSds = 8.0;
 constexpr int kInversePasses = 3;
 
 double NormalDensity(double x) {
-  return std::exp(-0.5 * x * x) / std::sqrt(2.0 * M_PI);
+  return std::exp(-0.5 * x * x) / std::sqrt(2.0 * kPi);
 }
 
 double NormalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }

@@ -10,7 +10,8 @@
 //
 // Held from frame 0's noisy distances, a depth regresses to the mean: the
 // tags frame 0's noise put outermost lie inside the wall the depth says
-// they bound, and every later frame's wall read 6-8 % thin.  So the held
+// they bound, and every later frame's wall read 5-6 % thin (the LV
+// phantom and the cylindrical wall segment, 0.5 mm of noise).  So the held
 // depth is the depth's expectation given frame 0's distance, w's spread
 // through the wall being uniform and the noise Gaussian.  Against it the
 // later frames' thickness is unbiased (the expectation's regression
