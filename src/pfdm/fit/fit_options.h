@@ -110,12 +110,11 @@ struct FitOptions {
   // frame, as they keep its (u, v) (held_depths.h; --tag_depths held),
   // rather than being ranked anew in each (ranked, the default): ranks take
   // up a segment's own motion, so that a hypokinetic one through the wall
-  // reads like its ring.  Not yet the default: on the wall segment
-  // phantoms' eight draws its thickening errs as the ranks' does but 0.2-0.8
-  // points higher on average, and one draw of the cylinder's incompressible
-  // law by 3.2 points (docs/gauge.md).  A transmural local field
-  // (LocalOptions::transmural) ranks its tags among their neighbours in
-  // every frame instead.
+  // reads like its ring.  Not yet the default: one seed of the prolate
+  // wall segment at 1,500 tags reads 4 points high, and the intervals'
+  // tables and claims are the ranks' (docs/gauge.md).  A transmural local
+  // field (LocalOptions::transmural) ranks its tags among their neighbours
+  // in every frame instead.
   bool hold_tag_depths = false;
   // Frame 0's pose spins toward `reference`'s (the start's) about the long
   // axis with this weight, relative to the data's N points

@@ -21,6 +21,18 @@ double NormalDensity(double x) {
 
 double NormalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
+// The half-width a of the uniform the tags' depths fill, from their
+// observed depths' mean square less the noise's (the variance of a uniform
+// on [-a, a] is a^2 / 3), w_sum_squares and s_sum_squares their sums over
+// n tags; 1 without noise.  Not below kMinHalfWidth.
+constexpr double kMinHalfWidth = 0.5;
+double PriorHalfWidth(double w_sum_squares, double s_sum_squares, int n,
+                      double sigma_mm) {
+  if (!(sigma_mm > 0.0) || n == 0) return 1.0;
+  return std::sqrt(std::max(kMinHalfWidth * kMinHalfWidth,
+                            3.0 * (w_sum_squares - s_sum_squares) / n));
+}
+
 }  // namespace
 
 double ShrunkDepth(double w_obs, double s) {
@@ -52,11 +64,23 @@ std::vector<MaterialPoint> HeldMaterialPoints(
                        : 0.0);
     }
   }
-  for (MaterialPoint& at : held) {
-    const double h_fit = reference.FunctionsAt(at.u)[kH];
+  std::vector<double> w_obs(held.size(), 0.0), s(held.size(), 0.0);
+  double ww = 0.0, ss = 0.0;
+  int n = 0;
+  for (size_t i = 0; i < held.size(); ++i) {
+    const double h_fit = reference.FunctionsAt(held[i].u)[kH];
     const double h = DeconvolvedThickness(h_fit, sigma_mm);
     if (!(h > 0.0)) continue;
-    at.w = ShrunkDepth(at.w * h_fit / h, 2.0 * sigma_mm / h);
+    w_obs[i] = held[i].w * h_fit / h;
+    s[i] = 2.0 * sigma_mm / h;
+    ww += w_obs[i] * w_obs[i];
+    ss += s[i] * s[i];
+    ++n;
+  }
+  const double a = PriorHalfWidth(ww, ss, n, sigma_mm);
+  for (size_t i = 0; i < held.size(); ++i) {
+    if (s[i] == 0.0 && w_obs[i] == 0.0) continue;
+    held[i].w = a * ShrunkDepth(w_obs[i] / a, s[i] / a);
   }
   return held;
 }

@@ -42,11 +42,17 @@ double ShrunkDepth(double w_obs, double s);
 // its layers evenly spaced: k(w) = w h / 2), starting from `material` (its
 // ranked one): the layer w_fit and the (u, v) on it where the tag lies
 // (kInversePasses of a closest-point search on the layer and a step of w
-// along its normal), and the depth ShrunkDepth(w_fit h_fit / h, 2 sigma_mm
-// / h), h the thickness at its u with noise of sigma_mm taken out
-// (DeconvolvedThickness: frame 0's h_fit comes from ranks).  The (u, v) of
-// the tag's own layer, not of its rank's, which on a tilted wall sits
-// elsewhere along it.
+// along its normal), and the depth a ShrunkDepth(w_obs / a, s / a), w_obs =
+// w_fit h_fit / h, s = 2 sigma_mm / h, h the thickness at its u with noise
+// of sigma_mm taken out (DeconvolvedThickness: frame 0's h_fit comes from
+// ranks).  The (u, v) of the tag's own layer, not of its rank's, which on
+// a tilted wall sits elsewhere along it.  a is the half-width of the
+// uniform the tags fill, 3 (mean w_obs^2 - mean s^2) under a root, not 1:
+// frame 0's h errs by a few percent from draw to draw, and a prior of the
+// wrong width shrinks the outer tags too much or too little (on the wall
+// segments' eight draws of 3,000 tags, with a = 1, the thickening's mean
+// error 0.4-1.0 points and 3.22 at worst; with a, 1.008-1.018 there,
+// -0.55 to -0.12 and 2.33).  Without noise (sigma_mm 0) a is 1.
 std::vector<MaterialPoint> HeldMaterialPoints(
     const Model& reference, const std::vector<Eigen::Vector3d>& points,
     const std::vector<MaterialPoint>& material, double sigma_mm);
