@@ -45,6 +45,14 @@ FitAnalysis Analyze(const SequenceFit& fit, const LvPhantom& phantom) {
   return AnalyzeFit(fit, {}, AnatomicalLayout(fit.ModelAt(0), insertion));
 }
 
+// The phantom fitted with its tags' depths held or ranked, analysed.
+FitAnalysis FitAndAnalyze(const LvPhantom& phantom, bool held) {
+  FitOptions options;
+  options.hold_tag_depths = held;
+  return Analyze(FitSequence(phantom.points, ModelConfig::Paper(17), options),
+                 phantom);
+}
+
 // Frame 0's tags ranked; the first tracked frame fitted once for their
 // noise (the pilot), then with held depths, as every later frame: one
 // solve each, no ranking, the same w in every frame.
@@ -95,15 +103,9 @@ double ThickeningRms(const FitAnalysis& analysis, const LvPhantom& phantom) {
 
 TEST(LvHeldDepthsTest, SegmentsThickenAsTheTruthAlongTheMeridian) {
   const LvPhantom phantom = WallTags(3000, 0, 0.0, false);
-  FitOptions options;
-  options.hold_tag_depths = true;
-  const SequenceFit held =
-      FitSequence(phantom.points, ModelConfig::Paper(17), options);
-  options.hold_tag_depths = false;
-  const SequenceFit ranked =
-      FitSequence(phantom.points, ModelConfig::Paper(17), options);
-  const double held_rms = ThickeningRms(Analyze(held, phantom), phantom);
-  const double ranked_rms = ThickeningRms(Analyze(ranked, phantom), phantom);
+  const double held_rms = ThickeningRms(FitAndAnalyze(phantom, true), phantom);
+  const double ranked_rms =
+      ThickeningRms(FitAndAnalyze(phantom, false), phantom);
   std::printf("thickening rms over 12 segments: held %.2f, ranked %.2f\n",
               held_rms, ranked_rms);
   EXPECT_LT(held_rms, 2.0);
@@ -114,11 +116,7 @@ TEST(LvHeldDepthsTest, SegmentsThickenAsTheTruthAlongTheMeridian) {
 // wall: held depths leave its motion to the fit.
 TEST(LvHeldDepthsTest, AHypokineticSegmentShowsThroughTheWall) {
   const LvPhantom phantom = WallTags(3000, 0, 0.5, true);
-  FitOptions options;
-  options.hold_tag_depths = true;
-  const SequenceFit fit =
-      FitSequence(phantom.points, ModelConfig::Paper(17), options);
-  const FitAnalysis analysis = Analyze(fit, phantom);
+  const FitAnalysis analysis = FitAndAnalyze(phantom, true);
   const size_t es = analysis.region_motion.size() - 1;
   for (int r : {7, 6, 8, 1, 10}) {
     const double fitted = analysis.region_motion[es][LvAhaSegmentIndex(r)]
@@ -130,10 +128,7 @@ TEST(LvHeldDepthsTest, AHypokineticSegmentShowsThroughTheWall) {
     EXPECT_NEAR(fitted, truth, 1.5) << r;
   }
   // Ranked, the lesion reads as its ring (20.4 %).
-  options.hold_tag_depths = false;
-  const SequenceFit ranked =
-      FitSequence(phantom.points, ModelConfig::Paper(17), options);
-  const FitAnalysis ranked_analysis = Analyze(ranked, phantom);
+  const FitAnalysis ranked_analysis = FitAndAnalyze(phantom, false);
   EXPECT_GT(ranked_analysis.region_motion[es][LvAhaSegmentIndex(7)]
                     .radial_contraction_percent -
                 phantom.truth[es].segments[7].radial_contraction_percent,

@@ -70,13 +70,11 @@ FrameFit FitPilot(const PointSequence& sequence, const Frame& frame,
                             sequence.source, wall, carried);
   const ModelConfig& config = before.model.config;
   const std::optional<double> sigma =
-      FrameTagNoiseMm(Model{config, pilot.state}, frame, pilot.material,
+      FrameTagNoiseMm(GlobalModelOf(config, pilot), frame, pilot.material,
                       frames_per_id, options.loss != "none");
   before.Restore(carried);
   if (!sigma) return pilot;
-  Model reference{config, first.state};
-  reference.state.local = LocalField();
-  HoldTagDepths(sequence.frames[0], reference, *sigma,
+  HoldTagDepths(sequence.frames[0], GlobalModelOf(config, first), *sigma,
                 &carried->tracked_material);
   carried->depths_held = true;
   return pilot;

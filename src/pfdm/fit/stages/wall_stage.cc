@@ -106,17 +106,6 @@ std::string MakeSolidOfTags(const std::vector<double>& distances,
          " beyond the wall left out)";
 }
 
-// Frame t's global model: its fit without the local field.  The tags'
-// noise is measured on its residuals, not on the fit's: the local field has
-// nearly as many unknowns as 400 tags have coordinates and fits part of
-// their noise (0.5 mm of it read 0.36-0.39 mm after the field, 0.48-0.50
-// before, on the LV phantom's tags through the wall).
-Model GlobalModelAt(const SequenceFit& result, size_t t) {
-  Model global = result.ModelAt(static_cast<int>(t));
-  global.state.local = LocalField();
-  return global;
-}
-
 }  // namespace
 
 WallDecision DecideWallFromContours(const Frame& first, bool has_tags,
@@ -196,6 +185,12 @@ bool DecideWallFromTags(const FramePoints& frame,
   return false;
 }
 
+Model GlobalModelOf(const ModelConfig& config, const FrameFit& frame) {
+  Model global{config, frame.state};
+  global.state.local = LocalField();
+  return global;
+}
+
 std::optional<double> FrameTagNoiseMm(
     const Model& global, const Frame& frame,
     const std::vector<MaterialPoint>& material,
@@ -236,9 +231,9 @@ void TakeOutTagNoise(const PointSequence& sequence,
   int frames = 0;
   for (size_t t = 1; t < result->frames.size(); ++t) {
     const FrameFit& frame = result->frames[t];
-    const std::optional<double> sigma =
-        FrameTagNoiseMm(GlobalModelAt(*result, t), sequence.frames[t],
-                        frame.material, frames_per_id, robust);
+    const std::optional<double> sigma = FrameTagNoiseMm(
+        GlobalModelOf(result->config, frame), sequence.frames[t],
+        frame.material, frames_per_id, robust);
     if (!sigma) continue;
     sum_squared += *sigma * *sigma;
     ++frames;
