@@ -224,7 +224,7 @@ TEST(LvIntervalCalibrationTest, LesionMidwallTags) {
 // its neighbours in 2 draws, while every claimed interval held the same
 // tags' noise-free fit in 0.93-0.98 of draws.  The report says so
 // (report/regional_limit.h).  With --tag_depths held (not yet the default)
-// it was told apart in 96 of 100 draws, 0.88 points above the truth
+// it was told apart in 96 of 100 draws, 0.86 points above the truth
 // (docs/uncertainty.md).
 TEST(LvIntervalCalibrationTest, LesionWallTags) {
   const LesionRows lesion =
