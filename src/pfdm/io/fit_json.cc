@@ -281,9 +281,12 @@ json FrameEntry(const FrameFit& frame, const Verdict& verdict,
     entry["material_myocardium_ml"] = summary.material_myocardium_ml;
     entry["myocardial_volume_change_percent"] =
         summary.myocardial_volume_change_percent;
-    // A tracked frame's tags' depths: frame 0's held, or ranked in it.
+    // A tracked frame's tags' depths: measured across the walls its
+    // contours place, frame 0's held, or ranked in it.
     if (frame.kind == FrameKind::kTracked) {
-      entry["tag_depths"] = frame.depths_held ? "held" : "ranked";
+      entry["tag_depths"] = frame.depths_measured ? "measured"
+                            : frame.depths_held   ? "held"
+                                                  : "ranked";
     }
   }
   // Only when the input gave times: a frame number is no time.

@@ -5,6 +5,11 @@
 namespace pfdm {
 
 IntervalData IntervalDataOf(const SequenceFit& fit) {
+  // Tags and contours in one fit: no kind's calibration is theirs.
+  const auto mixed = [](const FrameFit& f) { return f.mixed; };
+  if (std::any_of(fit.frames.begin(), fit.frames.end(), mixed)) {
+    return IntervalData::kOther;
+  }
   const auto tracked = [](const FrameFit& f) { return f.tracked; };
   if (std::all_of(fit.frames.begin(), fit.frames.end(), tracked)) {
     return fit.config.Solid() ? IntervalData::kWallTags

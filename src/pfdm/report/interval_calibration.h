@@ -37,7 +37,8 @@ enum class IntervalData {
 // The fit's kind: tags where every frame is tracked, by whether the model
 // is a solid; where none is (FrameFit::tracked), wall contours if the
 // model is a solid, else by the wall of its one surface: endocardial,
-// epicardial or mid-wall contours; else kOther (a mix).
+// epicardial or mid-wall contours; else, and wherever a tracked frame has
+// contours beside its tags (FrameFit::mixed), kOther (a mix).
 IntervalData IntervalDataOf(const SequenceFit& fit);
 
 // "midwall tags", "wall tags", "wall contours", "endocardial contours",

@@ -137,7 +137,8 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
 
 // The kind from the fit: tags where every frame is tracked, by whether the
 // model is a solid; contours where none is, of both walls (a solid) or of
-// the endocardium; a mix, or the mid-wall's contours, is neither.
+// the endocardium; a mix (tracked and untracked frames, or contours beside
+// tags in a frame) is neither.
 TEST(IntervalCalibrationTest, KindOfTheFitsData) {
   SequenceFit fit;
   fit.config = ModelConfig::Paper(9);
@@ -147,6 +148,10 @@ TEST(IntervalCalibrationTest, KindOfTheFitsData) {
   fit.config.MakeSolid();
   ASSERT_TRUE(fit.config.Solid());
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kWallTags);
+  // Contours beside the tags in a tracked frame: a mix.
+  fit.frames[1].mixed = true;
+  EXPECT_EQ(IntervalDataOf(fit), IntervalData::kOther);
+  fit.frames[1].mixed = false;
   for (FrameFit& f : fit.frames) f.tracked = false;
   EXPECT_EQ(IntervalDataOf(fit), IntervalData::kContours);
   fit.frames[0].tracked = true;

@@ -10,7 +10,10 @@ RegionalLimit RegionalLimitOf(const SequenceFit& fit) {
     return RegionalLimit::kNone;
   }
   const auto tracked = [](const FrameFit& f) { return f.tracked; };
-  const auto held = [](const FrameFit& f) { return f.depths_held; };
+  // Held or measured (the contours place the walls), the depths are no ring's.
+  const auto held = [](const FrameFit& f) {
+    return f.depths_held || f.depths_measured;
+  };
   const bool ranked =
       std::any_of(fit.frames.begin(), fit.frames.end(), tracked) &&
       std::none_of(fit.frames.begin(), fit.frames.end(), held);

@@ -6,7 +6,7 @@
 //
 // Measured (3,000 tags, seed 1, the segments' wall thickening at ES against
 // the phantom's truth, rms over the 12 basal and mid segments; held /
-// ranked): no noise 1.49 / 4.78 points (the ranks read the basal segments
+// ranked): no noise 1.41 / 4.78 points (the ranks read the basal segments
 // 5 high and the mid ones 4.5 low), 0.5 mm noise 2.81 / 3.66; seeds 2 and
 // 3, 0.24-1.51 against 0.31-2.15.  With segment 8 contracting at 40 % of
 // normal through the wall (0.5 mm noise, the local field moving every

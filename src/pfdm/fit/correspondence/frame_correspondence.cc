@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "pfdm/fit/correspondence/measured_depths.h"
 #include "pfdm/fit/correspondence/surface_grid.h"
 #include "pfdm/fit/correspondence/transmural.h"
 
@@ -11,7 +12,7 @@ namespace {
 
 // The points' depth ranks (QuantileDepths' bands or NeighbourhoodDepths),
 // among those within the wall widened by the outlier band when that is
-// positive.
+// positive; their measured depths where the contours place the walls.
 std::vector<double> RankedDepths(const Model& model,
                                  const std::vector<Eigen::Vector3d>& points,
                                  const std::vector<MaterialPoint>& material,
@@ -19,6 +20,7 @@ std::vector<double> RankedDepths(const Model& model,
   std::vector<Eigen::Vector3d> midwall;
   const std::vector<double> distances =
       MidwallDistances(model, points, material, &midwall);
+  if (ranking.measured) return MeasuredDepths(model, material, distances);
   const std::vector<bool> ranked =
       ranking.outlier_band_mm > 0.0
           ? WithinWall(model, material, distances, ranking.outlier_band_mm)

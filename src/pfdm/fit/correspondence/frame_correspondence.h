@@ -23,7 +23,8 @@ std::vector<MaterialPoint> Listed(const std::vector<MaterialPoint>& material,
 double MaxDistance(const std::vector<Eigen::Vector3d>& a,
                    const std::vector<Eigen::Vector3d>& b);
 
-// How tags through a wall get their depth w (transmural.h): ranked in their
+// How tags through a wall get their depth w (transmural.h): measured across
+// a wall the contours place (measured_depths.h), ranked in their
 // band of latitude (QuantileDepths), or among their nearest tags
 // (NeighbourhoodDepths: a solid with a transmural local field, where a
 // segment may move unlike its ring); with a robust loss, only the tags
@@ -34,6 +35,9 @@ struct DepthRanking {
   // UpdateClosest: a warm search keeps each assigned depth (the material
   // point's w) and seeks the tag on that layer alone, unranked.
   bool hold = false;
+  // The frame's contours place both walls (HasBothWalls): a tag's depth is
+  // where it lies across the fitted wall (MeasuredDepths), not its rank.
+  bool measured = false;
 };
 
 // Fills material[i] for the listed points with their closest material

@@ -52,7 +52,8 @@ double ShrunkDepth(double w_obs, double s);
 // wrong width shrinks the outer tags too much or too little (on the wall
 // segments' eight draws of 3,000 tags, with a = 1, the thickening's mean
 // error 0.4-1.0 points and 3.22 at worst; with a, 1.008-1.018 there,
-// -0.55 to -0.12 and 2.33).  Without noise (sigma_mm 0) a is 1.
+// -1.06 to -0.41 and 2.68, sigma from neighbouring tags' residuals,
+// wall_stage.h).  Without noise (sigma_mm 0) a is 1.
 std::vector<MaterialPoint> HeldMaterialPoints(
     const Model& reference, const std::vector<Eigen::Vector3d>& points,
     const std::vector<MaterialPoint>& material, double sigma_mm);

@@ -3,6 +3,7 @@
 #include <optional>
 #include <utility>
 
+#include "pfdm/fit/correspondence/measured_depths.h"
 #include "pfdm/fit/stages/apex_coverage.h"
 #include "pfdm/fit/stages/frame_fit.h"
 #include "pfdm/fit/stages/frame_verdict.h"
@@ -16,10 +17,13 @@ namespace pfdm {
 namespace {
 
 // A transmural local field ranks its tags among their neighbours instead
-// (FitOptions::hold_tag_depths).
-bool HoldsTagDepths(const FitOptions& options) {
+// (FitOptions::hold_tag_depths); where frame 0's contours place both walls
+// the tags' depths are measured (measured_depths.h), not ranked, and have
+// no ranks' noise to shrink.
+bool HoldsTagDepths(const FitOptions& options, const Frame& first) {
   return options.hold_tag_depths &&
-         !(options.local.enabled && options.local.transmural);
+         !(options.local.enabled && options.local.transmural) &&
+         !HasBothWalls(first);
 }
 
 // What a frame's fit changes of the carried state (the searches' grids and
@@ -55,9 +59,11 @@ bool TracksPoints(const Frame& frame, const TrackedMaterial& tracked) {
 
 // The first tracked frame of a solid's tags is fitted once with its tags
 // ranked, the global model only (the pilot), to measure their noise
-// (FrameTagNoiseMm), which the held depths need.  Frame 0's tags then take
-// their held depths (HoldTagDepths) and *carried is as it was before the
-// pilot, but for them.  Returns the pilot, whose cost is its frame's.
+// (FrameTagNoiseMm from neighbouring tags: the global model's misfit is not
+// noise the depths should be shrunk for), which the held depths need.  Frame
+// 0's tags then take their held depths (HoldTagDepths) and *carried is as it
+// was before the pilot, but for them.  Returns the pilot, whose cost is its
+// frame's.
 FrameFit FitPilot(const PointSequence& sequence, const Frame& frame,
                   const FramesPerId& frames_per_id, const FitOptions& options,
                   const FrameFit& first, WallDecision* wall,
@@ -69,9 +75,9 @@ FrameFit FitPilot(const PointSequence& sequence, const Frame& frame,
   FrameFit pilot = FitFrame(frame, false, frames_per_id, pilot_options,
                             sequence.source, wall, carried);
   const ModelConfig& config = before.model.config;
-  const std::optional<double> sigma =
-      FrameTagNoiseMm(GlobalModelOf(config, pilot), frame, pilot.material,
-                      frames_per_id, options.loss != "none");
+  const std::optional<double> sigma = FrameTagNoiseMm(
+      GlobalModelOf(config, pilot), frame, pilot.material, frames_per_id,
+      options.loss != "none", TagNoiseFrom::kNeighbours);
   before.Restore(carried);
   if (!sigma) return pilot;
   HoldTagDepths(sequence.frames[0], GlobalModelOf(config, first), *sigma,
@@ -110,9 +116,9 @@ SequenceFit FitSequence(const PointSequence& sequence,
   for (const Frame& frame : sequence.frames) {
     const bool reference = frame.index == sequence.frames[0].index;
     std::optional<FrameFit> pilot;
-    if (!reference && HoldsTagDepths(options) && start.has_tags &&
-        carried.model.config.Solid() && !carried.depths_held &&
-        TracksPoints(frame, carried.tracked_material)) {
+    if (!reference && HoldsTagDepths(options, sequence.frames[0]) &&
+        start.has_tags && carried.model.config.Solid() &&
+        !carried.depths_held && TracksPoints(frame, carried.tracked_material)) {
       pilot = FitPilot(sequence, frame, start.frames_per_id, options,
                        result.frames[0], &start.wall, &carried);
     }

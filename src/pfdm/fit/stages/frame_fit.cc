@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "pfdm/fit/correspondence/measured_depths.h"
 #include "pfdm/fit/stages/apex_coverage.h"
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/fit/stages/frame_uncertainty.h"
@@ -180,6 +181,10 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   fit.tracked = HasTrackedPoints(points);
   fit.depths_held = carried->depths_held && model.config.Solid() &&
                     points.kind == FrameKind::kTracked;
+  fit.mixed = points.kind == FrameKind::kTracked && !points.untracked.empty();
+  fit.depths_measured = model.config.Solid() && HasBothWalls(points.layer_w) &&
+                        std::any_of(points.is_tag.begin(), points.is_tag.end(),
+                                    [](bool tag) { return tag; });
   const FramePrior frame_prior = PriorOfFrame(
       points.kind, carried->reference, carried->previous,
       /*previous_is_reference=*/carried->frames_fitted <= 1, sequence_options);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "pfdm/fit/correspondence/frame_correspondence.h"
+#include "pfdm/fit/correspondence/measured_depths.h"
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/fit/problem/gauge.h"
 #include "pfdm/fit/stages/temporal_prior.h"
@@ -143,6 +144,7 @@ GlobalRounds::GlobalRounds(const FramePoints& frame, const ModelState& prior,
       fit_(fit),
       normals_(frame.positions.size(), Eigen::Vector3d::Zero()) {
   ranking_.neighbourhoods = options.local.enabled && options.local.transmural;
+  ranking_.measured = HasBothWalls(frame.layer_w);
   ranks_tags_ =
       std::any_of(frame.untracked.begin(), frame.untracked.end(),
                   [&frame](size_t i) { return frame.assign_depth[i]; });
@@ -172,8 +174,11 @@ void GlobalRounds::Start() {
   // the previous frame's fit:
   // a predictor's step from frame 0's depths instead read the wall
   // segment's thickening 3.1-3.3 points high (lv_wall_segment_test).
-  rerank_depths_ =
-      model_->config.Solid() && !frame_.tracked.empty() && !hold_depths_;
+  // Measured depths (the contours place the walls) are material, as held
+  // ones: measured again against the previous frame's walls, a tag would
+  // read its own motion as depth.
+  rerank_depths_ = model_->config.Solid() && !frame_.tracked.empty() &&
+                   !hold_depths_ && !ranking_.measured;
   if (rerank_depths_) {
     RerankDepths(*model_, frame_.positions, frame_.tracked, &fit_->material,
                  ranking_);

@@ -40,6 +40,12 @@ struct FrameFit {
   // A solid's tracked frame whose tags kept frame 0's depths
   // (held_depths.h) rather than this frame's ranks.
   bool depths_held = false;
+  // A solid's frame whose tags took their depths from where they lie across
+  // the walls its contours place (measured_depths.h), not from ranks.
+  bool depths_measured = false;
+  // A tracked frame with untracked points beside its tracked ones
+  // (contours and tags in one fit).
+  bool mixed = false;
   // When the rounds ran out (FitOptions::max_correspondence_rounds) with
   // closest points still moving by the tolerance or more: how far the last
   // search moved one (mm), the fit resting on correspondences that had not

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "pfdm/fit/correspondence/held_depths.h"
+#include "pfdm/fit/correspondence/neighbour_noise.h"
 #include "pfdm/fit/correspondence/transmural.h"
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/util/error.h"
@@ -194,7 +195,7 @@ Model GlobalModelOf(const ModelConfig& config, const FrameFit& frame) {
 std::optional<double> FrameTagNoiseMm(
     const Model& global, const Frame& frame,
     const std::vector<MaterialPoint>& material,
-    const FramesPerId& frames_per_id, bool robust) {
+    const FramesPerId& frames_per_id, bool robust, TagNoiseFrom from) {
   // Tracked tags only: a contour point's closest point leaves it no
   // residual along the wall.
   std::vector<size_t> tags;
@@ -202,9 +203,14 @@ std::optional<double> FrameTagNoiseMm(
     if (frames_per_id.at(frame.points[i].id) > 1) tags.push_back(i);
   }
   if (tags.empty()) return std::nullopt;
-  return TangentialNoiseMm(global,
-                           Residuals(global, Positions(frame), material),
-                           material, tags, robust);
+  const std::vector<Eigen::Vector3d> positions = Positions(frame);
+  const std::vector<Eigen::Vector3d> residuals =
+      Residuals(global, positions, material);
+  if (from == TagNoiseFrom::kNeighbours) {
+    return NeighbourTangentialNoiseMm(global, positions, residuals, material,
+                                      tags, robust);
+  }
+  return TangentialNoiseMm(global, residuals, material, tags, robust);
 }
 
 void HoldTagDepths(const Frame& first, const Model& reference, double sigma_mm,
@@ -242,7 +248,7 @@ void TakeOutTagNoise(const PointSequence& sequence,
   result->tag_noise_mm = std::sqrt(sum_squared / frames);
   for (size_t t = 0; t < result->frames.size(); ++t) {
     FrameFit& frame = result->frames[t];
-    if (frame.depths_held) continue;
+    if (frame.depths_held || frame.depths_measured) continue;
     Model model{result->config, frame.state};
     // Frame 0 and frames without tracked points hold the squeeze at 0.
     const bool squeezed =

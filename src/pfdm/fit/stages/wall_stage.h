@@ -55,15 +55,21 @@ bool DecideWallFromTags(const FramePoints& frame,
 // before, on the LV phantom's tags through the wall).
 Model GlobalModelOf(const ModelConfig& config, const FrameFit& frame);
 
+// What a frame's tags' noise is read from: each tag's residual, the
+// model's misfit included (TangentialNoiseMm), or the differences of
+// neighbouring tags' residuals, without its smooth part
+// (NeighbourTangentialNoiseMm), which held depths' shrinkage needs.
+enum class TagNoiseFrom { kResiduals, kNeighbours };
+
 // The noise (mm per coordinate) of a tracked frame's tags, those of its
 // points seen in more than one frame, across their wall normals on the
-// frame's global model (TangentialNoiseMm: the local field fits part of the
-// noise); none without tags.  `robust` (a fit with a robust loss): measured
-// robustly.
+// frame's global model (the local field fits part of the noise); none
+// without tags.  `robust` (a fit with a robust loss): measured robustly.
 std::optional<double> FrameTagNoiseMm(
     const Model& global, const Frame& frame,
     const std::vector<MaterialPoint>& material,
-    const FramesPerId& frames_per_id, bool robust = false);
+    const FramesPerId& frames_per_id, bool robust = false,
+    TagNoiseFrom from = TagNoiseFrom::kResiduals);
 
 // Each of frame 0's (`first`'s) tags in *tracked_material takes its held
 // depth (HeldDepths) on `reference`, frame 0's global model, for noise of
@@ -75,8 +81,8 @@ void HoldTagDepths(const Frame& first, const Model& reference, double sigma_mm,
 // thin wall's more (DeconvolvedThickness): measures the noise on the
 // tracked frames (FrameTagNoiseMm) and takes it out of the h of every
 // frame that ranked them (frame 0 always; a tracked frame unless its
-// depths were held, which are free of it), then summarizes the frames
-// again.
+// depths were held, which are free of it; no frame whose contours placed
+// the walls, measured_depths.h), then summarizes the frames again.
 void TakeOutTagNoise(const PointSequence& sequence,
                      const FramesPerId& frames_per_id, SequenceFit* result,
                      bool robust = false);

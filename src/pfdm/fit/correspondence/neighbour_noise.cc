@@ -1,0 +1,48 @@
+#include "pfdm/fit/correspondence/neighbour_noise.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pfdm/util/point_cloud_tree.h"
+
+namespace pfdm {
+
+double NeighbourTangentialNoiseMm(const Model& model,
+                                  const std::vector<Eigen::Vector3d>& positions,
+                                  const std::vector<Eigen::Vector3d>& residuals,
+                                  const std::vector<MaterialPoint>& material,
+                                  const std::vector<size_t>& which,
+                                  bool robust) {
+  if (which.size() < 2) return 0.0;
+  PointCloud cloud;
+  std::vector<MaterialPoint> tag_material;
+  for (size_t i : which) {
+    cloud.points.push_back(positions[i]);
+    tag_material.push_back(material[i]);
+  }
+  PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree.buildIndex();
+  const std::vector<Eigen::Vector3d> normals =
+      SurfaceNormals(model, tag_material);
+  std::vector<double> squares;
+  squares.reserve(which.size());
+  for (size_t k = 0; k < which.size(); ++k) {
+    unsigned int nearest[2];
+    double distance_squared[2];
+    tree.knnSearch(cloud.points[k].data(), 2, nearest, distance_squared);
+    const size_t j = nearest[0] == k ? nearest[1] : nearest[0];
+    Eigen::Vector3d d = residuals[which[k]] - residuals[which[j]];
+    d -= d.dot(normals[k]) * normals[k];
+    squares.push_back(d.squaredNorm());
+  }
+  if (!robust) {
+    double sum = 0.0;
+    for (double s : squares) sum += s;
+    return std::sqrt(sum / (8.0 * squares.size()));
+  }
+  const auto middle = squares.begin() + squares.size() / 2;
+  std::nth_element(squares.begin(), middle, squares.end());
+  return std::sqrt(*middle / (8.0 * std::log(2.0)));
+}
+
+}  // namespace pfdm

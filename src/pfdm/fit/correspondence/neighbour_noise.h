@@ -1,0 +1,42 @@
+// The tags' localization noise from neighbouring tags' residuals, for held
+// depths (held_depths.h), which read the model's misfit as noise otherwise.
+//
+// TangentialNoiseMm (transmural.h) takes every tangential residual for
+// noise: a global model's smooth misfit too, which read 0.15-0.21 mm of
+// "noise" on the LV phantom's noise-free tags through the wall (400 tags),
+// shrank their held depths toward the mid-wall and read the noise-free
+// fit's thickening high.  Two tags a few millimetres apart share the smooth
+// misfit and not their noise, so the difference of their residuals is the
+// noise's: 0.07-0.10 mm there, 0.45-0.50 with 0.5 mm of noise.
+#ifndef PFDM_FIT_CORRESPONDENCE_NEIGHBOUR_NOISE_H_
+#define PFDM_FIT_CORRESPONDENCE_NEIGHBOUR_NOISE_H_
+
+#include <vector>
+
+#include "Eigen/Core"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/model/model.h"
+
+namespace pfdm {
+
+// Localization noise (mm per coordinate, isotropic) of tracked tags
+// `which`, at `positions` with `residuals` on `model`: for each tag i its
+// nearest tag j (by position), d = the part of r_i - r_j across n_i, the
+// normal of i's layer.  Each tangential component of a residual carries
+// this frame's noise and frame 0's (through the tag's (u, v)), variance
+// 2 sigma^2, the difference 4 sigma^2, so |d|^2 is 4 sigma^2 times a
+// chi-squared of 2 degrees of freedom:
+//
+//   sigma^2 = mean |d|^2 / 8,   robust: median |d|^2 / (8 ln 2).
+//
+// 0 for fewer than two tags.
+double NeighbourTangentialNoiseMm(const Model& model,
+                                  const std::vector<Eigen::Vector3d>& positions,
+                                  const std::vector<Eigen::Vector3d>& residuals,
+                                  const std::vector<MaterialPoint>& material,
+                                  const std::vector<size_t>& which,
+                                  bool robust = false);
+
+}  // namespace pfdm
+
+#endif  // PFDM_FIT_CORRESPONDENCE_NEIGHBOUR_NOISE_H_

@@ -1,0 +1,77 @@
+#include "pfdm/fit/correspondence/neighbour_noise.h"
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "gtest/gtest.h"
+#include "pfdm/fit/correspondence/transmural.h"
+#include "pfdm/testing/test_models.h"
+
+namespace pfdm {
+namespace {
+
+// Tags on a spheroid's mid-wall with residuals of noise 0.5 mm per
+// coordinate in each frame (0.5 sqrt(2) per tangential direction) on top of
+// a misfit that varies smoothly over the surface, 0.6 mm at most.
+struct Tags {
+  std::vector<MaterialPoint> material;
+  std::vector<Eigen::Vector3d> positions, residuals;
+  std::vector<size_t> which;
+};
+Tags NoisyTags(const Model& model, double noise_mm, double misfit_mm) {
+  std::mt19937 random(5);
+  std::normal_distribution<double> noise(0.0, noise_mm * std::sqrt(2.0));
+  std::uniform_real_distribution<double> u(-1.2, 0.4), v(-3.1, 3.1);
+  Tags tags;
+  for (int i = 0; i < 3000; ++i) {
+    const MaterialPoint m{u(random), v(random), 0.0};
+    tags.material.push_back(m);
+    tags.positions.push_back(model.WorldPoint(m.u, m.v));
+    const Eigen::Vector3d misfit =
+        misfit_mm * Eigen::Vector3d(std::sin(2.0 * m.v), std::cos(m.u),
+                                    std::sin(m.u + m.v));
+    tags.residuals.push_back(
+        misfit + Eigen::Vector3d(noise(random), noise(random), noise(random)));
+    tags.which.push_back(i);
+  }
+  return tags;
+}
+
+TEST(NeighbourNoiseTest, LeavesTheSmoothMisfitOut) {
+  const Model model = TestSpheroid(9);
+  const Tags tags = NoisyTags(model, 0.5, 0.6);
+  const double neighbours = NeighbourTangentialNoiseMm(
+      model, tags.positions, tags.residuals, tags.material, tags.which);
+  const double robust = NeighbourTangentialNoiseMm(
+      model, tags.positions, tags.residuals, tags.material, tags.which, true);
+  std::printf("noise from neighbours %.3f (robust %.3f) mm\n", neighbours,
+              robust);
+  EXPECT_NEAR(neighbours, 0.5, 0.02);
+  EXPECT_NEAR(robust, 0.5, 0.03);
+  // Each residual alone reads the misfit as noise.
+  EXPECT_GT(TangentialNoiseMm(model, tags.residuals, tags.material, tags.which),
+            0.56);
+}
+
+TEST(NeighbourNoiseTest, ReadsLittleWithoutNoise) {
+  const Model model = TestSpheroid(9);
+  const Tags tags = NoisyTags(model, 0.0, 0.6);
+  EXPECT_LT(NeighbourTangentialNoiseMm(model, tags.positions, tags.residuals,
+                                       tags.material, tags.which),
+            0.03);
+  EXPECT_GT(TangentialNoiseMm(model, tags.residuals, tags.material, tags.which),
+            0.15);
+}
+
+TEST(NeighbourNoiseTest, NoneForFewerThanTwoTags) {
+  const Model model = TestSpheroid(9);
+  const Tags tags = NoisyTags(model, 0.5, 0.0);
+  EXPECT_EQ(NeighbourTangentialNoiseMm(model, tags.positions, tags.residuals,
+                                       tags.material, {0}),
+            0.0);
+}
+
+}  // namespace
+}  // namespace pfdm
