@@ -13,6 +13,8 @@
 // tags ranked over the wall, EDV read 114.6-116.2 ml, EF 0.600-0.607 and
 // thickening 52 %, every frame's verdict ok.  Tags through the wall with
 // the contours: EDV 105.2-106.6, ESV 43.2-44.8, thickening 36.4-37.2 %.
+// Mid-wall tags beside one wall's contours stay one surface, between the
+// two, and fail (frame_verdict.h, two_surfaces).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -64,11 +66,13 @@ struct Mixed {
   FitAnalysis analysis;
   LvPhantom tags;
 };
-Mixed FitMixed(LvTagLayer layer, int seed) {
+// Tags of `layer` and contours of `walls` (both, or one wall's).
+Mixed FitMixed(LvTagLayer layer, int seed,
+               LvTagLayer walls = LvTagLayer::kWall) {
   Mixed mixed;
   mixed.tags = MakeLvPhantom(Options(layer, LvSampling::kTags, seed));
   const LvPhantom contours =
-      MakeLvPhantom(Options(LvTagLayer::kWall, LvSampling::kSaxSlices, seed));
+      MakeLvPhantom(Options(walls, LvSampling::kSaxSlices, seed));
   mixed.fit = FitSequence(Merged(mixed.tags.points, contours.points),
                           ModelConfig::Paper(9), FitOptions());
   mixed.analysis = AnalyzeFit(mixed.fit);
@@ -103,7 +107,31 @@ TEST(LvMixedDataTest, MidwallTagsBesideBothWallsContours) {
                 es.mean_radial_contraction_percent, 1.5);
     // Neither kind's calibration claims a mix.
     EXPECT_EQ(IntervalDataOf(m.fit), IntervalData::kOther);
+    for (const FrameFit& frame : m.fit.frames) {
+      EXPECT_FALSE(frame.verdict.Has("two_surfaces"));
+    }
   }
+}
+
+// Mid-wall tags beside one wall's contours: no solid (the tags spread 1.6
+// mm across the wall), one surface between the two, which is neither the
+// cavity nor the mid-wall (EDV 133.7 ml beside the endocardium's contours,
+// against 106.9 and 163.1).  Every frame fails on it.
+TEST(LvMixedDataTest, MidwallTagsBesideOneWallsContoursFail) {
+  for (LvTagLayer wall : {LvTagLayer::kEndocardium, LvTagLayer::kEpicardium}) {
+    const Mixed m = FitMixed(LvTagLayer::kMidwall, 0, wall);
+    ASSERT_FALSE(m.fit.config.Solid());
+    for (const FrameFit& frame : m.fit.frames) {
+      EXPECT_TRUE(frame.verdict.Has("two_surfaces"))
+          << LvTagLayerName(wall) << " frame " << frame.frame << ": "
+          << frame.verdict.Summary();
+      EXPECT_EQ(frame.verdict.quality(), Quality::kFailed);
+    }
+  }
+  // Tags through the wall make a solid beside either wall's contours.
+  const Mixed solid = FitMixed(LvTagLayer::kWall, 0, LvTagLayer::kEndocardium);
+  ASSERT_TRUE(solid.fit.config.Solid());
+  EXPECT_FALSE(solid.fit.frames[1].verdict.Has("two_surfaces"));
 }
 
 TEST(LvMixedDataTest, TagsThroughTheWallBesideBothWallsContours) {

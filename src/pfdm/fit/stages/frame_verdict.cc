@@ -355,6 +355,39 @@ void JudgeAxis(const Frame& points, const Model& model, Verdict* verdict) {
                        length.DegreesFrom(axis), length.ratio));
 }
 
+// One surface through tags and contours that lie on two: the tags'
+// (points seen in several frames) mean signed distance along the normal
+// against the contours' (seen once).
+void JudgeTwoSurfaces(const Frame& points, const FramesPerId& frames_per_id,
+                      const Model& model, const FrameFit& frame,
+                      Verdict* verdict) {
+  if (model.config.Solid()) return;
+  std::vector<bool> is_tag;
+  for (const DataPoint& p : points.points) {
+    is_tag.push_back(frames_per_id.at(p.id) > 1);
+  }
+  const auto num_tags = std::count(is_tag.begin(), is_tag.end(), true);
+  if (num_tags == 0 || num_tags == static_cast<long>(is_tag.size())) return;
+  const std::vector<Eigen::Vector3d> normals =
+      SurfaceNormals(model, frame.material);
+  double tags = 0.0, contours = 0.0;
+  for (size_t i = 0; i < is_tag.size(); ++i) {
+    // Residuals are model minus data: data outward read negative.
+    const double outward = -frame.residuals[i].dot(normals[i]);
+    (is_tag[i] ? tags : contours) += outward;
+  }
+  const auto num_contours = static_cast<long>(is_tag.size()) - num_tags;
+  const double apart = tags / num_tags - contours / num_contours;
+  if (std::abs(apart) <= kTwoSurfacesMm) return;
+  verdict->Fail("two_surfaces",
+                Format("the tags lie %.1f mm ", std::abs(apart)) +
+                    (apart > 0.0 ? "outward" : "inward") +
+                    " of the contours, on another surface: one surface "
+                    "between them is neither (both walls' contours make a "
+                    "solid that places the tags across the wall; or fit "
+                    "them apart)");
+}
+
 void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
   if (spreads[0] >= kFlatDataRatio * spreads[2]) return;
   verdict->Fail("flat_data",
@@ -386,6 +419,7 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
   std::vector<double> rms;
   for (const FrameFit& frame : fit->frames) rms.push_back(JudgedRmsMm(frame));
   const double median_rms = Median(rms);
+  const FramesPerId frames_per_id = CountFramesPerId(sequence);
   const double reference_span =
       fit->frames.empty()
           ? 0.0
@@ -421,6 +455,8 @@ void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
     }
     JudgeAxis(sequence.frames[t], fit->ModelAt(t), &frame.verdict);
     JudgeShape(spreads, &frame.verdict);
+    JudgeTwoSurfaces(sequence.frames[t], frames_per_id, fit->ModelAt(t), frame,
+                     &frame.verdict);
   }
 }
 
