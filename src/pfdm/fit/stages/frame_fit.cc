@@ -181,7 +181,7 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   fit.tracked = HasTrackedPoints(points);
   fit.depths_held = carried->depths_held && model.config.Solid() &&
                     points.kind == FrameKind::kTracked;
-  fit.mixed = points.kind == FrameKind::kTracked && !points.untracked.empty();
+  fit.mixed = HasContoursBesideTags(points);
   fit.depths_measured = model.config.Solid() && HasBothWalls(points.layer_w) &&
                         std::any_of(points.is_tag.begin(), points.is_tag.end(),
                                     [](bool tag) { return tag; });

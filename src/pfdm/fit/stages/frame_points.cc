@@ -1,5 +1,7 @@
 #include "pfdm/fit/stages/frame_points.h"
 
+#include <algorithm>
+
 #include "Eigen/Dense"
 
 namespace pfdm {
@@ -50,6 +52,17 @@ FramePoints MakeFramePoints(const Frame& frame, bool reference,
                 : points.untracked.size() == n ? FrameKind::kUntracked
                                                : FrameKind::kTracked;
   return points;
+}
+
+bool HasContoursBesideTags(const FramePoints& points) {
+  if (points.kind != FrameKind::kTracked) return false;
+  const auto labelled = [](double w) { return w != 0.0; };
+  if (std::any_of(points.layer_w.begin(), points.layer_w.end(), labelled)) {
+    return true;
+  }
+  const auto once =
+      std::count(points.is_tag.begin(), points.is_tag.end(), false);
+  return once > kMixedShare * points.is_tag.size();
 }
 
 std::vector<Eigen::Vector3d> Positions(const Frame& frame) {

@@ -52,6 +52,13 @@ FramePoints MakeFramePoints(const Frame& frame, bool reference,
                             const TrackedMaterial& tracked_material,
                             std::vector<MaterialPoint>* material);
 
+// Whether a tracked frame has contours beside its tags: points labelled on
+// a wall, or over kMixedShare of its points seen in this frame alone (a
+// tracker loses a few tags to one frame; a contour's points are all seen
+// once).
+constexpr double kMixedShare = 0.1;
+bool HasContoursBesideTags(const FramePoints& points);
+
 std::vector<Eigen::Vector3d> Positions(const Frame& frame);
 
 // The principal standard deviations of the frame's points about their

@@ -75,6 +75,28 @@ TEST(FramePointsTest, ALaterFrameKeepsItsTagsMaterialPoints) {
   EXPECT_EQ(material[2].w, -0.6);
 }
 
+// Contours beside tags in a tracked frame: labelled points, or more than a
+// tenth of the frame seen in it alone; a tag lost to one frame is neither.
+TEST(FramePointsTest, ContoursBesideTagsInATrackedFrame) {
+  const PointSequence sequence = TagsAndContours();
+  TrackedMaterial tracked;
+  tracked[1] = tracked[2] = {0.1, 0.2, 0.3};
+  std::vector<MaterialPoint> material;
+  FramePoints points =
+      MakeFramePoints(sequence.frames[1], /*reference=*/false,
+                      CountFramesPerId(sequence), tracked, &material);
+  EXPECT_TRUE(HasContoursBesideTags(points));
+  points.layer_w.assign(4, 0.0);  // Unlabelled: half the frame seen once.
+  EXPECT_TRUE(HasContoursBesideTags(points));
+  points.layer_w.assign(20, 0.0);
+  points.is_tag.assign(20, true);
+  points.is_tag[7] = false;  // One tag in 20 lost to this frame.
+  EXPECT_FALSE(HasContoursBesideTags(points));
+  points.kind = FrameKind::kReference;
+  points.is_tag[8] = points.is_tag[9] = false;
+  EXPECT_FALSE(HasContoursBesideTags(points));
+}
+
 TEST(FramePointsTest, AFrameWithoutTrackedPointsIsUntracked) {
   const PointSequence sequence = TagsAndContours();
   std::vector<MaterialPoint> material;

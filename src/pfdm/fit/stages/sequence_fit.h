@@ -43,8 +43,8 @@ struct FrameFit {
   // A solid's frame whose tags took their depths from where they lie across
   // the walls its contours place (measured_depths.h), not from ranks.
   bool depths_measured = false;
-  // A tracked frame with untracked points beside its tracked ones
-  // (contours and tags in one fit).
+  // A tracked frame with contours beside its tags (HasContoursBesideTags):
+  // tags and contours in one fit.
   bool mixed = false;
   // When the rounds ran out (FitOptions::max_correspondence_rounds) with
   // closest points still moving by the tolerance or more: how far the last
