@@ -25,18 +25,17 @@
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/interval_calibration.h"
+#include "pfdm/testing/lv_interval_cases.h"
 
 namespace pfdm {
 namespace {
 
+// The interval calibration's draws (ED and ES, 3 long-axis planes beside
+// the slices), at 400 tags whatever PFDM_CALIBRATION_POINTS says.
 LvPhantomOptions Options(LvTagLayer layer, LvSampling sampling, int seed) {
-  LvPhantomOptions options;
-  options.num_frames = 2;
+  LvPhantomOptions options =
+      interval_cases::PhantomOptions({layer, sampling}, seed);
   options.num_tags = 400;
-  options.tags = layer;
-  options.sampling = sampling;
-  if (sampling == LvSampling::kSaxSlices) options.num_long_axis_planes = 3;
-  options.seed = 1000 + seed;
   return options;
 }
 

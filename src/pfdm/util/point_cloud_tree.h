@@ -23,6 +23,16 @@ struct PointCloud {
 using PointCloudTree = nanoflann::KDTreeSingleIndexAdaptor<
     nanoflann::L2_Simple_Adaptor<double, PointCloud>, PointCloud, 3>;
 
+// The point of `cloud` (the tree's) nearest its point i, other than i.
+// The cloud has at least two points.
+inline size_t NearestOther(const PointCloudTree& tree, const PointCloud& cloud,
+                           size_t i) {
+  unsigned int nearest[2];
+  double distance_squared[2];
+  tree.knnSearch(cloud.points[i].data(), 2, nearest, distance_squared);
+  return nearest[0] == i ? nearest[1] : nearest[0];
+}
+
 }  // namespace pfdm
 
 #endif  // PFDM_UTIL_POINT_CLOUD_TREE_H_

@@ -27,10 +27,7 @@ double NeighbourTangentialNoiseMm(const Model& model,
   std::vector<double> squares;
   squares.reserve(which.size());
   for (size_t k = 0; k < which.size(); ++k) {
-    unsigned int nearest[2];
-    double distance_squared[2];
-    tree.knnSearch(cloud.points[k].data(), 2, nearest, distance_squared);
-    const size_t j = nearest[0] == k ? nearest[1] : nearest[0];
+    const size_t j = NearestOther(tree, cloud, k);
     Eigen::Vector3d d = residuals[which[k]] - residuals[which[j]];
     d -= d.dot(normals[k]) * normals[k];
     squares.push_back(d.squaredNorm());

@@ -130,10 +130,7 @@ double WallSpreadMm(const std::vector<Eigen::Vector3d>& midwall_points,
   double sum_squared = 0.0;
   size_t pairs = 0;
   for (size_t i = 0; i < num_points; i += stride, ++pairs) {
-    unsigned int nearest[2];
-    double distance_squared[2];
-    tree.knnSearch(sample.cloud.points[i].data(), 2, nearest, distance_squared);
-    const size_t j = nearest[0] == i ? nearest[1] : nearest[0];
+    const size_t j = NearestOther(tree, sample.cloud, i);
     const double difference = sample.distances[i] - sample.distances[j];
     sum_squared += difference * difference;
   }
@@ -208,11 +205,7 @@ double InlierSpreadMm(const NeighbourCloud& sample,
                         nanoflann::KDTreeSingleIndexAdaptorParams(10));
       kept_tree->buildIndex();
     }
-    unsigned int nearest[2];
-    double distance_squared[2];
-    kept_tree->knnSearch(kept_cloud.points[r].data(), 2, nearest,
-                         distance_squared);
-    return kept[nearest[0] == r ? nearest[1] : nearest[0]];
+    return kept[NearestOther(*kept_tree, kept_cloud, r)];
   };
   // As WallSpreadMm: every stride-th inlier's pair.
   const size_t stride = StrideForAtMost(kept.size(), kMaxSpreadPairs);

@@ -145,7 +145,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
   CheckInterrupt(options.solver);
   WeighPoints(options.loss, &result);
   MeasureApexCoverage(Positions(sequence.frames[0]), &result);
-  JudgeFrames(sequence, options, &result);
+  JudgeFrames(sequence, start.frames_per_id, options, &result);
   result.checks_seconds = SecondsSince(checks_time);
   return result;
 }

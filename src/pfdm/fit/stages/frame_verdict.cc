@@ -8,6 +8,7 @@
 
 #include "Eigen/Dense"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/correspondence/measured_depths.h"
 #include "pfdm/fit/problem/frame_problem.h"
 #include "pfdm/fit/stages/cloud_length.h"
 #include "pfdm/fit/stages/frame_points.h"
@@ -84,13 +85,7 @@ void JudgeUnsettled(const FrameFit& frame, double median_rms,
 // Whether one surface was fitted to a frame with both walls' contours: its
 // RMS is then about half the wall's thickness, whatever the fit does.
 bool BothWallsOnOneSurface(const Frame& points, const ModelConfig& config) {
-  if (config.Solid()) return false;
-  bool endo = false, epi = false;
-  for (const DataPoint& p : points.points) {
-    endo = endo || p.layer == WallLayer::kEndocardium;
-    epi = epi || p.layer == WallLayer::kEpicardium;
-  }
-  return endo && epi;
+  return !config.Solid() && HasBothWalls(points);
 }
 
 // The RMS against the other frames' and against the data's size: the
@@ -414,12 +409,12 @@ double RmsMoveMm(const Model& before, const Model& after,
   return std::sqrt(sum / from.size());
 }
 
-void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
+void JudgeFrames(const PointSequence& sequence,
+                 const FramesPerId& frames_per_id, const FitOptions& options,
                  SequenceFit* fit) {
   std::vector<double> rms;
   for (const FrameFit& frame : fit->frames) rms.push_back(JudgedRmsMm(frame));
   const double median_rms = Median(rms);
-  const FramesPerId frames_per_id = CountFramesPerId(sequence);
   const double reference_span =
       fit->frames.empty()
           ? 0.0

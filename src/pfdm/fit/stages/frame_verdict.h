@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "pfdm/fit/fit_options.h"
+#include "pfdm/fit/stages/frame_points.h"
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/util/point_data.h"
 
@@ -82,9 +83,10 @@ constexpr size_t kMoveSamples = 4096;
 double RmsMoveMm(const Model& before, const Model& after,
                  const std::vector<MaterialPoint>& material);
 
-// Adds the fit's reasons to every frame's verdict.
-// `options` as the fit had them.
-void JudgeFrames(const PointSequence& sequence, const FitOptions& options,
+// Adds the fit's reasons to every frame's verdict.  `frames_per_id` the
+// sequence's (CountFramesPerId), `options` as the fit had them.
+void JudgeFrames(const PointSequence& sequence,
+                 const FramesPerId& frames_per_id, const FitOptions& options,
                  SequenceFit* fit);
 
 }  // namespace pfdm

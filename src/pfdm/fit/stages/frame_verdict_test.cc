@@ -34,7 +34,8 @@ SequenceFit Judged(const std::function<void(SequenceFit*)>& change) {
   change(&copy);
   FitOptions no_prior;
   no_prior.prior_weight = 0.0;
-  JudgeFrames(SmallPhantom().points, no_prior, &copy);
+  const PointSequence& points = SmallPhantom().points;
+  JudgeFrames(points, CountFramesPerId(points), no_prior, &copy);
   return copy;
 }
 
@@ -379,7 +380,7 @@ TEST(FrameVerdictTest, FailsFlatData) {
   }
   SequenceFit fit = Judged([](SequenceFit*) {});
   for (FrameFit& frame : fit.frames) frame.verdict = Verdict();
-  JudgeFrames(flat, FitOptions(), &fit);
+  JudgeFrames(flat, CountFramesPerId(flat), FitOptions(), &fit);
   EXPECT_TRUE(fit.frames[0].verdict.Has("flat_data"));
   EXPECT_EQ(fit.frames[0].verdict.quality(), Quality::kFailed);
 }
