@@ -5,8 +5,8 @@
 // "first_tracked_ms" frame 1 (a solid's: its pilot fit, whose tags' noise
 // the held depths need, fitter.cc, then its fit), "frame_ms" frame 2, a
 // tracked frame as every later one is, "solves" and "iterations" its solves
-// (a solid's ranked, the default: the predictor's step, its tags ranked,
-// the solve; held, --tag_depths held: one) and their steps,
+// (a solid's ranked, --tag_depths ranked: the predictor's step, its tags
+// ranked, the solve; held, the default: one) and their steps,
 // "per_point_ns" its evaluation time (residuals and Jacobians) per tag and
 // iteration.  Each configuration runs three times; read the medians.
 #include "benchmark/benchmark.h"

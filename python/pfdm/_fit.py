@@ -76,7 +76,7 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         rest_tolerance=1e-6, max_steps=20000, damping="model",
         damping_scale="", jacobian="analytic", local=True,
         local_grid=(13, 24), local_stiffness=0.02, local_transmural=False,
-        tag_depths="ranked", uncertainty=False):
+        tag_depths="held", uncertainty=False):
     """Fits every frame, as ``pfdm fit`` does with the flags of the same names.
 
     Parameters
@@ -165,8 +165,8 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         their neighbours: regional defects through the wall show.
     tag_depths : str
         A solid's tags through the wall keep frame 0's depth in every frame,
-        as they keep its material point ("held"), or are ranked across the
-        wall in each ("ranked").  With ``local_transmural`` they are ranked
+        as they keep its material point ("held", the default), or are ranked
+        across the wall in each ("ranked").  With ``local_transmural`` they are ranked
         among their neighbours; beside both walls' contours their depths
         are measured across the walls the contours place, either way.
     uncertainty : bool

@@ -57,9 +57,13 @@ def test_tags_through_the_wall_fit_a_solid(wall_tags):
 
 def test_segments_say_what_they_cannot_show_through_the_wall(wall_tags):
     _, csv = wall_tags
+    # Held depths (the default): the motion shows, the thickening is the
+    # ring's; ranked, the segment reads as its ring.
     through = pfdm.fit(str(csv), local=False).segments["through_the_wall"]
-    assert "reads as its ring" in through
+    assert "its motion does" in through
     assert "--local_transmural on" in through
+    ranked = pfdm.fit(str(csv), local=False, tag_depths="ranked")
+    assert "reads as its ring" in ranked.segments["through_the_wall"]
     transmural = pfdm.fit(str(csv), local_transmural="on").segments
     assert "through_the_wall" not in transmural
 
@@ -165,12 +169,13 @@ def test_local_transmural_as_a_keyword(wall_tags):
 
 def test_tag_depths_as_a_keyword(wall_tags):
     """--tag_depths as a keyword: in the settings and each tracked frame's
-    entry; held, a tracked frame after the first is one solve (no ranking);
+    entry; held (the default), a tracked frame after the first is one solve
+    (no ranking);
     the CLI's flag gives the same fit; a bad value, or one beside
     --local_transmural on, names the keyword."""
     folder, csv = wall_tags
-    ranked = pfdm.fit(str(csv), local=False)
-    held = pfdm.fit(str(csv), local=False, tag_depths="held")
+    ranked = pfdm.fit(str(csv), local=False, tag_depths="ranked")
+    held = pfdm.fit(str(csv), local=False)
     assert ranked.to_dict()["settings"]["tag_depths"] == "ranked"
     assert held.to_dict()["settings"]["tag_depths"] == "held"
     frames = held.to_dict()["frames"]
@@ -179,13 +184,13 @@ def test_tag_depths_as_a_keyword(wall_tags):
     assert [f["tag_depths"] for f in frames[1:]] == ["held"] * (len(frames) - 1)
     assert ranked.to_dict()["frames"][1]["tag_depths"] == "ranked"
     assert frames[2]["correspondence_rounds"] == 1
-    code, _, err = run_cli("fit", "--tag_depths", "held", "--local", "off",
-                           "--points", csv, "--out", folder / "cli_held")
+    code, _, err = run_cli("fit", "--tag_depths", "ranked", "--local", "off",
+                           "--points", csv, "--out", folder / "cli_ranked")
     assert code == 0, err
-    cli = json.loads((folder / "cli_held" / "fit.json").read_text())
-    ours = held.to_dict()
+    cli = json.loads((folder / "cli_ranked" / "fit.json").read_text())
+    ours = ranked.to_dict()
     assert without_timing(ours) == without_timing(cli)
     with pytest.raises(pfdm.InputError, match="tag_depths"):
         pfdm.fit(str(csv), tag_depths="kept")
     with pytest.raises(pfdm.InputError, match="tag_depths"):
-        pfdm.fit(str(csv), local_transmural=True, tag_depths="held")
+        pfdm.fit(str(csv), local_transmural=True, tag_depths="ranked")

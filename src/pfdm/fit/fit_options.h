@@ -107,15 +107,13 @@ struct FitOptions {
   // model's whole length.
   double incompressible_u_low = 0.0, incompressible_u_high = 0.0;
   // A solid's tags keep frame 0's depth across the wall in every tracked
-  // frame, as they keep its (u, v) (held_depths.h; --tag_depths held),
-  // rather than being ranked anew in each (ranked, the default): ranks take
-  // up a segment's own motion, so that a hypokinetic one through the wall
-  // reads like its ring.  Not yet the default: one seed of the prolate
-  // wall segment at 1,500 tags reads 4 points high, and the intervals'
-  // tables and claims are the ranks' (docs/gauge.md).  A transmural local
-  // field (LocalOptions::transmural) ranks its tags among their neighbours
-  // in every frame instead.
-  bool hold_tag_depths = false;
+  // frame, as they keep its (u, v) (held_depths.h; --tag_depths held, the
+  // default), rather than being ranked anew in each (ranked): ranks take up
+  // a segment's own motion, so that a hypokinetic one through the wall
+  // reads like its ring (docs/gauge.md).  A transmural local field
+  // (LocalOptions::transmural) ranks its tags among their neighbours in
+  // every frame instead.
+  bool hold_tag_depths = true;
   // Frame 0's pose spins toward `reference`'s (the start's) about the long
   // axis with this weight, relative to the data's N points
   // (SpinGaugeResidual): where the section is round the data leave that

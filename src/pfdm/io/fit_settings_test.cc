@@ -86,10 +86,10 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   settings.local_transmural = "on";
   EXPECT_TRUE(FitOptionsFrom(settings).local.transmural);
   EXPECT_FALSE(FitOptionsFrom(FitSettings()).local.transmural);
-  EXPECT_FALSE(FitOptionsFrom(FitSettings()).hold_tag_depths);
-  FitSettings held;
-  held.tag_depths = "held";
-  EXPECT_TRUE(FitOptionsFrom(held).hold_tag_depths);
+  EXPECT_TRUE(FitOptionsFrom(FitSettings()).hold_tag_depths);
+  FitSettings ranked;
+  ranked.tag_depths = "ranked";
+  EXPECT_FALSE(FitOptionsFrom(ranked).hold_tag_depths);
   EXPECT_EQ(FitOptionsFrom(settings).solver.linear_solver, ceres::DENSE_QR);
   EXPECT_EQ(FitOptionsFrom(settings).solver.rest_tolerance, 0.01);
   EXPECT_EQ(FitOptionsFrom(settings).solver.max_steps, 1000000);
@@ -263,7 +263,7 @@ TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
        "--local_transmural applies to --local on, not --local off"},
       {[](FitSettings* s) {
          s->local_transmural = "on";
-         s->tag_depths = "held";
+         s->tag_depths = "ranked";
        },
        "--tag_depths applies to --local_transmural off, not "
        "--local_transmural on"},

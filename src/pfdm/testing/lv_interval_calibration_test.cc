@@ -161,19 +161,22 @@ TEST(LvIntervalCalibrationTest, MidwallTags) {
   EXPECT_LT(std::abs(gcs.MeanError()), gcs.MeanSd());
 }
 
+// Tags through the wall, their depths held from frame 0 (the default
+// since 2026-12-07).  Over 100 seeds GCS's interval held the noise-free fit
+// in 0.92 of draws, its centre's mean error +0.21 against an sd of 0.27
+// (ranked in every frame: 0.83, -0.32; the ranks put wiggles of their own
+// into the fit).  The wall's thickening reads under the same tags'
+// noise-free fit, 1.49 points over 100 seeds (its interval held it in
+// 0.90, 0.89 with the lesion: no longer claimed), the segments' 1.59: the
+// depth profile's cubic reads the held depths' errors (docs/gauge.md, "Why
+// held depths read low under noise").  Against the dense fit the wall's
+// thickening is 0.24 under.
 TEST(LvIntervalCalibrationTest, WallTags) {
   const auto rows =
       CalibrateKind(Case{LvTagLayer::kWall}, "400 tags through the wall");
-  // The same 400 tags' noise-free fit is not GCS's yardstick through the
-  // wall: the tags' ranked depths put wiggles of their own into it, 0.74
-  // points less negative than the dense fit's.  The noise bias, measured with
-  // the tags' noise alone (directional_noise.h), takes out the noise's share:
-  // the interval's centre lies between the two (mean error -0.32 against the
-  // noise-free fit and +0.42 against the dense over 100 seeds; while the bias
-  // was measured with the residual of both, -0.68 and +0.06).
   const Tally& gcs = Row(rows, "GCS %");
-  EXPECT_LT(gcs.MeanError(), 0.0);
-  EXPECT_GT(gcs.MeanDenseError(), 0.0);
+  EXPECT_LT(std::abs(gcs.MeanError()), gcs.MeanSd());
+  EXPECT_LT(Row(rows, "wall thickening %").MeanError(), 0.0);
 }
 
 // Mid-wall tags of the LV phantom whose segment 8 contracts at 40 % of
@@ -215,24 +218,24 @@ TEST(LvIntervalCalibrationTest, LesionMidwallTags) {
   EXPECT_LT(std::abs(MeanBias(lesion.radial)), 1.5);
 }
 
-// Tags through the wall, the lesion through it too, the defaults: ring
-// ranks and a field that moves every layer alike (FitOptions::local.
-// transmural off).  The ranks take the sector's motion into its tags'
-// depths (docs/local_deformations.md) and the lesion reads as its ring:
-// over 100 seeds its radial contraction 3.5 points above the truth (3 seeds:
-// 4.0), its thickening 23.7 (16.9 % true; 3 seeds: 23.8), told apart from
-// its neighbours in 2 draws, while every claimed interval held the same
-// tags' noise-free fit in 0.93-0.98 of draws.  The report says so
-// (report/regional_limit.h).  With --tag_depths held (not yet the default)
-// it was told apart in 96 of 100 draws, 0.86 points above the truth
-// (docs/uncertainty.md).
+// Tags through the wall, the lesion through it too, the defaults: depths
+// held from frame 0 (FitOptions::hold_tag_depths) and a field that moves
+// every layer alike (FitOptions::local.transmural off).  The lesion's
+// motion shows: over 100 seeds (2026-12-07) told apart from its neighbours
+// in 96 of 100 draws, its radial contraction 0.86 points above the truth.
+// Its thickening reads its ring's, 16.6 points above (16.9 % true): the
+// field moves the layers alike.  The report says so (report/
+// regional_limit.h).  Ranked anew in every frame (--tag_depths ranked, the
+// default until 2026-12-07) the ranks took the sector's motion into the
+// tags' depths and the lesion read as its ring: told apart in 2 of 100,
+// 3.5 points above.
 TEST(LvIntervalCalibrationTest, LesionWallTags) {
   const LesionRows lesion =
       CalibrateLesion(Case{LvTagLayer::kWall, LvSampling::kTags, true},
                       "400 tags through the wall, segment 8 hypokinetic");
-  EXPECT_GT(MeanBias(lesion.radial), 2.0);
-  EXPECT_GT(MeanBias(lesion.thickening), 15.0);
-  EXPECT_LE(lesion.told_apart, 0.1 * CalibrationSeeds());
+  EXPECT_GE(lesion.told_apart, 0.9 * CalibrationSeeds());
+  EXPECT_LT(std::abs(MeanBias(lesion.radial)), 1.5);
+  EXPECT_GT(MeanBias(lesion.thickening), 10.0);
 }
 
 // The same with the field through the wall and ranks among neighbours

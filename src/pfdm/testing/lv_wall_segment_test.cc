@@ -7,15 +7,17 @@
 // every frame.
 //
 // Issue 32's targets: thickening within 3 points at every frame, each
-// wall's radial contraction within 2.  Measured (1,500 tags, 3 frames;
-// docs/gauge.md "The profile across the wall"), with the squeeze (a cubic
-// depth) and its noise taken out: thickening 2.4 points off at worst
+// wall's radial contraction within 2, over noise draws from about 3,000
+// tags (LvWallSegmentSeedsTest below), the tags' depths held from frame 0
+// (the default).  At 1,500 tags one draw in a few misses: seed 1's noisy
+// prolate segment under the incompressible law read 20.9 against 17.1 at
+// frame 1 held (ranked 2.7 points over).  Measured at 1,500 tags (docs/
+// gauge.md "The profile across the wall"), ranked, with the squeeze (a
+// cubic depth) and its noise taken out: thickening 2.4 points off at worst
 // (prolate, designed law, noise-free, ES: 41.7 against 44.1), endocardium
-// 1.8 (prolate, incompressible: 27.0 against 28.8), epicardium 0.9.  That
-// is the default seed's; over noise draws the targets hold from about
-// 3,000 tags (LvWallSegmentSeedsTest below).  Before,
-// with a quadratic depth, thickening read up to 3.9 points under and the
-// endocardium 2.2.
+// 1.8 (prolate, incompressible: 27.0 against 28.8), epicardium 0.9.
+// Before, with a quadratic depth, thickening read up to 3.9 points under
+// and the endocardium 2.2.
 //
 // The myocardium between the data's first and last material rings
 // (material_myocardium.h): on the cylinder within 5 points of the truth's
@@ -26,6 +28,7 @@ constexpr double kThickeningPoints = 3.0;
 constexpr double kEndoPoints = 2.0;
 constexpr double kEpiPoints = 2.0;
 constexpr double kMyocardiumPercent = 5.0;
+constexpr int kTags = 3000;
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -69,7 +72,7 @@ struct Case {
 };
 
 // The segment's tags through the wall over 3 frames.
-LvPhantom SegmentPhantom(const Case& c, unsigned seed = 1, int tags = 1500) {
+LvPhantom SegmentPhantom(const Case& c, unsigned seed = 1) {
   LvPhantomOptions options;
   options.tags = LvTagLayer::kWall;
   options.region = LvRegion::kMidventricular;
@@ -77,7 +80,7 @@ LvPhantom SegmentPhantom(const Case& c, unsigned seed = 1, int tags = 1500) {
   options.law = c.law;
   options.noise_mm = c.noise_mm;
   options.num_frames = 3;
-  options.num_tags = tags;
+  options.num_tags = kTags;
   options.seed = seed;
   if (c.geometry == LvGeometry::kCylinder) {
     options.deformation = CylinderDeformation();
@@ -128,9 +131,12 @@ TEST_P(LvWallSegmentTest, ThickeningAndBothWallsWhereTheDataAre) {
           << t;
     }
   }
-  if (c.geometry == LvGeometry::kCylinder) {
+  if (c.geometry == LvGeometry::kCylinder && c.noise_mm == 0.0) {
     // Over the whole length, rings without data among them, the cylinder's
-    // thickening read far off (58 % against 34 % at ES).
+    // thickening read far off (58 % against 34 % at ES, ranked depths;
+    // held, noise-free, still over 10 points).  With noise the rings
+    // without data happened to read within 2-3.4 points (held, seed 1):
+    // what they read there is no measurement either way.
     const size_t es = fit.frames.size() - 1;
     const ClinicalSummary whole =
         SummarizeFrame(es, analysis.models[0], analysis.models[es]);
@@ -161,12 +167,14 @@ INSTANTIATE_TEST_SUITE_P(
 // meets the walls, and a least-squares cubic's endpoint varies (3 + 7) / 3
 // times as much as a line's (the odd Legendre terms); holding the squeeze
 // at 0 left a spread of 1.5 but read 2.4 points under (docs/gauge.md).  At
-// 3,000 tags the spread is about 1.1 points and every draw is within the
-// targets (measured: thickening worst 2.48 / 2.67 prolate, 2.64 / 1.43
-// cylinder, designed / incompressible; mean +0.87 / +0.76, +0.49 / +0.36; each
-// wall's radial contraction 1.81 points at worst; since the tags' noise is
-// measured before the local field, wall_stage.h: means 0.1 point lower).
-constexpr int kSeedsTags = 3000;
+// 3,000 tags (kTags) the spread is about 1.1 points and every draw is
+// within the targets.  Measured with depths held (the default, 2026-12-07):
+// thickening mean -0.82 / -0.41 cylinder, -1.06 / -0.62 prolate (designed /
+// incompressible), worst 2.53 / 2.63, 2.68 / 1.80; each wall's radial
+// contraction 1.57 points at worst.  Ranked anew in every frame: means
+// +0.49 / +0.36, +0.87 / +0.76, worst 2.64 / 1.43, 2.48 / 2.67.  Held
+// depths read thickening about a point low under noise (docs/gauge.md,
+// "Why held depths read low under noise").
 constexpr double kSeedsMeanThickeningPoints = 1.5;
 
 class LvWallSegmentSeedsTest : public testing::TestWithParam<Case> {};
@@ -176,7 +184,7 @@ TEST_P(LvWallSegmentSeedsTest, TargetsHoldOverEightNoiseDraws) {
   double sum = 0.0, worst = 0.0, worst_endo = 0.0, worst_epi = 0.0;
   int count = 0;
   for (unsigned seed = 1; seed <= 8; ++seed) {
-    const LvPhantom phantom = SegmentPhantom(c, seed, kSeedsTags);
+    const LvPhantom phantom = SegmentPhantom(c, seed);
     const SequenceFit fit =
         FitSequence(phantom.points, ModelConfig::Paper(17), FitOptions());
     const FitAnalysis analysis = AnalyzeFit(fit);
