@@ -139,6 +139,42 @@ void LeaveOutShortSpanVolumes(const SequenceFit& fit, FitAnalysis* analysis) {
   }
 }
 
+// kNotMeasured in the walls' numbers of each frame that nothing places
+// its walls in (its verdict's kWallsUnseenCode: mid-wall tags, no
+// contours): its cavity, myocardium and mass, the wall's thickness and
+// each wall's motion.
+void LeaveOutUnseenWalls(const SequenceFit& fit, FitAnalysis* analysis) {
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    if (!fit.frames[t].verdict.Has(kWallsUnseenCode)) continue;
+    analysis->volume_measured[t] = false;
+    ClinicalSummary& c = analysis->clinical[t];
+    for (double* value :
+         {&c.volume_ml, &c.myocardial_volume_ml, &c.lv_mass_g,
+          &c.material_myocardium_ml, &c.myocardial_volume_change_percent,
+          &c.wall_thickness_mm, &c.wall_thickening_percent,
+          &c.endo_radial_contraction_percent, &c.epi_radial_contraction_percent,
+          &c.endo_apex_rotation_deg, &c.endo_base_rotation_deg,
+          &c.endo_net_twist_deg, &c.epi_apex_rotation_deg,
+          &c.epi_base_rotation_deg, &c.epi_net_twist_deg}) {
+      *value = kNotMeasured;
+    }
+  }
+}
+
+// The same frames' segments' thickening and their layers' strains.
+void LeaveOutUnseenRegions(const SequenceFit& fit, FitAnalysis* analysis) {
+  for (size_t t = 0; t < fit.frames.size(); ++t) {
+    if (!fit.frames[t].verdict.Has(kWallsUnseenCode)) continue;
+    for (RegionMotion& motion : analysis->region_motion[t]) {
+      motion.thickening_percent = kNotMeasured;
+    }
+    if (analysis->region_layers.empty()) continue;
+    for (RegionLayers& region : analysis->region_layers[t]) {
+      LeaveOutLayers(&region);
+    }
+  }
+}
+
 // Whether frame t's contours end at fixed image planes (JudgeClinical's
 // slab): untracked, with no data near the apex or the highest data one
 // short-axis slice.  Tags are material points, whose myocardium is theirs.
@@ -240,6 +276,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   CloseVolumesAtPlanes(fit.config.Solid(), &analysis);
   analysis.volume_measured.assign(fit.frames.size(), true);
   if (!show_extrapolated) LeaveOutShortSpanVolumes(fit, &analysis);
+  LeaveOutUnseenWalls(fit, &analysis);
   analysis.ejection_fraction = EjectionFractionOf(analysis.clinical, ed);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.verdicts.push_back(fit.frames[t].verdict);
@@ -271,6 +308,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   for (size_t t = 0; t < fit.frames.size() && !show_extrapolated; ++t) {
     LeaveOutExtrapolated(t, &analysis);
   }
+  LeaveOutUnseenRegions(fit, &analysis);
   // The levels' strain, above, keeps the cap as part of the apical third.
   analysis.apex_cap_measured = fit.apex_in_data || show_extrapolated;
   analysis.dyssynchrony = MeasureDyssynchrony(

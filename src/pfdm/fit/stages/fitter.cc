@@ -125,6 +125,10 @@ SequenceFit FitSequence(const PointSequence& sequence,
     FrameFit fit = FitFrame(frame, reference, start.frames_per_id, options,
                             sequence.source, &start.wall, &carried);
     if (pilot) AddPilotCosts(*pilot, &fit);
+    // Depths measured across frame 0's walls are material: frames without
+    // both walls' contours keep them too (ranked there, mid-wall tags read
+    // a wall 83 % thinner than frame 0's; measured_depths.h).
+    if (reference && fit.depths_measured) carried.depths_held = true;
     result.frames.push_back(std::move(fit));
   }
   result.config = carried.model.config;

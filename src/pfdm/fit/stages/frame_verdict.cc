@@ -383,6 +383,31 @@ void JudgeTwoSurfaces(const Frame& points, const FramesPerId& frames_per_id,
                     "them apart)");
 }
 
+// A solid's frame with no wall's contours whose tags lie near the wall's
+// middle: nothing in it places the walls (tags that fill the wall have an
+// rms depth of 1/sqrt(3)).
+void JudgeWallsUnseen(const Frame& points, const FramesPerId& frames_per_id,
+                      const ModelConfig& config, const FrameFit& frame,
+                      Verdict* verdict) {
+  if (!config.Solid()) return;
+  double sum = 0.0;
+  int tags = 0;
+  for (size_t i = 0; i < points.points.size(); ++i) {
+    if (points.points[i].layer != WallLayer::kAnywhere) return;
+    if (frames_per_id.at(points.points[i].id) < 2) continue;
+    sum += frame.material[i].w * frame.material[i].w;
+    ++tags;
+  }
+  const double rms = tags > 0 ? std::sqrt(sum / tags) : 0.0;
+  if (tags == 0 || rms >= kWallSpanningDepthRms) return;
+  verdict->Warn(kWallsUnseenCode,
+                Format("the tags lie near the wall's middle (rms depth "
+                       "%.2f) and the frame has no contours of either wall: "
+                       "nothing places its walls, whose volumes, mass and "
+                       "thickening are left out",
+                       rms));
+}
+
 void JudgeShape(const Eigen::Vector3d& spreads, Verdict* verdict) {
   if (spreads[0] >= kFlatDataRatio * spreads[2]) return;
   verdict->Fail("flat_data",
@@ -451,6 +476,8 @@ void JudgeFrames(const PointSequence& sequence,
     JudgeAxis(sequence.frames[t], fit->ModelAt(t), &frame.verdict);
     JudgeShape(spreads, &frame.verdict);
     JudgeTwoSurfaces(sequence.frames[t], frames_per_id, fit->ModelAt(t), frame,
+                     &frame.verdict);
+    JudgeWallsUnseen(sequence.frames[t], frames_per_id, fit->config, frame,
                      &frame.verdict);
   }
 }
