@@ -18,8 +18,8 @@ namespace {
 
 // A transmural local field ranks its tags among their neighbours instead
 // (FitOptions::hold_tag_depths); where frame 0's contours place both walls
-// the tags' depths are measured (measured_depths.h), not ranked, and have
-// no ranks' noise to shrink.
+// the tags' depths are measured (measured_depths.h), not ranked, and held
+// whatever the option (FitSequence), shrunk by ShrinkMeasuredDepths.
 bool HoldsTagDepths(const FitOptions& options, const Frame& first) {
   return options.hold_tag_depths &&
          !(options.local.enabled && options.local.transmural) &&
@@ -58,12 +58,13 @@ bool TracksPoints(const Frame& frame, const TrackedMaterial& tracked) {
 }
 
 // The first tracked frame of a solid's tags is fitted once with its tags
-// ranked, the global model only (the pilot), to measure their noise
-// (FrameTagNoiseMm from neighbouring tags: the global model's misfit is not
-// noise the depths should be shrunk for), which the held depths need.  Frame
-// 0's tags then take their held depths (HoldTagDepths) and *carried is as it
-// was before the pilot, but for them.  Returns the pilot, whose cost is its
-// frame's.
+// ranked (or at frame 0's measured depths), the global model only (the
+// pilot), to measure their noise (FrameTagNoiseMm from neighbouring tags:
+// the global model's misfit is not noise the depths should be shrunk for),
+// which the held depths need.  Frame 0's tags then take their held depths
+// (HoldTagDepths), or their measured ones shrunk (ShrinkMeasuredDepths), and
+// *carried is as it was before the pilot, but for them.  Returns the pilot,
+// whose cost is its frame's.
 FrameFit FitPilot(const PointSequence& sequence, const Frame& frame,
                   const FramesPerId& frames_per_id, const FitOptions& options,
                   const FrameFit& first, WallDecision* wall,
@@ -80,9 +81,14 @@ FrameFit FitPilot(const PointSequence& sequence, const Frame& frame,
       options.loss != "none", TagNoiseFrom::kNeighbours);
   before.Restore(carried);
   if (!sigma) return pilot;
-  HoldTagDepths(sequence.frames[0], GlobalModelOf(config, first), *sigma,
-                &carried->tracked_material);
-  carried->depths_held = true;
+  if (first.depths_measured) {
+    ShrinkMeasuredDepths(GlobalModelOf(config, first), *sigma,
+                         &carried->tracked_material);
+  } else {
+    HoldTagDepths(sequence.frames[0], GlobalModelOf(config, first), *sigma,
+                  &carried->tracked_material);
+  }
+  carried->depths_held = carried->depths_shrunk = true;
   return pilot;
 }
 
@@ -116,9 +122,11 @@ SequenceFit FitSequence(const PointSequence& sequence,
   for (const Frame& frame : sequence.frames) {
     const bool reference = frame.index == sequence.frames[0].index;
     std::optional<FrameFit> pilot;
-    if (!reference && HoldsTagDepths(options, sequence.frames[0]) &&
-        start.has_tags && carried.model.config.Solid() &&
-        !carried.depths_held && TracksPoints(frame, carried.tracked_material)) {
+    const bool holds = HoldsTagDepths(options, sequence.frames[0]) ||
+                       (!reference && result.frames[0].depths_measured);
+    if (!reference && holds && start.has_tags && carried.model.config.Solid() &&
+        !carried.depths_shrunk &&
+        TracksPoints(frame, carried.tracked_material)) {
       pilot = FitPilot(sequence, frame, start.frames_per_id, options,
                        result.frames[0], &start.wall, &carried);
     }
@@ -127,7 +135,8 @@ SequenceFit FitSequence(const PointSequence& sequence,
     if (pilot) AddPilotCosts(*pilot, &fit);
     // Depths measured across frame 0's walls are material: frames without
     // both walls' contours keep them too (ranked there, mid-wall tags read
-    // a wall 83 % thinner than frame 0's; measured_depths.h).
+    // a wall 83 % thinner than frame 0's; measured_depths.h), the pilot
+    // included.
     if (reference && fit.depths_measured) carried.depths_held = true;
     result.frames.push_back(std::move(fit));
   }

@@ -36,6 +36,9 @@ struct CarriedState {
   // Its tags' depths are frame 0's (held_depths.h), not ranked in each
   // frame: FitSequence sets it once it has measured their noise.
   bool depths_held = false;
+  // Frame 0's depths have been shrunk for the noise a pilot measured
+  // (FitSequence): no pilot is flown again.
+  bool depths_shrunk = false;
   // Frame 0's robust loss scale (0 without a loss), for the band of a
   // solid's ranks in every frame (RankBandMm).
   double reference_loss_scale_mm = 0.0;

@@ -230,6 +230,14 @@ void HoldTagDepths(const Frame& first, const Model& reference, double sigma_mm,
   for (size_t j = 0; j < tags.size(); ++j) *tags[j] = held[j];
 }
 
+void ShrinkMeasuredDepths(const Model& reference, double sigma_mm,
+                          TrackedMaterial* tracked_material) {
+  for (auto& [id, material] : *tracked_material) {
+    const double h = reference.FunctionsAt(material.u)[kH];
+    if (h > 0.0) material.w = ShrunkDepth(material.w, 2.0 * sigma_mm / h);
+  }
+}
+
 void TakeOutTagNoise(const PointSequence& sequence,
                      const FramesPerId& frames_per_id, SequenceFit* result,
                      bool robust) {

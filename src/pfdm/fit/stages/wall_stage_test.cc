@@ -1,11 +1,13 @@
 #include "pfdm/fit/stages/wall_stage.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <random>
 #include <string>
 
 #include "gtest/gtest.h"
 #include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/fit/correspondence/held_depths.h"
 #include "pfdm/fit/correspondence/transmural.h"
 #include "pfdm/testing/test_models.h"
 #include "pfdm/testing/test_util.h"
@@ -280,6 +282,31 @@ TEST(WallStageTest, OutliersOffAWallLeaveItsThickness) {
 // Frame 0's tags (ids 0-2, in the tracked material) take the layer they lie
 // on and its (u, v); a contour point (id 9, not tracked) is left alone.  A
 // tracked frame's noise is read from its tags alone: none without them.
+// Measured depths shrunk for noise of sigma: ShrunkDepth(w, 2 sigma / h)
+// with the shell's h of 10 mm, (u, v) kept; no noise keeps them.
+TEST(WallStageTest, MeasuredDepthsShrinkForTheNoise) {
+  const Model shell = TestShell(9);
+  ASSERT_EQ(shell.FunctionsAt(0.3)[kH], 10.0);
+  TrackedMaterial tracked = {
+      {1, {0.3, 1.0, 0.95}}, {2, {-0.4, -2.0, -1.3}}, {3, {0.1, 0.5, 0.2}}};
+  const TrackedMaterial measured = tracked;
+  ShrinkMeasuredDepths(shell, 0.0, &tracked);
+  for (const auto& [id, m] : tracked) {
+    EXPECT_EQ(m.w, std::clamp(measured.at(id).w, -1.0, 1.0)) << id;
+  }
+  tracked = measured;
+  ShrinkMeasuredDepths(shell, 0.5, &tracked);
+  for (const auto& [id, m] : tracked) {
+    EXPECT_EQ(m.w, ShrunkDepth(measured.at(id).w, 0.1)) << id;
+    EXPECT_EQ(m.u, measured.at(id).u) << id;
+    EXPECT_EQ(m.v, measured.at(id).v) << id;
+  }
+  // Toward the middle, most near the walls.
+  EXPECT_LT(tracked[1].w, 0.95);
+  EXPECT_GT(tracked[2].w, -1.0);
+  EXPECT_NEAR(tracked[3].w, 0.2, 1e-3);
+}
+
 TEST(WallStageTest, TagsHoldTheLayerTheyLieOn) {
   Model model = TestSpheroid(9);
   model.config.MakeSolid();
