@@ -37,15 +37,25 @@ constexpr const char* kShortSpanDefinition =
     "change are null, and so are the ejection fraction's esv_ml and ratio "
     "(end-systole may be such a frame).";
 
-// The frames whose volumes are left out (FitAnalysis::volume_measured);
-// null when there are none.
-json ShortSpan(const FitAnalysis& analysis) {
+constexpr const char* kWallsUnseenDefinition =
+    "In the frames listed a solid's tags lie near the wall's middle and "
+    "no contour of either wall places the walls (the verdict's "
+    "walls_unseen: mid-wall tags beside contours drawn in other frames): "
+    "their volumes, mass, myocardial volume change, wall thickness and "
+    "thickening, each wall's radial contraction and rotations, the "
+    "regions' thickening and the layers' strains are null, and so are the "
+    "ejection fraction's esv_ml and ratio (end-systole may be such a "
+    "frame).  The mid-wall's motion is measured.";
+
+// The frames where `measured` is false, with the definition; null when
+// there are none.
+json FramesLeftOut(const std::vector<bool>& measured, const char* definition) {
   json frames = json::array();
-  for (size_t t = 0; t < analysis.volume_measured.size(); ++t) {
-    if (!analysis.volume_measured[t]) frames.push_back(t);
+  for (size_t t = 0; t < measured.size(); ++t) {
+    if (!measured[t]) frames.push_back(t);
   }
   if (frames.empty()) return json();
-  return {{"frames", frames}, {"definition", kShortSpanDefinition}};
+  return {{"frames", frames}, {"definition", definition}};
 }
 
 // The levels and the apical ring measured where frame 0 has no data
@@ -74,8 +84,12 @@ json NotMeasured(const FitAnalysis& analysis) {
     if (!analysis.rotation_measured[t]) frames.push_back(t);
   }
   const json extrapolated = Extrapolated(analysis);
-  const json short_span = ShortSpan(analysis);
-  if (frames.empty() && extrapolated.is_null() && short_span.is_null()) {
+  const json short_span =
+      FramesLeftOut(analysis.volume_measured, kShortSpanDefinition);
+  const json walls_unseen =
+      FramesLeftOut(analysis.walls_measured, kWallsUnseenDefinition);
+  if (frames.empty() && extrapolated.is_null() && short_span.is_null() &&
+      walls_unseen.is_null()) {
     return json();
   }
   json section;
@@ -84,6 +98,7 @@ json NotMeasured(const FitAnalysis& analysis) {
   }
   if (!extrapolated.is_null()) section["extrapolated"] = extrapolated;
   if (!short_span.is_null()) section["short_span"] = short_span;
+  if (!walls_unseen.is_null()) section["walls_unseen"] = walls_unseen;
   return section;
 }
 

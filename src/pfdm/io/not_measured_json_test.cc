@@ -54,5 +54,20 @@ TEST(NotMeasuredJsonTest, ListsTheFramesWithoutAVolume) {
   EXPECT_EQ(section["short_span"]["frames"], nlohmann::ordered_json({2}));
 }
 
+// Frames where nothing places a solid's walls (FitAnalysis::
+// walls_measured) are listed under walls_unseen, apart from short_span.
+TEST(NotMeasuredJsonTest, ListsTheFramesWithoutWalls) {
+  FitAnalysis analysis;
+  analysis.rotation_measured = {true, true, true, true};
+  analysis.volume_measured = {true, true, true, true};
+  analysis.walls_measured = {true, false, false, true};
+  const nlohmann::ordered_json section = NotMeasured(analysis);
+  EXPECT_FALSE(section.contains("short_span"));
+  EXPECT_EQ(section["walls_unseen"]["frames"], nlohmann::ordered_json({1, 2}));
+  EXPECT_NE(section["walls_unseen"]["definition"].get<std::string>().find(
+                "walls_unseen"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace pfdm

@@ -146,7 +146,7 @@ void LeaveOutShortSpanVolumes(const SequenceFit& fit, FitAnalysis* analysis) {
 void LeaveOutUnseenWalls(const SequenceFit& fit, FitAnalysis* analysis) {
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (!fit.frames[t].verdict.Has(kWallsUnseenCode)) continue;
-    analysis->volume_measured[t] = false;
+    analysis->walls_measured[t] = false;
     ClinicalSummary& c = analysis->clinical[t];
     for (double* value :
          {&c.volume_ml, &c.myocardial_volume_ml, &c.lv_mass_g,
@@ -164,7 +164,7 @@ void LeaveOutUnseenWalls(const SequenceFit& fit, FitAnalysis* analysis) {
 // The same frames' segments' thickening and their layers' strains.
 void LeaveOutUnseenRegions(const SequenceFit& fit, FitAnalysis* analysis) {
   for (size_t t = 0; t < fit.frames.size(); ++t) {
-    if (!fit.frames[t].verdict.Has(kWallsUnseenCode)) continue;
+    if (analysis->walls_measured[t]) continue;
     for (RegionMotion& motion : analysis->region_motion[t]) {
       motion.thickening_percent = kNotMeasured;
     }
@@ -275,6 +275,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   analysis.regional_limit = RegionalLimitOf(fit);
   CloseVolumesAtPlanes(fit.config.Solid(), &analysis);
   analysis.volume_measured.assign(fit.frames.size(), true);
+  analysis.walls_measured.assign(fit.frames.size(), true);
   if (!show_extrapolated) LeaveOutShortSpanVolumes(fit, &analysis);
   LeaveOutUnseenWalls(fit, &analysis);
   analysis.ejection_fraction = EjectionFractionOf(analysis.clinical, ed);

@@ -56,6 +56,12 @@ struct FitAnalysis {
   // mass and myocardial volume change are kNotMeasured, and so are the
   // ejection fraction's ESV and ratio.
   std::vector<bool> volume_measured;
+  // Per frame, false where nothing places a solid's walls (the fit's
+  // walls_unseen warning: mid-wall tags, no contours): its volumes, mass,
+  // thickening, each wall's motion, the segments' thickening and the
+  // layers' strains are kNotMeasured, and so are the ejection fraction's
+  // ESV and ratio.
+  std::vector<bool> walls_measured;
   // Without data near the apex (SequenceFit::apex_in_data), what lies
   // where frame 0 has no data is the model's continuation of the data
   // above: a level (kBasal, kMid, kApical) whose middle height lies below

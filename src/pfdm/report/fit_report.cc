@@ -58,19 +58,26 @@ std::string UntrackedNote(const FitAnalysis& analysis) {
   return h.str();
 }
 
-// Where frames have no volume (FitAnalysis::volume_measured): ES is the
-// least of the others', and which frames and why; "" otherwise.
+// Where frames have no volume (FitAnalysis::volume_measured,
+// walls_measured): ES is the least of the others', and which frames and
+// why; "" otherwise.
 std::string ShortSpanNote(const FitAnalysis& analysis) {
   std::ostringstream frames;
   int count = 0;
+  bool short_span = false;
   for (size_t t = 0; t < analysis.volume_measured.size(); ++t) {
-    if (!analysis.volume_measured[t]) frames << (count++ ? ", " : "") << t;
+    const bool walls =
+        t >= analysis.walls_measured.size() || analysis.walls_measured[t];
+    if (analysis.volume_measured[t] && walls) continue;
+    frames << (count++ ? ", " : "") << t;
+    short_span = short_span || !analysis.volume_measured[t];
   }
   if (count == 0) return "";
   return " of those with one (" +
          std::string(count == 1 ? "frame " : "frames ") + frames.str() +
-         " spanning too little of the axis for a volume, so ESV and the "
-         "ejection fraction are n/a)";
+         (short_span ? " spanning too little of the axis"
+                     : " with nothing that places the walls") +
+         " for a volume, so ESV and the ejection fraction are n/a)";
 }
 
 constexpr const char* kStyle =

@@ -201,6 +201,9 @@ TEST(LvMixedDataTest, ContoursAtEdAndEsAloneLeaveTheWallsBetweenOut) {
         << t;
   }
   EXPECT_TRUE(std::isnan(m.analysis.ejection_fraction.ratio));
+  EXPECT_EQ(m.analysis.walls_measured,
+            std::vector<bool>({true, false, false, true}));
+  EXPECT_EQ(m.analysis.volume_measured, std::vector<bool>(4, true));
   EXPECT_NEAR(m.analysis.clinical[3].wall_thickening_percent,
               Mean(m.tags.truth[3].wall_thickening_percent), 3.0);
   // Tags through the wall place the walls between the contours' frames, at
