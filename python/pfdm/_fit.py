@@ -166,9 +166,10 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
     tag_depths : str
         A solid's tags through the wall keep frame 0's depth in every frame,
         as they keep its material point ("held", the default), or are ranked
-        across the wall in each ("ranked").  With ``local_transmural`` they are ranked
-        among their neighbours; beside both walls' contours their depths
-        are measured across the walls the contours place, either way.
+        across the wall in each ("ranked").  With ``local_transmural`` they
+        are ranked among their neighbours; beside both walls' contours their
+        depths are measured across the walls the contours place and held,
+        either way.
     uncertainty : bool
         Each knot value's standard deviation, from the frame's covariance
         (``Fit.function_sds``; ``write`` puts it in parameters.csv's sd
