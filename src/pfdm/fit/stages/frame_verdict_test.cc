@@ -305,6 +305,31 @@ TEST(FrameVerdictTest, SaysWhereASolidsWallsMeetBelowTheTopKnot) {
   EXPECT_FALSE(fit.frames[2].verdict.Has("walls_meet")) << Codes(fit.frames[2]);
 }
 
+// A solid's tags at depths near the wall's middle (rms 0.1), no contours:
+// nothing places the walls.  Depths that fill the wall (rms 0.58) do.
+TEST(FrameVerdictTest, SaysWhenNothingPlacesASolidsWalls) {
+  const SequenceFit fit = Judged([](SequenceFit* f) {
+    f->config.MakeSolid();
+    for (size_t t = 0; t < f->frames.size(); ++t) {
+      std::vector<MaterialPoint>& material = f->frames[t].material;
+      for (size_t i = 0; i < material.size(); ++i) {
+        const double filling = -1.0 + 2.0 * (i + 0.5) / material.size();
+        material[i].w = t == 1 ? (i % 2 == 0 ? 0.1 : -0.1) : filling;
+      }
+    }
+  });
+  ASSERT_TRUE(fit.frames[1].verdict.Has(kWallsUnseenCode))
+      << Codes(fit.frames[1]);
+  for (const VerdictReason& reason : fit.frames[1].verdict.reasons()) {
+    if (reason.code != kWallsUnseenCode) continue;
+    EXPECT_EQ(reason.severity, Quality::kWarning);
+    EXPECT_NE(reason.text.find("rms depth 0.10"), std::string::npos)
+        << reason.text;
+  }
+  EXPECT_FALSE(fit.frames[0].verdict.Has(kWallsUnseenCode));
+  EXPECT_FALSE(fit.frames[2].verdict.Has(kWallsUnseenCode));
+}
+
 TEST(FrameVerdictTest, FailsAFrameZeroThatNeverMoved) {
   const SequenceFit fit = Judged([](SequenceFit* f) {
     f->frames[0].trace = {{0, 0.0, 0.0, 100.0, 1.0}, {1, 0.0, 0.0, 99.99, 1.0}};
