@@ -128,14 +128,17 @@ void LeaveOutCapIntervals(FitAnalysis* analysis) {
 // held at frame 0's; with the length the data's, the model ends at the
 // highest slice left, under the base, and the fraction reads 0.53 against
 // 0.49 (LvPartialDataTest).
+void LeaveOutVolumes(ClinicalSummary* c) {
+  c->volume_ml = c->myocardial_volume_ml = c->lv_mass_g = kNotMeasured;
+  c->material_myocardium_ml = c->myocardial_volume_change_percent =
+      kNotMeasured;
+}
+
 void LeaveOutShortSpanVolumes(const SequenceFit& fit, FitAnalysis* analysis) {
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     if (!fit.frames[t].verdict.Has(kShortSpanCode)) continue;
     analysis->volume_measured[t] = false;
-    ClinicalSummary& c = analysis->clinical[t];
-    c.volume_ml = c.myocardial_volume_ml = c.lv_mass_g = kNotMeasured;
-    c.material_myocardium_ml = c.myocardial_volume_change_percent =
-        kNotMeasured;
+    LeaveOutVolumes(&analysis->clinical[t]);
   }
 }
 
@@ -148,10 +151,9 @@ void LeaveOutUnseenWalls(const SequenceFit& fit, FitAnalysis* analysis) {
     if (!fit.frames[t].verdict.Has(kWallsUnseenCode)) continue;
     analysis->walls_measured[t] = false;
     ClinicalSummary& c = analysis->clinical[t];
+    LeaveOutVolumes(&c);
     for (double* value :
-         {&c.volume_ml, &c.myocardial_volume_ml, &c.lv_mass_g,
-          &c.material_myocardium_ml, &c.myocardial_volume_change_percent,
-          &c.wall_thickness_mm, &c.wall_thickening_percent,
+         {&c.wall_thickness_mm, &c.wall_thickening_percent,
           &c.endo_radial_contraction_percent, &c.epi_radial_contraction_percent,
           &c.endo_apex_rotation_deg, &c.endo_base_rotation_deg,
           &c.endo_net_twist_deg, &c.epi_apex_rotation_deg,

@@ -1,8 +1,6 @@
 #include "pfdm/fit/correspondence/neighbour_noise.h"
 
-#include <algorithm>
-#include <cmath>
-
+#include "pfdm/fit/correspondence/transmural.h"
 #include "pfdm/util/point_cloud_tree.h"
 
 namespace pfdm {
@@ -32,14 +30,8 @@ double NeighbourTangentialNoiseMm(const Model& model,
     d -= d.dot(normals[k]) * normals[k];
     squares.push_back(d.squaredNorm());
   }
-  if (!robust) {
-    double sum = 0.0;
-    for (double s : squares) sum += s;
-    return std::sqrt(sum / (8.0 * squares.size()));
-  }
-  const auto middle = squares.begin() + squares.size() / 2;
-  std::nth_element(squares.begin(), middle, squares.end());
-  return std::sqrt(*middle / (8.0 * std::log(2.0)));
+  // Each tangential direction of a difference carries 4 sigma^2.
+  return SigmaFromChiSquared2(&squares, 4.0, robust);
 }
 
 }  // namespace pfdm

@@ -394,25 +394,32 @@ std::vector<bool> WithinWall(const Model& model,
   return within;
 }
 
+double SigmaFromChiSquared2(std::vector<double>* squares, double scale,
+                            bool robust) {
+  if (squares->empty()) return 0.0;
+  if (!robust) {
+    double sum = 0.0;
+    for (double square : *squares) sum += square;
+    return std::sqrt(sum / (2.0 * scale * squares->size()));
+  }
+  const auto middle = squares->begin() + squares->size() / 2;
+  std::nth_element(squares->begin(), middle, squares->end());
+  return std::sqrt(*middle / (2.0 * scale * std::log(2.0)));
+}
+
 double TangentialNoiseMm(const Model& model,
                          const std::vector<Eigen::Vector3d>& residuals,
                          const std::vector<MaterialPoint>& material,
                          const std::vector<size_t>& which, bool robust) {
-  if (which.empty()) return 0.0;
-  double sum = 0.0;
   std::vector<double> squares;
+  squares.reserve(which.size());
   for (size_t i : which) {
     const MaterialPoint& m = material[i];
     const Eigen::Vector3d n = SurfaceNormal(model, m.u, m.v, m.w);
-    const double square =
-        (residuals[i] - residuals[i].dot(n) * n).squaredNorm();
-    sum += square;
-    if (robust) squares.push_back(square);
+    squares.push_back((residuals[i] - residuals[i].dot(n) * n).squaredNorm());
   }
-  if (!robust) return std::sqrt(sum / (4.0 * which.size()));
-  const auto middle = squares.begin() + squares.size() / 2;
-  std::nth_element(squares.begin(), middle, squares.end());
-  return std::sqrt(*middle / (4.0 * std::log(2.0)));
+  // Each tangential direction carries 2 sigma^2.
+  return SigmaFromChiSquared2(&squares, 2.0, robust);
 }
 
 double DeconvolvedThickness(double h_obs, double sigma, bool squeezed) {

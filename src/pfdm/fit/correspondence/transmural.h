@@ -165,6 +165,12 @@ constexpr double kWallFenceIqr = 2.0;
 std::vector<bool> InsideTheWall(const std::vector<double>& u,
                                 const std::vector<double>& distances);
 
+// sigma from squared lengths each `scale` sigma^2 times a chi-squared of 2
+// degrees of freedom (mean 2, median 2 ln 2): sqrt(mean / (2 scale)), or
+// robust sqrt(median / (2 ln 2 scale)); 0 for none.  Reorders *squares.
+double SigmaFromChiSquared2(std::vector<double>* squares, double scale,
+                            bool robust);
+
 // Localization noise (mm per coordinate, isotropic) of tracked tags, from
 // their residuals across the normal of their layer: each of the two
 // tangential directions carries this frame's noise and frame 0's (through
