@@ -159,11 +159,15 @@ void DefFitJson(FitClass& fit) {
       .def_property_readonly(
           "ejection_fraction", &EjectionFraction,
           "dict: fit.json's ejection_fraction (ratio, ed_frame, es_frame, "
-          "edv_ml, esv_ml, cavity_closure); None when the fitted surface "
-          "is not the cavity's (volume_surface), whose volume fraction is "
-          "then fit.json's <volume_surface>_volume_fraction.  Its ratio and "
-          "esv_ml are None when a frame has no volume (its data span too "
-          "little of the axis: to_dict()['not_measured']['short_span']).")
+          "edv_ml, esv_ml, es_by_midwall, cavity_closure); None when the "
+          "fitted surface is not the cavity's (volume_surface), whose "
+          "volume fraction is then fit.json's "
+          "<volume_surface>_volume_fraction.  Its ratio and esv_ml are None "
+          "when a frame has no volume (its data span too little of the "
+          "axis: to_dict()['not_measured']['short_span']), or when ES, "
+          "found by the volume inside the mid-wall where frames have no "
+          "cavity (es_by_midwall), is such a frame "
+          "(to_dict()['not_measured']['walls_unseen']).")
       .def_property_readonly(
           "volume_surface",
           [](const FitResult& r) { return r.analysis.volume_surface; },

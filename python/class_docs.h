@@ -33,8 +33,8 @@ settings : dict
 model_info : dict
     fit.json's model: name, knots, u range, per function its mode and unit.
 ejection_fraction : dict or None
-    ratio, ed_frame, es_frame, edv_ml, esv_ml, cavity_closure; None when
-    the fitted surface is not the cavity's.
+    ratio, ed_frame, es_frame, edv_ml, esv_ml, es_by_midwall,
+    cavity_closure; None when the fitted surface is not the cavity's.
 volume_surface : str
     What the volumes enclose: 'cavity', 'midwall' or 'epicardial'.
 intervals : dict or None

@@ -1,5 +1,7 @@
 // pfdm fit: fits every frame and writes fit.json, plots, report and meshes.
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
@@ -64,14 +66,25 @@ void ReportVolumes(const FitAnalysis& analysis) {
               analysis.volume_surface.c_str(),
               WithUnit(ef.edv_ml, 1, " ml").c_str(), ef.ed_frame,
               WithUnit(ef.esv_ml, 1, " ml").c_str(), ef.es_frame);
-  if (!Measured(ef.esv_ml) || !Measured(ef.edv_ml)) {
+  const std::vector<bool>& walls = analysis.walls_measured;
+  const bool walls_unseen =
+      std::find(walls.begin(), walls.end(), false) != walls.end();
+  if ((!Measured(ef.esv_ml) || !Measured(ef.edv_ml)) && walls_unseen) {
+    std::printf(
+        "; frames have nothing that places the walls and end-systole (the "
+        "least volume inside the mid-wall) may be one, so no ejection "
+        "fraction (fit.json's not_measured.walls_unseen says which)\n");
+  } else if (!Measured(ef.esv_ml) || !Measured(ef.edv_ml)) {
     std::printf(
         "; a frame's data span too little of the axis for its volume, so no "
         "ejection fraction (fit.json's verdicts say which)\n");
   } else if (ef.es_frame == ef.ed_frame) {
     std::printf("; no frame holds less than ED, so no ejection fraction\n");
   } else if (cavity) {
-    std::printf(", ejection fraction %.2f\n", ef.ratio);
+    std::printf(", ejection fraction %.2f%s\n", ef.ratio,
+                ef.es_by_midwall ? " (ES the least volume inside the mid-wall: "
+                                   "frames have no cavity)"
+                                 : "");
   } else {
     std::printf(
         "; not the cavity, so no ejection fraction (--surface endo if the "

@@ -338,6 +338,7 @@ json EjectionSection(const FitAnalysis& analysis) {
           {"es_frame", ef.es_frame},
           {"edv_ml", ef.edv_ml},
           {"esv_ml", ef.esv_ml},
+          {"es_by_midwall", ef.es_by_midwall},
           {"definition", cavity ? fit_json_text::kEjectionDefinition
                                 : fit_json_text::kVolumeFractionDefinition},
           {"cavity_closure", CavityClosure(analysis)}};

@@ -49,6 +49,7 @@ TEST(FitJsonTest, HasVolumesEjectionFractionAndRegions) {
             std::string::npos);
   EXPECT_EQ(ef["ed_frame"], 0);
   EXPECT_EQ(ef["es_frame"], 2);
+  EXPECT_EQ(ef["es_by_midwall"], false);
   EXPECT_DOUBLE_EQ(ef["edv_ml"].get<double>(), volumes[0]);
   EXPECT_NEAR(ef["ratio"].get<double>(), 1.0 - volumes[2] / volumes[0], 1e-12);
   EXPECT_NE(ef["cavity_closure"].get<std::string>().find("flat lid"),

@@ -28,7 +28,11 @@ inline constexpr char kEjectionDefinition[] =
     "given), ES the frame of least volume; the "
     "volumes are the frames' cavity_volume_ml, closed as cavity_closure "
     "says.  esv_ml and the ratio are null when a frame has no volume "
-    "(not_measured.short_span).";
+    "(not_measured.short_span).  Where frames have no cavity because "
+    "nothing places their walls (not_measured.walls_unseen), ES is the "
+    "frame of least volume inside the mid-wall, which their tags place "
+    "(es_by_midwall true), and esv_ml and the ratio are null when it is "
+    "one of them.";
 
 inline constexpr char kVolumeFractionDefinition[] =
     "(V_ED - V_ES) / V_ED of the volume the fitted surface encloses, which "

@@ -43,9 +43,10 @@ constexpr const char* kWallsUnseenDefinition =
     "walls_unseen: mid-wall tags beside contours drawn in other frames): "
     "their volumes, mass, myocardial volume change, wall thickness and "
     "thickening, each wall's radial contraction and rotations, the "
-    "regions' thickening and the layers' strains are null, and so are the "
-    "ejection fraction's esv_ml and ratio (end-systole may be such a "
-    "frame).  The mid-wall's motion is measured.";
+    "regions' thickening and the layers' strains are null.  The mid-wall's "
+    "motion is measured, and end-systole is the frame of least volume "
+    "inside it (ejection_fraction.es_by_midwall): the ejection fraction's "
+    "esv_ml and ratio are null when that frame is one of these.";
 
 // The frames where `measured` is false, with the definition; null when
 // there are none.

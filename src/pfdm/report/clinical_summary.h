@@ -118,6 +118,10 @@ struct EjectionFraction {
   double edv_ml = 0.0;
   double esv_ml = 0.0;
   double ratio = 0.0;
+  // End-systole found by the volume inside the mid-wall, which the tags
+  // place in every frame, where frames have no cavity (walls_unseen):
+  // fit_analysis.h, EndSystoleByMidwall.
+  bool es_by_midwall = false;
 };
 
 // Sets what only a turn about the axis measures to kNotMeasured: every

@@ -1,6 +1,7 @@
 #include "pfdm/report/fit_analysis.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/model/model_surface.h"
@@ -163,6 +164,38 @@ void LeaveOutUnseenWalls(const SequenceFit& fit, FitAnalysis* analysis) {
   }
 }
 
+// With frames whose walls nothing places (LeaveOutUnseenWalls) the least
+// cavity of the others need not be end-systole's, so the ejection
+// fraction has none.  Their tags place the mid-wall, and the volume inside
+// it is the cavity's and the inner half of the myocardium, which keeps its
+// volume: its least frame is end-systole's, and the fraction is taken
+// there where its cavity is measured (contours at ED and ES, tags in every
+// frame); else ES is still that frame and the fraction stays n/a.  A frame
+// of short span has no mid-wall volume either.
+void EndSystoleByMidwall(FitAnalysis* analysis) {
+  EjectionFraction& ef = analysis->ejection_fraction;
+  const std::vector<bool>& volume = analysis->volume_measured;
+  if (Measured(ef.esv_ml) || !Measured(ef.edv_ml) || ef.edv_ml <= 0.0 ||
+      std::find(volume.begin(), volume.end(), false) != volume.end()) {
+    return;
+  }
+  size_t es = 0;
+  double least = std::numeric_limits<double>::infinity();
+  for (size_t t = 0; t < analysis->models.size(); ++t) {
+    const double midwall =
+        CavityVolumeMl(analysis->models[t], VolumePlaneOf(*analysis, t), 0.0);
+    if (midwall < least) {
+      least = midwall;
+      es = t;
+    }
+  }
+  ef.es_frame = analysis->clinical[es].frame;
+  ef.es_by_midwall = true;
+  if (!analysis->walls_measured[es]) return;
+  ef.esv_ml = analysis->clinical[es].volume_ml;
+  ef.ratio = (ef.edv_ml - ef.esv_ml) / ef.edv_ml;
+}
+
 // The same frames' segments' thickening and their layers' strains.
 void LeaveOutUnseenRegions(const SequenceFit& fit, FitAnalysis* analysis) {
   for (size_t t = 0; t < fit.frames.size(); ++t) {
@@ -281,6 +314,7 @@ FitAnalysis AnalyzeFit(const SequenceFit& fit,
   if (!show_extrapolated) LeaveOutShortSpanVolumes(fit, &analysis);
   LeaveOutUnseenWalls(fit, &analysis);
   analysis.ejection_fraction = EjectionFractionOf(analysis.clinical, ed);
+  EndSystoleByMidwall(&analysis);
   for (size_t t = 0; t < fit.frames.size(); ++t) {
     analysis.verdicts.push_back(fit.frames[t].verdict);
     analysis.verdicts.back().Add(

@@ -59,8 +59,10 @@ struct FitAnalysis {
   // Per frame, false where nothing places a solid's walls (the fit's
   // walls_unseen warning: mid-wall tags, no contours): its volumes, mass,
   // thickening, each wall's motion, the segments' thickening and the
-  // layers' strains are kNotMeasured, and so are the ejection fraction's
-  // ESV and ratio.
+  // layers' strains are kNotMeasured.  The ejection fraction's end-systole
+  // is then the frame of least volume inside the mid-wall, and its ESV and
+  // ratio are kNotMeasured when that frame's walls are not measured
+  // (EjectionFraction::es_by_midwall).
   std::vector<bool> walls_measured;
   // Without data near the apex (SequenceFit::apex_in_data), what lies
   // where frame 0 has no data is the model's continuation of the data

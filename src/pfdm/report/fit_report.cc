@@ -58,10 +58,12 @@ std::string UntrackedNote(const FitAnalysis& analysis) {
   return h.str();
 }
 
-// Where frames have no volume (FitAnalysis::volume_measured,
-// walls_measured): ES is the least of the others', and which frames and
-// why; "" otherwise.
-std::string ShortSpanNote(const FitAnalysis& analysis) {
+// How ES was found, "the frame of least <volume>, frame k", and where
+// frames have no volume (FitAnalysis::volume_measured, walls_measured)
+// which frames and why.
+std::string EndSystolePhrase(const FitAnalysis& analysis,
+                             const std::string& volume_name) {
+  const EjectionFraction& ef = analysis.ejection_fraction;
   std::ostringstream frames;
   int count = 0;
   bool short_span = false;
@@ -72,12 +74,22 @@ std::string ShortSpanNote(const FitAnalysis& analysis) {
     frames << (count++ ? ", " : "") << t;
     short_span = short_span || !analysis.volume_measured[t];
   }
-  if (count == 0) return "";
-  return " of those with one (" +
-         std::string(count == 1 ? "frame " : "frames ") + frames.str() +
-         (short_span ? " spanning too little of the axis"
-                     : " with nothing that places the walls") +
-         " for a volume, so ESV and the ejection fraction are n/a)";
+  const std::string listed = (count == 1 ? "frame " : "frames ") + frames.str();
+  const std::string es = ", frame " + std::to_string(ef.es_frame);
+  if (count == 0) return "the frame of least " + volume_name + es;
+  if (short_span) {
+    return "the frame of least " + volume_name + es + " of those with one (" +
+           listed +
+           " spanning too little of the axis for a volume, so ESV and the "
+           "ejection fraction are n/a)";
+  }
+  return "the frame of least volume inside the mid-wall, which the tags "
+         "place in every frame" +
+         es + " (" + listed +
+         " with nothing that places the walls have no cavity" +
+         (Measured(ef.ratio) ? ")"
+                             : "; ES is one of them, so ESV and the ejection "
+                               "fraction are n/a)");
 }
 
 constexpr const char* kStyle =
@@ -106,8 +118,8 @@ std::string PageHead(const PointSequence& points, const SequenceFit& fit,
     << fit.frames.size() << " frames; model <code>"
     << EscapeMarkup(fit.config.name) << "</code> with " << fit.config.num_knots
     << " knots from apex to base. End-diastole (ED) is frame " << ef.ed_frame
-    << ", end-systole (ES) the frame of least " << volume_name << ", frame "
-    << ef.es_frame << ShortSpanNote(analysis) << ". Wall: "
+    << ", end-systole (ES) " << EndSystolePhrase(analysis, volume_name)
+    << ". Wall: "
     << (fit.config.Solid() ? "a solid from endocardium to epicardium"
                            : "one surface")
     << " (" << EscapeMarkup(fit.wall_reason) << ").</p>\n";

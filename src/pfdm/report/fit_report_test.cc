@@ -109,6 +109,40 @@ TEST(FitReportTest, NamesTheContoursLeftOut) {
             std::string::npos);
 }
 
+// How end-systole was found: the least volume, or, where frames have no
+// walls (walls_unseen), the least volume inside the mid-wall, which names
+// them and says when ES is one of them.
+TEST(FitReportTest, SaysHowEndSystoleWasFound) {
+  PhantomOptions options;
+  options.num_points = 50;
+  const Phantom phantom = MakePhantom(options);
+  const SequenceFit fit = TruthAsFit(phantom);
+  FitAnalysis analysis = AnalyzeFit(fit);
+  const std::string plain =
+      WithoutScripts(FitReportHtml(phantom.points, fit, analysis, ""));
+  EXPECT_NE(plain.find("(ES) the frame of least"), std::string::npos);
+  EXPECT_EQ(plain.find("inside the mid-wall"), std::string::npos);
+  analysis.walls_measured.assign(fit.frames.size(), true);
+  analysis.walls_measured[1] = analysis.walls_measured[2] = false;
+  analysis.ejection_fraction.es_by_midwall = true;
+  const std::string measured =
+      WithoutScripts(FitReportHtml(phantom.points, fit, analysis, ""));
+  EXPECT_NE(measured.find("the frame of least volume inside the mid-wall, "
+                          "which the tags place in every frame, frame " +
+                          std::to_string(analysis.ejection_fraction.es_frame) +
+                          " (frames 1, 2 with nothing that places the walls "
+                          "have no cavity)."),
+            std::string::npos);
+  analysis.ejection_fraction.es_frame = 2;
+  analysis.ejection_fraction.ratio = kNotMeasured;
+  const std::string unseen =
+      WithoutScripts(FitReportHtml(phantom.points, fit, analysis, ""));
+  EXPECT_NE(unseen.find("frame 2 (frames 1, 2 with nothing that places the "
+                        "walls have no cavity; ES is one of them, so ESV and "
+                        "the ejection fraction are n/a)."),
+            std::string::npos);
+}
+
 TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   PhantomOptions options;
   options.num_points = 50;

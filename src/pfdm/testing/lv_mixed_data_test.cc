@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <vector>
 
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/fitter.h"
@@ -28,6 +29,7 @@
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/fit_analysis.h"
 #include "pfdm/report/interval_calibration.h"
+#include "pfdm/report/number_sd.h"
 #include "pfdm/testing/lv_interval_cases.h"
 
 namespace pfdm {
@@ -74,10 +76,11 @@ struct Mixed {
   LvPhantom tags;
 };
 // Tags of `layer` and contours of `walls` (both, or one wall's), over
-// `frames` frames, the contours in the first and the last alone if
-// `contours_at_ends`.
+// `frames` frames, the contours in those `contours_in` lists (every one if
+// empty).
 Mixed FitMixed(LvTagLayer layer, int seed, LvTagLayer walls = LvTagLayer::kWall,
-               int frames = 2, bool contours_at_ends = false) {
+               int frames = 2, const std::vector<size_t>& contours_in = {},
+               bool uncertainty = false) {
   Mixed mixed;
   LvPhantomOptions tag_options = Options(layer, LvSampling::kTags, seed);
   LvPhantomOptions contour_options =
@@ -85,10 +88,11 @@ Mixed FitMixed(LvTagLayer layer, int seed, LvTagLayer walls = LvTagLayer::kWall,
   tag_options.num_frames = contour_options.num_frames = frames;
   mixed.tags = MakeLvPhantom(tag_options);
   const LvPhantom contours = MakeLvPhantom(contour_options);
-  std::vector<size_t> into;
-  if (contours_at_ends) into = {0, static_cast<size_t>(frames - 1)};
-  mixed.fit = FitSequence(Merged(mixed.tags.points, contours.points, into),
-                          ModelConfig::Paper(9), FitOptions());
+  FitOptions options;
+  options.uncertainty = uncertainty;
+  mixed.fit =
+      FitSequence(Merged(mixed.tags.points, contours.points, contours_in),
+                  ModelConfig::Paper(9), options);
   mixed.analysis = AnalyzeFit(mixed.fit);
   return mixed;
 }
@@ -173,7 +177,7 @@ TEST(LvMixedDataTest, TagsThroughTheWallBesideBothWallsContours) {
 // themselves.
 TEST(LvMixedDataTest, ContoursAtEdAndEsAloneLeaveTheWallsBetweenOut) {
   const Mixed m = FitMixed(LvTagLayer::kMidwall, 0, LvTagLayer::kWall,
-                           /*frames=*/4, /*contours_at_ends=*/true);
+                           /*frames=*/4, /*contours_in=*/{0, 3});
   ASSERT_TRUE(m.fit.config.Solid());
   for (size_t t = 1; t < 3; ++t) {
     const FrameFit& frame = m.fit.frames[t];
@@ -191,8 +195,7 @@ TEST(LvMixedDataTest, ContoursAtEdAndEsAloneLeaveTheWallsBetweenOut) {
                 m.tags.truth[t].mean_radial_contraction_percent, 1.5)
         << t;
   }
-  // The contours' frames keep their walls; the ejection fraction, whose
-  // end-systole is the least volume, has none while frames have none.
+  // The contours' frames keep their walls.
   for (size_t t : {0, 3}) {
     EXPECT_FALSE(m.fit.frames[t].verdict.Has(kWallsUnseenCode)) << t;
     EXPECT_NEAR(m.analysis.clinical[t].volume_ml,
@@ -200,7 +203,6 @@ TEST(LvMixedDataTest, ContoursAtEdAndEsAloneLeaveTheWallsBetweenOut) {
                 0.05 * m.tags.truth[t].endo_volume_ml)
         << t;
   }
-  EXPECT_TRUE(std::isnan(m.analysis.ejection_fraction.ratio));
   EXPECT_EQ(m.analysis.walls_measured,
             std::vector<bool>({true, false, false, true}));
   EXPECT_EQ(m.analysis.volume_measured, std::vector<bool>(4, true));
@@ -209,13 +211,66 @@ TEST(LvMixedDataTest, ContoursAtEdAndEsAloneLeaveTheWallsBetweenOut) {
   // Tags through the wall place the walls between the contours' frames, at
   // their measured depths shrunk for the noise (ShrinkMeasuredDepths;
   // unshrunk, thickening read 3.5 % and 14.2 % at frames 1 and 2).
-  const Mixed wall = FitMixed(LvTagLayer::kWall, 0, LvTagLayer::kWall, 4, true);
+  const Mixed wall =
+      FitMixed(LvTagLayer::kWall, 0, LvTagLayer::kWall, 4, {0, 3});
   for (size_t t = 1; t < wall.fit.frames.size(); ++t) {
     EXPECT_FALSE(wall.fit.frames[t].verdict.Has(kWallsUnseenCode)) << t;
     EXPECT_NEAR(wall.analysis.clinical[t].wall_thickening_percent,
                 Mean(wall.tags.truth[t].wall_thickening_percent), 3.0)
         << t;
   }
+}
+
+// Frames without walls have no cavity, so the least cavity of the others
+// need not be end-systole's.  The tags place the mid-wall in every frame,
+// and the volume inside it falls with the cavity's (the myocardium between
+// keeps its volume): its least frame is ES.  With contours at ED and ES the
+// ejection fraction is measured there; with contours at ED and a frame
+// before ES, ES is a frame without walls and the fraction n/a (the least of
+// the contours' frames, frame 2, would read 0.43 against the truth's 0.59).
+// With --uncertainty on the frames without walls have no interval for
+// what they do not measure, and the fraction has one.
+TEST(LvMixedDataTest, EndSystoleIsTheLeastVolumeInsideTheMidwall) {
+  const Mixed m = FitMixed(LvTagLayer::kMidwall, 0, LvTagLayer::kWall,
+                           /*frames=*/4, /*contours_in=*/{0, 3},
+                           /*uncertainty=*/true);
+  const EjectionFraction& ef = m.analysis.ejection_fraction;
+  const std::vector<LvFrameTruth>& truth = m.tags.truth;
+  // The truth's ES, measured on its cavity, is the last frame.
+  for (size_t t = 0; t < 3; ++t) {
+    ASSERT_GT(truth[t].endo_volume_ml, truth[3].endo_volume_ml) << t;
+  }
+  const double true_ef =
+      1.0 - truth[3].endo_volume_ml / truth[0].endo_volume_ml;
+  std::printf("ED and ES contours: ES frame %d, EF %.3f (%.3f)\n", ef.es_frame,
+              ef.ratio, true_ef);
+  EXPECT_TRUE(ef.es_by_midwall);
+  EXPECT_EQ(ef.es_frame, 3);
+  EXPECT_NEAR(ef.ratio, true_ef, 0.02);
+  EXPECT_NEAR(ef.esv_ml, truth[3].endo_volume_ml,
+              0.05 * truth[3].endo_volume_ml);
+  // Measured: the fraction's sd 0.0032, the unseen frames' radial
+  // contraction's 0.19-0.20 points.
+  const NumberSd& sd = m.analysis.sd;
+  ASSERT_TRUE(sd.computed);
+  EXPECT_GT(sd.ejection_fraction.ratio, 0.001);
+  EXPECT_LT(sd.ejection_fraction.ratio, 0.01);
+  for (size_t t : {1, 2}) {
+    EXPECT_TRUE(std::isnan(sd.clinical[t].volume_ml)) << t;
+    EXPECT_TRUE(std::isnan(sd.clinical[t].wall_thickening_percent)) << t;
+    EXPECT_GT(sd.clinical[t].radial_contraction_percent, 0.05) << t;
+  }
+
+  const Mixed early = FitMixed(LvTagLayer::kMidwall, 0, LvTagLayer::kWall,
+                               /*frames=*/4, /*contours_in=*/{0, 2});
+  const EjectionFraction& missed = early.analysis.ejection_fraction;
+  const std::vector<ClinicalSummary>& c = early.analysis.clinical;
+  std::printf("ED and frame 2 contours: ES frame %d, frame 2's EF %.3f\n",
+              missed.es_frame, 1.0 - c[2].volume_ml / c[0].volume_ml);
+  EXPECT_TRUE(missed.es_by_midwall);
+  EXPECT_EQ(missed.es_frame, 3);
+  EXPECT_TRUE(std::isnan(missed.esv_ml));
+  EXPECT_TRUE(std::isnan(missed.ratio));
 }
 
 }  // namespace
