@@ -161,13 +161,13 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
         The local field's thin-plate weight.
     local_transmural : bool
         A solid's local field varies through the wall (the endocardium's
-        apart from the epicardium's) and its tags' depths are ranked among
-        their neighbours: regional defects through the wall show.
+        apart from the epicardium's): regional defects through the wall
+        show.
     tag_depths : str
         A solid's tags through the wall keep frame 0's depth in every frame,
         as they keep its material point ("held", the default), or are ranked
-        across the wall in each ("ranked").  With ``local_transmural`` they
-        are ranked among their neighbours; beside both walls' contours their
+        across the wall in each ("ranked"; with ``local_transmural`` among
+        their neighbours); beside both walls' contours their
         depths are measured across the walls the contours place and held,
         either way.
     uncertainty : bool

@@ -171,8 +171,9 @@ def test_tag_depths_as_a_keyword(wall_tags):
     """--tag_depths as a keyword: in the settings and each tracked frame's
     entry; held (the default), a tracked frame after the first is one solve
     (no ranking);
-    the CLI's flag gives the same fit; a bad value, or one beside
-    --local_transmural on, names the keyword."""
+    the CLI's flag gives the same fit; a bad value names the keyword; with
+    --local_transmural on the depths follow it too (ranked: among
+    neighbours)."""
     folder, csv = wall_tags
     ranked = pfdm.fit(str(csv), local=False, tag_depths="ranked")
     held = pfdm.fit(str(csv), local=False)
@@ -192,5 +193,7 @@ def test_tag_depths_as_a_keyword(wall_tags):
     assert without_timing(ours) == without_timing(cli)
     with pytest.raises(pfdm.InputError, match="tag_depths"):
         pfdm.fit(str(csv), tag_depths="kept")
-    with pytest.raises(pfdm.InputError, match="tag_depths"):
-        pfdm.fit(str(csv), local_transmural=True, tag_depths="ranked")
+    transmural = pfdm.fit(str(csv), local_transmural=True,
+                          tag_depths="ranked").to_dict()
+    assert transmural["settings"]["tag_depths"] == "ranked"
+    assert transmural["frames"][1]["tag_depths"] == "ranked"

@@ -113,13 +113,13 @@ DEFINE_double(local_stiffness, kDefaults.local_stiffness,
               "local deformations' membrane and thin-plate weight, relative "
               "to one node's data, 1e-4 to 1e6 (--local off: none)");
 DEFINE_string(local_transmural, kDefaults.local_transmural.c_str(),
-              "a solid's local deformations vary through the wall and its "
-              "tags' depths are ranked among their neighbours, so that "
+              "a solid's local deformations vary through the wall, so that "
               "regional and subendocardial defects show: on or off");
 DEFINE_string(tag_depths, kDefaults.tag_depths.c_str(),
               "a solid's tags through the wall keep frame 0's depth in every "
               "frame, as they keep its material point (held), or are ranked "
-              "across the wall in each (ranked)");
+              "across the wall in each (ranked; among their neighbours with "
+              "--local_transmural on)");
 DEFINE_string(uncertainty, kDefaults.uncertainty.c_str(),
               "each frame's parameter covariance, a standard deviation per "
               "knot value in parameters.csv: on or off");

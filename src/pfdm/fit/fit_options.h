@@ -38,14 +38,15 @@ struct LocalOptions {
   double stiffness = 0.02;
   // A solid's field varies linearly through the wall, d(u, v, w) = S (q +
   // w q_w) (local_field.h), so that a segment's endocardium can move
-  // unlike its epicardium, and its tags' depths are ranked among their
-  // nearest tags rather than their ring (NeighbourhoodDepths), so that a
-  // segment moving unlike its ring keeps them.  Off by default: the local
-  // ranks are noisier, and on the phantoms' normal walls and biv-me's
-  // contours the ring's ranks and d(u, v) read closer to the truth
-  // (docs/local_deformations.md).  But a ring's ranks leave frame 0's
-  // section shape about the axis (a1 - a2) where the rounds start it
-  // (lv_wall_rank_shape_test.cc), which its intervals miss.
+  // unlike its epicardium.  Its tags keep frame 0's depths (held, the
+  // default), or, ranked in every frame (hold_tag_depths false), are ranked
+  // among their nearest tags rather than their ring (NeighbourhoodDepths),
+  // so that a segment moving unlike its ring keeps them.  Off by default:
+  // on the phantoms' normal walls (lv_layer_strain_test) and biv-me's
+  // contours d(u, v) reads closer to the truth (docs/local_deformations.md).
+  // But a ring's ranks leave frame 0's section shape about the axis (a1 -
+  // a2) where the rounds start it (lv_wall_rank_shape_test.cc), which its
+  // intervals miss.
   bool transmural = false;
 };
 

@@ -176,9 +176,6 @@ void CheckSettingsApply(const FitSettings& s, bool every_solver) {
        s.local == "on", "--local on", "--local " + s.local},
       {"local_transmural", s.local_transmural != d.local_transmural,
        s.local == "on", "--local on", "--local " + s.local},
-      {"tag_depths", s.tag_depths != d.tag_depths,
-       s.local != "on" || s.local_transmural != "on", "--local_transmural off",
-       "--local_transmural on"},
   };
   for (const Use& use : uses) {
     if (use.given && !use.applies) {

@@ -90,6 +90,10 @@ TEST(FitSettingsTest, SettingsReachTheOptions) {
   FitSettings ranked;
   ranked.tag_depths = "ranked";
   EXPECT_FALSE(FitOptionsFrom(ranked).hold_tag_depths);
+  // Either way with the field through the wall (ranked: among neighbours).
+  ranked.local_transmural = "on";
+  EXPECT_FALSE(FitOptionsFrom(ranked).hold_tag_depths);
+  EXPECT_TRUE(FitOptionsFrom(ranked).local.transmural);
   EXPECT_EQ(FitOptionsFrom(settings).solver.linear_solver, ceres::DENSE_QR);
   EXPECT_EQ(FitOptionsFrom(settings).solver.rest_tolerance, 0.01);
   EXPECT_EQ(FitOptionsFrom(settings).solver.max_steps, 1000000);
@@ -261,12 +265,6 @@ TEST(FitSettingsTest, SettingsTheChosenSolverLossOrFieldDoNotUseAreRefused) {
          s->local_transmural = "on";
        },
        "--local_transmural applies to --local on, not --local off"},
-      {[](FitSettings* s) {
-         s->local_transmural = "on";
-         s->tag_depths = "ranked";
-       },
-       "--tag_depths applies to --local_transmural off, not "
-       "--local_transmural on"},
   };
   for (const Case& c : cases) {
     FitSettings s;

@@ -26,8 +26,9 @@ double MaxDistance(const std::vector<Eigen::Vector3d>& a,
 // How tags through a wall get their depth w (transmural.h): measured across
 // a wall the contours place (measured_depths.h), ranked in their
 // band of latitude (QuantileDepths), or among their nearest tags
-// (NeighbourhoodDepths: a solid with a transmural local field, where a
-// segment may move unlike its ring); with a robust loss, only the tags
+// (NeighbourhoodDepths: a solid with a transmural local field whose tags
+// are ranked in every frame, where a segment may move unlike its ring);
+// with a robust loss, only the tags
 // within the wall widened by outlier_band_mm (WithinWall) are ranked.
 struct DepthRanking {
   double outlier_band_mm = 0.0;  // 0: every tag ranked.

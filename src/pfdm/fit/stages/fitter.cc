@@ -16,14 +16,12 @@
 namespace pfdm {
 namespace {
 
-// A transmural local field ranks its tags among their neighbours instead
-// (FitOptions::hold_tag_depths); where frame 0's contours place both walls
-// the tags' depths are measured (measured_depths.h), not ranked, and held
-// whatever the option (FitSequence), shrunk by ShrinkMeasuredDepths.
+// Where frame 0's contours place both walls the tags' depths are measured
+// (measured_depths.h), not ranked, and held whatever the option
+// (FitSequence), shrunk by ShrinkMeasuredDepths.  A transmural local field
+// holds them too (since 2026-12-07: docs/local_deformations.md).
 bool HoldsTagDepths(const FitOptions& options, const Frame& first) {
-  return options.hold_tag_depths &&
-         !(options.local.enabled && options.local.transmural) &&
-         !HasBothWalls(first);
+  return options.hold_tag_depths && !HasBothWalls(first);
 }
 
 // What a frame's fit changes of the carried state (the searches' grids and

@@ -143,7 +143,11 @@ GlobalRounds::GlobalRounds(const FramePoints& frame, const ModelState& prior,
       model_(model),
       fit_(fit),
       normals_(frame.positions.size(), Eigen::Vector3d::Zero()) {
-  ranking_.neighbourhoods = options.local.enabled && options.local.transmural;
+  // Ranks among neighbours keep a segment's own motion out of the depths of
+  // a frame ranked anew; held depths are ranked once, on frame 0, whose
+  // rings have not moved, in their bands.
+  ranking_.neighbourhoods = options.local.enabled && options.local.transmural &&
+                            !options.hold_tag_depths;
   ranking_.measured = HasBothWalls(frame.layer_w);
   ranks_tags_ =
       std::any_of(frame.untracked.begin(), frame.untracked.end(),
