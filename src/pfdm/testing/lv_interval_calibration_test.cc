@@ -163,14 +163,15 @@ TEST(LvIntervalCalibrationTest, MidwallTags) {
 
 // Tags through the wall, their depths held from frame 0 (the default
 // since 2026-12-07).  Over 100 seeds GCS's interval held the noise-free fit
-// in 0.92 of draws, its centre's mean error +0.21 against an sd of 0.27
+// in 0.95 of draws, its centre's mean error +0.21 against an sd of 0.30
 // (ranked in every frame: 0.83, -0.32; the ranks put wiggles of their own
 // into the fit).  The wall's thickening reads under the same tags'
-// noise-free fit, 1.49 points over 100 seeds (its interval held it in
-// 0.90, 0.89 with the lesion: no longer claimed), the segments' 1.59: the
+// noise-free fit, 1.49 points over 100 seeds, the segments' 1.59: the
 // depth profile's cubic reads the held depths' errors (docs/gauge.md, "Why
-// held depths read low under noise").  Against the dense fit the wall's
-// thickening is 0.24 under.
+// held depths read low under noise"); its interval, since the tracked
+// frame's covariance carries the held depths' noise (directional_noise.h),
+// held it in 0.94 (0.95 with the lesion; 0.90 and 0.89 before).  Against
+// the dense fit the wall's thickening is 0.24 under.
 TEST(LvIntervalCalibrationTest, WallTags) {
   const auto rows =
       CalibrateKind(Case{LvTagLayer::kWall}, "400 tags through the wall");

@@ -5,13 +5,20 @@
 
 namespace pfdm {
 
-double NeighbourTangentialNoiseMm(const Model& model,
-                                  const std::vector<Eigen::Vector3d>& positions,
-                                  const std::vector<Eigen::Vector3d>& residuals,
-                                  const std::vector<MaterialPoint>& material,
-                                  const std::vector<size_t>& which,
-                                  bool robust) {
-  if (which.size() < 2) return 0.0;
+namespace {
+
+// For each tag of `which` the difference of its residual and its nearest
+// tag's, split along the normal of its layer and across it.
+struct NeighbourDifferences {
+  std::vector<double> normal_squares, tangent_squares;
+};
+NeighbourDifferences DifferencesOfNeighbours(
+    const Model& model, const std::vector<Eigen::Vector3d>& positions,
+    const std::vector<Eigen::Vector3d>& residuals,
+    const std::vector<MaterialPoint>& material,
+    const std::vector<size_t>& which) {
+  NeighbourDifferences differences;
+  if (which.size() < 2) return differences;
   PointCloud cloud;
   std::vector<MaterialPoint> tag_material;
   for (size_t i : which) {
@@ -22,16 +29,47 @@ double NeighbourTangentialNoiseMm(const Model& model,
   tree.buildIndex();
   const std::vector<Eigen::Vector3d> normals =
       SurfaceNormals(model, tag_material);
-  std::vector<double> squares;
-  squares.reserve(which.size());
   for (size_t k = 0; k < which.size(); ++k) {
     const size_t j = NearestOther(tree, cloud, k);
     Eigen::Vector3d d = residuals[which[k]] - residuals[which[j]];
-    d -= d.dot(normals[k]) * normals[k];
-    squares.push_back(d.squaredNorm());
+    const double along = d.dot(normals[k]);
+    d -= along * normals[k];
+    differences.normal_squares.push_back(along * along);
+    differences.tangent_squares.push_back(d.squaredNorm());
   }
+  return differences;
+}
+
+double Mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (double value : values) sum += value;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
+}  // namespace
+
+double NeighbourTangentialNoiseMm(const Model& model,
+                                  const std::vector<Eigen::Vector3d>& positions,
+                                  const std::vector<Eigen::Vector3d>& residuals,
+                                  const std::vector<MaterialPoint>& material,
+                                  const std::vector<size_t>& which,
+                                  bool robust) {
+  NeighbourDifferences differences =
+      DifferencesOfNeighbours(model, positions, residuals, material, which);
+  if (differences.tangent_squares.empty()) return 0.0;
   // Each tangential direction of a difference carries 4 sigma^2.
-  return SigmaFromChiSquared2(&squares, 4.0, robust);
+  return SigmaFromChiSquared2(&differences.tangent_squares, 4.0, robust);
+}
+
+double NeighbourNormalExcessMm2(const Model& model,
+                                const std::vector<Eigen::Vector3d>& positions,
+                                const std::vector<Eigen::Vector3d>& residuals,
+                                const std::vector<MaterialPoint>& material,
+                                const std::vector<size_t>& which) {
+  const NeighbourDifferences differences =
+      DifferencesOfNeighbours(model, positions, residuals, material, which);
+  return Mean(differences.normal_squares) / 2.0 -
+         Mean(differences.tangent_squares) / 4.0;
 }
 
 }  // namespace pfdm

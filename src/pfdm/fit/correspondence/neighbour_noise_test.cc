@@ -73,5 +73,35 @@ TEST(NeighbourNoiseTest, NoneForFewerThanTwoTags) {
             0.0);
 }
 
+// Residuals of 0.8 mm along each tag's normal and 0.5 mm per coordinate
+// across it, on a smooth misfit of 0.6 mm: the excess along the normal,
+// 0.64 - 0.25 mm^2, without the misfit, which each residual alone would
+// count (its sd along the normal is then 0.91 mm).
+TEST(NeighbourNoiseTest, ExcessAlongTheNormalLeavesTheMisfitOut) {
+  const Model model = TestSpheroid(9);
+  Tags tags = NoisyTags(model, 0.0, 0.6);
+  const std::vector<Eigen::Vector3d> normals =
+      SurfaceNormals(model, tags.material);
+  std::mt19937 random(7);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  double along = 0.0;
+  for (size_t i = 0; i < tags.residuals.size(); ++i) {
+    Eigen::Vector3d across(unit(random), unit(random), unit(random));
+    across -= across.dot(normals[i]) * normals[i];
+    tags.residuals[i] += 0.8 * unit(random) * normals[i] + 0.5 * across;
+    along += std::pow(tags.residuals[i].dot(normals[i]), 2) /
+             static_cast<double>(tags.residuals.size());
+  }
+  const double excess = NeighbourNormalExcessMm2(
+      model, tags.positions, tags.residuals, tags.material, tags.which);
+  std::printf("excess along the normal %.3f mm^2 (sd alone %.3f mm)\n", excess,
+              std::sqrt(along));
+  EXPECT_NEAR(excess, 0.64 - 0.25, 0.05);
+  EXPECT_GT(std::sqrt(along), 0.85);
+  EXPECT_EQ(NeighbourNormalExcessMm2(model, tags.positions, tags.residuals,
+                                     tags.material, {0}),
+            0.0);
+}
+
 }  // namespace
 }  // namespace pfdm

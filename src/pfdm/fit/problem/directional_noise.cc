@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
+#include "pfdm/fit/correspondence/neighbour_noise.h"
 #include "pfdm/fit/residuals/robust_loss.h"
 
 namespace pfdm {
@@ -46,17 +48,26 @@ void ScaleByDirectionalNoise(const NormalParts& parts,
                              const std::vector<MaterialPoint>& material,
                              const std::vector<Eigen::Vector3d>& wall_normals,
                              const std::string& loss, double loss_scale_mm,
-                             FrameCovariance* covariance) {
+                             bool depths_held, FrameCovariance* covariance) {
   const double normal_parameters =
       parts.pseudo_inverse.cwiseProduct(normal_data_normal).sum();
   const DirectionalSigma split = DirectionalDataSigma(
       model, points, material, wall_normals, loss, loss_scale_mm,
       normal_parameters, covariance->effective_parameters - normal_parameters);
+  const int n = static_cast<int>(covariance->entries.size());
   covariance->covariance =
-      DirectionalCovariance(parts, static_cast<int>(covariance->entries.size()),
-                            covariance->sigma_mm, split.tangent_mm);
+      DirectionalCovariance(parts, n, covariance->sigma_mm, split.tangent_mm);
   covariance->normal_sigma_mm = split.normal_mm;
   covariance->tangent_sigma_mm = split.tangent_mm;
+  if (!depths_held) return;
+  std::vector<size_t> every(points.size());
+  std::iota(every.begin(), every.end(), size_t{0});
+  const double excess = NeighbourNormalExcessMm2(
+      model, points, Residuals(model, points, material), material, every);
+  if (excess <= 0.0) return;
+  const Eigen::MatrixXd head = parts.pseudo_inverse.topRows(n);
+  covariance->covariance +=
+      excess * head * normal_data_normal * head.transpose();
 }
 
 }  // namespace pfdm

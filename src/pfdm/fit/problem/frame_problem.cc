@@ -27,7 +27,7 @@ bool StepFrame(const FrameInputs& frame, const FitOptions& options,
 
 FrameCovariance EstimateFrameCovariance(const FrameInputs& frame,
                                         const FitOptions& options,
-                                        const Model& model) {
+                                        const Model& model, bool depths_held) {
   // The problem holds pointers into the model's state; Ceres only
   // evaluates it here, but the copy keeps the caller's model out of reach.
   Model at = model;
@@ -43,7 +43,7 @@ FrameCovariance EstimateFrameCovariance(const FrameInputs& frame,
   if (!ranked_tags) return problem.Covariance(frame);
   const std::vector<Eigen::Vector3d> wall_normals =
       SurfaceNormals(model, frame.material);
-  return problem.Covariance(frame, &wall_normals);
+  return problem.Covariance(frame, &wall_normals, depths_held);
 }
 
 }  // namespace pfdm

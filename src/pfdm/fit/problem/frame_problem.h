@@ -74,10 +74,13 @@ bool StepFrame(const FrameInputs& frame, const FitOptions& options,
 // SolveFrame with the same inputs), from the same problem, not solved
 // again (frame_covariance.h says what it is and is not).  A solid's frame of
 // tracked tags alone weighs its data by the residual's sd across the
-// wall's normal, where the tags' depths do not err (directional_noise.h).
+// wall's normal, where the tags' depths do not err, and, with
+// `depths_held` (frame 0's, FrameFit::depths_held), its rows along the
+// normal by the sd along it, where frame 0's noise is (directional_noise.h).
 FrameCovariance EstimateFrameCovariance(const FrameInputs& frame,
                                         const FitOptions& options,
-                                        const Model& model);
+                                        const Model& model,
+                                        bool depths_held = false);
 
 }  // namespace pfdm
 

@@ -331,17 +331,17 @@ std::vector<CovarianceBlock> FrameProblem::CovarianceBlocks() {
 }
 
 FrameCovariance FrameProblem::Covariance(
-    const FrameInputs& frame,
-    const std::vector<Eigen::Vector3d>* wall_normals) {
+    const FrameInputs& frame, const std::vector<Eigen::Vector3d>* wall_normals,
+    bool depths_held) {
   const auto start = Clock::now();
-  FrameCovariance result = ScaledCovariance(frame, wall_normals);
+  FrameCovariance result = ScaledCovariance(frame, wall_normals, depths_held);
   result.seconds = SecondsSince(start);
   return result;
 }
 
 FrameCovariance FrameProblem::ScaledCovariance(
-    const FrameInputs& frame,
-    const std::vector<Eigen::Vector3d>* wall_normals) {
+    const FrameInputs& frame, const std::vector<Eigen::Vector3d>* wall_normals,
+    bool depths_held) {
   // sigma's degrees of freedom need the covariance's effective number of
   // parameters: computed at unit sigma, then scaled.
   NormalParts parts;
@@ -370,7 +370,7 @@ FrameCovariance FrameProblem::ScaledCovariance(
   if (normal_data_normal.cols() != parts.pseudo_inverse.cols()) return result;
   ScaleByDirectionalNoise(parts, normal_data_normal, *model_, frame.points,
                           frame.material, *wall_normals, options_.loss,
-                          options_.loss_scale_mm, &result);
+                          options_.loss_scale_mm, depths_held, &result);
   return result;
 }
 

@@ -70,16 +70,18 @@ class FrameProblem {
   TermCosts Costs(const SolverReport& report) const;
   // The free parameters' covariance at their current values; with
   // wall_normals (a frame of tracked tags alone), its data's rows weighed
-  // by the residual's sd across them (directional_noise.h).  Its seconds
+  // by the residual's sd across them, and with depths_held the rows
+  // along them by the sd along them (directional_noise.h).  Its seconds
   // are all of this call's.
   FrameCovariance Covariance(
       const FrameInputs& frame,
-      const std::vector<Eigen::Vector3d>* wall_normals = nullptr);
+      const std::vector<Eigen::Vector3d>* wall_normals = nullptr,
+      bool depths_held = false);
 
  private:
   FrameCovariance ScaledCovariance(
       const FrameInputs& frame,
-      const std::vector<Eigen::Vector3d>* wall_normals);
+      const std::vector<Eigen::Vector3d>* wall_normals, bool depths_held);
   std::vector<CovarianceBlock> CovarianceBlocks();
   static std::unique_ptr<PrecomputedGroups> MakePrecomputed(
       const FitOptions& options);

@@ -219,7 +219,7 @@ FrameFit FitFrame(const Frame& frame, bool reference,
   if (options.uncertainty) {
     fit.covariance = MeasureFrameCovariance(
         points, fit.material, prior, carried->reference,
-        WithLossScale(options, fit.loss_scale_mm), model);
+        WithLossScale(options, fit.loss_scale_mm), model, fit.depths_held);
     // Frame 0's length is set by its highest points and held; an untracked
     // later frame's base rim is held at its own highest (contours).
     if (fit.covariance.computed && (reference || !fit.tracked)) {

@@ -13,7 +13,7 @@ namespace pfdm {
 FrameCovariance MeasureFrameCovariance(
     const FramePoints& points, const std::vector<MaterialPoint>& material,
     const ModelState& prior, const ModelState& reference,
-    const FitOptions& options, const Model& model) {
+    const FitOptions& options, const Model& model, bool depths_held) {
   // As GlobalRounds::SolveRound: sliding points pull along the normals at
   // their material points, and the base rim holds later frames of contours.
   std::optional<double> rim_height;
@@ -27,7 +27,7 @@ FrameCovariance MeasureFrameCovariance(
       SlidingNormals(model, material, points.sliding);
   return EstimateFrameCovariance({points.positions, material, normals,
                                   rim_height, points.kind, prior, reference},
-                                 options, model);
+                                 options, model, depths_held);
 }
 
 }  // namespace pfdm

@@ -14,11 +14,12 @@
 namespace pfdm {
 
 // `options` with the frame's loss scale; `model` the global solution
-// (no local field), `material` the frame's final material points.
+// (no local field), `material` the frame's final material points;
+// `depths_held` as FrameFit's (EstimateFrameCovariance).
 FrameCovariance MeasureFrameCovariance(
     const FramePoints& points, const std::vector<MaterialPoint>& material,
     const ModelState& prior, const ModelState& reference,
-    const FitOptions& options, const Model& model);
+    const FitOptions& options, const Model& model, bool depths_held);
 
 }  // namespace pfdm
 
