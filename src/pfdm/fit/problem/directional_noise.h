@@ -90,7 +90,8 @@ Eigen::MatrixXd DirectionalCovariance(const NormalParts& parts, int n,
 // sd, DataSigma's) made C above.  `normal_data_normal` is the data's J'J
 // along the normals, sum_i J_i' n_i n_i' J_i over parts' columns: its
 // share tr(A^+ D_n) of the effective parameters is the normal's, and with
-// `depths_held` the rows along the normals take s_n (C_held above).  Sets
+// `depths_held` the rows along the normals take the neighbours' excess e
+// too (C_held above).  Sets
 // normal_sigma_mm and tangent_sigma_mm.
 void ScaleByDirectionalNoise(const NormalParts& parts,
                              const Eigen::MatrixXd& normal_data_normal,

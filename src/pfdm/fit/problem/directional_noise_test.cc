@@ -168,9 +168,10 @@ TEST(DirectionalNoiseTest, ATrackedFramesIntervalsAreTheNoisesNotTheOffsets) {
 // Held depths: the offsets along the normals are frame 0's noise, drawn
 // anew with each draw (sd 0.6 mm), beside 0.3 mm in every coordinate.
 // Against the fit of the points without either, the covariance with
-// depths_held, whose rows along the normals take their own sd, gives the
-// knots' errors (within 25 %; measured 0.94, 0.89 and 1.10 of them); the
-// rows weighed by the sd across the normals alone read a1's at 0.51.
+// depths_held, whose rows along the normals take the excess of their
+// variance over the variance across them, gives the knots' errors (within
+// 25 %: a1's, tau's and a3's sds 0.82, 0.88 and 1.06 of them); the rows
+// weighed by the sd across the normals alone read a1's at 0.51.
 TEST(DirectionalNoiseTest, HeldDepthsErrAlongTheNormalsByTheNoise) {
   const Surface s;
   std::mt19937 random(13);

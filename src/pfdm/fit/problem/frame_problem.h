@@ -76,7 +76,8 @@ bool StepFrame(const FrameInputs& frame, const FitOptions& options,
 // tracked tags alone weighs its data by the residual's sd across the
 // wall's normal, where the tags' depths do not err, and, with
 // `depths_held` (frame 0's, FrameFit::depths_held), its rows along the
-// normal by the sd along it, where frame 0's noise is (directional_noise.h).
+// normal take the excess of the residuals' variance along it, where frame
+// 0's noise is (directional_noise.h).
 FrameCovariance EstimateFrameCovariance(const FrameInputs& frame,
                                         const FitOptions& options,
                                         const Model& model,

@@ -71,7 +71,8 @@ class FrameProblem {
   // The free parameters' covariance at their current values; with
   // wall_normals (a frame of tracked tags alone), its data's rows weighed
   // by the residual's sd across them, and with depths_held the rows
-  // along them by the sd along them (directional_noise.h).  Its seconds
+  // along them take the excess of the variance along them too
+  // (directional_noise.h).  Its seconds
   // are all of this call's.
   FrameCovariance Covariance(
       const FrameInputs& frame,
