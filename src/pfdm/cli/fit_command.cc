@@ -1,7 +1,5 @@
 // pfdm fit: fits every frame and writes fit.json, plots, report and meshes.
-#include <algorithm>
 #include <cstdio>
-#include <vector>
 
 #include "pfdm/cli/commands.h"
 #include "pfdm/fit/stages/fitter.h"
@@ -66,14 +64,11 @@ void ReportVolumes(const FitAnalysis& analysis) {
               analysis.volume_surface.c_str(),
               WithUnit(ef.edv_ml, 1, " ml").c_str(), ef.ed_frame,
               WithUnit(ef.esv_ml, 1, " ml").c_str(), ef.es_frame);
-  const std::vector<bool>& walls = analysis.walls_measured;
-  const bool walls_unseen =
-      std::find(walls.begin(), walls.end(), false) != walls.end();
-  if ((!Measured(ef.esv_ml) || !Measured(ef.edv_ml)) && walls_unseen) {
+  if ((!Measured(ef.esv_ml) || !Measured(ef.edv_ml)) && ef.es_by_midwall) {
     std::printf(
-        "; frames have nothing that places the walls and end-systole (the "
-        "least volume inside the mid-wall) may be one, so no ejection "
-        "fraction (fit.json's not_measured.walls_unseen says which)\n");
+        "; ED or end-systole (the least volume inside the mid-wall) is a "
+        "frame with nothing that places the walls, so no ejection fraction "
+        "(fit.json's not_measured.walls_unseen says which)\n");
   } else if (!Measured(ef.esv_ml) || !Measured(ef.edv_ml)) {
     std::printf(
         "; a frame's data span too little of the axis for its volume, so no "

@@ -165,17 +165,17 @@ void LeaveOutUnseenWalls(const SequenceFit& fit, FitAnalysis* analysis) {
 }
 
 // With frames whose walls nothing places (LeaveOutUnseenWalls) the least
-// cavity of the others need not be end-systole's, so the ejection
-// fraction has none.  Their tags place the mid-wall, and the volume inside
-// it is the cavity's and the inner half of the myocardium, which keeps its
-// volume: its least frame is end-systole's, and the fraction is taken
-// there where its cavity is measured (contours at ED and ES, tags in every
-// frame); else ES is still that frame and the fraction stays n/a.  A frame
-// of short span has no mid-wall volume either.
+// cavity of the others need not be end-systole's.  Their tags place the
+// mid-wall, and the volume inside it is the cavity's and the inner half of
+// the myocardium, which keeps its volume: its least frame is end-systole's,
+// and the fraction is taken there where both its cavity and ED's are
+// measured (contours at ED and ES, tags in every frame); else ES is still
+// that frame and the fraction n/a.  A frame of short span has no mid-wall
+// volume either.
 void EndSystoleByMidwall(FitAnalysis* analysis) {
-  EjectionFraction& ef = analysis->ejection_fraction;
+  const std::vector<bool>& walls = analysis->walls_measured;
   const std::vector<bool>& volume = analysis->volume_measured;
-  if (Measured(ef.esv_ml) || !Measured(ef.edv_ml) || ef.edv_ml <= 0.0 ||
+  if (std::find(walls.begin(), walls.end(), false) == walls.end() ||
       std::find(volume.begin(), volume.end(), false) != volume.end()) {
     return;
   }
@@ -189,11 +189,12 @@ void EndSystoleByMidwall(FitAnalysis* analysis) {
       es = t;
     }
   }
+  EjectionFraction& ef = analysis->ejection_fraction;
   ef.es_frame = analysis->clinical[es].frame;
   ef.es_by_midwall = true;
-  if (!analysis->walls_measured[es]) return;
-  ef.esv_ml = analysis->clinical[es].volume_ml;
-  ef.ratio = (ef.edv_ml - ef.esv_ml) / ef.edv_ml;
+  ef.esv_ml = analysis->clinical[es].volume_ml;  // kNotMeasured if unseen.
+  ef.ratio =
+      ef.edv_ml > 0.0 ? (ef.edv_ml - ef.esv_ml) / ef.edv_ml : kNotMeasured;
 }
 
 // The same frames' segments' thickening and their layers' strains.

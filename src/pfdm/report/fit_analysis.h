@@ -60,8 +60,8 @@ struct FitAnalysis {
   // walls_unseen warning: mid-wall tags, no contours): its volumes, mass,
   // thickening, each wall's motion, the segments' thickening and the
   // layers' strains are kNotMeasured.  The ejection fraction's end-systole
-  // is then the frame of least volume inside the mid-wall, and its ESV and
-  // ratio are kNotMeasured when that frame's walls are not measured
+  // is then the frame of least volume inside the mid-wall, and its ratio
+  // is kNotMeasured when that frame's walls or ED's are not measured
   // (EjectionFraction::es_by_midwall).
   std::vector<bool> walls_measured;
   // Without data near the apex (SequenceFit::apex_in_data), what lies

@@ -60,36 +60,40 @@ std::string UntrackedNote(const FitAnalysis& analysis) {
 
 // How ES was found, "the frame of least <volume>, frame k", and where
 // frames have no volume (FitAnalysis::volume_measured, walls_measured)
-// which frames and why.
+// which frames and why: a short span, or, where ES was found inside the
+// mid-wall (EjectionFraction::es_by_midwall), nothing that places the
+// walls.
 std::string EndSystolePhrase(const FitAnalysis& analysis,
                              const std::string& volume_name) {
   const EjectionFraction& ef = analysis.ejection_fraction;
+  const auto walls = [&analysis](size_t t) {
+    return t >= analysis.walls_measured.size() || analysis.walls_measured[t];
+  };
   std::ostringstream frames;
   int count = 0;
-  bool short_span = false;
   for (size_t t = 0; t < analysis.volume_measured.size(); ++t) {
-    const bool walls =
-        t >= analysis.walls_measured.size() || analysis.walls_measured[t];
-    if (analysis.volume_measured[t] && walls) continue;
+    if (analysis.volume_measured[t] && walls(t)) continue;
     frames << (count++ ? ", " : "") << t;
-    short_span = short_span || !analysis.volume_measured[t];
   }
   const std::string listed = (count == 1 ? "frame " : "frames ") + frames.str();
   const std::string es = ", frame " + std::to_string(ef.es_frame);
   if (count == 0) return "the frame of least " + volume_name + es;
-  if (short_span) {
+  if (!ef.es_by_midwall) {
     return "the frame of least " + volume_name + es + " of those with one (" +
            listed +
            " spanning too little of the axis for a volume, so ESV and the "
            "ejection fraction are n/a)";
   }
+  const char* which = Measured(ef.ratio) ? ")"
+                      : !walls(static_cast<size_t>(ef.es_frame))
+                          ? "; ES is one of them, so ESV and the ejection "
+                            "fraction are n/a)"
+                          : "; ED is one of them, so EDV and the ejection "
+                            "fraction are n/a)";
   return "the frame of least volume inside the mid-wall, which the tags "
          "place in every frame" +
          es + " (" + listed +
-         " with nothing that places the walls have no cavity" +
-         (Measured(ef.ratio) ? ")"
-                             : "; ES is one of them, so ESV and the ejection "
-                               "fraction are n/a)");
+         " with nothing that places the walls have no cavity" + which;
 }
 
 constexpr const char* kStyle =

@@ -141,6 +141,13 @@ TEST(FitReportTest, SaysHowEndSystoleWasFound) {
                         "walls have no cavity; ES is one of them, so ESV and "
                         "the ejection fraction are n/a)."),
             std::string::npos);
+  // ED without walls (--ed_frame on such a frame), ES with them.
+  analysis.ejection_fraction.es_frame = 3;
+  const std::string ed_unseen =
+      WithoutScripts(FitReportHtml(phantom.points, fit, analysis, ""));
+  EXPECT_NE(ed_unseen.find("have no cavity; ED is one of them, so EDV and "
+                           "the ejection fraction are n/a)."),
+            std::string::npos);
 }
 
 TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {

@@ -260,6 +260,15 @@ TEST(LvMixedDataTest, EndSystoleIsTheLeastVolumeInsideTheMidwall) {
     EXPECT_TRUE(std::isnan(sd.clinical[t].wall_thickening_percent)) << t;
     EXPECT_GT(sd.clinical[t].radial_contraction_percent, 0.05) << t;
   }
+  // End-diastole on a frame without walls (--ed_frame 1): ES is still the
+  // mid-wall's least frame, and the fraction has no EDV.
+  SequenceFit ed_unseen = m.fit;
+  ed_unseen.ed_frame = 1;
+  const EjectionFraction no_edv = AnalyzeFit(ed_unseen).ejection_fraction;
+  EXPECT_TRUE(no_edv.es_by_midwall);
+  EXPECT_EQ(no_edv.es_frame, 3);
+  EXPECT_TRUE(std::isnan(no_edv.edv_ml));
+  EXPECT_TRUE(std::isnan(no_edv.ratio));
 
   const Mixed early = FitMixed(LvTagLayer::kMidwall, 0, LvTagLayer::kWall,
                                /*frames=*/4, /*contours_in=*/{0, 2});
