@@ -1,5 +1,7 @@
 #include "pfdm/fit/correspondence/neighbour_noise.h"
 
+#include <numeric>
+
 #include "pfdm/fit/correspondence/transmural.h"
 #include "pfdm/util/point_cloud_tree.h"
 
@@ -8,27 +10,22 @@ namespace pfdm {
 namespace {
 
 // For each tag of `which` the difference of its residual and its nearest
-// tag's, split along the normal of its layer and across it.
+// tag's, split along the normal of its layer (normals[k] for which[k]) and
+// across it.
 struct NeighbourDifferences {
   std::vector<double> normal_squares, tangent_squares;
 };
 NeighbourDifferences DifferencesOfNeighbours(
-    const Model& model, const std::vector<Eigen::Vector3d>& positions,
+    const std::vector<Eigen::Vector3d>& positions,
     const std::vector<Eigen::Vector3d>& residuals,
-    const std::vector<MaterialPoint>& material,
+    const std::vector<Eigen::Vector3d>& normals,
     const std::vector<size_t>& which) {
   NeighbourDifferences differences;
   if (which.size() < 2) return differences;
   PointCloud cloud;
-  std::vector<MaterialPoint> tag_material;
-  for (size_t i : which) {
-    cloud.points.push_back(positions[i]);
-    tag_material.push_back(material[i]);
-  }
+  for (size_t i : which) cloud.points.push_back(positions[i]);
   PointCloudTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   tree.buildIndex();
-  const std::vector<Eigen::Vector3d> normals =
-      SurfaceNormals(model, tag_material);
   for (size_t k = 0; k < which.size(); ++k) {
     const size_t j = NearestOther(tree, cloud, k);
     Eigen::Vector3d d = residuals[which[k]] - residuals[which[j]];
@@ -54,20 +51,22 @@ double NeighbourTangentialNoiseMm(const Model& model,
                                   const std::vector<MaterialPoint>& material,
                                   const std::vector<size_t>& which,
                                   bool robust) {
-  NeighbourDifferences differences =
-      DifferencesOfNeighbours(model, positions, residuals, material, which);
-  if (differences.tangent_squares.empty()) return 0.0;
+  if (which.size() < 2) return 0.0;
+  std::vector<MaterialPoint> tag_material;
+  for (size_t i : which) tag_material.push_back(material[i]);
+  NeighbourDifferences differences = DifferencesOfNeighbours(
+      positions, residuals, SurfaceNormals(model, tag_material), which);
   // Each tangential direction of a difference carries 4 sigma^2.
   return SigmaFromChiSquared2(&differences.tangent_squares, 4.0, robust);
 }
 
-double NeighbourNormalExcessMm2(const Model& model,
-                                const std::vector<Eigen::Vector3d>& positions,
+double NeighbourNormalExcessMm2(const std::vector<Eigen::Vector3d>& positions,
                                 const std::vector<Eigen::Vector3d>& residuals,
-                                const std::vector<MaterialPoint>& material,
-                                const std::vector<size_t>& which) {
+                                const std::vector<Eigen::Vector3d>& normals) {
+  std::vector<size_t> every(positions.size());
+  std::iota(every.begin(), every.end(), size_t{0});
   const NeighbourDifferences differences =
-      DifferencesOfNeighbours(model, positions, residuals, material, which);
+      DifferencesOfNeighbours(positions, residuals, normals, every);
   return Mean(differences.normal_squares) / 2.0 -
          Mean(differences.tangent_squares) / 4.0;
 }

@@ -37,8 +37,9 @@ double NeighbourTangentialNoiseMm(const Model& model,
                                   const std::vector<size_t>& which,
                                   bool robust = false);
 
-// How much more the residuals of tags `which` vary along the normals of
-// their layers than across them (mm^2), from the same differences of
+// How much more the residuals of tags at `positions` vary along the
+// `normals` of their layers (unit) than across them (mm^2), from the same
+// differences of
 // nearest tags, which leave a smooth misfit out (a regional defect the
 // global model cannot follow, along the normal): with d = r_i - r_j, the
 // normal's variance is mean (n_i . d)^2 / 2 and a tangential coordinate's
@@ -46,11 +47,9 @@ double NeighbourTangentialNoiseMm(const Model& model,
 // second.  Held depths (held_depths.h) put frame 0's noise into a tracked
 // frame's residuals along the normal (directional_noise.h).  0 for fewer
 // than two tags; may be negative.
-double NeighbourNormalExcessMm2(const Model& model,
-                                const std::vector<Eigen::Vector3d>& positions,
+double NeighbourNormalExcessMm2(const std::vector<Eigen::Vector3d>& positions,
                                 const std::vector<Eigen::Vector3d>& residuals,
-                                const std::vector<MaterialPoint>& material,
-                                const std::vector<size_t>& which);
+                                const std::vector<Eigen::Vector3d>& normals);
 
 }  // namespace pfdm
 

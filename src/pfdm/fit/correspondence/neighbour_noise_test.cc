@@ -92,14 +92,14 @@ TEST(NeighbourNoiseTest, ExcessAlongTheNormalLeavesTheMisfitOut) {
     along += std::pow(tags.residuals[i].dot(normals[i]), 2) /
              static_cast<double>(tags.residuals.size());
   }
-  const double excess = NeighbourNormalExcessMm2(
-      model, tags.positions, tags.residuals, tags.material, tags.which);
+  const double excess =
+      NeighbourNormalExcessMm2(tags.positions, tags.residuals, normals);
   std::printf("excess along the normal %.3f mm^2 (sd alone %.3f mm)\n", excess,
               std::sqrt(along));
   EXPECT_NEAR(excess, 0.64 - 0.25, 0.05);
   EXPECT_GT(std::sqrt(along), 0.85);
-  EXPECT_EQ(NeighbourNormalExcessMm2(model, tags.positions, tags.residuals,
-                                     tags.material, {0}),
+  EXPECT_EQ(NeighbourNormalExcessMm2({tags.positions[0]}, {tags.residuals[0]},
+                                     {normals[0]}),
             0.0);
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "pfdm/fit/correspondence/neighbour_noise.h"
 #include "pfdm/fit/residuals/robust_loss.h"
@@ -10,16 +9,13 @@
 namespace pfdm {
 
 DirectionalSigma DirectionalDataSigma(
-    const Model& model, const std::vector<Eigen::Vector3d>& points,
-    const std::vector<MaterialPoint>& material,
+    const std::vector<Eigen::Vector3d>& residuals,
     const std::vector<Eigen::Vector3d>& wall_normals, const std::string& loss,
     double loss_scale_mm, double normal_parameters, double tangent_parameters) {
-  const std::vector<Eigen::Vector3d> residuals =
-      Residuals(model, points, material);
   const std::vector<double> weights =
       LossWeights(loss, loss_scale_mm, residuals);
   double normal_sum = 0.0, tangent_sum = 0.0, count = 0.0;
-  for (size_t i = 0; i < points.size(); ++i) {
+  for (size_t i = 0; i < residuals.size(); ++i) {
     const double along = wall_normals[i].dot(residuals[i]);
     normal_sum += weights[i] * along * along;
     tangent_sum += weights[i] * (residuals[i].squaredNorm() - along * along);
@@ -51,19 +47,19 @@ void ScaleByDirectionalNoise(const NormalParts& parts,
                              bool depths_held, FrameCovariance* covariance) {
   const double normal_parameters =
       parts.pseudo_inverse.cwiseProduct(normal_data_normal).sum();
+  const std::vector<Eigen::Vector3d> residuals =
+      Residuals(model, points, material);
   const DirectionalSigma split = DirectionalDataSigma(
-      model, points, material, wall_normals, loss, loss_scale_mm,
-      normal_parameters, covariance->effective_parameters - normal_parameters);
+      residuals, wall_normals, loss, loss_scale_mm, normal_parameters,
+      covariance->effective_parameters - normal_parameters);
   const int n = static_cast<int>(covariance->entries.size());
   covariance->covariance =
       DirectionalCovariance(parts, n, covariance->sigma_mm, split.tangent_mm);
   covariance->normal_sigma_mm = split.normal_mm;
   covariance->tangent_sigma_mm = split.tangent_mm;
   if (!depths_held) return;
-  std::vector<size_t> every(points.size());
-  std::iota(every.begin(), every.end(), size_t{0});
-  const double excess = NeighbourNormalExcessMm2(
-      model, points, Residuals(model, points, material), material, every);
+  const double excess =
+      NeighbourNormalExcessMm2(points, residuals, wall_normals);
   if (excess <= 0.0) return;
   const Eigen::MatrixXd head = parts.pseudo_inverse.topRows(n);
   covariance->covariance +=

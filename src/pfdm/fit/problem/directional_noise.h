@@ -71,13 +71,12 @@ struct DirectionalSigma {
   double tangent_mm = 0.0;  // Each coordinate across it.
 };
 
-// The residuals' sds along and across `wall_normals` (unit) at the model,
-// each point weighed by the robust loss as DataSigma weighs it;
-// normal_parameters and tangent_parameters are each direction's share of
-// the effective parameters.
+// The sds of the points' `residuals` at the model (Residuals) along and
+// across `wall_normals` (unit), each point weighed by the robust loss as
+// DataSigma weighs it; normal_parameters and tangent_parameters are each
+// direction's share of the effective parameters.
 DirectionalSigma DirectionalDataSigma(
-    const Model& model, const std::vector<Eigen::Vector3d>& points,
-    const std::vector<MaterialPoint>& material,
+    const std::vector<Eigen::Vector3d>& residuals,
     const std::vector<Eigen::Vector3d>& wall_normals, const std::string& loss,
     double loss_scale_mm, double normal_parameters, double tangent_parameters);
 

@@ -41,14 +41,16 @@ TEST(DirectionalNoiseTest, SplitsTheResidualAlongAndAcrossTheNormals) {
     const double sign = i % 2 == 0 ? 1.0 : -1.0;
     points.push_back(s.at[i] + sign * 0.8 * s.normals[i] + 0.3 * s.Across(i));
   }
-  const DirectionalSigma split = DirectionalDataSigma(
-      s.model, points, s.material, s.normals, "none", 0.0, 0.0, 0.0);
+  const std::vector<Eigen::Vector3d> residuals =
+      Residuals(s.model, points, s.material);
+  const DirectionalSigma split =
+      DirectionalDataSigma(residuals, s.normals, "none", 0.0, 0.0, 0.0);
   EXPECT_NEAR(split.normal_mm, 0.8, 1e-9);
   // 0.3 mm in one of the two coordinates across: sqrt(0.09 / 2).
   EXPECT_NEAR(split.tangent_mm, 0.3 / std::sqrt(2.0), 1e-9);
   // With parameters, each direction's residuals lose their share.
-  const DirectionalSigma fewer = DirectionalDataSigma(
-      s.model, points, s.material, s.normals, "none", 0.0, 100.0, 50.0);
+  const DirectionalSigma fewer =
+      DirectionalDataSigma(residuals, s.normals, "none", 0.0, 100.0, 50.0);
   const double n = static_cast<double>(points.size());
   EXPECT_NEAR(fewer.normal_mm, 0.8 * std::sqrt(n / (n - 100.0)), 1e-9);
   EXPECT_NEAR(fewer.tangent_mm, 0.3 * std::sqrt(n / (2.0 * n - 50.0)), 1e-9);
