@@ -36,17 +36,17 @@ struct LocalOptions {
   // 5) and keeps the normal phantom's segments uniform within 2 points
   // (0.01: 2.1, noise shows).
   double stiffness = 0.02;
-  // A solid's field varies linearly through the wall, d(u, v, w) = S (q +
-  // w q_w) (local_field.h), so that a segment's endocardium can move
-  // unlike its epicardium.  Its tags keep frame 0's depths (held, the
-  // default), or, ranked in every frame (hold_tag_depths false), are ranked
-  // among their nearest tags rather than their ring (NeighbourhoodDepths),
-  // so that a segment moving unlike its ring keeps them.  Off by default:
-  // on the phantoms' normal walls (lv_layer_strain_test) and biv-me's
-  // contours d(u, v) reads closer to the truth (docs/local_deformations.md).
-  // But a ring's ranks leave frame 0's section shape about the axis (a1 -
-  // a2) where the rounds start it (lv_wall_rank_shape_test.cc), which its
-  // intervals miss.
+  // A solid's field varies through the wall, d(u, v, w) = S (q + w q_w +
+  // k(w) q_k) (local_field.h), so that a segment's endocardium can move
+  // unlike its epicardium and its inner half unlike its outer one.  Its tags
+  // keep frame 0's depths (held, the default), or, ranked in every frame
+  // (hold_tag_depths false), are ranked among their nearest tags rather than
+  // their ring (NeighbourhoodDepths), so that a segment moving unlike its ring
+  // keeps them.  Off by default: on the phantoms' normal walls
+  // (lv_layer_strain_test) and biv-me's contours d(u, v) reads closer to the
+  // truth (docs/local_deformations.md). But a ring's ranks leave frame 0's
+  // section shape about the axis (a1 - a2) where the rounds start it
+  // (lv_wall_rank_shape_test.cc), which its intervals miss.
   bool transmural = false;
 };
 

@@ -75,7 +75,7 @@ LocalField LocalField::Zero(const LocalGrid& grid, bool transmural) {
   LocalField field;
   field.grid = grid;
   field.values.assign(3 * grid.NumNodes(), 0.0);
-  if (transmural) field.slope = field.values;
+  if (transmural) field.slope = field.kink = field.values;
   return field;
 }
 
@@ -86,6 +86,7 @@ Eigen::Vector3d LocalField::Displacement(double u, double v, double w) const {
 std::vector<double> LocalField::Coefficients() const {
   std::vector<double> all = values;
   all.insert(all.end(), slope.begin(), slope.end());
+  all.insert(all.end(), kink.begin(), kink.end());
   return all;
 }
 
@@ -93,6 +94,9 @@ void LocalField::SetCoefficients(const double* coefficients) {
   std::copy(coefficients, coefficients + values.size(), values.begin());
   std::copy(coefficients + values.size(),
             coefficients + values.size() + slope.size(), slope.begin());
+  std::copy(coefficients + values.size() + slope.size(),
+            coefficients + values.size() + slope.size() + kink.size(),
+            kink.begin());
 }
 
 void LocalField::AddCoefficients(const std::vector<double>& change) {
@@ -101,6 +105,8 @@ void LocalField::AddCoefficients(const std::vector<double>& change) {
       values[i] += change[i];
     } else if (i - values.size() < slope.size()) {
       slope[i - values.size()] += change[i];
+    } else if (i - values.size() - slope.size() < kink.size()) {
+      kink[i - values.size() - slope.size()] += change[i];
     }
   }
 }

@@ -9,14 +9,17 @@
 // elements are bilinear in (u, v) between rows 1 .. rows - 1, and in the
 // first row the pole's value blends linearly in u with the bilinear ring of
 // row 1: a point touches 4 nodes (pole row: the pole and 2).  In a solid
-// the field may vary linearly through the wall, d(u, v, w) = S (q + w q_w)
-// with w in [-1, 1] (transmural.h): q moves the mid-wall, q_w half the
+// the field may vary through the wall, d(u, v, w) = S (q + w q_w + k(w)
+// q_k) with w in [-1, 1] (transmural.h): q moves the mid-wall, q_w half the
 // epicardium's displacement less the endocardium's, so that a segment's
-// inner layers can contract unlike its outer ones.  Without q_w (a surface,
+// inner layers can contract unlike its outer ones, and q_k bends the
+// profile between them (TransmuralKink), so that a lesion of the inner
+// half is not read as a line through the wall.  Without q_w (a surface,
 // or a solid fitted so) d moves every layer alike.
 #ifndef PFDM_MODEL_LOCAL_FIELD_H_
 #define PFDM_MODEL_LOCAL_FIELD_H_
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -80,19 +83,30 @@ struct LocalField {
   std::vector<double> values;  // q: 3 per node, model frame, mm.
   // q_w, the change per unit w: 3 per node, or empty (no transmural part).
   std::vector<double> slope;
+  // q_k, the mid-layers' bend away from the line between the walls:
+  // TransmuralKink(w) q_k, zero at both walls; 3 per node or empty.
+  std::vector<double> kink;
 
   bool empty() const { return values.empty(); }
   bool transmural() const { return !slope.empty(); }
-  // A field of zeros on `grid` (with a zero slope when `transmural`).
+  // A field of zeros on `grid` (with a zero slope and kink when
+  // `transmural`).
   static LocalField Zero(const LocalGrid& grid, bool transmural = false);
   Eigen::Vector3d Displacement(double u, double v, double w = 0.0) const;
-  // q then q_w in one vector, as the noise draws perturb them and the
-  // contour rounds mix them; adding such a vector (a shorter one adds to q
-  // alone), or replacing them by one.
+  // q, q_w then q_k in one vector, as the noise draws perturb them and
+  // the contour rounds mix them; adding such a vector (a shorter one adds
+  // to q alone), or replacing them by one.
   std::vector<double> Coefficients() const;
   void AddCoefficients(const std::vector<double>& change);
   void SetCoefficients(const double* coefficients);
 };
+
+// clamp(3 w, -1, 1) - w: odd, zero at w = 0 and at both walls, 2/3 at
+// w = 1/3.  With 1 and w it spans the profiles linear on [-1, -1/3],
+// [-1/3, 1/3], [1/3, 1] that are odd about the mid-wall's mean.
+inline double TransmuralKink(double w) {
+  return std::clamp(3.0 * w, -1.0, 1.0) - w;
+}
 
 // d(u, v, w) for any scalar type (a Jet when u and v are differentiated, as
 // the closest-point search does); zero for an empty field.
@@ -127,8 +141,11 @@ Eigen::Matrix<T, 3, 1> LocalDisplacement(const LocalField& field, const T& u,
     const double* q = &field.values[at];
     if (!layered) return Eigen::Matrix<T, 3, 1>(T(q[0]), T(q[1]), T(q[2]));
     const double* q_w = &field.slope[at];
-    return Eigen::Matrix<T, 3, 1>(T(q[0] + w * q_w[0]), T(q[1] + w * q_w[1]),
-                                  T(q[2] + w * q_w[2]));
+    const double k = field.kink.empty() ? 0.0 : TransmuralKink(w);
+    const double* q_k = field.kink.empty() ? q_w : &field.kink[at];
+    return Eigen::Matrix<T, 3, 1>(T(q[0] + w * q_w[0] + k * q_k[0]),
+                                  T(q[1] + w * q_w[1] + k * q_k[1]),
+                                  T(q[2] + w * q_w[2] + k * q_k[2]));
   };
   const Eigen::Matrix<T, 3, 1> upper =
       (T(1.0) - t) * node(e.row + 1, e.col) + t * node(e.row + 1, e.col + 1);

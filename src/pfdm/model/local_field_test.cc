@@ -202,13 +202,48 @@ TEST(LocalFieldTest, ATransmuralFieldIsLinearInW) {
   }
 }
 
-// The noise draws perturb q and q_w as one vector: values first, then the
-// slope; a shorter vector moves q alone.
-TEST(LocalFieldTest, CoefficientsAreTheValuesThenTheSlope) {
+// k(w) = clamp(3 w, -1, 1) - w: zero at the walls and the mid-wall, odd,
+// linear between the knees at +-1/3; the field adds k(w) q_k to the line
+// q + w q_w, in doubles and Jets alike.
+TEST(LocalFieldTest, AKinkBendsTheProfileBetweenTheWalls) {
+  EXPECT_EQ(TransmuralKink(-1.0), 0.0);
+  EXPECT_EQ(TransmuralKink(0.0), 0.0);
+  EXPECT_EQ(TransmuralKink(1.0), 0.0);
+  EXPECT_NEAR(TransmuralKink(1.0 / 3.0), 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(TransmuralKink(-0.2), -0.4, 1e-15);
+  EXPECT_NEAR(TransmuralKink(0.6), 0.4, 1e-15);
+  const LocalGrid grid = Grid(5, 8);
+  LocalField field = LocalField::Zero(grid, /*transmural=*/true);
+  LocalField line = field, kink_only = LocalField::Zero(grid);
+  for (size_t i = 0; i < field.values.size(); ++i) {
+    field.values[i] = line.values[i] = std::sin(0.3 * i);
+    field.slope[i] = line.slope[i] = 0.3 * std::cos(0.7 * i);
+    field.kink[i] = kink_only.values[i] = 0.8 * std::cos(1.1 * i);
+  }
+  for (double u : {-kPi / 2, -0.9, 0.2}) {
+    for (double v : {-kPi, 0.4, 2.9}) {
+      for (double w : {-1.0, -0.5, -0.2, 0.0, 1.0 / 3.0, 0.7, 1.0}) {
+        const Eigen::Vector3d expected =
+            line.Displacement(u, v, w) +
+            TransmuralKink(w) * kink_only.Displacement(u, v);
+        EXPECT_LT((field.Displacement(u, v, w) - expected).norm(), 1e-12);
+        using Jet2 = ceres::Jet<double, 2>;
+        const Eigen::Matrix<Jet2, 3, 1> jet =
+            LocalDisplacement(field, Jet2(u, 0), Jet2(v, 1), w);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(jet[k].a, expected[k], 1e-12);
+      }
+    }
+  }
+}
+
+// The noise draws perturb q, q_w and q_k as one vector: values first, then
+// the slope, then the kink; a shorter vector moves q alone.
+TEST(LocalFieldTest, CoefficientsAreTheValuesThenTheSlopeThenTheKink) {
   const LocalGrid grid = Grid(4, 6);
   LocalField field = LocalField::Zero(grid, /*transmural=*/true);
   ASSERT_EQ(field.slope.size(), field.values.size());
-  std::vector<double> change(2 * field.values.size());
+  ASSERT_EQ(field.kink.size(), field.values.size());
+  std::vector<double> change(3 * field.values.size());
   for (size_t i = 0; i < change.size(); ++i) change[i] = i + 1.0;
   field.AddCoefficients(change);
   EXPECT_EQ(field.Coefficients(), change);
@@ -216,6 +251,7 @@ TEST(LocalFieldTest, CoefficientsAreTheValuesThenTheSlope) {
   copy.SetCoefficients(change.data());
   EXPECT_EQ(copy.Coefficients(), change);
   EXPECT_EQ(field.slope.front(), field.values.size() + 1.0);
+  EXPECT_EQ(field.kink.front(), 2.0 * field.values.size() + 1.0);
   LocalField plain = LocalField::Zero(grid);
   plain.AddCoefficients(change);
   EXPECT_EQ(plain.Coefficients().size(), plain.values.size());

@@ -239,11 +239,11 @@ TEST(LvIntervalCalibrationTest, LesionWallTags) {
   EXPECT_GT(MeanBias(lesion.thickening), 10.0);
 }
 
-// The same with the field through the wall and ranks among neighbours
-// (--local_transmural on): the lesion's radial contraction 2.05 points
-// above the truth over 100 seeds (3 seeds: 2.48), told apart in 59 of 100
-// draws; its thickening still 22 points above (at 400 tags a neighbourhood
-// of 24 tags is a sixth of the ring).
+// The same with the field through the wall (--local_transmural on, depths
+// held, the field bending between the walls): the lesion's radial
+// contraction 0.96 points above the truth over 100 seeds, told apart in 92
+// of 100 draws, its thickening 4.6 points above (docs/
+// uncertainty_calibration.md; ranked among neighbours: 2.05, 59 and 22).
 TEST(LvIntervalCalibrationTest, LesionWallTagsTransmural) {
   const LesionRows lesion =
       CalibrateLesion(Case{LvTagLayer::kWall, LvSampling::kTags, true, true},

@@ -47,6 +47,12 @@ void AppendTerm(double weight, int count, const int* nodes,
   }
 }
 
+// The weight of a ring's mean displacement rows (node weights times the
+// identity, in K): none when the ring means its components alone.
+double MeanScale(const RingMean& ring) {
+  return ring.mean_displacement ? ring.scale : 0.0;
+}
+
 // Appends the regularizer's terms and, with `directions`, the ring means'
 // radial and tangential directions (which the whole A takes, and K leaves
 // to the Woodbury columns).
@@ -57,7 +63,7 @@ void AppendRegularizer(const LocalRegularizer& regularizer, bool directions,
                term.nodes.data(), term.coefficients.data(), signature);
   }
   for (const RingMean& ring : regularizer.rings) {
-    AppendTerm(ring.scale, static_cast<int>(ring.nodes.size()),
+    AppendTerm(MeanScale(ring), static_cast<int>(ring.nodes.size()),
                ring.nodes.data(), nullptr, signature);
     if (!directions) continue;
     for (size_t k = 0; k < ring.nodes.size(); ++k) {
@@ -98,8 +104,8 @@ void ForEachScalarTerm(const LocalDirectData& data,
           term.coefficients.data());
   }
   for (const RingMean& ring : regularizer.rings) {
-    visit(ring.scale * ring.scale, static_cast<int>(ring.nodes.size()),
-          ring.nodes.data(), nullptr);
+    visit(MeanScale(ring) * MeanScale(ring),
+          static_cast<int>(ring.nodes.size()), ring.nodes.data(), nullptr);
   }
 }
 
@@ -253,8 +259,9 @@ LowerBand StiffnessBand(const LocalRegularizer& regularizer, int num_nodes,
     for (size_t p = 0; p < ring.nodes.size(); ++p) {
       for (size_t r = 0; r < ring.nodes.size(); ++r) {
         AddBlock(ring.nodes[p], ring.nodes[r],
-                 s2 * (identity + ring.radial[p] * ring.radial[r].transpose() +
-                       ring.tangential[p] * ring.tangential[r].transpose()),
+                 MeanScale(ring) * MeanScale(ring) * identity +
+                     s2 * (ring.radial[p] * ring.radial[r].transpose() +
+                           ring.tangential[p] * ring.tangential[r].transpose()),
                  &a);
       }
     }
@@ -419,7 +426,7 @@ LocalDirectSolver& LocalDirectSolver::operator=(LocalDirectSolver&&) = default;
 const LocalDirectSolver::Factor* LocalDirectSolver::FactorFor(
     const LocalDirectData& data, const LocalRegularizer& regularizer,
     int num_nodes) {
-  constexpr size_t kKept = 2;
+  constexpr size_t kKept = 3;
   std::vector<double> signature = Signature(data, regularizer, num_nodes);
   for (size_t i = 0; i < factors_.size(); ++i) {
     if (factors_[i]->signature == signature) {

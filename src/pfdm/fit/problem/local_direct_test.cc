@@ -133,6 +133,30 @@ TEST(LocalDirectTest, SolvesAsCeresDoes) {
   }
 }
 
+// Rings that mean their radial and tangential components alone (a
+// solid's q_w, local_fit.cc): the direct solve is Ceres' within 1e-9 mm,
+// with points pulling whole and along normals, and it differs from the
+// solve with the rings' mean displacement by more than 0.01 mm.
+TEST(LocalDirectTest, SolvesRingsOfComponentsAloneAsCeresDoes) {
+  for (bool sliding : {false, true}) {
+    const Case c = MakeCase(600, /*weighted=*/false, 5, sliding);
+    const LocalRegularizer full =
+        MakeLocalRegularizer(c.model, c.grid, 600, 0.05);
+    LocalRegularizer regularizer = full;
+    for (RingMean& ring : regularizer.rings) ring.mean_displacement = false;
+    SolverReport ceres_report;
+    const LocalField expected = CeresSolve(c, regularizer, &ceres_report);
+    ASSERT_TRUE(ceres_report.usable);
+    LocalDirectSolver solver;
+    LocalField field = LocalField::Zero(c.grid), with_means = field;
+    SolverReport report;
+    ASSERT_TRUE(solver.Solve(c.data, regularizer, &field, &report));
+    EXPECT_LT(MaxDifference(field, expected), 1e-9) << sliding;
+    ASSERT_TRUE(solver.Solve(c.data, full, &with_means, &report));
+    EXPECT_GT(MaxDifference(field, with_means), 0.01) << sliding;
+  }
+}
+
 // Every point on a contour and each node held to the global surface's
 // normal (a frame of contours alone): the direct solve restricted to one
 // unknown per node is Ceres' on the AlongDirection manifold within 1e-9 mm,

@@ -21,10 +21,11 @@ namespace {
 constexpr int kMaxReweightings = 10;
 constexpr double kReweightTolerance = 0.01;
 
-// A solid's two parts are solved in turn until a pass moves no nodal value
-// by this much (mm), or kMaxPasses passes.
+// A solid's parts are solved in turn until a pass moves no nodal value by
+// this much (mm), or kMaxPasses passes (q_w's and q_k's shares correlate:
+// about 20 passes).
 constexpr double kPassTolerance = 1e-4;
-constexpr int kMaxPasses = 8;
+constexpr int kMaxPasses = 30;
 
 // The local field's data: each point's rows at its element
 // (LocalPointRows), scaled by the square root of its weight when the loss
@@ -123,6 +124,10 @@ std::vector<Eigen::Vector3d> LocalData::Residuals(
       q.segment<3>(3 * k) = Eigen::Vector3d(&field.values[at]);
       if (field.transmural()) {
         q.segment<3>(3 * k) += w(i) * Eigen::Vector3d(&field.slope[at]);
+      }
+      if (!field.kink.empty()) {
+        q.segment<3>(3 * k) +=
+            TransmuralKink(w(i)) * Eigen::Vector3d(&field.kink[at]);
       }
     }
     residuals[i].head(rows.rows()) = rows.leftCols(n) * q + rows.col(n);
@@ -248,19 +253,21 @@ SolverReport SolveOne(const LocalData& data,
   return SolveProblem(&problem, solver);
 }
 
-// A solid's field d_i = S_i (q + w_i q_w) as two parts A and B with
-// d_i = a_i S_i A + b_i S_i B.  When every point lies on a wall (|w| = 1:
-// both walls' contours) A and B are the endocardium's and the epicardium's
-// fields, a = (1 - w) / 2, b = (1 + w) / 2, q = (A + B) / 2, q_w = (B - A)
-// / 2: their points are apart, and with half the regularizer each (the
+// A solid's field d_i = S_i (q + w_i q_w + k(w_i) q_k) (k: TransmuralKink)
+// as parts P_j with d_i = sum_j a_ij S_i P_j.  When every point lies on a
+// wall (|w| = 1: both walls' contours) the parts are the endocardium's and
+// the epicardium's fields A and B, a = (1 - w) / 2, b = (1 + w) / 2, q =
+// (A + B) / 2, q_w = (B - A) / 2, and q_k, zero at the walls, stays 0:
+// their points are apart, and with half the regularizer each (the
 // parallelogram law: R(q) + R(q_w) = (R(A) + R(B)) / 2) so are their
 // costs, and one pass is the minimum.  Otherwise (tags through the wall)
-// A = q and B = q_w, a = 1, b = w: tags spread about the mid-wall keep the
-// parts nearly apart, and a few passes converge.
+// the parts are q, q_w and q_k with shares 1, w and k(w): tags spread
+// about the mid-wall keep q apart from the others, but w and k(w)
+// correlate (0.67 over an even spread), and the passes converge slowly.
 struct Parts {
   bool layers = false;
-  std::vector<double> a, b;
-  LocalField first, second;  // Values only.
+  std::vector<std::vector<double>> scales;
+  std::vector<LocalField> fields;  // Values only.
 };
 
 Parts SplitParts(const LocalData& data, const LocalField& field) {
@@ -269,25 +276,29 @@ Parts SplitParts(const LocalData& data, const LocalField& field) {
   for (size_t i = 0; i < data.size(); ++i) {
     parts.layers = parts.layers && std::abs(data.w(i)) == 1.0;
   }
+  const int count = parts.layers || field.kink.empty() ? 2 : 3;
+  parts.scales.assign(count, std::vector<double>(data.size()));
   for (size_t i = 0; i < data.size(); ++i) {
-    parts.a.push_back(parts.layers ? 0.5 * (1.0 - data.w(i)) : 1.0);
-    parts.b.push_back(parts.layers ? 0.5 * (1.0 + data.w(i)) : data.w(i));
+    parts.scales[0][i] = parts.layers ? 0.5 * (1.0 - data.w(i)) : 1.0;
+    parts.scales[1][i] = parts.layers ? 0.5 * (1.0 + data.w(i)) : data.w(i);
+    if (count == 3) parts.scales[2][i] = TransmuralKink(data.w(i));
   }
-  parts.first = LocalField::Zero(field.grid);
-  parts.second = parts.first;
+  parts.fields.assign(count, LocalField::Zero(field.grid));
   for (size_t k = 0; k < field.values.size(); ++k) {
     const double q = field.values[k], q_w = field.slope[k];
-    parts.first.values[k] = parts.layers ? q - q_w : q;
-    parts.second.values[k] = parts.layers ? q + q_w : q_w;
+    parts.fields[0].values[k] = parts.layers ? q - q_w : q;
+    parts.fields[1].values[k] = parts.layers ? q + q_w : q_w;
+    if (count == 3) parts.fields[2].values[k] = field.kink[k];
   }
   return parts;
 }
 
 void JoinParts(const Parts& parts, LocalField* field) {
   for (size_t k = 0; k < field->values.size(); ++k) {
-    const double a = parts.first.values[k], b = parts.second.values[k];
+    const double a = parts.fields[0].values[k], b = parts.fields[1].values[k];
     field->values[k] = parts.layers ? 0.5 * (a + b) : a;
     field->slope[k] = parts.layers ? 0.5 * (b - a) : b;
+    if (parts.fields.size() == 3) field->kink[k] = parts.fields[2].values[k];
   }
 }
 
@@ -307,6 +318,19 @@ std::vector<Eigen::Vector3d> Held(const LocalData& data,
   return held;
 }
 
+// Each point's displacement by every part but `solved`.
+std::vector<Eigen::Vector3d> HeldByOthers(const LocalData& data,
+                                          const Parts& parts, size_t solved) {
+  std::vector<Eigen::Vector3d> held(data.size(), Eigen::Vector3d::Zero());
+  for (size_t p = 0; p < parts.fields.size(); ++p) {
+    if (p == solved) continue;
+    const std::vector<Eigen::Vector3d> part =
+        Held(data, parts.scales[p], parts.fields[p]);
+    for (size_t i = 0; i < held.size(); ++i) held[i] += part[i];
+  }
+  return held;
+}
+
 double MaxChange(const LocalField& before, const LocalField& after) {
   double change = 0.0;
   for (size_t k = 0; k < before.values.size(); ++k) {
@@ -315,40 +339,72 @@ double MaxChange(const LocalField& before, const LocalField& after) {
   return change;
 }
 
-// Block Gauss-Seidel over the two parts (Parts): each solved with the
-// other held, until a pass changes neither.  The report's last cost is the
-// whole field's, both regularizers included.
+// Each part's regularizer.  Tags through the wall: q_w's and q_k's
+// stiffness is scaled by their mean squared share, so that each part is
+// as stiff against its own data as q (q_w's data weigh w^2, a third of
+// q's).  q_w keeps the ring means of its radial and tangential components
+// (a ring's mean thickness and transmural twist are the global
+// functions') but not of its displacement: no global function moves the
+// endocardium's centre against the epicardium's, and those rows held a
+// lesion's thickening toward its ring.  q_k has none: the global model has
+// no bend through the wall (docs/local_deformations.md, "Through the
+// wall").
+std::vector<LocalRegularizer> PartRegularizers(
+    const Parts& parts, const LocalRegularizer& regularizer) {
+  if (parts.layers) {
+    return std::vector<LocalRegularizer>(parts.fields.size(),
+                                         Scaled(regularizer, std::sqrt(0.5)));
+  }
+  std::vector<LocalRegularizer> regularizers = {regularizer};
+  for (size_t p = 1; p < parts.fields.size(); ++p) {
+    double mean_square = 0.0;
+    for (double share : parts.scales[p]) mean_square += share * share;
+    mean_square /=
+        static_cast<double>(std::max<size_t>(1, parts.scales[p].size()));
+    LocalRegularizer part = Scaled(regularizer, std::sqrt(mean_square));
+    if (p == 1) {
+      for (RingMean& ring : part.rings) ring.mean_displacement = false;
+    } else {
+      part.rings.clear();
+    }
+    regularizers.push_back(std::move(part));
+  }
+  return regularizers;
+}
+
+// Block Gauss-Seidel over the parts (Parts): each solved with the others
+// held, until a pass changes none.  The report's last cost is the whole
+// field's, every part's regularizer included.
 SolverReport SolveParts(LocalData* data, const LocalRegularizer& regularizer,
                         const FitOptions& options, LocalDirectSolver* direct,
                         LocalField* field) {
   Parts parts = SplitParts(*data, *field);
-  const LocalRegularizer part_regularizer =
-      parts.layers ? Scaled(regularizer, std::sqrt(0.5)) : regularizer;
+  const std::vector<LocalRegularizer> regularizers =
+      PartRegularizers(parts, regularizer);
   SolverReport report;
   int iterations = 0;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
-    const LocalField first = parts.first, second = parts.second;
-    data->set_part(parts.a, Held(*data, parts.b, parts.second));
-    report = SolveOne(*data, part_regularizer, options, direct, &parts.first);
-    iterations += report.iterations;
-    if (!report.usable) break;
-    data->set_part(parts.b, Held(*data, parts.a, parts.first));
-    report = SolveOne(*data, part_regularizer, options, direct, &parts.second);
-    iterations += report.iterations;
-    if (!report.usable || parts.layers) break;
-    if (std::max(MaxChange(first, parts.first),
-                 MaxChange(second, parts.second)) < kPassTolerance) {
-      break;
+    double change = 0.0;
+    for (size_t p = 0; p < parts.fields.size(); ++p) {
+      const LocalField before = parts.fields[p];
+      data->set_part(parts.scales[p], HeldByOthers(*data, parts, p));
+      report =
+          SolveOne(*data, regularizers[p], options, direct, &parts.fields[p]);
+      iterations += report.iterations;
+      if (!report.usable) break;
+      change = std::max(change, MaxChange(before, parts.fields[p]));
     }
+    if (!report.usable || parts.layers || change < kPassTolerance) break;
   }
   data->set_part({}, {});
   JoinParts(parts, field);
   report.iterations = iterations;
   if (!report.trace.empty()) {
-    report.trace.back().cost =
-        data->Cost(*field) +
-        RegularizerCost(part_regularizer, parts.first.values) +
-        RegularizerCost(part_regularizer, parts.second.values);
+    double cost = data->Cost(*field);
+    for (size_t p = 0; p < parts.fields.size(); ++p) {
+      cost += RegularizerCost(regularizers[p], parts.fields[p].values);
+    }
+    report.trace.back().cost = cost;
   }
   return report;
 }

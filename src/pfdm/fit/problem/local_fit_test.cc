@@ -278,7 +278,11 @@ TEST(LocalFitTest, RingMeansStayWithTheGlobalFunctions) {
 
 // A solid (the shell, 10 mm wall) whose field varies through the wall: q
 // as MakeTruth's, q_w radial cos 2v and axial cos v (no ring mean).
-Model TransmuralShell(const LocalGrid& grid) {
+// A shell whose field varies through the wall; `bent`: also a ring-wide
+// shift of the epicardium against the endocardium in q_w (which q's ring
+// means would hold) and a kink q_k between the walls, as tags through the
+// wall see and both walls' contours cannot.
+Model TransmuralShell(const LocalGrid& grid, bool bent = false) {
   Model model = TestShell(5);
   model.state.center = {10.0, -5.0, 30.0};
   model.state.quaternion = {std::cos(0.25), 0.0, std::sin(0.25), 0.0};
@@ -293,18 +297,24 @@ Model TransmuralShell(const LocalGrid& grid) {
       field.slope[at] = amplitude * std::cos(2 * v) * std::cos(v);
       field.slope[at + 1] = amplitude * std::cos(2 * v) * std::sin(v);
       field.slope[at + 2] = 0.5 * amplitude * std::cos(v);
+      if (!bent) continue;
+      field.slope[at] += 0.4 * amplitude;
+      field.kink[at] = 1.5 * amplitude * std::sin(2 * v) * std::cos(v);
+      field.kink[at + 1] = 1.5 * amplitude * std::sin(2 * v) * std::sin(v);
     }
   }
   model.state.local = field;
   return model;
 }
 
-// The largest distance (mm) between the models' endocardia, mid-walls and
-// epicardia over a dense grid.
+// The largest distance (mm) between the models' layers at `depths` over a
+// dense grid.
 double WorstThroughTheWall(const Model& a, const Model& b,
-                           const LocalGrid& grid) {
+                           const LocalGrid& grid,
+                           const std::vector<double>& depths = {-1.0, 0.0,
+                                                                1.0}) {
   double worst = 0.0;
-  for (double w : {-1.0, 0.0, 1.0}) {
+  for (double w : depths) {
     for (int i = 0; i <= 30; ++i) {
       const double u = grid.u_min + (grid.u_max - grid.u_min) * i / 30;
       for (int j = 0; j < 48; ++j) {
@@ -339,18 +349,24 @@ WallPoints SampleTheWall(const Model& truth, bool surfaces_only) {
   return out;
 }
 
-// Tags through the wall: both parts (q, and q_w at each tag's w) come back
-// with every solver, in a few passes of the two; both surfaces alone (w =
-// +-1, as both walls' contours) are the endocardium's and the epicardium's
-// fields, apart: one pass, the direct solver's two solves.
+// Tags through the wall: the three parts (q, q_w at each tag's w and the
+// kink q_k) come back with every solver, in a few passes, at the walls and
+// the layers between (w = +-1/3, +-0.6), a ring-wide shift included;
+// both surfaces alone (w = +-1, as both walls' contours) are the
+// endocardium's and the epicardium's fields, apart: one pass, the direct
+// solver's two solves.
 TEST(LocalFitTest, ATransmuralFieldComesBackThroughTheWall) {
   const LocalGrid grid = GridOver(TestShell(5).config, 7, 12);
-  const Model truth = TransmuralShell(grid);
-  Model global = truth;
-  global.state.local = LocalField();
   for (bool surfaces_only : {false, true}) {
+    const Model truth = TransmuralShell(grid, /*bent=*/!surfaces_only);
+    Model global = truth;
+    global.state.local = LocalField();
     const WallPoints data = SampleTheWall(truth, surfaces_only);
     const std::vector<bool> sliding(data.points.size(), false);
+    const std::vector<double> depths =
+        surfaces_only ? std::vector<double>{-1.0, 0.0, 1.0}
+                      : std::vector<double>{-1.0,      -0.6, -1.0 / 3.0, 0.0,
+                                            1.0 / 3.0, 0.6,  1.0};
     for (const char* solver : {"direct", "damped"}) {
       FitOptions options;
       options.solver.kind = SolverFromName(solver);
@@ -363,7 +379,7 @@ TEST(LocalFitTest, ATransmuralFieldComesBackThroughTheWall) {
           FitLocalField(data.points, data.material, sliding, options, &fitted);
       ASSERT_TRUE(report.usable) << solver;
       ASSERT_TRUE(fitted.state.local.transmural());
-      const double worst = WorstThroughTheWall(fitted, truth, grid);
+      const double worst = WorstThroughTheWall(fitted, truth, grid, depths);
       std::printf("%s, %s: worst %.4f mm, %d iterations\n",
                   surfaces_only ? "surfaces" : "through the wall", solver,
                   worst, report.iterations);
@@ -373,6 +389,9 @@ TEST(LocalFitTest, ATransmuralFieldComesBackThroughTheWall) {
       }
     }
   }
+  const Model truth = TransmuralShell(grid);
+  Model global = truth;
+  global.state.local = LocalField();
   // Without the option the same solid's field moves every layer alike.
   FitOptions options;
   options.local.rows = grid.rows;

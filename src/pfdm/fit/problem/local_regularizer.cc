@@ -124,7 +124,8 @@ double RegularizerCost(const LocalRegularizer& regularizer,
       tangential += node(ring.nodes[k]).dot(ring.tangential[k]);
     }
     sum += ring.scale * ring.scale *
-           (mean.squaredNorm() + radial * radial + tangential * tangential);
+           ((ring.mean_displacement ? mean.squaredNorm() : 0.0) +
+            radial * radial + tangential * tangential);
   }
   return 0.5 * sum;
 }
@@ -152,7 +153,8 @@ void AddLocalRegularizer(const LocalRegularizer& regularizer, LocalField* field,
     std::vector<double*> nodes;
     for (size_t k = 0; k < ring.nodes.size(); ++k) {
       Eigen::MatrixXd rows(5, 3);
-      rows.topRows<3>() = Eigen::Matrix3d::Identity();
+      rows.topRows<3>() =
+          (ring.mean_displacement ? 1.0 : 0.0) * Eigen::Matrix3d::Identity();
       rows.row(3) = ring.radial[k].transpose();
       rows.row(4) = ring.tangential[k].transpose();
       blocks.push_back(ring.scale * rows);

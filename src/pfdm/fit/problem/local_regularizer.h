@@ -26,6 +26,11 @@ struct NodeDifference {
 // the global model's directions at each node (z = 0).
 struct RingMean {
   double scale = 0.0;
+  // False: the mean radial and tangential components alone (a solid's q_w:
+  // the ring's mean thickness and transmural twist are the global
+  // functions', an endocardium's centre moving against the epicardium's is
+  // none's).
+  bool mean_displacement = true;
   std::vector<int> nodes;
   std::vector<Eigen::Vector3d> radial;
   std::vector<Eigen::Vector3d> tangential;

@@ -59,6 +59,20 @@ TEST(LocalRegularizerTest, CostsATranslationItsMeansOnly) {
   const double expected =
       0.5 * (pole * pole + 4 * ring * ring) * t.squaredNorm();
   EXPECT_NEAR(cost, expected, 1e-9 * expected);
+  EXPECT_NEAR(RegularizerCost(regularizer, field.values), expected,
+              1e-9 * expected);
+  // Rings that mean their radial and tangential components alone (a
+  // solid's q_w) leave the translation to the pole.
+  LocalRegularizer components = regularizer;
+  for (RingMean& r : components.rings) r.mean_displacement = false;
+  ceres::Problem alone;
+  AddLocalRegularizer(components, &field, &alone);
+  alone.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr,
+                 nullptr);
+  const double pole_only = 0.5 * pole * pole * t.squaredNorm();
+  EXPECT_NEAR(cost, pole_only, 1e-9 * pole_only);
+  EXPECT_NEAR(RegularizerCost(components, field.values), pole_only,
+              1e-9 * pole_only);
 }
 
 }  // namespace
