@@ -47,12 +47,6 @@ void AppendTerm(double weight, int count, const int* nodes,
   }
 }
 
-// The weight of a ring's mean displacement rows (node weights times the
-// identity, in K): none when the ring means its components alone.
-double MeanScale(const RingMean& ring) {
-  return ring.mean_displacement ? ring.scale : 0.0;
-}
-
 // Appends the regularizer's terms and, with `directions`, the ring means'
 // radial and tangential directions (which the whole A takes, and K leaves
 // to the Woodbury columns).
@@ -63,7 +57,7 @@ void AppendRegularizer(const LocalRegularizer& regularizer, bool directions,
                term.nodes.data(), term.coefficients.data(), signature);
   }
   for (const RingMean& ring : regularizer.rings) {
-    AppendTerm(MeanScale(ring), static_cast<int>(ring.nodes.size()),
+    AppendTerm(ring.displacement_scale(), static_cast<int>(ring.nodes.size()),
                ring.nodes.data(), nullptr, signature);
     if (!directions) continue;
     for (size_t k = 0; k < ring.nodes.size(); ++k) {
@@ -104,7 +98,7 @@ void ForEachScalarTerm(const LocalDirectData& data,
           term.coefficients.data());
   }
   for (const RingMean& ring : regularizer.rings) {
-    visit(MeanScale(ring) * MeanScale(ring),
+    visit(ring.displacement_scale() * ring.displacement_scale(),
           static_cast<int>(ring.nodes.size()), ring.nodes.data(), nullptr);
   }
 }
@@ -256,10 +250,11 @@ LowerBand StiffnessBand(const LocalRegularizer& regularizer, int num_nodes,
   }
   for (const RingMean& ring : regularizer.rings) {
     const double s2 = ring.scale * ring.scale;
+    const double d2 = ring.displacement_scale() * ring.displacement_scale();
     for (size_t p = 0; p < ring.nodes.size(); ++p) {
       for (size_t r = 0; r < ring.nodes.size(); ++r) {
         AddBlock(ring.nodes[p], ring.nodes[r],
-                 MeanScale(ring) * MeanScale(ring) * identity +
+                 d2 * identity +
                      s2 * (ring.radial[p] * ring.radial[r].transpose() +
                            ring.tangential[p] * ring.tangential[r].transpose()),
                  &a);

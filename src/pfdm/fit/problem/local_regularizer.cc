@@ -123,9 +123,10 @@ double RegularizerCost(const LocalRegularizer& regularizer,
       radial += node(ring.nodes[k]).dot(ring.radial[k]);
       tangential += node(ring.nodes[k]).dot(ring.tangential[k]);
     }
-    sum += ring.scale * ring.scale *
-           ((ring.mean_displacement ? mean.squaredNorm() : 0.0) +
-            radial * radial + tangential * tangential);
+    const double d = ring.displacement_scale();
+    sum +=
+        d * d * mean.squaredNorm() +
+        ring.scale * ring.scale * (radial * radial + tangential * tangential);
   }
   return 0.5 * sum;
 }
@@ -154,10 +155,10 @@ void AddLocalRegularizer(const LocalRegularizer& regularizer, LocalField* field,
     for (size_t k = 0; k < ring.nodes.size(); ++k) {
       Eigen::MatrixXd rows(5, 3);
       rows.topRows<3>() =
-          (ring.mean_displacement ? 1.0 : 0.0) * Eigen::Matrix3d::Identity();
-      rows.row(3) = ring.radial[k].transpose();
-      rows.row(4) = ring.tangential[k].transpose();
-      blocks.push_back(ring.scale * rows);
+          ring.displacement_scale() * Eigen::Matrix3d::Identity();
+      rows.row(3) = ring.scale * ring.radial[k].transpose();
+      rows.row(4) = ring.scale * ring.tangential[k].transpose();
+      blocks.push_back(rows);
       nodes.push_back(block(ring.nodes[k]));
     }
     problem->AddResidualBlock(

@@ -34,6 +34,9 @@ struct RingMean {
   std::vector<int> nodes;
   std::vector<Eigen::Vector3d> radial;
   std::vector<Eigen::Vector3d> tangential;
+
+  // The weight of the mean displacement's rows: scale, or 0 without them.
+  double displacement_scale() const { return mean_displacement ? scale : 0.0; }
 };
 
 struct LocalRegularizer {
