@@ -198,9 +198,10 @@ void DefFitJson(FitClass& fit) {
           [](const FitResult& r) { return FitJsonMember(r, "segments"); },
           "dict: fit.json's segments: anatomical, anchor (the RV "
           "insertion's source, or why the segments are not anatomical), "
-          "definition, rv_insertion, apex_cap, and through_the_wall where a "
-          "solid was fitted without --local_transmural: what its segments "
-          "cannot show (a regional defect through the wall).")
+          "definition, rv_insertion, apex_cap, and through_the_wall for a "
+          "solid: what its segments cannot show (without "
+          "--local_transmural, a regional defect through the wall; with it, "
+          "a third of the wall's thickening).")
       .def_property_readonly(
           "regions",
           [](const FitResult& r) { return FitJsonMember(r, "regions"); },

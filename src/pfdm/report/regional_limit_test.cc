@@ -44,7 +44,9 @@ TEST(RegionalLimitTest, BySurfaceFieldAndTracking) {
   for (FrameFit& frame : transmural.frames) {
     frame.state.local = LocalField::Zero(grid, /*transmural=*/true);
   }
-  EXPECT_EQ(RegionalLimitOf(transmural), RegionalLimit::kNone);
+  EXPECT_EQ(RegionalLimitOf(transmural), RegionalLimit::kThirds);
+  EXPECT_NE(RegionalLimitNote(RegionalLimit::kThirds).find("third"),
+            std::string::npos);
   for (FrameFit& frame : fit.frames) frame.tracked = false;
   EXPECT_EQ(RegionalLimitOf(fit), RegionalLimit::kThickening);
   for (RegionalLimit limit :
