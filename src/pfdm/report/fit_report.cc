@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/report/clinical_summary.h"
@@ -58,6 +60,35 @@ std::string UntrackedNote(const FitAnalysis& analysis) {
   return h.str();
 }
 
+// "frame 3" or "frames 1, 2".
+std::string FrameList(const std::vector<size_t>& frames) {
+  std::ostringstream text;
+  text << (frames.size() == 1 ? "frame " : "frames ");
+  for (size_t i = 0; i < frames.size(); ++i)
+    text << (i ? ", " : "") << frames[i];
+  return text.str();
+}
+
+// What the frames without a volume lack, each group with its own reason:
+// those whose data span too little of the axis (volume_measured), then
+// those with nothing that places the walls (walls_measured); a frame
+// short of both is named once, with the first.
+std::string NoVolumeClauses(const std::vector<size_t>& short_span,
+                            const std::vector<size_t>& unseen) {
+  std::string clauses;
+  if (!short_span.empty()) {
+    clauses = FrameList(short_span) +
+              (short_span.size() == 1 ? " spans" : " span") +
+              " too little of the axis for a volume";
+  }
+  if (!unseen.empty()) {
+    clauses += (clauses.empty() ? "" : "; ") + FrameList(unseen) +
+               " with nothing that places the walls " +
+               (unseen.size() == 1 ? "has" : "have") + " no cavity";
+  }
+  return clauses;
+}
+
 // How ES was found, "the frame of least <volume>, frame k", and where
 // frames have no volume (FitAnalysis::volume_measured, walls_measured)
 // which frames and why: a short span, or, where ES was found inside the
@@ -69,31 +100,33 @@ std::string EndSystolePhrase(const FitAnalysis& analysis,
   const auto walls = [&analysis](size_t t) {
     return t >= analysis.walls_measured.size() || analysis.walls_measured[t];
   };
-  std::ostringstream frames;
-  int count = 0;
+  std::vector<size_t> short_span, unseen;
   for (size_t t = 0; t < analysis.volume_measured.size(); ++t) {
-    if (analysis.volume_measured[t] && walls(t)) continue;
-    frames << (count++ ? ", " : "") << t;
+    if (!analysis.volume_measured[t]) {
+      short_span.push_back(t);
+    } else if (!walls(t)) {
+      unseen.push_back(t);
+    }
   }
-  const std::string listed = (count == 1 ? "frame " : "frames ") + frames.str();
+  const std::string clauses = NoVolumeClauses(short_span, unseen);
   const std::string es = ", frame " + std::to_string(ef.es_frame);
-  if (count == 0) return "the frame of least " + volume_name + es;
+  if (clauses.empty()) return "the frame of least " + volume_name + es;
   if (!ef.es_by_midwall) {
     return "the frame of least " + volume_name + es + " of those with one (" +
-           listed +
-           " spanning too little of the axis for a volume, so ESV and the "
-           "ejection fraction are n/a)";
+           clauses + ", so ESV and the ejection fraction are n/a)";
   }
+  const size_t es_frame = static_cast<size_t>(ef.es_frame);
+  const bool es_without =
+      !walls(es_frame) || (es_frame < analysis.volume_measured.size() &&
+                           !analysis.volume_measured[es_frame]);
   const char* which = Measured(ef.ratio) ? ")"
-                      : !walls(static_cast<size_t>(ef.es_frame))
-                          ? "; ES is one of them, so ESV and the ejection "
-                            "fraction are n/a)"
-                          : "; ED is one of them, so EDV and the ejection "
-                            "fraction are n/a)";
+                      : es_without ? "; ES is one of them, so ESV and the "
+                                     "ejection fraction are n/a)"
+                                   : "; ED is one of them, so EDV and the "
+                                     "ejection fraction are n/a)";
   return "the frame of least volume inside the mid-wall, which the tags "
          "place in every frame" +
-         es + " (" + listed +
-         " with nothing that places the walls have no cavity" + which;
+         es + " (" + clauses + which;
 }
 
 constexpr const char* kStyle =

@@ -154,6 +154,46 @@ TEST(FitReportTest, SaysHowEndSystoleWasFound) {
             std::string::npos);
 }
 
+// Frames whose data span too little of the axis are named for that, apart
+// from those with nothing that places the walls (each used to be listed
+// under the other's reason), and one frame takes the singular.
+TEST(FitReportTest, NamesEachFrameWithoutAVolumeForItsOwnReason) {
+  PhantomOptions options;
+  options.num_points = 50;
+  const Phantom phantom = MakePhantom(options);
+  const SequenceFit fit = TruthAsFit(phantom);
+  ASSERT_GE(fit.frames.size(), 4u);
+  FitAnalysis analysis = AnalyzeFit(fit);
+  analysis.volume_measured.assign(fit.frames.size(), true);
+  analysis.volume_measured[3] = false;
+  const std::string es = std::to_string(analysis.ejection_fraction.es_frame);
+  const std::string short_span =
+      WithoutScripts(FitReportHtml(phantom.points, fit, analysis, ""));
+  EXPECT_NE(short_span.find("frame " + es +
+                            " of those with one (frame 3 spans too little of "
+                            "the axis for a volume, so ESV and the ejection "
+                            "fraction are n/a)."),
+            std::string::npos);
+  analysis.walls_measured.assign(fit.frames.size(), true);
+  analysis.walls_measured[1] = analysis.walls_measured[2] = false;
+  analysis.ejection_fraction.es_by_midwall = true;
+  const std::string mixed =
+      WithoutScripts(FitReportHtml(phantom.points, fit, analysis, ""));
+  EXPECT_NE(mixed.find("frame " + es +
+                       " (frame 3 spans too little of the axis for a volume; "
+                       "frames 1, 2 with nothing that places the walls have "
+                       "no cavity)."),
+            std::string::npos);
+  analysis.volume_measured[3] = true;
+  analysis.walls_measured[2] = true;
+  const std::string one =
+      WithoutScripts(FitReportHtml(phantom.points, fit, analysis, ""));
+  EXPECT_NE(one.find("frame " + es +
+                     " (frame 1 with nothing that places the walls has no "
+                     "cavity)."),
+            std::string::npos);
+}
+
 TEST(FitReportTest, OnePageWithKeyNumbersTablesAndNoExternalResources) {
   PhantomOptions options;
   options.num_points = 50;
