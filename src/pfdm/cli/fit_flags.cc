@@ -119,7 +119,9 @@ DEFINE_string(tag_depths, kDefaults.tag_depths.c_str(),
               "a solid's tags through the wall keep frame 0's depth in every "
               "frame, as they keep its material point (held), or are ranked "
               "across the wall in each (ranked; among their neighbours with "
-              "--local_transmural on)");
+              "--local_transmural on); where a frame's contours place both "
+              "walls, its tags' depths are measured across them whatever "
+              "this says (fit.json's tag_depths: measured)");
 DEFINE_string(uncertainty, kDefaults.uncertainty.c_str(),
               "each frame's parameter covariance, a standard deviation per "
               "knot value in parameters.csv: on or off");
