@@ -163,21 +163,26 @@ TEST(LvIntervalCalibrationTest, MidwallTags) {
 
 // Tags through the wall, their depths held from frame 0 (the default
 // since 2026-12-07).  Over 100 seeds GCS's interval held the noise-free fit
-// in 0.95 of draws, its centre's mean error +0.21 against an sd of 0.30
+// in 0.95 of draws, its centre's mean error +0.20 against an sd of 0.30
 // (ranked in every frame: 0.83, -0.32; the ranks put wiggles of their own
-// into the fit).  The wall's thickening reads under the same tags'
-// noise-free fit, 1.49 points over 100 seeds, the segments' 1.59: the
-// depth profile's cubic reads the held depths' errors (docs/gauge.md, "Why
-// held depths read low under noise"); its interval, since the tracked
-// frame's covariance carries the held depths' noise (directional_noise.h),
-// held it in 0.94 (0.95 with the lesion; 0.90 and 0.89 before).  Against
-// the dense fit the wall's thickening is 0.24 under.
+// into the fit).  The wall's thickening held it in 0.97, its mean error
+// +0.41 (its centre, less the draws' noise bias, -0.15) against an sd of
+// 4.0: until the pilot read frame 0's share of the noise as stretched by
+// the wall's motion (tangential_stretch.h) it read 1.49 points under, the
+// depths shrunk for too little noise (docs/gauge.md, "Why held depths read
+// low under noise").  Three seeds cannot see that (their mean error's
+// spread is 2.3 points): CI bounds it by its sd, 100 seeds by a quarter of
+// it (the old bias was 0.38 sds; LvWallSegmentSeedsTest's mean bound is
+// CI's guard).  Against the dense fit the wall's thickening is 1.7 over.
 TEST(LvIntervalCalibrationTest, WallTags) {
   const auto rows =
       CalibrateKind(Case{LvTagLayer::kWall}, "400 tags through the wall");
   const Tally& gcs = Row(rows, "GCS %");
   EXPECT_LT(std::abs(gcs.MeanError()), gcs.MeanSd());
-  EXPECT_LT(Row(rows, "wall thickening %").MeanError(), 0.0);
+  const Tally& thickening = Row(rows, "wall thickening %");
+  const double allowed_sds = CalibrationSeeds() >= 100 ? 0.25 : 1.0;
+  EXPECT_LT(std::abs(thickening.MeanError()),
+            allowed_sds * thickening.MeanSd());
 }
 
 // Mid-wall tags of the LV phantom whose segment 8 contracts at 40 % of
@@ -223,8 +228,8 @@ TEST(LvIntervalCalibrationTest, LesionMidwallTags) {
 // held from frame 0 (FitOptions::hold_tag_depths) and a field that moves
 // every layer alike (FitOptions::local.transmural off).  The lesion's
 // motion shows: over 100 seeds (2026-12-07) told apart from its neighbours
-// in 96 of 100 draws, its radial contraction 0.86 points above the truth.
-// Its thickening reads its ring's, 16.6 points above (16.9 % true): the
+// in 95 of 100 draws, its radial contraction 0.87 points above the truth.
+// Its thickening reads its ring's, 18.1 points above (16.9 % true): the
 // field moves the layers alike.  The report says so (report/
 // regional_limit.h).  Ranked anew in every frame (--tag_depths ranked, the
 // default until 2026-12-07) the ranks took the sector's motion into the
@@ -241,8 +246,9 @@ TEST(LvIntervalCalibrationTest, LesionWallTags) {
 
 // The same with the field through the wall (--local_transmural on, depths
 // held, the field bending between the walls): the lesion's radial
-// contraction 0.96 points above the truth over 100 seeds, told apart in 92
-// of 100 draws, its thickening 4.6 points above (docs/
+// contraction 0.97 points above the truth over 100 seeds, told apart in 92
+// of 100 draws, its thickening 6.0 points above (4.6 until frame 0's noise
+// was read as stretched, which shrinks the depths more; docs/
 // uncertainty_calibration.md; ranked among neighbours: 2.05, 59 and 22).
 TEST(LvIntervalCalibrationTest, LesionWallTagsTransmural) {
   const LesionRows lesion =

@@ -168,14 +168,16 @@ INSTANTIATE_TEST_SUITE_P(
 // times as much as a line's (the odd Legendre terms); holding the squeeze
 // at 0 left a spread of 1.5 but read 2.4 points under (docs/gauge.md).  At
 // 3,000 tags (kTags) the spread is about 1.1 points and every draw is
-// within the targets.  Measured with depths held (the default, 2026-12-07):
-// thickening mean -0.82 / -0.41 cylinder, -1.06 / -0.62 prolate (designed /
-// incompressible), worst 2.53 / 2.63, 2.68 / 1.80; each wall's radial
-// contraction 1.57 points at worst.  Ranked anew in every frame: means
-// +0.49 / +0.36, +0.87 / +0.76, worst 2.64 / 1.43, 2.48 / 2.67.  Held
-// depths read thickening about a point low under noise (docs/gauge.md,
-// "Why held depths read low under noise").
-constexpr double kSeedsMeanThickeningPoints = 1.5;
+// within the targets.  Measured with depths held (the default), the noise
+// read as stretched since frame 0 (tangential_stretch.h): thickening mean
+// -0.21 / +0.04 cylinder, -0.23 / +0.05 prolate (designed /
+// incompressible), worst 1.93 / 2.19, 1.79 / 1.72; each wall's radial
+// contraction 1.43 points at worst.  Before that, the noise read low, the
+// means were -0.82 / -0.41, -1.06 / -0.62 (docs/gauge.md, "Why held depths
+// read low under noise"), which the mean's bound below fails.  Ranked anew
+// in every frame: means +0.49 / +0.36, +0.87 / +0.76, worst 2.64 / 1.43,
+// 2.48 / 2.67.
+constexpr double kSeedsMeanThickeningPoints = 0.75;
 
 class LvWallSegmentSeedsTest : public testing::TestWithParam<Case> {};
 

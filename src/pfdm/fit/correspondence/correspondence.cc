@@ -336,6 +336,18 @@ std::vector<Eigen::Vector3d> SurfaceNormals(
   return normals;
 }
 
+std::vector<Eigen::Matrix<double, 3, 2>> SurfaceTangents(
+    const Model& model, const std::vector<MaterialPoint>& material) {
+  const SurfacePoints surface(model, false);
+  std::vector<Eigen::Matrix<double, 3, 2>> tangents(material.size());
+  Eigen::Vector3d x;
+  for (size_t i = 0; i < material.size(); ++i) {
+    surface.Evaluate(material[i].u, material[i].v, material[i].w, &x,
+                     &tangents[i]);
+  }
+  return tangents;
+}
+
 bool PullsAlongNormal(const ModelConfig& config, const MaterialPoint& at) {
   return at.u < config.u_max;
 }

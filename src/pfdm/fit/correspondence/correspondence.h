@@ -49,6 +49,11 @@ std::vector<Eigen::Vector3d> SurfaceNormals(
     const Model& model, const std::vector<MaterialPoint>& material,
     std::vector<Eigen::Vector3d>* surface_points = nullptr);
 
+// dx/du and dx/dv of the model's surface w at each material point (world
+// frame, mm per radian), in the columns of each matrix.
+std::vector<Eigen::Matrix<double, 3, 2>> SurfaceTangents(
+    const Model& model, const std::vector<MaterialPoint>& material);
+
 // Whether a sliding point at this material point pulls along the surface's
 // normal (point-to-plane): below the rim (u < u_max).  On the rim the plane
 // says nothing about how far past it the point lies, so it pulls with its

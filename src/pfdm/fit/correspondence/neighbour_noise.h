@@ -7,7 +7,8 @@
 // shrank their held depths toward the mid-wall and read the noise-free
 // fit's thickening high.  Two tags a few millimetres apart share the smooth
 // misfit and not their noise, so the difference of their residuals is the
-// noise's: 0.07-0.10 mm there, 0.45-0.50 with 0.5 mm of noise.
+// noise's: 0.10-0.11 mm there, 0.50-0.55 with 0.5 mm of noise (the
+// misfit's 0.1 in quadrature), frame 0's share read as stretched.
 #ifndef PFDM_FIT_CORRESPONDENCE_NEIGHBOUR_NOISE_H_
 #define PFDM_FIT_CORRESPONDENCE_NEIGHBOUR_NOISE_H_
 
@@ -29,13 +30,20 @@ namespace pfdm {
 //
 //   sigma^2 = mean |d|^2 / 8,   robust: median |d|^2 / (8 ln 2).
 //
+// That holds where the wall has not moved since frame 0.  Given each
+// material point's stretch_squared (|F|^2 from frame 0, tangential_stretch.h;
+// indexed like `material`), frame 0's share is stretched: |d|^2 carries
+// sigma^2 (4 + |F_i|^2 + |F_j|^2), and each is scaled by 8 over that.
+// Without it, a systolic frame's contraction read 0.5 mm of noise on the
+// LV phantom at end-systole as 0.45-0.50 (0.47 on average), and the held
+// depths, shrunk too little, read thickening 1.5 points low.
 // 0 for fewer than two tags.
-double NeighbourTangentialNoiseMm(const Model& model,
-                                  const std::vector<Eigen::Vector3d>& positions,
-                                  const std::vector<Eigen::Vector3d>& residuals,
-                                  const std::vector<MaterialPoint>& material,
-                                  const std::vector<size_t>& which,
-                                  bool robust = false);
+double NeighbourTangentialNoiseMm(
+    const Model& model, const std::vector<Eigen::Vector3d>& positions,
+    const std::vector<Eigen::Vector3d>& residuals,
+    const std::vector<MaterialPoint>& material,
+    const std::vector<size_t>& which, bool robust = false,
+    const std::vector<double>* stretch_squared = nullptr);
 
 // How much more the residuals of tags at `positions` vary along the
 // `normals` of their layers (unit) than across them (mm^2), from the same

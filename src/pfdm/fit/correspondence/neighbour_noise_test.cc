@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "gtest/gtest.h"
+#include "pfdm/fit/correspondence/tangential_stretch.h"
 #include "pfdm/fit/correspondence/transmural.h"
+#include "pfdm/testing/stretched_noise.h"
 #include "pfdm/testing/test_models.h"
 
 namespace pfdm {
@@ -63,6 +65,52 @@ TEST(NeighbourNoiseTest, ReadsLittleWithoutNoise) {
             0.03);
   EXPECT_GT(TangentialNoiseMm(model, tags.residuals, tags.material, tags.which),
             0.15);
+}
+
+// Frame 0's tangential noise carried into a frame that contracted the
+// spheroid's radius by a fifth (its (u, v) is frame 0's closest point), on
+// top of the frame's own: read as 0.5 mm given each tag's stretch, from
+// neighbours and from each residual alone (TangentialNoiseMm), lower
+// without.
+TEST(NeighbourNoiseTest, TakesFrameZerosNoiseAsStretched) {
+  const Model first = TestSpheroid(9);
+  const Model later = RadiallyScaled(first, 0.8);
+  Tags tags = NoisyTags(first, 0.0, 0.0);
+  tags.residuals = StretchedTagResiduals(first, later, tags.material, 0.5, 11);
+  for (size_t i = 0; i < tags.material.size(); ++i) {
+    tags.positions[i] =
+        later.WorldPoint(tags.material[i].u, tags.material[i].v);
+  }
+  const std::vector<double> stretch =
+      TangentialStretchSquared(first, later, tags.material);
+  const double given =
+      NeighbourTangentialNoiseMm(later, tags.positions, tags.residuals,
+                                 tags.material, tags.which, false, &stretch);
+  const double robust =
+      NeighbourTangentialNoiseMm(later, tags.positions, tags.residuals,
+                                 tags.material, tags.which, true, &stretch);
+  const double unstretched = NeighbourTangentialNoiseMm(
+      later, tags.positions, tags.residuals, tags.material, tags.which);
+  std::printf("stretched %.3f (robust %.3f), unstretched %.3f mm\n", given,
+              robust, unstretched);
+  EXPECT_NEAR(given, 0.5, 0.02);
+  EXPECT_NEAR(robust, 0.5, 0.03);
+  // Without the stretch every tag is read as if frame 0's noise reached
+  // it whole: sigma^2 (2 + |F|^2) / 4 for sigma^2.
+  double gain = 0.0;
+  for (double s : stretch) gain += (2.0 + s) / 4.0 / stretch.size();
+  EXPECT_LT(gain, 0.95);
+  EXPECT_NEAR(unstretched / given, std::sqrt(gain), 0.01);
+  const double alone = TangentialNoiseMm(later, tags.residuals, tags.material,
+                                         tags.which, false, &stretch);
+  EXPECT_NEAR(alone, 0.5, 0.015);
+  EXPECT_NEAR(TangentialNoiseMm(later, tags.residuals, tags.material,
+                                tags.which, true, &stretch),
+              0.5, 0.025);
+  EXPECT_NEAR(
+      TangentialNoiseMm(later, tags.residuals, tags.material, tags.which) /
+          alone,
+      std::sqrt(gain), 0.01);
 }
 
 TEST(NeighbourNoiseTest, NoneForFewerThanTwoTags) {

@@ -410,13 +410,17 @@ double SigmaFromChiSquared2(std::vector<double>* squares, double scale,
 double TangentialNoiseMm(const Model& model,
                          const std::vector<Eigen::Vector3d>& residuals,
                          const std::vector<MaterialPoint>& material,
-                         const std::vector<size_t>& which, bool robust) {
+                         const std::vector<size_t>& which, bool robust,
+                         const std::vector<double>* stretch_squared) {
   std::vector<double> squares;
   squares.reserve(which.size());
   for (size_t i : which) {
     const MaterialPoint& m = material[i];
     const Eigen::Vector3d n = SurfaceNormal(model, m.u, m.v, m.w);
-    squares.push_back((residuals[i] - residuals[i].dot(n) * n).squaredNorm());
+    const double gain =
+        stretch_squared == nullptr ? 1.0 : 4.0 / (2.0 + (*stretch_squared)[i]);
+    squares.push_back(gain *
+                      (residuals[i] - residuals[i].dot(n) * n).squaredNorm());
   }
   // Each tangential direction carries 2 sigma^2.
   return SigmaFromChiSquared2(&squares, 2.0, robust);

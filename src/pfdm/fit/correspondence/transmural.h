@@ -181,11 +181,15 @@ double SigmaFromChiSquared2(std::vector<double>* squares, double scale,
 // length 2 sigma^2 times a chi-squared of 2 degrees of freedom, whose
 // median is 2 ln 2, so sigma^2 = median / (4 ln 2), which outliers barely
 // move (the mean took 5 % of them at 5-10 mm for noise of 1.04 mm, not
-// 0.46, and the thickness lost what they added).
+// 0.46, and the thickness lost what they added).  Given each material
+// point's stretch_squared since frame 0 (tangential_stretch.h; indexed like
+// `material`), frame 0's share is taken as stretched: |r_t|^2 carries
+// sigma^2 (2 + |F|^2), and is scaled by 4 over that.
 double TangentialNoiseMm(const Model& model,
                          const std::vector<Eigen::Vector3d>& residuals,
                          const std::vector<MaterialPoint>& material,
-                         const std::vector<size_t>& which, bool robust = false);
+                         const std::vector<size_t>& which, bool robust = false,
+                         const std::vector<double>* stretch_squared = nullptr);
 
 // The thickness of a wall of tags ranked across it, their noise taken out:
 // ranks of distances with noise sigma widen a wall of thickness h to

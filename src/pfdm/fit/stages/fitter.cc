@@ -74,16 +74,16 @@ FrameFit FitPilot(const PointSequence& sequence, const Frame& frame,
   FrameFit pilot = FitFrame(frame, false, frames_per_id, pilot_options,
                             sequence.source, wall, carried);
   const ModelConfig& config = before.model.config;
+  const Model reference = GlobalModelOf(config, first);
   const std::optional<double> sigma = FrameTagNoiseMm(
       GlobalModelOf(config, pilot), frame, pilot.material, frames_per_id,
-      options.loss != "none", TagNoiseFrom::kNeighbours);
+      options.loss != "none", TagNoiseFrom::kNeighbours, &reference);
   before.Restore(carried);
   if (!sigma) return pilot;
   if (first.depths_measured) {
-    ShrinkMeasuredDepths(GlobalModelOf(config, first), *sigma,
-                         &carried->tracked_material);
+    ShrinkMeasuredDepths(reference, *sigma, &carried->tracked_material);
   } else {
-    HoldTagDepths(sequence.frames[0], GlobalModelOf(config, first), *sigma,
+    HoldTagDepths(sequence.frames[0], reference, *sigma,
                   &carried->tracked_material);
   }
   carried->depths_held = carried->depths_shrunk = true;

@@ -6,6 +6,7 @@
 
 #include "pfdm/fit/correspondence/held_depths.h"
 #include "pfdm/fit/correspondence/neighbour_noise.h"
+#include "pfdm/fit/correspondence/tangential_stretch.h"
 #include "pfdm/fit/correspondence/transmural.h"
 #include "pfdm/fit/stages/frame_summary.h"
 #include "pfdm/util/error.h"
@@ -195,7 +196,8 @@ Model GlobalModelOf(const ModelConfig& config, const FrameFit& frame) {
 std::optional<double> FrameTagNoiseMm(
     const Model& global, const Frame& frame,
     const std::vector<MaterialPoint>& material,
-    const FramesPerId& frames_per_id, bool robust, TagNoiseFrom from) {
+    const FramesPerId& frames_per_id, bool robust, TagNoiseFrom from,
+    const Model* reference) {
   // Tracked tags only: a contour point's closest point leaves it no
   // residual along the wall.
   std::vector<size_t> tags;
@@ -206,11 +208,17 @@ std::optional<double> FrameTagNoiseMm(
   const std::vector<Eigen::Vector3d> positions = Positions(frame);
   const std::vector<Eigen::Vector3d> residuals =
       Residuals(global, positions, material);
+  std::vector<double> stretch;
+  if (reference != nullptr) {
+    stretch = TangentialStretchSquared(*reference, global, material);
+  }
+  const std::vector<double>* stretched = stretch.empty() ? nullptr : &stretch;
   if (from == TagNoiseFrom::kNeighbours) {
     return NeighbourTangentialNoiseMm(global, positions, residuals, material,
-                                      tags, robust);
+                                      tags, robust, stretched);
   }
-  return TangentialNoiseMm(global, residuals, material, tags, robust);
+  return TangentialNoiseMm(global, residuals, material, tags, robust,
+                           stretched);
 }
 
 void HoldTagDepths(const Frame& first, const Model& reference, double sigma_mm,
@@ -241,13 +249,16 @@ void ShrinkMeasuredDepths(const Model& reference, double sigma_mm,
 void TakeOutTagNoise(const PointSequence& sequence,
                      const FramesPerId& frames_per_id, SequenceFit* result,
                      bool robust) {
+  if (result->frames.empty()) return;
+  const Model reference = GlobalModelOf(result->config, result->frames[0]);
   double sum_squared = 0.0;
   int frames = 0;
   for (size_t t = 1; t < result->frames.size(); ++t) {
     const FrameFit& frame = result->frames[t];
-    const std::optional<double> sigma = FrameTagNoiseMm(
-        GlobalModelOf(result->config, frame), sequence.frames[t],
-        frame.material, frames_per_id, robust);
+    const std::optional<double> sigma =
+        FrameTagNoiseMm(GlobalModelOf(result->config, frame),
+                        sequence.frames[t], frame.material, frames_per_id,
+                        robust, TagNoiseFrom::kResiduals, &reference);
     if (!sigma) continue;
     sum_squared += *sigma * *sigma;
     ++frames;

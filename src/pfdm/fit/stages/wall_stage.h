@@ -65,11 +65,15 @@ enum class TagNoiseFrom { kResiduals, kNeighbours };
 // points seen in more than one frame, across their wall normals on the
 // frame's global model (the local field fits part of the noise); none
 // without tags.  `robust` (a fit with a robust loss): measured robustly.
+// `reference`, frame 0's global model: frame 0's share of the noise taken
+// as stretched by the wall's motion since then (tangential_stretch.h); the
+// share taken as frame 0's noise unchanged without it.
 std::optional<double> FrameTagNoiseMm(
     const Model& global, const Frame& frame,
     const std::vector<MaterialPoint>& material,
     const FramesPerId& frames_per_id, bool robust = false,
-    TagNoiseFrom from = TagNoiseFrom::kResiduals);
+    TagNoiseFrom from = TagNoiseFrom::kResiduals,
+    const Model* reference = nullptr);
 
 // Each tag's depth in *tracked_material, measured across frame 0's walls
 // (measured_depths.h), shrunk to its expectation for noise of sigma_mm:

@@ -9,6 +9,7 @@
 #include "pfdm/fit/correspondence/correspondence.h"
 #include "pfdm/fit/correspondence/held_depths.h"
 #include "pfdm/fit/correspondence/transmural.h"
+#include "pfdm/testing/stretched_noise.h"
 #include "pfdm/testing/test_models.h"
 #include "pfdm/testing/test_util.h"
 
@@ -342,6 +343,41 @@ TEST(WallStageTest, TagsHoldTheLayerTheyLieOn) {
   const FramesPerId twice = {{0, 2}, {1, 2}, {2, 2}, {9, 1}};
   first.points[3].position = first.points[0].position;
   EXPECT_NEAR(*FrameTagNoiseMm(model, first, material, twice), 0.0, 1e-9);
+}
+
+// A tracked frame whose radii contracted by a fifth since frame 0: its
+// tags' noise, 0.5 mm per coordinate in each frame, read from their own
+// residuals and from their neighbours' as 0.5 given frame 0's model, lower
+// as if frame 0's noise reached the frame whole without it.
+TEST(WallStageTest, TagNoiseTakesFrameZerosShareAsStretched) {
+  const Model first = TestSpheroid(9);
+  const Model later = RadiallyScaled(first, 0.8);
+  std::mt19937 random(19);
+  std::uniform_real_distribution<double> u(-1.2, 0.4), v(-3.1, 3.1);
+  std::vector<MaterialPoint> material;
+  FramesPerId frames_per_id;
+  for (int i = 0; i < 5000; ++i) {
+    material.push_back({u(random), v(random), 0.0});
+    frames_per_id[i] = 2;
+  }
+  const std::vector<Eigen::Vector3d> residuals =
+      StretchedTagResiduals(first, later, material, 0.5, 23);
+  Frame frame;
+  for (int i = 0; i < 5000; ++i) {
+    DataPoint p;
+    p.id = i;
+    p.position = later.WorldPoint(material[i].u, material[i].v) - residuals[i];
+    frame.points.push_back(p);
+  }
+  for (TagNoiseFrom from :
+       {TagNoiseFrom::kResiduals, TagNoiseFrom::kNeighbours}) {
+    const double given = *FrameTagNoiseMm(later, frame, material, frames_per_id,
+                                          false, from, &first);
+    const double without =
+        *FrameTagNoiseMm(later, frame, material, frames_per_id, false, from);
+    EXPECT_NEAR(given, 0.5, 0.02);
+    EXPECT_LT(without, given - 0.01);
+  }
 }
 
 }  // namespace
