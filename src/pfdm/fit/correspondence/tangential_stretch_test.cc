@@ -1,8 +1,10 @@
 #include "pfdm/fit/correspondence/tangential_stretch.h"
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
+#include "Eigen/Dense"
 #include "gtest/gtest.h"
 #include "pfdm/testing/test_models.h"
 #include "pfdm/util/angles.h"
