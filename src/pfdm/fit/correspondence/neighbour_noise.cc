@@ -63,8 +63,8 @@ double NeighbourTangentialNoiseMm(const Model& model,
   // frame 0's noise, a contracted one's less: scaled to the unmoved wall's.
   if (stretch_squared != nullptr) {
     for (size_t k = 0; k < which.size(); ++k) {
-      const double gain = 4.0 + (*stretch_squared)[which[k]] +
-                          (*stretch_squared)[which[differences.neighbours[k]]];
+      const double gain = 4.0 + (*stretch_squared)[k] +
+                          (*stretch_squared)[differences.neighbours[k]];
       differences.tangent_squares[k] *= 8.0 / gain;
     }
   }

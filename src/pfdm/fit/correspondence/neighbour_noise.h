@@ -31,8 +31,8 @@ namespace pfdm {
 //   sigma^2 = mean |d|^2 / 8,   robust: median |d|^2 / (8 ln 2).
 //
 // That holds where the wall has not moved since frame 0.  Given each
-// material point's stretch_squared (|F|^2 from frame 0, tangential_stretch.h;
-// indexed like `material`), frame 0's share is stretched: |d|^2 carries
+// tag's stretch_squared (|F|^2 from frame 0, tangential_stretch.h; indexed
+// like `which`), frame 0's share is stretched: |d|^2 carries
 // sigma^2 (4 + |F_i|^2 + |F_j|^2), and each is scaled by 8 over that.
 // Without it, a systolic frame's contraction read 0.5 mm of noise on the
 // LV phantom at end-systole as 0.45-0.50 (0.47 on average), and the held

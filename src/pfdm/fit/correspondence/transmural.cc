@@ -414,11 +414,12 @@ double TangentialNoiseMm(const Model& model,
                          const std::vector<double>* stretch_squared) {
   std::vector<double> squares;
   squares.reserve(which.size());
-  for (size_t i : which) {
+  for (size_t k = 0; k < which.size(); ++k) {
+    const size_t i = which[k];
     const MaterialPoint& m = material[i];
     const Eigen::Vector3d n = SurfaceNormal(model, m.u, m.v, m.w);
     const double gain =
-        stretch_squared == nullptr ? 1.0 : 4.0 / (2.0 + (*stretch_squared)[i]);
+        stretch_squared == nullptr ? 1.0 : 4.0 / (2.0 + (*stretch_squared)[k]);
     squares.push_back(gain *
                       (residuals[i] - residuals[i].dot(n) * n).squaredNorm());
   }

@@ -182,8 +182,8 @@ double SigmaFromChiSquared2(std::vector<double>* squares, double scale,
 // median is 2 ln 2, so sigma^2 = median / (4 ln 2), which outliers barely
 // move (the mean took 5 % of them at 5-10 mm for noise of 1.04 mm, not
 // 0.46, and the thickness lost what they added).  Given each material
-// point's stretch_squared since frame 0 (tangential_stretch.h; indexed like
-// `material`), frame 0's share is taken as stretched: |r_t|^2 carries
+// tag's stretch_squared since frame 0 (tangential_stretch.h; indexed like
+// `which`), frame 0's share is taken as stretched: |r_t|^2 carries
 // sigma^2 (2 + |F|^2), and is scaled by 4 over that.
 double TangentialNoiseMm(const Model& model,
                          const std::vector<Eigen::Vector3d>& residuals,

@@ -108,20 +108,6 @@ std::string MakeSolidOfTags(const std::vector<double>& distances,
          " beyond the wall left out)";
 }
 
-// TangentialStretchSquared at the tags, indexed like `material` (2, the
-// unmoved wall's, elsewhere): contour points need none.
-std::vector<double> TagStretch(const Model& reference, const Model& global,
-                               const std::vector<MaterialPoint>& material,
-                               const std::vector<size_t>& tags) {
-  std::vector<MaterialPoint> tag_material;
-  for (size_t i : tags) tag_material.push_back(material[i]);
-  const std::vector<double> at_tags =
-      TangentialStretchSquared(reference, global, tag_material);
-  std::vector<double> stretch(material.size(), 2.0);
-  for (size_t k = 0; k < tags.size(); ++k) stretch[tags[k]] = at_tags[k];
-  return stretch;
-}
-
 }  // namespace
 
 WallDecision DecideWallFromContours(const Frame& first, bool has_tags,
@@ -222,9 +208,13 @@ std::optional<double> FrameTagNoiseMm(
   const std::vector<Eigen::Vector3d> positions = Positions(frame);
   const std::vector<Eigen::Vector3d> residuals =
       Residuals(global, positions, material);
-  const std::vector<double> stretch =
-      reference != nullptr ? TagStretch(*reference, global, material, tags)
-                           : std::vector<double>();
+  // At the tags only: contour points need none.
+  std::vector<double> stretch;
+  if (reference != nullptr) {
+    std::vector<MaterialPoint> tag_material;
+    for (size_t i : tags) tag_material.push_back(material[i]);
+    stretch = TangentialStretchSquared(*reference, global, tag_material);
+  }
   const std::vector<double>* stretched = stretch.empty() ? nullptr : &stretch;
   if (from == TagNoiseFrom::kNeighbours) {
     return NeighbourTangentialNoiseMm(global, positions, residuals, material,
