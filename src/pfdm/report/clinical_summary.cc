@@ -1,50 +1,23 @@
 #include "pfdm/report/clinical_summary.h"
 
 #include <cmath>
-#include <map>
-#include <utility>
 
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/material_myocardium.h"
 #include "pfdm/report/material_rings.h"
+#include "pfdm/report/reference_rings.h"
 #include "pfdm/util/angles.h"
 
 namespace pfdm {
 namespace {
 
-// The reference's rings, u by height fraction and surface, found once for
-// every frame measured against it: each is a bisection of 50-60 steps, of
-// 24 model points a step off the mid-wall, and a frame of a solid asked
-// for 14 of them (as much as the rest of its summary); and the myocardium
-// between two of them.
-class ReferenceRings {
- public:
-  explicit ReferenceRings(const Model& reference) : reference_(reference) {}
-  const Model& model() const { return reference_; }
-  double At(double h, double w = 0.0) {
-    const auto [it, inserted] = u_.try_emplace({h, w}, 0.0);
-    if (inserted) it->second = RingAtHeightFraction(reference_, h, w);
-    return it->second;
-  }
-  // MaterialMyocardiumMl of the reference between the rings at u_low and
-  // u_high.
-  double MyocardiumMl(double u_low, double u_high) {
-    const auto [it, inserted] = myocardium_ml_.try_emplace({u_low, u_high});
-    if (inserted) {
-      it->second = MaterialMyocardiumMl(reference_, u_low, u_high);
-    }
-    return it->second;
-  }
-
- private:
-  const Model& reference_;
-  std::map<std::pair<double, double>, double> u_;
-  std::map<std::pair<double, double>, double> myocardium_ml_;
-};
+double ApexToBaseRim(const Model& model, const MaterialRing& rim) {
+  const Eigen::Vector3d apex = model.WorldPoint(model.config.u_min, 0.0);
+  return (rim.centroid - apex).norm();
+}
 
 double ApexToBaseRim(const Model& model) {
-  const Eigen::Vector3d apex = model.WorldPoint(model.config.u_min, 0.0);
-  return (SampleRing(model, model.config.u_max).centroid - apex).norm();
+  return ApexToBaseRim(model, SampleRing(model, model.config.u_max));
 }
 
 // Rotation (degrees) of surface w's ring at height fraction h.
@@ -52,7 +25,7 @@ double RingRotationDeg(ReferenceRings& rings, const Model& current, double h,
                        double w) {
   const Model& reference = rings.model();
   const double u = rings.At(h, w);
-  return MeanRotation(SampleRing(reference, u, kRingSamples, w),
+  return MeanRotation(rings.Ring(u, kRingSamples, w),
                       SampleRing(current, u, kRingSamples, w),
                       LongAxis(reference)) *
          kDegreesPerRadian;
@@ -61,32 +34,20 @@ double RingRotationDeg(ReferenceRings& rings, const Model& current, double h,
 // Mean over the contraction rings of 1 - r / r0 on surface w, percent.
 double RadialContractionPercent(ReferenceRings& rings, const Model& current,
                                 double w, const RingSpan& span) {
-  const Model& reference = rings.model();
   double percent = 0.0;
   for (int i = 0; i < kContractionRings; ++i) {
     const double u = rings.At(span.At(i), w);
-    percent +=
-        100.0 *
-        (1.0 - MeanRadius(SampleRing(current, u, kRingSamples, w)) /
-                   MeanRadius(SampleRing(reference, u, kRingSamples, w))) /
-        kContractionRings;
+    percent += 100.0 *
+               (1.0 - MeanRadius(SampleRing(current, u, kRingSamples, w)) /
+                          MeanRadius(rings.Ring(u, kRingSamples, w))) /
+               kContractionRings;
   }
   return percent;
-}
-
-// Mean wall thickness (mm) around the material ring at u.
-double RingThickness(const Model& model, double u) {
-  double sum = 0.0;
-  for (int j = 0; j < kRingSamples; ++j) {
-    sum += WallThickness(model, u, -kPi + 2.0 * kPi * (j + 0.5) / kRingSamples);
-  }
-  return sum / kRingSamples;
 }
 
 void SummarizeWall(ReferenceRings& rings, const Model& current,
                    const RingSpan& span, bool flat_lid_volumes,
                    ClinicalSummary* summary) {
-  const Model& reference = rings.model();
   summary->solid = true;
   summary->endo_apex_rotation_deg =
       RingRotationDeg(rings, current, kApicalRingFraction, -1.0);
@@ -107,10 +68,9 @@ void SummarizeWall(ReferenceRings& rings, const Model& current,
   double thickness = 0.0, thickening = 0.0;
   for (int i = 0; i < kContractionRings; ++i) {
     const double u = rings.At(span.At(i));
-    const double now = RingThickness(current, u);
+    const double now = MeanWallThickness(current, u);
     thickness += now / kContractionRings;
-    thickening +=
-        100.0 * (now / RingThickness(reference, u) - 1.0) / kContractionRings;
+    thickening += 100.0 * (now / rings.Thickness(u) - 1.0) / kContractionRings;
   }
   summary->wall_thickness_mm = thickness;
   summary->wall_thickening_percent = thickening;
@@ -141,8 +101,8 @@ ClinicalSummary Summarize(int frame, ReferenceRings& rings,
 
   const double u_apex = rings.At(kApicalRingFraction);
   const double u_base = rings.At(kBasalRingFraction);
-  const MaterialRing apex0 = SampleRing(reference, u_apex);
-  const MaterialRing base0 = SampleRing(reference, u_base);
+  const MaterialRing& apex0 = rings.Ring(u_apex);
+  const MaterialRing& base0 = rings.Ring(u_base);
   summary.apex_rotation_deg =
       MeanRotation(apex0, SampleRing(current, u_apex), axis) *
       kDegreesPerRadian;
@@ -169,7 +129,9 @@ ClinicalSummary Summarize(int frame, ReferenceRings& rings,
   summary.radial_contraction_percent =
       RadialContractionPercent(rings, current, 0.0, span);
   summary.longitudinal_shortening_percent =
-      100.0 * (1.0 - ApexToBaseRim(current) / ApexToBaseRim(reference));
+      100.0 *
+      (1.0 - ApexToBaseRim(current) /
+                 ApexToBaseRim(reference, rings.Ring(reference.config.u_max)));
   if (current.config.Solid()) {
     SummarizeWall(rings, current, span, flat_lid_volumes, &summary);
   } else if (flat_lid_volumes) {
@@ -184,6 +146,12 @@ ClinicalSummary SummarizeFrame(int frame, const Model& reference,
                                const Model& current, const RingSpan& span,
                                bool flat_lid_volumes) {
   ReferenceRings rings(reference);
+  return Summarize(frame, rings, current, span, flat_lid_volumes);
+}
+
+ClinicalSummary SummarizeFrame(int frame, ReferenceRings& rings,
+                               const Model& current, const RingSpan& span,
+                               bool flat_lid_volumes) {
   return Summarize(frame, rings, current, span, flat_lid_volumes);
 }
 

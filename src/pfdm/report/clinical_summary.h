@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "pfdm/model/model.h"
+#include "pfdm/report/reference_rings.h"
 
 namespace pfdm {
 
@@ -140,6 +141,11 @@ ClinicalSummary SummarizeFrame(int frame, const Model& reference,
                                const Model& current,
                                const RingSpan& span = RingSpan(),
                                bool flat_lid_volumes = true);
+
+// The same with the reference's rings kept from one call to the next.
+ClinicalSummary SummarizeFrame(int frame, ReferenceRings& rings,
+                               const Model& current, const RingSpan& span,
+                               bool flat_lid_volumes);
 
 // SummarizeFrame of every frame against frames[reference] (end-diastole).
 // Without flat_lid_volumes the volumes closed by a flat lid (volume_ml and,

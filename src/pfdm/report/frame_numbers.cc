@@ -22,6 +22,11 @@ void SetVolumes(const Model& current, const std::vector<ModelSurface>& surfaces,
   }
 }
 
+// The rows of u that samples resampled for `range` differ in.
+MovedU ReferenceRows(const MovedU& range) {
+  return range.heights ? MovedU() : range;
+}
+
 }  // namespace
 
 FrameMeasurer::FrameMeasurer(const Model& ed, const ReferenceSamples& samples,
@@ -32,39 +37,49 @@ FrameMeasurer::FrameMeasurer(const Model& ed, const ReferenceSamples& samples,
       regions_(regions),
       plane_(plane),
       current_(current),
-      current_samples_(SampleCurrent(samples, current)) {
+      current_samples_(SampleCurrent(samples, current)),
+      comparison_(samples, current_samples_),
+      ed_rings_(ed) {
   for (double w : VolumeSurfaces(current)) {
     surfaces_.push_back(CavitySurface(current, plane, w));
   }
-  numbers_.clinical =
-      SummarizeFrame(0, ed, current, RingSpan(), /*flat_lid_volumes=*/false);
+  numbers_.clinical = SummarizeFrame(0, ed_rings_, current, RingSpan(),
+                                     /*flat_lid_volumes=*/false);
   SetVolumes(current, surfaces_, plane, &numbers_.clinical);
-  numbers_.regions = CompareRegions(samples, current_samples_);
+  numbers_.regions = comparison_.motion();
   numbers_.strain = SummarizeStrain(regions, numbers_.regions);
 }
 
 FrameNumbers FrameMeasurer::Moved(const Model& moved,
                                   const MovedU& range) const {
-  return Moved(moved, range, ed_, samples_);
+  return Moved(moved, range, ed_rings_, samples_, range);
 }
 
 FrameNumbers FrameMeasurer::Moved(const Model& moved, const MovedU& range,
-                                  const Model& ed,
+                                  ReferenceRings& ed_rings,
                                   const ReferenceSamples& samples) const {
+  return Moved(moved, range, ed_rings, samples, ReferenceRows(range));
+}
+
+FrameNumbers FrameMeasurer::Moved(const Model& moved, const MovedU& range,
+                                  ReferenceRings& ed_rings,
+                                  const ReferenceSamples& samples,
+                                  const MovedU& rows) const {
   if (moved_samples_.samples.empty()) {  // The first step.
     moved_samples_ = current_samples_;
     moved_surfaces_ = surfaces_;
   }
   FrameNumbers numbers;
-  numbers.clinical =
-      SummarizeFrame(0, ed, moved, RingSpan(), /*flat_lid_volumes=*/false);
+  numbers.clinical = SummarizeFrame(0, ed_rings, moved, RingSpan(),
+                                    /*flat_lid_volumes=*/false);
   const std::vector<double> ws = VolumeSurfaces(moved);
   for (size_t i = 0; i < moved_surfaces_.size(); ++i) {
     ReplaceVertices(moved, range.low, range.high, ws[i], &moved_surfaces_[i]);
   }
   SetVolumes(moved, moved_surfaces_, plane_, &numbers.clinical);
   ResampleRows(moved, range.low, range.high, &moved_samples_);
-  numbers.regions = CompareRegions(samples, moved_samples_);
+  numbers.regions =
+      comparison_.Recompared(samples, moved_samples_, rows.low, rows.high);
   numbers.strain = SummarizeStrain(regions_, numbers.regions);
   // Back to current's (same sizes: no allocation).
   for (size_t i = 0; i < moved_surfaces_.size(); ++i) {
@@ -74,16 +89,19 @@ FrameNumbers FrameMeasurer::Moved(const Model& moved, const MovedU& range,
   return numbers;
 }
 
-FrameNumbers FrameMeasurer::Against(const Model& ed,
-                                    const ReferenceSamples& samples) const {
+FrameNumbers FrameMeasurer::Against(ReferenceRings& ed_rings,
+                                    const ReferenceSamples& samples,
+                                    const MovedU& range) const {
+  const MovedU rows = ReferenceRows(range);
   FrameNumbers numbers;
-  numbers.clinical =
-      SummarizeFrame(0, ed, current_, RingSpan(), /*flat_lid_volumes=*/false);
+  numbers.clinical = SummarizeFrame(0, ed_rings, current_, RingSpan(),
+                                    /*flat_lid_volumes=*/false);
   const ClinicalSummary& kept = numbers_.clinical;
   numbers.clinical.volume_ml = kept.volume_ml;
   numbers.clinical.myocardial_volume_ml = kept.myocardial_volume_ml;
   numbers.clinical.lv_mass_g = kept.lv_mass_g;
-  numbers.regions = CompareRegions(samples, current_samples_);
+  numbers.regions =
+      comparison_.Recompared(samples, current_samples_, rows.low, rows.high);
   numbers.strain = SummarizeStrain(regions_, numbers.regions);
   return numbers;
 }

@@ -18,6 +18,7 @@
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/clinical_summary.h"
 #include "pfdm/report/global_strain.h"
+#include "pfdm/report/reference_rings.h"
 #include "pfdm/report/wall_motion.h"
 
 namespace pfdm {
@@ -56,24 +57,39 @@ class FrameMeasurer {
   // MeasureFrame(ed, samples, regions, moved, plane) for a `moved` that is
   // `current` outside `range`.
   FrameNumbers Moved(const Model& moved, const MovedU& range) const;
-  // The same against another end-diastole (ED's own frame, which a step of
-  // ED's parameters moves as it moves the reference).
-  FrameNumbers Moved(const Model& moved, const MovedU& range, const Model& ed,
+  // The same against another end-diastole, ed_rings.model() (ED's own
+  // frame, which a step of ED's parameters moves as it moves the
+  // reference), whose `samples` differ from the kept ones only where
+  // ResampleReference takes `range`'s rows again: every row if
+  // range.heights.  The frames measured against one moved end-diastole
+  // share its rings.
+  FrameNumbers Moved(const Model& moved, const MovedU& range,
+                     ReferenceRings& ed_rings,
                      const ReferenceSamples& samples) const;
   // MeasureFrame(ed, samples, regions, current, plane) against another
-  // end-diastole: `current` unchanged.
-  FrameNumbers Against(const Model& ed, const ReferenceSamples& samples) const;
+  // end-diastole, `current` unchanged, `samples` as above.
+  FrameNumbers Against(ReferenceRings& ed_rings,
+                       const ReferenceSamples& samples,
+                       const MovedU& range) const;
 
  private:
+  // Moved, `samples` differing from the kept ones in the rows `rows` moves.
+  FrameNumbers Moved(const Model& moved, const MovedU& range,
+                     ReferenceRings& ed_rings, const ReferenceSamples& samples,
+                     const MovedU& rows) const;
+
   const Model& ed_;
   const ReferenceSamples& samples_;
   const std::vector<WallRegion>& regions_;
   const BasePlane* plane_;
   Model current_;
   CurrentSamples current_samples_;
+  RegionComparison comparison_;
   // The cavity's surface (a solid's endocardium) and a solid's epicardium.
   std::vector<ModelSurface> surfaces_;
   FrameNumbers numbers_;
+  // ED's rings, which the frame's own steps measure against.
+  mutable ReferenceRings ed_rings_;
   // Copies of the samples and surfaces that Moved changes and restores:
   // copied anew each step, their megabyte cost more in the allocator's
   // page faults than the measurement of a knot's span.

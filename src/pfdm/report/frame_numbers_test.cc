@@ -102,17 +102,42 @@ TEST_P(FrameMeasurerTest, AgainstMeasuresWhatMeasureFrameMeasures) {
   const ReferenceSamples other = SampleReference(other_ed, RegionLayout());
   const std::vector<WallRegion> regions = Regions(RegionLayout());
   const FrameMeasurer measurer(ed, samples, regions, current, nullptr);
-  ExpectSameNumbers(measurer.Against(other_ed, other),
+  ReferenceRings other_rings(other_ed);
+  ExpectSameNumbers(measurer.Against(other_rings, other, MovedU()),
                     MeasureFrame(other_ed, other, regions, current, nullptr));
-  // End-diastole's own frame, moved with its reference by a knot's step.
+  // A knot's step of end-diastole, an inner one and one that moves the
+  // apex's height (every row's level): the other frame compared again in
+  // the span's rows only, or in all, and end-diastole's own frame moved
+  // with its reference.  The samples taken from scratch differ from the
+  // kept ones only in those rows (WallMotionTest.
+  // ResampleReferenceTakesWhatAStepMoves).
   const FrameMeasurer own(ed, samples, regions, ed, nullptr);
-  const std::vector<CovarianceEntry> knot = {
-      {CovarianceEntry::Kind::kKnot, 5, kA1}};
-  const Model moved = Nudged(ed, knot, Eigen::VectorXd::Constant(1, 0.02));
-  const ReferenceSamples moved_samples = SampleReference(moved, RegionLayout());
-  ExpectSameNumbers(
-      own.Moved(moved, MovedRange(ed, knot[0]), moved, moved_samples),
-      MeasureFrame(moved, moved_samples, regions, moved, nullptr));
+  using Kind = CovarianceEntry::Kind;
+  for (const CovarianceEntry& entry : {CovarianceEntry{Kind::kKnot, 5, kA1},
+                                       CovarianceEntry{Kind::kKnot, 0, kA3}}) {
+    SCOPED_TRACE(entry.knot);
+    const Model moved = Nudged(ed, {entry}, Eigen::VectorXd::Constant(1, 0.02));
+    const ReferenceSamples moved_samples =
+        SampleReference(moved, RegionLayout());
+    const MovedU range = MovedRange(ed, entry);
+    // The two frames share the moved end-diastole's rings.
+    ReferenceRings moved_rings(moved);
+    const FrameNumbers against =
+        measurer.Against(moved_rings, moved_samples, range);
+    ExpectSameNumbers(
+        against, MeasureFrame(moved, moved_samples, regions, current, nullptr));
+    ExpectSameNumbers(
+        own.Moved(moved, range, moved_rings, moved_samples),
+        MeasureFrame(moved, moved_samples, regions, moved, nullptr));
+    // The step moves the segments of its span's level: a comparison that
+    // kept every row would not.
+    double change = 0.0;
+    for (size_t r = 0; r < against.regions.size(); ++r) {
+      change += std::abs(against.regions[r].ecc_percent -
+                         measurer.numbers().regions[r].ecc_percent);
+    }
+    EXPECT_GT(change, 1e-3);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Walls, FrameMeasurerTest, ::testing::Bool());

@@ -67,6 +67,14 @@ double WallThickness(const Model& model, double u, double v) {
                         SurfaceNormal(model, u, v));
 }
 
+double MeanWallThickness(const Model& model, double u) {
+  double sum = 0.0;
+  for (int j = 0; j < kRingSamples; ++j) {
+    sum += WallThickness(model, u, -kPi + 2.0 * kPi * (j + 0.5) / kRingSamples);
+  }
+  return sum / kRingSamples;
+}
+
 double WallThickness(const Model& model, double u, double v,
                      const Eigen::Vector3d& endo, const Eigen::Vector3d& epi,
                      const Eigen::Vector3d& xu, const Eigen::Vector3d& xv) {

@@ -52,6 +52,10 @@ double WallThickness(const Model& model, double u, double v,
                      const Eigen::Vector3d& endo, const Eigen::Vector3d& epi,
                      const Eigen::Vector3d& xu, const Eigen::Vector3d& xv);
 
+// The mean of WallThickness around the material ring at u (kRingSamples
+// points).
+double MeanWallThickness(const Model& model, double u);
+
 // Height of ring u along the reference model's axis in its model frame:
 // a0 a3 sin u + e3o, which bending does not move (its ring mean is zero).
 double RingHeight(const Model& model, double u);

@@ -5,6 +5,7 @@
 
 #include "Eigen/Geometry"
 #include "pfdm/model/model_surface.h"
+#include "pfdm/report/reference_rings.h"
 
 namespace pfdm {
 
@@ -337,13 +338,14 @@ Eigen::VectorXd EdVariances(const SequenceFit& fit,
                     : range.high,
         &samples);
     const bool spun = EdSpin(fitted_ed, ed_model) != 0.0;
+    ReferenceRings ed_rings(ed_model);
     std::vector<double> all;
     for (size_t t = 0; t < fit.frames.size(); ++t) {
       FrameNumbers measured;
       if (t == ed) {
-        measured = frames[t].Moved(ed_model, range, ed_model, samples);
+        measured = frames[t].Moved(ed_model, range, ed_rings, samples);
       } else if (!spun) {
-        measured = frames[t].Against(ed_model, samples);
+        measured = frames[t].Against(ed_rings, samples, range);
       } else {
         measured =
             MeasureFrame(ed_model, samples, analysis.regions,

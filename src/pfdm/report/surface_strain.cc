@@ -7,10 +7,10 @@
 
 namespace pfdm {
 
-SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
-                          const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                          const Eigen::Vector3d& circumferential,
-                          const Eigen::Vector3d& longitudinal) {
+Eigen::Matrix2d ReferencePlaneInverse(const Eigen::Vector3d& a0,
+                                      const Eigen::Vector3d& b0,
+                                      const Eigen::Vector3d& circumferential,
+                                      const Eigen::Vector3d& longitudinal) {
   const Eigen::Vector3d normal = a0.cross(b0).normalized();
   const Eigen::Vector3d e_c =
       (circumferential - circumferential.dot(normal) * normal).normalized();
@@ -18,12 +18,25 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
   if (e_l.dot(longitudinal) < 0) e_l = -e_l;
   Eigen::Matrix2d g0;  // Columns: a0, b0 in (e_c, e_l).
   g0 << e_c.dot(a0), e_c.dot(b0), e_l.dot(a0), e_l.dot(b0);
+  return g0.inverse();
+}
+
+SurfaceStrain PlaneStrain(const Eigen::Matrix2d& reference_inverse,
+                          const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   Eigen::Matrix2d metric;
   metric << a.dot(a), a.dot(b), a.dot(b), b.dot(b);
-  const Eigen::Matrix2d inverse = g0.inverse();
+  const Eigen::Matrix2d& inverse = reference_inverse;
   const Eigen::Matrix2d e = 0.5 * (inverse.transpose() * metric * inverse -
                                    Eigen::Matrix2d::Identity());
   return {e(0, 0), e(1, 1), 0.5 * (e(0, 1) + e(1, 0))};
+}
+
+SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
+                          const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                          const Eigen::Vector3d& circumferential,
+                          const Eigen::Vector3d& longitudinal) {
+  return PlaneStrain(
+      ReferencePlaneInverse(a0, b0, circumferential, longitudinal), a, b);
 }
 
 namespace {

@@ -34,6 +34,17 @@ SurfaceStrain PlaneStrain(const Eigen::Vector3d& a0, const Eigen::Vector3d& b0,
                           const Eigen::Vector3d& circumferential,
                           const Eigen::Vector3d& longitudinal);
 
+// PlaneStrain in two halves, for a reference plane compared with many
+// deformed ones (the delta method's steps, number_uncertainty.h): G^-1 of
+// the reference's, then the strain of the deformed vectors a, b.  The same
+// arithmetic, so the same bits, as PlaneStrain.
+Eigen::Matrix2d ReferencePlaneInverse(const Eigen::Vector3d& a0,
+                                      const Eigen::Vector3d& b0,
+                                      const Eigen::Vector3d& circumferential,
+                                      const Eigen::Vector3d& longitudinal);
+SurfaceStrain PlaneStrain(const Eigen::Matrix2d& reference_inverse,
+                          const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
 // The strain at material point (u, v) of `current` against `reference`
 // (frame 0): tangents X_u, X_v (SurfaceTangents);
 // e_c along X_v (v counter-clockwise about the model's +z), e_l toward

@@ -101,11 +101,18 @@ std::vector<WallRegion> Regions(const RegionLayout& layout) {
   return regions;
 }
 
-int AssignRegion(const Model& reference, double u, double v,
-                 const RegionLayout& layout) {
+namespace {
+
+// Ring u's height on the reference from its apex, a fraction of the apex's
+// to the base rim's.
+double HeightFraction(const Model& reference, double u) {
   const double apex = RingHeight(reference, reference.config.u_min);
   const double base = RingHeight(reference, reference.config.u_max);
-  const double fraction = (RingHeight(reference, u) - apex) / (base - apex);
+  return (RingHeight(reference, u) - apex) / (base - apex);
+}
+
+// The region of longitude v on a ring at height `fraction`.
+int RegionAt(double fraction, double v, const RegionLayout& layout) {
   const int cap =
       layout.basal_sectors + layout.mid_sectors + layout.apical_sectors;
   if (fraction < layout.apex_cap_fraction) return cap;
@@ -125,6 +132,13 @@ int AssignRegion(const Model& reference, double u, double v,
     first += SectorsOf(layout, before);
   }
   return first + sector;
+}
+
+}  // namespace
+
+int AssignRegion(const Model& reference, double u, double v,
+                 const RegionLayout& layout) {
+  return RegionAt(HeightFraction(reference, u), v, layout);
 }
 
 namespace {
@@ -150,16 +164,18 @@ void SampleReferenceRow(const Model& reference, const RegionLayout& layout,
   const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
   const RingFunctions ring(reference, u);
   const WallRings walls(reference, u);
+  const double fraction = HeightFraction(reference, u);
   for (int j = 0; j < kLongitudeSamples; ++j) {
     const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
     ReferenceSamples::Sample& sample = row[j];
-    sample.region = AssignRegion(reference, u, v, layout);
+    sample.region = RegionAt(fraction, v, layout);
     sample.weight = AreaWeight(reference, u, v);
     sample.from = before.points[j] - before.centroid;
-    SurfaceTangents(reference, ring, v, &sample.xu, &sample.xv);
+    Eigen::Vector3d xu, xv;
+    SurfaceTangents(reference, ring, v, &xu, &xv);
+    sample.plane_inverse = ReferencePlaneInverse(xu, xv, xv, xu);
     if (walls.solid) {
-      sample.thickness =
-          walls.Thickness(reference, u, v, j, sample.xu, sample.xv);
+      sample.thickness = walls.Thickness(reference, u, v, j, xu, xv);
     }
   }
 }
@@ -239,32 +255,59 @@ void ResampleRows(const Model& current, double u_low, double u_high,
   }
 }
 
-std::vector<RegionMotion> CompareRegions(const ReferenceSamples& reference,
-                                         const CurrentSamples& current) {
+namespace {
+
+using RowSums = RegionComparison::RowSums;
+
+// Row i's samples summed per region, weighted by their areas.
+void SumRow(const ReferenceSamples& reference, const CurrentSamples& current,
+            int i, RowSums* sums) {
+  sums->assign(reference.num_regions, RegionComparison::RegionSum());
+  const size_t first = static_cast<size_t>(i) * kLongitudeSamples;
+  for (size_t k = first; k < first + kLongitudeSamples; ++k) {
+    const ReferenceSamples::Sample& sample = reference.samples[k];
+    const CurrentSamples::Sample& now = current.samples[k];
+    RegionComparison::RegionSum& region = (*sums)[sample.region];
+    RegionMotion& motion = region.sum;
+    const double w = sample.weight;
+    const Eigen::Vector3d& from = sample.from;
+    const Eigen::Vector3d& to = now.to;
+    motion.rotation_deg +=
+        w * AngleAbout(from, to, reference.axis) * kDegreesPerRadian;
+    motion.radial_contraction_percent +=
+        w * 100.0 * (1.0 - to.norm() / from.norm());
+    const SurfaceStrain strain =
+        PlaneStrain(sample.plane_inverse, now.xu, now.xv);
+    motion.ecc_percent += w * 100.0 * strain.ecc;
+    motion.ell_percent += w * 100.0 * strain.ell;
+    motion.ecl_percent += w * 100.0 * strain.ecl;
+    if (current.solid) {
+      motion.thickening_percent +=
+          w * 100.0 * (now.thickness / sample.thickness - 1.0);
+    }
+    region.weight += w;
+  }
+}
+
+// The regions' means over all rows, the rows' sums added in row order.
+std::vector<RegionMotion> RegionMeans(const ReferenceSamples& reference,
+                                      const std::vector<const RowSums*>& rows) {
   const size_t count = reference.num_regions;
   std::vector<RegionMotion> motion(count);
   std::vector<double> weight(count, 0.0);
-  const CurrentSamples::Sample* now = current.samples.data();
-  for (const ReferenceSamples::Sample& sample : reference.samples) {
-    const int r = sample.region;
-    const double w = sample.weight;
-    const Eigen::Vector3d& from = sample.from;
-    const Eigen::Vector3d& to = now->to;
-    motion[r].rotation_deg +=
-        w * AngleAbout(from, to, reference.axis) * kDegreesPerRadian;
-    motion[r].radial_contraction_percent +=
-        w * 100.0 * (1.0 - to.norm() / from.norm());
-    const SurfaceStrain strain = PlaneStrain(sample.xu, sample.xv, now->xu,
-                                             now->xv, sample.xv, sample.xu);
-    motion[r].ecc_percent += w * 100.0 * strain.ecc;
-    motion[r].ell_percent += w * 100.0 * strain.ell;
-    motion[r].ecl_percent += w * 100.0 * strain.ecl;
-    if (current.solid) {
-      motion[r].thickening_percent +=
-          w * 100.0 * (now->thickness / sample.thickness - 1.0);
+  for (const RowSums* row : rows) {
+    for (size_t r = 0; r < count; ++r) {
+      const RegionComparison::RegionSum& sum = (*row)[r];
+      if (sum.weight == 0.0) continue;
+      motion[r].rotation_deg += sum.sum.rotation_deg;
+      motion[r].radial_contraction_percent +=
+          sum.sum.radial_contraction_percent;
+      motion[r].ecc_percent += sum.sum.ecc_percent;
+      motion[r].ell_percent += sum.sum.ell_percent;
+      motion[r].ecl_percent += sum.sum.ecl_percent;
+      motion[r].thickening_percent += sum.sum.thickening_percent;
+      weight[r] += sum.weight;
     }
-    weight[r] += w;
-    ++now;
   }
   const double s_min = reference.s_min, s_max = reference.s_max;
   for (size_t r = 0; r < count; ++r) {
@@ -281,6 +324,40 @@ std::vector<RegionMotion> CompareRegions(const ReferenceSamples& reference,
                          kPi / kLongitudeSamples;
   }
   return motion;
+}
+
+}  // namespace
+
+RegionComparison::RegionComparison(const ReferenceSamples& reference,
+                                   const CurrentSamples& current)
+    : rows_(kLatitudeSamples) {
+  std::vector<const RowSums*> rows;
+  for (int i = 0; i < kLatitudeSamples; ++i) {
+    SumRow(reference, current, i, &rows_[i]);
+    rows.push_back(&rows_[i]);
+  }
+  motion_ = RegionMeans(reference, rows);
+}
+
+std::vector<RegionMotion> RegionComparison::Recompared(
+    const ReferenceSamples& reference, const CurrentSamples& current,
+    double u_low, double u_high) const {
+  std::vector<RowSums> fresh(kLatitudeSamples);
+  std::vector<const RowSums*> rows;
+  for (int i = 0; i < kLatitudeSamples; ++i) {
+    const double u = current.row_u[i];
+    // ResampleReference's margin: a row just outside its range differences
+    // into it (AreaWeight).
+    const bool moved = u >= u_low - kAreaStep && u <= u_high + kAreaStep;
+    if (moved) SumRow(reference, current, i, &fresh[i]);
+    rows.push_back(moved ? &fresh[i] : &rows_[i]);
+  }
+  return RegionMeans(reference, rows);
+}
+
+std::vector<RegionMotion> CompareRegions(const ReferenceSamples& reference,
+                                         const CurrentSamples& current) {
+  return RegionComparison(reference, current).motion();
 }
 
 std::vector<RegionMotion> SummarizeRegions(const ReferenceSamples& reference,

@@ -111,7 +111,9 @@ struct ReferenceSamples {
     double weight = 0.0;
     Eigen::Vector3d from =
         Eigen::Vector3d::Zero();  // From its ring's centroid.
-    Eigen::Vector3d xu = Eigen::Vector3d::Zero(), xv = Eigen::Vector3d::Zero();
+    // The tangent plane's G^-1 (ReferencePlaneInverse of X_u, X_v, e_c
+    // along X_v), which every frame's strain there takes.
+    Eigen::Matrix2d plane_inverse = Eigen::Matrix2d::Identity();
     double thickness = 0.0;  // A solid's WallThickness; 0 otherwise.
   };
   size_t num_regions = 0;
@@ -152,6 +154,35 @@ void ResampleRows(const Model& current, double u_low, double u_high,
                   CurrentSamples* samples);
 std::vector<RegionMotion> CompareRegions(const ReferenceSamples& reference,
                                          const CurrentSamples& current);
+
+// CompareRegions kept row by row, so that a step that moves some rows
+// (ResampleRows, ResampleReference) compares only those again: the
+// comparison of every sample had been a third of the delta method's time.
+// The rows' sums are added in row order whether kept or new, so a
+// comparison made again gives the same bits as one made from scratch.
+class RegionComparison {
+ public:
+  RegionComparison(const ReferenceSamples& reference,
+                   const CurrentSamples& current);
+  const std::vector<RegionMotion>& motion() const { return motion_; }
+  // CompareRegions(reference, current) of samples that differ from this
+  // comparison's only in rows whose u lies in [u_low, u_high] or within
+  // ResampleReference's margin of it.
+  std::vector<RegionMotion> Recompared(const ReferenceSamples& reference,
+                                       const CurrentSamples& current,
+                                       double u_low, double u_high) const;
+
+  // A region's weighted sums over one row's samples, and their weights'.
+  struct RegionSum {
+    RegionMotion sum;
+    double weight = 0.0;
+  };
+  using RowSums = std::vector<RegionSum>;  // One per region.
+
+ private:
+  std::vector<RowSums> rows_;
+  std::vector<RegionMotion> motion_;
+};
 
 }  // namespace pfdm
 

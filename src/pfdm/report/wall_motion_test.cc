@@ -176,7 +176,7 @@ void ExpectSameSamples(const ReferenceSamples& a, const ReferenceSamples& b) {
   for (size_t i = 0; i < a.samples.size(); ++i) {
     const ReferenceSamples::Sample &x = a.samples[i], &y = b.samples[i];
     ASSERT_TRUE(x.region == y.region && x.weight == y.weight &&
-                x.from == y.from && x.xu == y.xu && x.xv == y.xv &&
+                x.from == y.from && x.plane_inverse == y.plane_inverse &&
                 x.thickness == y.thickness)
         << i;
   }
