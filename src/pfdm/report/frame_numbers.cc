@@ -1,5 +1,7 @@
 #include "pfdm/report/frame_numbers.h"
 
+#include <limits>
+
 namespace pfdm {
 namespace {
 
@@ -21,6 +23,9 @@ void SetVolumes(const Model& current, const std::vector<ModelSurface>& surfaces,
     c->lv_mass_g = kMyocardialDensity * c->myocardial_volume_ml;
   }
 }
+
+// Past every row: a range of rows that holds none.
+constexpr double kNoRow = std::numeric_limits<double>::infinity();
 
 // The rows of u that samples resampled for `range` differ in.
 MovedU ReferenceRows(const MovedU& range) {
@@ -52,7 +57,12 @@ FrameMeasurer::FrameMeasurer(const Model& ed, const ReferenceSamples& samples,
 
 FrameNumbers FrameMeasurer::Moved(const Model& moved,
                                   const MovedU& range) const {
-  return Moved(moved, range, ed_rings_, samples_, range);
+  // A shift alone moves no sample relative to its ring.
+  const bool shifted =
+      range.rigid && moved.state.quaternion == current_.state.quaternion;
+  MovedU rows = range;
+  if (shifted) rows.low = rows.high = kNoRow;
+  return Moved(moved, range, ed_rings_, samples_, rows);
 }
 
 FrameNumbers FrameMeasurer::Moved(const Model& moved, const MovedU& range,
@@ -72,12 +82,16 @@ FrameNumbers FrameMeasurer::Moved(const Model& moved, const MovedU& range,
   FrameNumbers numbers;
   numbers.clinical = SummarizeFrame(0, ed_rings, moved, RingSpan(),
                                     /*flat_lid_volumes=*/false);
-  const std::vector<double> ws = VolumeSurfaces(moved);
-  for (size_t i = 0; i < moved_surfaces_.size(); ++i) {
-    ReplaceVertices(moved, range.low, range.high, ws[i], &moved_surfaces_[i]);
+  if (range.rigid) {
+    MoveRigidly(moved);
+  } else {
+    const std::vector<double> ws = VolumeSurfaces(moved);
+    for (size_t i = 0; i < moved_surfaces_.size(); ++i) {
+      ReplaceVertices(moved, range.low, range.high, ws[i], &moved_surfaces_[i]);
+    }
+    ResampleRows(moved, range.low, range.high, &moved_samples_);
   }
   SetVolumes(moved, moved_surfaces_, plane_, &numbers.clinical);
-  ResampleRows(moved, range.low, range.high, &moved_samples_);
   numbers.regions =
       comparison_.Recompared(samples, moved_samples_, rows.low, rows.high);
   numbers.strain = SummarizeStrain(regions_, numbers.regions);
@@ -87,6 +101,26 @@ FrameNumbers FrameMeasurer::Moved(const Model& moved, const MovedU& range,
   }
   moved_samples_.samples = current_samples_.samples;
   return numbers;
+}
+
+void FrameMeasurer::MoveRigidly(const Model& moved) const {
+  const Eigen::Matrix3d turn =
+      moved.Rotation() * current_.Rotation().transpose();
+  const Eigen::Vector3d from(current_.state.center.data());
+  const Eigen::Vector3d to(moved.state.center.data());
+  for (size_t i = 0; i < moved_surfaces_.size(); ++i) {
+    const std::vector<Eigen::Vector3d>& kept = surfaces_[i].mesh.points;
+    std::vector<Eigen::Vector3d>& points = moved_surfaces_[i].mesh.points;
+    for (size_t k = 0; k < kept.size(); ++k) {
+      points[k] = to + turn * (kept[k] - from);
+    }
+  }
+  if (moved.state.quaternion == current_.state.quaternion) return;
+  for (CurrentSamples::Sample& sample : moved_samples_.samples) {
+    sample.to = turn * sample.to;
+    sample.xu = turn * sample.xu;
+    sample.xv = turn * sample.xv;
+  }
 }
 
 FrameNumbers FrameMeasurer::Against(ReferenceRings& ed_rings,

@@ -43,6 +43,10 @@ struct MovedU {
   // which the segments' levels are cut (ResampleReference): a3 or e3o at
   // the first or the last knot, or anything but a knot.
   bool heights = true;
+  // Whether the move is of the pose alone (a step of the center or the
+  // rotation): the model's points and tangents turn and shift with it, and
+  // a frame's kept samples and surfaces are moved rather than taken again.
+  bool rigid = false;
 };
 
 // MeasureFrame of one frame's model `current`, kept.  `ed`, `samples`,
@@ -77,6 +81,8 @@ class FrameMeasurer {
   FrameNumbers Moved(const Model& moved, const MovedU& range,
                      ReferenceRings& ed_rings, const ReferenceSamples& samples,
                      const MovedU& rows) const;
+  // The kept samples and surfaces moved with `moved`'s pose.
+  void MoveRigidly(const Model& moved) const;
 
   const Model& ed_;
   const ReferenceSamples& samples_;

@@ -161,6 +161,11 @@ TEST(MovedRangeTest, IsTheKnotsSpan) {
   EXPECT_TRUE(MovedRange(model, {Kind::kKnot, 8, kE3o}).heights);
   EXPECT_FALSE(MovedRange(model, {Kind::kKnot, 0, kA1}).heights);
   EXPECT_FALSE(MovedRange(model, {Kind::kKnot, 4, kA3}).heights);
+  // Only the pose's steps are rigid.
+  EXPECT_TRUE(pose.rigid);
+  EXPECT_TRUE(MovedRange(model, {Kind::kRotation, -1, 2}).rigid);
+  EXPECT_FALSE(MovedRange(model, {Kind::kGlobal, -1, kA0}).rigid);
+  EXPECT_FALSE(MovedRange(model, {Kind::kKnot, 4, kA1}).rigid);
 }
 
 }  // namespace

@@ -123,6 +123,8 @@ Model Nudged(const Model& model, const std::vector<CovarianceEntry>& entries,
 
 MovedU MovedRange(const Model& model, const CovarianceEntry& entry) {
   MovedU range;
+  range.rigid = entry.kind == CovarianceEntry::Kind::kCenter ||
+                entry.kind == CovarianceEntry::Kind::kRotation;
   if (entry.kind != CovarianceEntry::Kind::kKnot) return range;
   const KnotGrid& grid = model.config.Grid();
   if (entry.knot > 0) range.low = grid.KnotU(entry.knot - 1);
