@@ -77,6 +77,17 @@ bool WhollyAbove(const std::vector<Eigen::Vector3d>& points, int first,
   return true;
 }
 
+// Whether a surface cut at its first ring wholly above the plane
+// (SampleSurface) still lies above it there: a move (ReplaceVertices) may
+// have brought that ring down to the plane, and the volume then takes the
+// whole continued surface.
+bool CutHolds(const ModelSurface& surface, const BasePlane& base,
+              const Eigen::Vector3d& normal) {
+  return surface.cut_ring_first < 0 ||
+         WhollyAbove(surface.mesh.points, surface.cut_ring_first,
+                     kVolumeMeridians, base, normal, 0.0);
+}
+
 // MakeModelSurface, which with a base plane stops at the first ring past
 // the rim wholly kCutMarginMm above it.  VolumeBelowPlane skips every
 // triangle wholly above, so the rings after it add exactly nothing to the
@@ -162,8 +173,8 @@ ModelSurface CavitySurface(const Model& model, const BasePlane* base,
                        base);
 }
 
-void ReplaceVertices(const Model& model, double u_low, double u_high, double w,
-                     ModelSurface* surface) {
+VertexRange ReplaceVertices(const Model& model, double u_low, double u_high,
+                            double w, ModelSurface* surface) {
   std::vector<double> u, v;
   std::vector<size_t> which;
   // A vertex past the rim (u > u_max) has the functions at u_max.
@@ -181,6 +192,8 @@ void ReplaceVertices(const Model& model, double u_low, double u_high, double w,
   for (size_t k = 0; k < which.size(); ++k) {
     surface->mesh.points[which[k]] = points[k];
   }
+  if (which.empty()) return {};
+  return {which.front(), which.back() + 1};
 }
 
 double CavityVolumeMl(const Model& model, const ModelSurface& surface,
@@ -192,11 +205,7 @@ double CavityVolumeMl(const Model& model, const ModelSurface& surface,
            1000.0;
   }
   const Eigen::Vector3d normal = BaseNormal(model, *base);
-  // A move (ReplaceVertices) that brought the top ring down to the plane:
-  // the whole continued surface.
-  if (surface.cut_ring_first >= 0 &&
-      !WhollyAbove(surface.mesh.points, surface.cut_ring_first,
-                   kVolumeMeridians, *base, normal, 0.0)) {
+  if (!CutHolds(surface, *base, normal)) {
     return CavityVolumeMl(
         model,
         SampleSurface(model, 2 * kVolumeRings, kVolumeMeridians, kPi / 2,
@@ -229,6 +238,31 @@ BasePlane LowestRimPlane(const Model& model) {
 double LowestRimDrop(const Model& model) {
   const Eigen::Vector3d axis = model.Rotation().col(2);
   return axis.dot(RimPlane(model).point - LowestRimPlane(model).point);
+}
+
+KeptCavityVolume::KeptCavityVolume(const Model& model,
+                                   const ModelSurface& surface,
+                                   const BasePlane* base)
+    : base_(base) {
+  if (base != nullptr) {
+    normal_ = BaseNormal(model, *base);
+    if (CutHolds(surface, *base, normal_)) {
+      blocks_.emplace(surface.mesh, base->point, normal_);
+      ml_ = blocks_->volume() / 1000.0;  // CavityVolumeMl's, to the bit.
+      return;
+    }
+  }
+  ml_ = CavityVolumeMl(model, surface, base);
+}
+
+double KeptCavityVolume::MovedMl(const Model& moved_model,
+                                 const ModelSurface& moved,
+                                 const VertexRange& changed) const {
+  if (!blocks_ || BaseNormal(moved_model, *base_) != normal_ ||
+      !CutHolds(moved, *base_, normal_)) {
+    return CavityVolumeMl(moved_model, moved, base_);
+  }
+  return blocks_->Moved(moved.mesh, changed.first, changed.last) / 1000.0;
 }
 
 double CavityVolumeMl(const Model& model, const BasePlane* base, double w) {

@@ -66,12 +66,38 @@ double LowestRimDrop(const Model& model);
 ModelSurface CavitySurface(const Model& model, const BasePlane* base,
                            double w = 0.0);
 // The vertices with u in [u_low, u_high] (the base plane's continuation
-// past u_max has the functions at u_max), placed on `model`.
-void ReplaceVertices(const Model& model, double u_low, double u_high, double w,
-                     ModelSurface* surface);
+// past u_max has the functions at u_max), placed on `model`; returns the
+// range of vertex indices [first, last) that holds them (the vertices run
+// ring by ring from the apex).
+struct VertexRange {
+  size_t first = 0, last = 0;
+};
+VertexRange ReplaceVertices(const Model& model, double u_low, double u_high,
+                            double w, ModelSurface* surface);
 // CavityVolumeMl(model, base, w) for surface = CavitySurface(model, base, w).
 double CavityVolumeMl(const Model& model, const ModelSurface& surface,
                       const BasePlane* base);
+
+// CavityVolumeMl(model, surface, base) kept, and measured again for the
+// surface with some of its vertices moved: under a base plane only the
+// triangles that use them are summed again (PlaneVolume), with the same
+// bits as CavityVolumeMl of the moved surface.  `base` must outlive it.
+class KeptCavityVolume {
+ public:
+  KeptCavityVolume(const Model& model, const ModelSurface& surface,
+                   const BasePlane* base);
+  double ml() const { return ml_; }
+  // CavityVolumeMl(moved_model, moved, base) of `moved`, the kept surface
+  // with its vertices moved only in `changed`, on `moved_model`.
+  double MovedMl(const Model& moved_model, const ModelSurface& moved,
+                 const VertexRange& changed) const;
+
+ private:
+  const BasePlane* base_;
+  Eigen::Vector3d normal_ = Eigen::Vector3d::Zero();
+  std::optional<PlaneVolume> blocks_;
+  double ml_ = 0.0;
+};
 
 }  // namespace pfdm
 

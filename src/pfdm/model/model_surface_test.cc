@@ -172,6 +172,40 @@ TEST(ModelSurfaceTest, TheCavityStopsAtARingWhollyAboveTheBasePlane) {
             CavityVolumeMl(model, &tilted) + 5.0);
   EXPECT_EQ(CavityVolumeMl(lowered, moved, &tilted),
             CavityVolumeMl(lowered, &tilted));
+  // Kept, the moved surface's volume is measured anew where its cut ring
+  // went below the plane.
+  const KeptCavityVolume kept(model, cut, &tilted);
+  EXPECT_EQ(kept.MovedMl(lowered, moved, {0, moved.mesh.points.size()}),
+            CavityVolumeMl(lowered, &tilted));
+}
+
+// A knot's step re-places the vertices of its span (one range of indices):
+// the kept volume sums again only the triangles that use them and reads,
+// to the bit, what the moved surface's volume reads; with a flat lid
+// (no base plane) it is measured anew.
+TEST(ModelSurfaceTest, AKeptVolumeSumsAgainWhatAKnotsStepMoved) {
+  const Model model = Ellipsoid();
+  const BasePlane tilted{
+      {0, 0, 15}, Eigen::Vector3d(0.3, -0.2, 1).normalized(), 3};
+  const KnotGrid& grid = model.config.Grid();
+  Model moved_model = model;
+  moved_model.state.knots[8][kA1] *= 1.05;
+  for (const BasePlane* base : {static_cast<const BasePlane*>(&tilted),
+                                static_cast<const BasePlane*>(nullptr)}) {
+    const ModelSurface surface = CavitySurface(model, base);
+    const KeptCavityVolume kept(model, surface, base);
+    EXPECT_EQ(kept.ml(), CavityVolumeMl(model, surface, base));
+    ModelSurface moved = surface;
+    const VertexRange changed =
+        ReplaceVertices(moved_model, grid.KnotU(7), grid.KnotU(9), 0.0, &moved);
+    EXPECT_GT(changed.last, changed.first);
+    EXPECT_LT(changed.last - changed.first, moved.mesh.points.size() / 4);
+    const double fresh = CavityVolumeMl(moved_model, moved, base);
+    EXPECT_EQ(kept.MovedMl(moved_model, moved, changed), fresh);
+    EXPECT_GT(fresh, kept.ml() + 0.3);  // 0.59 ml more.
+    // The same as the moved model's surface taken from scratch.
+    EXPECT_NEAR(fresh, CavityVolumeMl(moved_model, base), 1e-9 * fresh);
+  }
 }
 
 }  // namespace

@@ -12,14 +12,12 @@ std::vector<double> VolumeSurfaces(const Model& model) {
   return {0.0};
 }
 
-// The volumes closed by `plane` (the flat lid at the rim without one), as
+// The volumes of the cavity's surface and a solid's epicardium (ml), as
 // SummarizeFrame's with flat lids or AnalyzeFit's with base planes.
-void SetVolumes(const Model& current, const std::vector<ModelSurface>& surfaces,
-                const BasePlane* plane, ClinicalSummary* c) {
-  c->volume_ml = CavityVolumeMl(current, surfaces[0], plane);
-  if (surfaces.size() > 1) {
-    c->myocardial_volume_ml =
-        CavityVolumeMl(current, surfaces[1], plane) - c->volume_ml;
+void SetVolumes(const std::vector<double>& ml, ClinicalSummary* c) {
+  c->volume_ml = ml[0];
+  if (ml.size() > 1) {
+    c->myocardial_volume_ml = ml[1] - c->volume_ml;
     c->lv_mass_g = kMyocardialDensity * c->myocardial_volume_ml;
   }
 }
@@ -45,12 +43,15 @@ FrameMeasurer::FrameMeasurer(const Model& ed, const ReferenceSamples& samples,
       current_samples_(SampleCurrent(samples, current)),
       comparison_(samples, current_samples_),
       ed_rings_(ed) {
+  std::vector<double> ml;
   for (double w : VolumeSurfaces(current)) {
     surfaces_.push_back(CavitySurface(current, plane, w));
+    volumes_.emplace_back(current, surfaces_.back(), plane);
+    ml.push_back(volumes_.back().ml());
   }
   numbers_.clinical = SummarizeFrame(0, ed_rings_, current, RingSpan(),
                                      /*flat_lid_volumes=*/false);
-  SetVolumes(current, surfaces_, plane, &numbers_.clinical);
+  SetVolumes(ml, &numbers_.clinical);
   numbers_.regions = comparison_.motion();
   numbers_.strain = SummarizeStrain(regions, numbers_.regions);
 }
@@ -82,16 +83,25 @@ FrameNumbers FrameMeasurer::Moved(const Model& moved, const MovedU& range,
   FrameNumbers numbers;
   numbers.clinical = SummarizeFrame(0, ed_rings, moved, RingSpan(),
                                     /*flat_lid_volumes=*/false);
+  std::vector<VertexRange> changed(moved_surfaces_.size());
   if (range.rigid) {
     MoveRigidly(moved);
+    for (size_t i = 0; i < changed.size(); ++i) {
+      changed[i].last = moved_surfaces_[i].mesh.points.size();
+    }
   } else {
     const std::vector<double> ws = VolumeSurfaces(moved);
     for (size_t i = 0; i < moved_surfaces_.size(); ++i) {
-      ReplaceVertices(moved, range.low, range.high, ws[i], &moved_surfaces_[i]);
+      changed[i] = ReplaceVertices(moved, range.low, range.high, ws[i],
+                                   &moved_surfaces_[i]);
     }
     ResampleRows(moved, range.low, range.high, &moved_samples_);
   }
-  SetVolumes(moved, moved_surfaces_, plane_, &numbers.clinical);
+  std::vector<double> ml;
+  for (size_t i = 0; i < volumes_.size(); ++i) {
+    ml.push_back(volumes_[i].MovedMl(moved, moved_surfaces_[i], changed[i]));
+  }
+  SetVolumes(ml, &numbers.clinical);
   numbers.regions =
       comparison_.Recompared(samples, moved_samples_, rows.low, rows.high);
   numbers.strain = SummarizeStrain(regions_, numbers.regions);

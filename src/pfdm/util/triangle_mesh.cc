@@ -124,36 +124,95 @@ double EnclosedVolume(const TriangleMesh& mesh) {
   return std::abs(six_volume) / 6.0;
 }
 
+namespace {
+
+// Triangles per block of PlaneVolume: a knot's step moves some 2 % of a
+// cavity's 25,000 triangles.
+constexpr size_t kBlockTriangles = 256;
+
+// Six times the signed volume of the part of triangle (p0, p1, p2), taken
+// from a point of the plane, below the plane: clipped to that side.
+double SixVolumeBelow(const Eigen::Vector3d (&p)[3],
+                      const Eigen::Vector3d& normal) {
+  const double d[3] = {normal.dot(p[0]), normal.dot(p[1]), normal.dot(p[2])};
+  // Most triangles lie wholly on one side: the clip below keeps all
+  // three corners in order, or none.  (The uncertainty's many
+  // measurements of a cavity spent a fifth of their time here.)
+  if (d[0] <= 0.0 && d[1] <= 0.0 && d[2] <= 0.0) {
+    return p[0].dot(p[1].cross(p[2]));
+  }
+  if (d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0) return 0.0;
+  // Sutherland-Hodgman against one plane: 3 or 4 corners.
+  Eigen::Vector3d kept[4];
+  int count = 0;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (d[i] <= 0.0) kept[count++] = p[i];
+    if ((d[i] <= 0.0) != (d[j] <= 0.0)) {
+      kept[count++] = p[i] + (p[j] - p[i]) * (d[i] / (d[i] - d[j]));
+    }
+  }
+  double six_volume = 0.0;
+  for (int i = 1; i + 1 < count; ++i) {
+    six_volume += kept[0].dot(kept[i].cross(kept[i + 1]));
+  }
+  return six_volume;
+}
+
+}  // namespace
+
 double VolumeBelowPlane(const TriangleMesh& closed,
                         const Eigen::Vector3d& point,
                         const Eigen::Vector3d& normal) {
-  double six_volume = 0.0;
-  for (const auto& t : closed.triangles) {
-    const Eigen::Vector3d p[3] = {closed.points[t[0]] - point,
-                                  closed.points[t[1]] - point,
-                                  closed.points[t[2]] - point};
-    const double d[3] = {normal.dot(p[0]), normal.dot(p[1]), normal.dot(p[2])};
-    // Most triangles lie wholly on one side: the clip below keeps all
-    // three corners in order, or none.  (The uncertainty's many
-    // measurements of a cavity spent a fifth of their time here.)
-    if (d[0] <= 0.0 && d[1] <= 0.0 && d[2] <= 0.0) {
-      six_volume += p[0].dot(p[1].cross(p[2]));
-      continue;
-    }
-    if (d[0] > 0.0 && d[1] > 0.0 && d[2] > 0.0) continue;
-    // Sutherland-Hodgman against one plane: 3 or 4 corners.
-    Eigen::Vector3d kept[4];
-    int count = 0;
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3;
-      if (d[i] <= 0.0) kept[count++] = p[i];
-      if ((d[i] <= 0.0) != (d[j] <= 0.0)) {
-        kept[count++] = p[i] + (p[j] - p[i]) * (d[i] / (d[i] - d[j]));
+  return PlaneVolume(closed, point, normal).volume();
+}
+
+PlaneVolume::PlaneVolume(const TriangleMesh& closed,
+                         const Eigen::Vector3d& point,
+                         const Eigen::Vector3d& normal)
+    : point_(point), normal_(normal) {
+  const size_t count = closed.triangles.size();
+  for (size_t begin = 0; begin < count; begin += kBlockTriangles) {
+    Block block;
+    block.begin = begin;
+    block.end = std::min(count, begin + kBlockTriangles);
+    block.low = closed.points.size();
+    for (size_t t = block.begin; t < block.end; ++t) {
+      for (int corner : closed.triangles[t]) {
+        block.low = std::min(block.low, static_cast<size_t>(corner));
+        block.high = std::max(block.high, static_cast<size_t>(corner));
       }
     }
-    for (int i = 1; i + 1 < count; ++i) {
-      six_volume += kept[0].dot(kept[i].cross(kept[i + 1]));
-    }
+    block.six_volume = SixVolume(closed, block);
+    blocks_.push_back(block);
+  }
+}
+
+double PlaneVolume::SixVolume(const TriangleMesh& mesh,
+                              const Block& block) const {
+  double six_volume = 0.0;
+  for (size_t t = block.begin; t < block.end; ++t) {
+    const std::array<int, 3>& corners = mesh.triangles[t];
+    const Eigen::Vector3d p[3] = {mesh.points[corners[0]] - point_,
+                                  mesh.points[corners[1]] - point_,
+                                  mesh.points[corners[2]] - point_};
+    six_volume += SixVolumeBelow(p, normal_);
+  }
+  return six_volume;
+}
+
+double PlaneVolume::volume() const {
+  double six_volume = 0.0;
+  for (const Block& block : blocks_) six_volume += block.six_volume;
+  return std::abs(six_volume) / 6.0;
+}
+
+double PlaneVolume::Moved(const TriangleMesh& moved, size_t first,
+                          size_t last) const {
+  double six_volume = 0.0;
+  for (const Block& block : blocks_) {
+    const bool touched = block.low < last && block.high >= first;
+    six_volume += touched ? SixVolume(moved, block) : block.six_volume;
   }
   return std::abs(six_volume) / 6.0;
 }

@@ -37,6 +37,33 @@ double VolumeBelowPlane(const TriangleMesh& closed,
                         const Eigen::Vector3d& point,
                         const Eigen::Vector3d& normal);
 
+// VolumeBelowPlane kept in blocks of consecutive triangles, so that a mesh
+// whose vertices moved only in an index range (a surface's rings in a
+// range of u, the delta method's knot steps) is summed again only in the
+// blocks that use them.  The blocks' sums are added in order either way,
+// so a kept volume has the bits of one summed anew (VolumeBelowPlane is
+// this class's).
+class PlaneVolume {
+ public:
+  PlaneVolume(const TriangleMesh& closed, const Eigen::Vector3d& point,
+              const Eigen::Vector3d& normal);
+  double volume() const;  // mm^3.
+  // VolumeBelowPlane(moved, point, normal) of `moved`: this mesh's
+  // triangles, its vertices moved only in [first, last).
+  double Moved(const TriangleMesh& moved, size_t first, size_t last) const;
+
+ private:
+  struct Block {
+    size_t begin = 0, end = 0;  // Its triangles.
+    size_t low = 0, high = 0;   // The least and the greatest vertex used.
+    double six_volume = 0.0;
+  };
+  double SixVolume(const TriangleMesh& mesh, const Block& block) const;
+
+  Eigen::Vector3d point_, normal_;
+  std::vector<Block> blocks_;
+};
+
 }  // namespace pfdm
 
 #endif  // PFDM_UTIL_TRIANGLE_MESH_H_

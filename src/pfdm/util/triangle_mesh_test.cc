@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gtest/gtest.h"
+#include "pfdm/util/angles.h"
 #include "pfdm/util/error.h"
 
 namespace pfdm {
@@ -72,6 +73,66 @@ TEST(TriangleMeshTest, VolumeBelowPlaneCutsTheCube) {
       4.0, 1e-12);
   EXPECT_NEAR(VolumeBelowPlane(cube, {0, 0, 5}, {0, 0, 1}), 8.0, 1e-12);
   EXPECT_NEAR(VolumeBelowPlane(cube, {0, 0, -1}, {0, 0, 1}), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace pfdm
+
+namespace pfdm {
+namespace {
+
+// A sphere of radius r about the origin, ring by ring from the south pole
+// (one vertex) to the north pole, triangles facing outward.
+TriangleMesh Sphere(double r, int rings, int meridians) {
+  TriangleMesh mesh;
+  mesh.points.push_back({0, 0, -r});
+  for (int i = 1; i < rings; ++i) {
+    const double polar = kPi * i / rings;
+    for (int j = 0; j < meridians; ++j) {
+      const double around = 2.0 * kPi * j / meridians;
+      mesh.points.push_back(r *
+                            Eigen::Vector3d(std::sin(polar) * std::cos(around),
+                                            std::sin(polar) * std::sin(around),
+                                            -std::cos(polar)));
+    }
+  }
+  mesh.points.push_back({0, 0, r});
+  const int top = static_cast<int>(mesh.points.size()) - 1;
+  auto at = [&](int ring, int j) {
+    return 1 + (ring - 1) * meridians + j % meridians;
+  };
+  for (int j = 0; j < meridians; ++j) {
+    mesh.triangles.push_back({0, at(1, j + 1), at(1, j)});
+    mesh.triangles.push_back({top, at(rings - 1, j), at(rings - 1, j + 1)});
+    for (int i = 1; i + 1 < rings; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+    }
+  }
+  return mesh;
+}
+
+// Kept block by block, the volume below a plane is the one summed anew, to
+// the bit; moved in a range of vertices, only the blocks that use them are
+// summed again, and the moved volume is the new mesh's, to the bit.
+TEST(PlaneVolumeTest, SumsAgainOnlyTheBlocksOfTheMovedVertices) {
+  const TriangleMesh sphere = Sphere(10.0, 60, 64);
+  const Eigen::Vector3d point(0, 0, 2), normal(0, 0, 1);
+  const PlaneVolume kept(sphere, point, normal);
+  EXPECT_EQ(kept.volume(), VolumeBelowPlane(sphere, point, normal));
+  // The ball's below z = 2: pi (r + h)^2 (2 r - h) / 3 with h = 2, within
+  // the mesh's facets.
+  EXPECT_NEAR(kept.volume(), kPi * 12.0 * 12.0 * 18.0 / 3.0, 0.01 * 2714.3);
+  // Rings 20-29 pushed out by a tenth.
+  TriangleMesh moved = sphere;
+  const size_t first = 1 + 19 * 64, last = 1 + 29 * 64;
+  for (size_t k = first; k < last; ++k) moved.points[k] *= 1.1;
+  const double fresh = VolumeBelowPlane(moved, point, normal);
+  EXPECT_EQ(kept.Moved(moved, first, last), fresh);
+  EXPECT_GT(fresh, kept.volume() + 50.0);
+  // Told that nothing moved, it keeps every block: the range is what it
+  // sums again.
+  EXPECT_EQ(kept.Moved(moved, 0, 0), kept.volume());
 }
 
 }  // namespace
