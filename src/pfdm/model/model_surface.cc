@@ -29,18 +29,15 @@ bool IsPole(double u) { return std::abs(std::cos(u)) < 1e-9; }
 // method measures it some thousand times).  The rims are known from the
 // layout: found from the edges (CapBoundaryLoops) they cost more than the
 // surface.
-double CappedVolume(const TriangleMesh& mesh, int meridians, bool apex_pole,
-                    bool top_pole) {
-  if (mesh.points.empty()) return 0.0;
-  const Eigen::Vector3d origin = mesh.points.front();
+// Six times the signed volume, about `origin`, of the fans that close a
+// MakeModelSurface mesh's open rings (CappedVolume's lids).
+double LidsSixVolume(const TriangleMesh& mesh, int meridians, bool apex_pole,
+                     bool top_pole, const Eigen::Vector3d& origin) {
   auto six_volume = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                         const Eigen::Vector3d& c) {
     return (a - origin).dot((b - origin).cross(c - origin));
   };
   double six = 0.0;
-  for (const auto& t : mesh.triangles) {
-    six += six_volume(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
-  }
   const int n = static_cast<int>(mesh.points.size());
   auto cap = [&](int first, bool reversed) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -56,7 +53,17 @@ double CappedVolume(const TriangleMesh& mesh, int meridians, bool apex_pole,
   // last: each lid runs the other way.
   if (!apex_pole) cap(0, true);
   if (!top_pole) cap(n - meridians, false);
-  return std::abs(six) / 6.0;
+  return six;
+}
+
+double CappedVolume(const TriangleMesh& mesh, int meridians, bool apex_pole,
+                    bool top_pole) {
+  if (mesh.points.empty()) return 0.0;
+  const Eigen::Vector3d origin = mesh.points.front();
+  // The surface's triangles about the origin, unclipped (a zero normal).
+  return std::abs(SixVolumeBelowPlane(mesh, origin, Eigen::Vector3d::Zero()) +
+                  LidsSixVolume(mesh, meridians, apex_pole, top_pole, origin)) /
+         6.0;
 }
 
 // The base plane's normal turned toward the base (the model's +z).
@@ -243,21 +250,43 @@ double LowestRimDrop(const Model& model) {
 KeptCavityVolume::KeptCavityVolume(const Model& model,
                                    const ModelSurface& surface,
                                    const BasePlane* base)
-    : base_(base) {
-  if (base != nullptr) {
-    normal_ = BaseNormal(model, *base);
-    if (CutHolds(surface, *base, normal_)) {
-      blocks_.emplace(surface.mesh, base->point, normal_);
-      ml_ = blocks_->volume() / 1000.0;  // CavityVolumeMl's, to the bit.
-      return;
-    }
+    : base_(base),
+      apex_pole_(IsPole(model.config.u_min)),
+      top_pole_(IsPole(model.config.u_max)) {
+  if (base == nullptr) {
+    if (surface.mesh.points.empty()) return;
+    // CappedVolume's sums about the kept apex vertex, which a moved one
+    // keeps: the volume does not depend on the origin, and a step that
+    // moves the apex does not move every term.
+    origin_ = surface.mesh.points.front();
+    blocks_.emplace(surface.mesh, origin_, Eigen::Vector3d::Zero());
+    ml_ = FlatLidMl(surface.mesh, blocks_->six_volume());
+    return;
+  }
+  normal_ = BaseNormal(model, *base);
+  if (CutHolds(surface, *base, normal_)) {
+    blocks_.emplace(surface.mesh, base->point, normal_);
+    ml_ = blocks_->volume() / 1000.0;  // CavityVolumeMl's, to the bit.
+    return;
   }
   ml_ = CavityVolumeMl(model, surface, base);
+}
+
+double KeptCavityVolume::FlatLidMl(const TriangleMesh& mesh,
+                                   double surface_six_volume) const {
+  return std::abs(surface_six_volume + LidsSixVolume(mesh, kVolumeMeridians,
+                                                     apex_pole_, top_pole_,
+                                                     origin_)) /
+         6.0 / 1000.0;
 }
 
 double KeptCavityVolume::MovedMl(const Model& moved_model,
                                  const ModelSurface& moved,
                                  const VertexRange& changed) const {
+  if (blocks_ && base_ == nullptr) {
+    return FlatLidMl(moved.mesh, blocks_->MovedSixVolume(
+                                     moved.mesh, changed.first, changed.last));
+  }
   if (!blocks_ || BaseNormal(moved_model, *base_) != normal_ ||
       !CutHolds(moved, *base_, normal_)) {
     return CavityVolumeMl(moved_model, moved, base_);

@@ -79,9 +79,11 @@ double CavityVolumeMl(const Model& model, const ModelSurface& surface,
                       const BasePlane* base);
 
 // CavityVolumeMl(model, surface, base) kept, and measured again for the
-// surface with some of its vertices moved: under a base plane only the
-// triangles that use them are summed again (PlaneVolume), with the same
-// bits as CavityVolumeMl of the moved surface.  `base` must outlive it.
+// surface with some of its vertices moved: only the triangles that use
+// them are summed again (PlaneVolume), under a base plane with the same
+// bits as CavityVolumeMl of the moved surface, with the flat lid about the
+// kept apex (within round-off of CavityVolumeMl's about the moved one).
+// `base` must outlive it.
 class KeptCavityVolume {
  public:
   KeptCavityVolume(const Model& model, const ModelSurface& surface,
@@ -93,8 +95,14 @@ class KeptCavityVolume {
                  const VertexRange& changed) const;
 
  private:
+  // The flat lid's volume (ml) of a surface whose triangles sum to
+  // `surface_six_volume` about origin_.
+  double FlatLidMl(const TriangleMesh& mesh, double surface_six_volume) const;
+
   const BasePlane* base_;
+  bool apex_pole_, top_pole_;
   Eigen::Vector3d normal_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   std::optional<PlaneVolume> blocks_;
   double ml_ = 0.0;
 };

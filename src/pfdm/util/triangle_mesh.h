@@ -37,12 +37,20 @@ double VolumeBelowPlane(const TriangleMesh& closed,
                         const Eigen::Vector3d& point,
                         const Eigen::Vector3d& normal);
 
+// VolumeBelowPlane before the absolute value and the sixth: six times the
+// signed volume, summed block by block as PlaneVolume sums it.  A zero
+// normal clips nothing: the triangles' terms p0 . (p1 x p2) about `point`,
+// which a mesh closed otherwise (lids) adds to its own.
+double SixVolumeBelowPlane(const TriangleMesh& closed,
+                           const Eigen::Vector3d& point,
+                           const Eigen::Vector3d& normal);
+
 // VolumeBelowPlane kept in blocks of consecutive triangles, so that a mesh
 // whose vertices moved only in an index range (a surface's rings in a
 // range of u, the delta method's knot steps) is summed again only in the
 // blocks that use them.  The blocks' sums are added in order either way,
-// so a kept volume has the bits of one summed anew (VolumeBelowPlane is
-// this class's).
+// so a kept volume has the bits of one summed anew (SixVolumeBelowPlane's);
+// a zero normal clips nothing.
 class PlaneVolume {
  public:
   PlaneVolume(const TriangleMesh& closed, const Eigen::Vector3d& point,
@@ -51,6 +59,10 @@ class PlaneVolume {
   // VolumeBelowPlane(moved, point, normal) of `moved`: this mesh's
   // triangles, its vertices moved only in [first, last).
   double Moved(const TriangleMesh& moved, size_t first, size_t last) const;
+  // The same before the absolute value and the sixth: signed, six times.
+  double six_volume() const;
+  double MovedSixVolume(const TriangleMesh& moved, size_t first,
+                        size_t last) const;
 
  private:
   struct Block {
