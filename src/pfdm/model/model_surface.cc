@@ -22,13 +22,6 @@ constexpr double kCutMarginMm = 2.0;
 // A ring at u is the apex (or top) pole, one vertex.
 bool IsPole(double u) { return std::abs(std::cos(u)) < 1e-9; }
 
-// The volume (mm^3) of a MakeModelSurface mesh with its open rings (the
-// base rim; the apex ring too when it is not a pole) closed by fans about
-// their centroids, facing outward as the surface does: EnclosedVolume of
-// the closed mesh, summed in its order, without building it (the delta
-// method measures it some thousand times).  The rims are known from the
-// layout: found from the edges (CapBoundaryLoops) they cost more than the
-// surface.
 // Six times the signed volume, about `origin`, of the fans that close a
 // MakeModelSurface mesh's open rings (CappedVolume's lids).
 double LidsSixVolume(const TriangleMesh& mesh, int meridians, bool apex_pole,
@@ -56,6 +49,14 @@ double LidsSixVolume(const TriangleMesh& mesh, int meridians, bool apex_pole,
   return six;
 }
 
+// The volume (mm^3) of a MakeModelSurface mesh with its open rings (the
+// base rim; the apex ring too when it is not a pole) closed by fans about
+// their centroids, facing outward as the surface does: EnclosedVolume of
+// the closed mesh, its triangles summed in PlaneVolume's blocks and then
+// the lids, without building it (the delta method measures it some
+// thousand times; KeptCavityVolume keeps the blocks).  The rims are known from
+// the layout: found from the edges (CapBoundaryLoops) they cost more than the
+// surface.
 double CappedVolume(const TriangleMesh& mesh, int meridians, bool apex_pole,
                     bool top_pole) {
   if (mesh.points.empty()) return 0.0;
@@ -255,9 +256,9 @@ KeptCavityVolume::KeptCavityVolume(const Model& model,
       top_pole_(IsPole(model.config.u_max)) {
   if (base == nullptr) {
     if (surface.mesh.points.empty()) return;
-    // CappedVolume's sums about the kept apex vertex, which a moved one
-    // keeps: the volume does not depend on the origin, and a step that
-    // moves the apex does not move every term.
+    // About the kept apex vertex, not the moved one as CappedVolume: the
+    // volume does not depend on the origin, and a step that moves the apex
+    // then moves only the terms of the triangles that use it.
     origin_ = surface.mesh.points.front();
     blocks_.emplace(surface.mesh, origin_, Eigen::Vector3d::Zero());
     ml_ = FlatLidMl(surface.mesh, blocks_->six_volume());

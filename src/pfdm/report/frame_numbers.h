@@ -93,7 +93,7 @@ class FrameMeasurer {
   RegionComparison comparison_;
   // The cavity's surface (a solid's endocardium) and a solid's epicardium.
   std::vector<ModelSurface> surfaces_;
-  // Their volumes, kept block by block of triangles under a base plane.
+  // Their volumes, kept block by block of triangles.
   std::vector<KeptCavityVolume> volumes_;
   FrameNumbers numbers_;
   // ED's rings, which the frame's own steps measure against.

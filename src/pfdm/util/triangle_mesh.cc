@@ -126,8 +126,9 @@ double EnclosedVolume(const TriangleMesh& mesh) {
 
 namespace {
 
-// Triangles per block of PlaneVolume: a knot's step moves some 2 % of a
-// cavity's 25,000 triangles.
+// Triangles per block of PlaneVolume: a ring's strip of a cavity's surface
+// at 128 meridians, of which a knot's step moves some 6-20 % (17 % on the
+// README example's steps, the apex's spans wider in u).
 constexpr size_t kBlockTriangles = 256;
 
 // Six times the signed volume of the part of triangle (p0, p1, p2), taken
