@@ -9,24 +9,6 @@
 namespace pfdm {
 namespace {
 
-// A frame's model and end-diastole's, each knot of its own (a1, a3 and the
-// twist vary along u), a local field, and a pose off the identity.
-Model Uneven(Model model, double scale, double twist) {
-  for (size_t k = 0; k < model.state.knots.size(); ++k) {
-    FunctionValues& f = model.state.knots[k];
-    f[kA1] *= scale * (1.0 + 0.05 * std::sin(1.3 * k));
-    f[kA2] *= scale * (1.0 + 0.04 * std::cos(0.7 * k));
-    f[kA3] *= 1.0 + 0.03 * std::sin(0.9 * k);
-    f[kTau] = twist * k;
-  }
-  AddTestLocalField(0.8, &model);
-  model.state.center = {1.0, -2.0, 3.0};
-  const Eigen::Quaterniond q(
-      Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 0.5).normalized()));
-  model.state.quaternion = {q.w(), q.x(), q.y(), q.z()};
-  return model;
-}
-
 void ExpectSameNumbers(const FrameNumbers& a, const FrameNumbers& b) {
   const std::vector<double> x = Flatten(a), y = Flatten(b);
   ASSERT_EQ(x.size(), y.size());
@@ -50,8 +32,8 @@ class FrameMeasurerTest : public ::testing::TestWithParam<bool> {
 // measuring the moved model from scratch gives, with the flat lid and with
 // a tilted base plane.
 TEST_P(FrameMeasurerTest, MovedMeasuresWhatMeasureFrameMeasures) {
-  const Model ed = Uneven(Base(), 1.0, 0.01);
-  const Model current = Uneven(Base(), 0.85, 0.03);
+  const Model ed = UnevenTestModel(Base(), 1.0, 0.01);
+  const Model current = UnevenTestModel(Base(), 0.85, 0.03);
   const ReferenceSamples samples = SampleReference(ed, RegionLayout());
   const std::vector<WallRegion> regions = Regions(RegionLayout());
   BasePlane plane;
@@ -95,9 +77,9 @@ TEST_P(FrameMeasurerTest, MovedMeasuresWhatMeasureFrameMeasures) {
 // Measured against another end-diastole, the frame's kept samples and
 // volumes give what measuring from scratch gives.
 TEST_P(FrameMeasurerTest, AgainstMeasuresWhatMeasureFrameMeasures) {
-  const Model ed = Uneven(Base(), 1.0, 0.01);
-  const Model other_ed = Uneven(Base(), 1.02, 0.015);
-  const Model current = Uneven(Base(), 0.85, 0.03);
+  const Model ed = UnevenTestModel(Base(), 1.0, 0.01);
+  const Model other_ed = UnevenTestModel(Base(), 1.02, 0.015);
+  const Model current = UnevenTestModel(Base(), 0.85, 0.03);
   const ReferenceSamples samples = SampleReference(ed, RegionLayout());
   const ReferenceSamples other = SampleReference(other_ed, RegionLayout());
   const std::vector<WallRegion> regions = Regions(RegionLayout());

@@ -11,21 +11,10 @@
 namespace pfdm {
 namespace {
 
-// A solid whose radii and twist vary along u, scaled and twisted.
-Model Moved(Model model, double scale, double twist) {
-  for (size_t k = 0; k < model.state.knots.size(); ++k) {
-    FunctionValues& f = model.state.knots[k];
-    f[kA1] *= scale * (1.0 + 0.05 * std::sin(1.3 * k));
-    f[kA2] *= scale;
-    f[kTau] = twist * k;
-  }
-  return model;
-}
-
 // What the rings keep is what measuring the reference anew gives, and a
 // second look-up returns it again, not another measurement.
 TEST(ReferenceRingsTest, KeepsWhatMeasuringAnewGives) {
-  const Model reference = Moved(TestShell(9), 1.0, 0.01);
+  const Model reference = UnevenTestModel(TestShell(9), 1.0, 0.01);
   ReferenceRings rings(reference);
   const double u = rings.At(0.5, -1.0);
   EXPECT_EQ(u, RingAtHeightFraction(reference, 0.5, -1.0));
@@ -47,10 +36,10 @@ TEST(ReferenceRingsTest, KeepsWhatMeasuringAnewGives) {
 // One frame's summary after another with the rings kept is the summary
 // with the rings found anew, to the bit: the delta method's steps keep them.
 TEST(ReferenceRingsTest, KeptRingsSummarizeAsFreshOnes) {
-  const Model reference = Moved(TestShell(9), 1.0, 0.01);
+  const Model reference = UnevenTestModel(TestShell(9), 1.0, 0.01);
   ReferenceRings rings(reference);
   for (double scale : {0.9, 0.8}) {
-    const Model current = Moved(TestShell(9), scale, 0.03);
+    const Model current = UnevenTestModel(TestShell(9), scale, 0.03);
     ClinicalSummary kept =
         SummarizeFrame(1, rings, current, RingSpan(), /*flat=*/true);
     ClinicalSummary fresh =

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "Eigen/Geometry"
 #include "pfdm/model/local_field.h"
 #include "pfdm/model/model.h"
 #include "pfdm/phantom/lv_phantom.h"
@@ -51,6 +52,26 @@ inline void AddTestLocalField(double amplitude, Model* model) {
   for (size_t i = 0; i < model->state.local.values.size(); ++i) {
     model->state.local.values[i] = amplitude * std::sin(1.7 * i);
   }
+}
+
+// `model` with each knot of its own (a1, a2, a3 and the twist tau = twist
+// k vary along u, the radii scaled by `scale`), a local field, and a pose
+// off the identity: a frame's or end-diastole's model for the
+// measurements' tests.
+inline Model UnevenTestModel(Model model, double scale, double twist) {
+  for (size_t k = 0; k < model.state.knots.size(); ++k) {
+    FunctionValues& f = model.state.knots[k];
+    f[kA1] *= scale * (1.0 + 0.05 * std::sin(1.3 * k));
+    f[kA2] *= scale * (1.0 + 0.04 * std::cos(0.7 * k));
+    f[kA3] *= 1.0 + 0.03 * std::sin(0.9 * k);
+    f[kTau] = twist * k;
+  }
+  AddTestLocalField(0.8, &model);
+  model.state.center = {1.0, -2.0, 3.0};
+  const Eigen::Quaterniond q(
+      Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 0.5).normalized()));
+  model.state.quaternion = {q.w(), q.x(), q.y(), q.z()};
+  return model;
 }
 
 // The default phantom with num_points points over num_frames frames.
