@@ -1,7 +1,9 @@
 #include "pfdm/model/shape_angle_derivative.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "pfdm/model/parameter_function.h"
 #include "pfdm/model/signed_power.h"
@@ -197,6 +199,21 @@ ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
   SinCosMany(angles, 3, sines, cosines);
   return Derivatives(f, df_du, {cosines[0], sines[0], cosines[1], sines[1]},
                      {cosines[2], sines[2]}, unit_exponents, w);
+}
+
+void ShapeAngleDerivativesAlong(const double* f, const double* df_du, double u,
+                                const double* v, int n, bool unit_exponents,
+                                double w, ShapeAndAngleDerivatives* out) {
+  std::vector<double> angles(n + 2), sines(n + 2), cosines(n + 2);
+  angles[0] = u;
+  angles[1] = TwistOf(f, w);
+  std::copy(v, v + n, angles.begin() + 2);
+  SinCosMany(angles.data(), n + 2, sines.data(), cosines.data());
+  for (int j = 0; j < n; ++j) {
+    out[j] = Derivatives(f, df_du,
+                         {cosines[0], sines[0], cosines[j + 2], sines[j + 2]},
+                         {cosines[1], sines[1]}, unit_exponents, w);
+  }
 }
 
 }  // namespace pfdm

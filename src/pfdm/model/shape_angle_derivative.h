@@ -28,6 +28,15 @@ ShapeAndAngleDerivatives ShapeAngleDerivatives(const double* f,
                                                double v, bool unit_exponents,
                                                double w = 0.0);
 
+// ShapeAngleDerivatives at (u, v[j]) for j < n into out[j], the same to the
+// bit: the sines and cosines of u and of the twist are taken once, the
+// v's in one batch (an angle's SinCosMany bits do not depend on its place
+// in the batch).  The measurements' rows of samples at one u (wall_motion)
+// took a fifth of `--uncertainty on` one point at a time.
+void ShapeAngleDerivativesAlong(const double* f, const double* df_du, double u,
+                                const double* v, int n, bool unit_exponents,
+                                double w, ShapeAndAngleDerivatives* out);
+
 }  // namespace pfdm
 
 #endif  // PFDM_MODEL_SHAPE_ANGLE_DERIVATIVE_H_

@@ -1,6 +1,7 @@
 #include "pfdm/model/shape_angle_derivative.h"
 
 #include <random>
+#include <vector>
 
 #include "ceres/jet.h"
 #include "gtest/gtest.h"
@@ -120,6 +121,38 @@ TEST(ShapeAngleDerivativeTest, MatchesJetDerivativesOffTheMidwall) {
         if (trial == 0) {
           for (double u : us) {
             for (double v : vs) ExpectMatchesJet(s.f, s.df, u, v, unit, w);
+          }
+        }
+      }
+    }
+  }
+}
+
+// A row of points at one u (the seam, the axes and random v's) gives each
+// point's single evaluation to the bit: on the mid-wall and off it, unit
+// exponents or not, bent or not, at the apex pole too.
+TEST(ShapeAngleDerivativeTest, ARowGivesEachPointsBits) {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> v_dist(-M_PI, M_PI);
+  std::vector<double> v = {-M_PI, 0.0, M_PI / 2, -M_PI / 2, 1e-12};
+  for (int j = 0; j < 10; ++j) v.push_back(v_dist(random));
+  for (bool unit : {true, false}) {
+    for (bool bent : {true, false}) {
+      State s = RandomState(&random, unit, bent);
+      s.f[kH] = 9.0;
+      s.df[kH] = 2.0;
+      s.f[kDtau] = 0.1;
+      for (double u : {-M_PI / 2, -0.7, 0.3}) {
+        for (double w : {0.0, -1.0, 0.5}) {
+          std::vector<ShapeAndAngleDerivatives> row(v.size());
+          ShapeAngleDerivativesAlong(s.f, s.df, u, v.data(), v.size(), unit, w,
+                                     row.data());
+          for (size_t j = 0; j < v.size(); ++j) {
+            const ShapeAndAngleDerivatives one =
+                ShapeAngleDerivatives(s.f, s.df, u, v[j], unit, w);
+            EXPECT_TRUE(row[j].shape == one.shape) << u << " " << v[j];
+            EXPECT_TRUE(row[j].d_u == one.d_u) << u << " " << v[j];
+            EXPECT_TRUE(row[j].d_v == one.d_v) << u << " " << v[j];
           }
         }
       }

@@ -1,5 +1,7 @@
 #include "pfdm/report/surface_strain.h"
 
+#include <vector>
+
 #include "Eigen/Dense"
 #include "ceres/jet.h"
 #include "pfdm/model/local_field.h"
@@ -70,11 +72,14 @@ void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
   SurfaceTangents(model, ring, v, 0.0, xu, xv);
 }
 
-void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
-                     double w, Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
+namespace {
+
+// R (d_shape + d_local) along u and v at (ring.u, v) on surface w.
+void WorldTangents(const Model& model, const RingFunctions& ring, double v,
+                   double w, const ShapeAndAngleDerivatives& shape,
+                   const Eigen::Matrix3d& rotation, Eigen::Vector3d* xu,
+                   Eigen::Vector3d* xv) {
   using Jet2 = ceres::Jet<double, 2>;
-  const ShapeAndAngleDerivatives shape = ShapeAngleDerivatives(
-      ring.at.data(), ring.slopes.data(), ring.u, v, model.UnitExponents(), w);
   const Eigen::Matrix<Jet2, 3, 1> local =
       LocalDisplacement(model.state.local, Jet2(ring.u, 0), Jet2(v, 1), w);
   Eigen::Vector3d local_u, local_v;
@@ -82,9 +87,29 @@ void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
     local_u[i] = local[i].v[0];
     local_v[i] = local[i].v[1];
   }
-  const Eigen::Matrix3d rotation = model.Rotation();
   *xu = rotation * (shape.d_u + local_u);
   *xv = rotation * (shape.d_v + local_v);
+}
+
+}  // namespace
+
+void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
+                     double w, Eigen::Vector3d* xu, Eigen::Vector3d* xv) {
+  const ShapeAndAngleDerivatives shape = ShapeAngleDerivatives(
+      ring.at.data(), ring.slopes.data(), ring.u, v, model.UnitExponents(), w);
+  WorldTangents(model, ring, v, w, shape, model.Rotation(), xu, xv);
+}
+
+void SurfaceTangentsAlong(const Model& model, const RingFunctions& ring,
+                          const double* v, int n, double w, Eigen::Vector3d* xu,
+                          Eigen::Vector3d* xv) {
+  std::vector<ShapeAndAngleDerivatives> shapes(n);
+  ShapeAngleDerivativesAlong(ring.at.data(), ring.slopes.data(), ring.u, v, n,
+                             model.UnitExponents(), w, shapes.data());
+  const Eigen::Matrix3d rotation = model.Rotation();
+  for (int j = 0; j < n; ++j) {
+    WorldTangents(model, ring, v[j], w, shapes[j], rotation, &xu[j], &xv[j]);
+  }
 }
 
 void SurfaceTangents(const Model& model, double u, double v,

@@ -71,6 +71,11 @@ void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
 // reads each layer.
 void SurfaceTangents(const Model& model, const RingFunctions& ring, double v,
                      double w, Eigen::Vector3d* xu, Eigen::Vector3d* xv);
+// The same at the ring's n points v[j] into xu[j], xv[j], to the bit: the
+// global shape's for the whole ring at once (ShapeAngleDerivativesAlong).
+void SurfaceTangentsAlong(const Model& model, const RingFunctions& ring,
+                          const double* v, int n, double w, Eigen::Vector3d* xu,
+                          Eigen::Vector3d* xv);
 
 SurfaceStrain StrainAt(const Model& reference, const Model& current, double u,
                        double v);

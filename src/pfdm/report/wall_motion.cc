@@ -1,5 +1,6 @@
 #include "pfdm/report/wall_motion.h"
 
+#include <array>
 #include <cmath>
 
 #include "pfdm/report/material_rings.h"
@@ -12,6 +13,28 @@ namespace {
 // Samples per axis of the whole surface: a few hundred per segment.
 constexpr int kLatitudeSamples = 60;
 constexpr int kLongitudeSamples = 120;
+
+// A row's v, cell centres from -pi.
+using RowAngles = std::array<double, kLongitudeSamples>;
+const RowAngles& RowV() {
+  static const RowAngles v = [] {
+    RowAngles out;
+    for (int j = 0; j < kLongitudeSamples; ++j) {
+      out[j] = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
+    }
+    return out;
+  }();
+  return v;
+}
+
+// The mid-wall's tangents at a row's samples (SurfaceTangentsAlong).
+struct RowTangents {
+  RowTangents(const Model& model, const RingFunctions& ring) {
+    SurfaceTangentsAlong(model, ring, RowV().data(), kLongitudeSamples, 0.0,
+                         xu.data(), xv.data());
+  }
+  std::array<Eigen::Vector3d, kLongitudeSamples> xu, xv;
+};
 
 int SectorsOf(const RegionLayout& layout, RegionLevel level) {
   return level == kBasal  ? layout.basal_sectors
@@ -163,16 +186,17 @@ void SampleReferenceRow(const Model& reference, const RegionLayout& layout,
                         double u, ReferenceSamples::Sample* row) {
   const MaterialRing before = SampleRing(reference, u, kLongitudeSamples);
   const RingFunctions ring(reference, u);
+  const RowTangents tangents(reference, ring);
   const WallRings walls(reference, u);
   const double fraction = HeightFraction(reference, u);
   for (int j = 0; j < kLongitudeSamples; ++j) {
-    const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
+    const double v = RowV()[j];
     ReferenceSamples::Sample& sample = row[j];
     sample.region = RegionAt(fraction, v, layout);
     sample.weight = AreaWeight(reference, u, v);
     sample.from = before.points[j] - before.centroid;
-    Eigen::Vector3d xu, xv;
-    SurfaceTangents(reference, ring, v, &xu, &xv);
+    const Eigen::Vector3d& xu = tangents.xu[j];
+    const Eigen::Vector3d& xv = tangents.xv[j];
     sample.plane_inverse = ReferencePlaneInverse(xu, xv, xv, xu);
     if (walls.solid) {
       sample.thickness = walls.Thickness(reference, u, v, j, xu, xv);
@@ -219,12 +243,14 @@ namespace {
 void SampleRow(const Model& current, double u, CurrentSamples::Sample* row) {
   const MaterialRing after = SampleRing(current, u, kLongitudeSamples);
   const RingFunctions ring(current, u);
+  const RowTangents tangents(current, ring);
   const WallRings walls(current, u);
   for (int j = 0; j < kLongitudeSamples; ++j) {
-    const double v = -kPi + 2.0 * kPi * (j + 0.5) / kLongitudeSamples;
+    const double v = RowV()[j];
     CurrentSamples::Sample& sample = row[j];
     sample.to = after.points[j] - after.centroid;
-    SurfaceTangents(current, ring, v, &sample.xu, &sample.xv);
+    sample.xu = tangents.xu[j];
+    sample.xv = tangents.xv[j];
     if (walls.solid) {
       sample.thickness =
           walls.Thickness(current, u, v, j, sample.xu, sample.xv);
