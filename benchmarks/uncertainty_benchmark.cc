@@ -11,9 +11,15 @@
 // grow with N (they are measured on the model, not the data); it grows
 // with the frames, as each of ED's steps measures every frame again.
 // Each configuration runs three times; read the medians.
+// BM_UncertaintyThreads: the analysis with --uncertainty on of one such fit
+// (2,000 tags) on one thread and on two (--threads: the delta method's
+// steps and the local field's draws spread over them), wall time per
+// frame, with what CPU each thread got and whether other processes used
+// the second core meanwhile (thread_cpu.h).
 #include <time.h>
 
 #include <algorithm>
+#include <chrono>
 
 #include "benchmark/benchmark.h"
 #include "benchmark_util.h"
@@ -21,6 +27,7 @@
 #include "pfdm/fit/stages/sequence_fit.h"
 #include "pfdm/phantom/phantom.h"
 #include "pfdm/report/fit_analysis.h"
+#include "thread_cpu.h"
 
 namespace pfdm {
 namespace {
@@ -83,6 +90,36 @@ BENCHMARK(BM_Uncertainty)
     ->Arg(2000)
     ->Arg(20000)
     ->Arg(50000)
+    ->Apply(RunThreeTimes);
+
+// Args: tags, threads.
+void BM_UncertaintyThreads(benchmark::State& state) {
+  PhantomOptions phantom_options;
+  phantom_options.num_points = static_cast<int>(state.range(0));
+  phantom_options.num_frames = 2;
+  FitOptions options;
+  options.uncertainty = true;
+  SequenceFit fit = FitSequence(MakePhantom(phantom_options).points,
+                                ModelConfig::Paper(17), options);
+  fit.threads = static_cast<int>(state.range(1));
+  double seconds = 0.0;
+  CpuSnapshot cpu_start;
+  for (auto _ : state) {
+    cpu_start = TakeCpuSnapshot();
+    const auto start = std::chrono::steady_clock::now();
+    const FitAnalysis analysis = AnalyzeFit(fit);
+    benchmark::DoNotOptimize(analysis.sd.computed);
+    seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+            .count();
+  }
+  CountThreadCpu(cpu_start, state);
+  state.counters["analysis_ms"] = 1e3 * seconds / fit.frames.size();
+}
+BENCHMARK(BM_UncertaintyThreads)
+    ->ArgNames({"points", "threads"})
+    ->Args({2000, 1})
+    ->Args({2000, 2})
     ->Apply(RunThreeTimes);
 
 }  // namespace

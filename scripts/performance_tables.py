@@ -387,6 +387,8 @@ def wall_table(document):
 def uncertainty_table(document):
     rows = []
     for key, b in medians(document).items():
+        if not key.startswith("BM_Uncertainty/"):
+            continue
         a = args(key)
         rows.append((a["points"], [
             "{:,}".format(a["points"]), number(b["fit_ms"], 1),
@@ -396,7 +398,8 @@ def uncertainty_table(document):
     rows.sort(key=lambda r: r[0])
     return table(["tags", "fit ms per frame", "analysis ms per frame",
                   "covariance ms", "noise draws ms", "numbers' sds ms",
-                  "added / (fit + analysis)"], [r[-1] for r in rows])
+                  "added / (fit + analysis)"], [r[-1] for r in rows]) + \
+        speedup_table(document, "BM_UncertaintyThreads", "analysis_ms")
 
 
 def replace(readme, name, text):

@@ -140,7 +140,8 @@ def fit(points=None, *, segmentation=None, labels="acdc", format="auto",
     loss_scale : "auto" or float
         The loss's scale in mm; "auto": per frame, from its median distance.
     threads : int
-        Ceres threads.
+        Threads for the solver, the closest points and, with
+        uncertainty=True, the intervals' steps and draws.
     apex, base : (3,) array_like or str, optional
         Together: hints for the long axis in mm; without, from landmarks,
         parallel slices or the point cloud.

@@ -64,7 +64,9 @@ DEFINE_string(loss_scale, kDefaults.loss_scale.c_str(),
               "from the frame's fit without the loss: 1.4826 times its "
               "median distance, times 1.345 for huber, 2.385 for cauchy) or "
               "mm, 1e-2 to 1e3 times the RMS radius of frame 0's points");
-DEFINE_int32(threads, kDefaults.threads, "Ceres threads, 1 to 256");
+DEFINE_int32(threads, kDefaults.threads,
+             "threads: the solver's, the closest points' and "
+             "--uncertainty's intervals', 1 to 256");
 DEFINE_string(apex, "",
               "optional apex hint x,y,z (mm), with --base; within twice the "
               "farthest of frame 0's points from their centroid; without: "

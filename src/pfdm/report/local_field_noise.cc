@@ -7,6 +7,7 @@
 #include "Eigen/Core"
 #include "pfdm/model/raised_top.h"
 #include "pfdm/report/number_uncertainty.h"
+#include "pfdm/util/parallel_for.h"
 
 namespace pfdm {
 namespace {
@@ -90,18 +91,23 @@ Moments ZeroMoments(const std::vector<Eigen::VectorXd>& at) {
   return m;
 }
 
-// The local field's draws: each frame's k-th added to its field.
+// The local field's draws: each frame's k-th added to its field.  The
+// draws are measured on fit.threads threads and summed in their order, the
+// same to the bit for any number of threads.
 Moments SampleLocalField(const SequenceFit& fit, const FitAnalysis& analysis,
                          const std::vector<Eigen::VectorXd>& at, size_t draws) {
   const size_t ed = static_cast<size_t>(fit.ed_frame);
-  Moments sum = ZeroMoments(at);  // Of the shifts and their squares.
-  for (size_t k = 0; k < draws; ++k) {
+  std::vector<std::vector<Eigen::VectorXd>> measured(draws);
+  ParallelFor(draws, fit.threads, [&](int, size_t k) {
     std::vector<Model> models;
     for (size_t t = 0; t < fit.frames.size(); ++t) {
       models.push_back(WithDraw(analysis.models[t],
                                 fit.frames[t].covariance.local_noise[k]));
     }
-    const std::vector<Eigen::VectorXd> y = MeasureAll(analysis, models, ed);
+    measured[k] = MeasureAll(analysis, models, ed);
+  });
+  Moments sum = ZeroMoments(at);  // Of the shifts and their squares.
+  for (const std::vector<Eigen::VectorXd>& y : measured) {
     for (size_t i = 0; i < y.size(); ++i) {
       const Eigen::VectorXd shift = y[i] - at[i];
       sum.bias[i] += shift;

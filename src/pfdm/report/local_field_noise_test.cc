@@ -9,6 +9,7 @@
 #include "pfdm/phantom/lv_phantom.h"
 #include "pfdm/report/number_uncertainty.h"
 #include "pfdm/testing/test_models.h"
+#include "pfdm/testing/test_util.h"
 
 namespace pfdm {
 namespace {
@@ -55,6 +56,22 @@ TEST(LocalFieldNoiseTest, TheGcsBiasIsTheNoisesAndTheIntervalHoldsTheTruth) {
 // The volume fraction is near linear in the field: its bias is under a
 // tenth of its sd, and the field's spread adds little to the delta
 // method's (the global fit carries the volumes).
+// The draws measured on three threads give one thread's spread and bias
+// to the bit (the draws summed in their order), the delta method's sds
+// with them (number_uncertainty_test.cc).
+TEST(LocalFieldNoiseTest, ThreadsGiveTheSameSpreadAndBiasToTheBit) {
+  const SequenceFit fit = FitLvSequence(1000, 0.5, true);
+  ASSERT_EQ(fit.threads, 1);
+  SequenceFit threaded = fit;
+  threaded.threads = 3;
+  const FitAnalysis one = AnalyzeFit(fit);
+  const FitAnalysis three = AnalyzeFit(threaded);
+  ASSERT_TRUE(one.noise_bias.computed && three.noise_bias.computed);
+  ASSERT_GE(fit.frames[1].covariance.local_noise.size(), 2u);
+  ExpectSameBits(Flatten(one.sd), Flatten(three.sd), "sd");
+  ExpectSameBits(Flatten(one.noise_bias), Flatten(three.noise_bias), "bias");
+}
+
 TEST(LocalFieldNoiseTest, ANearLinearNumberHasNoBias) {
   const SequenceFit fit = FitLvSequence(1000, 0.5, true);
   const FitAnalysis a = AnalyzeFit(fit);

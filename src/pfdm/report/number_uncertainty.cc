@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "Eigen/Geometry"
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/reference_rings.h"
+#include "pfdm/util/parallel_for.h"
 
 namespace pfdm {
 
@@ -140,24 +142,39 @@ MovedU MovedRange(const Model& model, const CovarianceEntry& entry) {
 Eigen::MatrixXd NumberJacobian(const Model& model,
                                const FrameCovariance& covariance,
                                const MovedNumbersOf& numbers) {
+  return NumberJacobian(
+      model, covariance, [&numbers] { return numbers; }, 1);
+}
+
+Eigen::MatrixXd NumberJacobian(const Model& model,
+                               const FrameCovariance& covariance,
+                               const MakeMovedNumbers& make, int threads) {
   const int n = static_cast<int>(covariance.entries.size());
-  const std::vector<double> at = numbers(model, MovedU());
-  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(at.size(), n);
+  std::vector<int> varied;  // The entries with a variance to step by.
   for (int j = 0; j < n; ++j) {
-    const double sd = std::sqrt(std::max(0.0, covariance.covariance(j, j)));
-    if (!(sd > 0.0)) continue;
-    const double step = kStepSd * sd;
+    if (covariance.covariance(j, j) > 0.0) varied.push_back(j);
+  }
+  // Worker 0's measures `at` too; the others' are made on their own thread.
+  std::vector<MovedNumbersOf> numbers(
+      std::clamp<size_t>(varied.size(), 1, std::max(threads, 1)));
+  numbers[0] = make();
+  const std::vector<double> at = numbers[0](model, MovedU());
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(at.size(), n);
+  ParallelFor(varied.size(), threads, [&](int worker, size_t k) {
+    if (!numbers[worker]) numbers[worker] = make();
+    const int j = varied[k];
+    const double step = kStepSd * std::sqrt(covariance.covariance(j, j));
     Eigen::VectorXd delta = Eigen::VectorXd::Zero(n);
     delta[j] = step;
     const MovedU range = MovedRange(model, covariance.entries[j]);
     const std::vector<double> up =
-        numbers(Nudged(model, covariance.entries, delta), range);
+        numbers[worker](Nudged(model, covariance.entries, delta), range);
     const std::vector<double> down =
-        numbers(Nudged(model, covariance.entries, -delta), range);
+        numbers[worker](Nudged(model, covariance.entries, -delta), range);
     for (size_t i = 0; i < at.size(); ++i) {
       jacobian(i, j) = (up[i] - down[i]) / (2.0 * step);
     }
-  }
+  });
   return jacobian;
 }
 
@@ -184,6 +201,18 @@ std::vector<double> Flatten(const FrameNumbers& numbers) {
     for (double* field : RegionFields(&motion)) values.push_back(*field);
   }
   for (double* field : StrainFields(&copy.strain)) values.push_back(*field);
+  return values;
+}
+
+std::vector<double> Flatten(const NumberSd& sd) {
+  std::vector<double> values;
+  for (size_t t = 0; t < sd.clinical.size(); ++t) {
+    const std::vector<double> frame = Flatten(
+        FrameNumbers{sd.clinical[t], sd.region_motion[t], sd.strain[t]});
+    values.insert(values.end(), frame.begin(), frame.end());
+  }
+  const EjectionFraction& ef = sd.ejection_fraction;
+  values.insert(values.end(), {ef.ratio, ef.edv_ml, ef.esv_ml});
   return values;
 }
 
@@ -261,19 +290,26 @@ std::vector<Eigen::VectorXd> OwnVariances(const SequenceFit& fit,
   const Model& ed_model = analysis.models[ed];
   const ReferenceSamples samples = SampleReference(ed_model, analysis.layout);
   std::vector<Eigen::VectorXd> variance(fit.frames.size());
-  for (size_t t = 0; t < fit.frames.size(); ++t) {
-    if (t == ed) continue;
-    const FrameMeasurer frame(ed_model, samples, analysis.regions,
-                              analysis.models[t], VolumePlaneOf(analysis, t));
-    const MovedNumbersOf numbers = [&](const Model& model,
-                                       const MovedU& range) {
-      return Flatten(frame.Moved(model, range));
+  // Whole frames to the threads where there are as many later frames as
+  // threads; else each frame's steps spread over them.  A thread measures
+  // a frame afresh (its own FrameMeasurer) before its first step of it.
+  const int threads = std::max(fit.threads, 1);
+  const bool by_frame = fit.frames.size() - 1 >= static_cast<size_t>(threads);
+  ParallelFor(fit.frames.size(), by_frame ? threads : 1, [&](int, size_t t) {
+    if (t == ed) return;
+    const MakeMovedNumbers make = [&, t]() -> MovedNumbersOf {
+      const auto frame = std::make_shared<const FrameMeasurer>(
+          ed_model, samples, analysis.regions, analysis.models[t],
+          VolumePlaneOf(analysis, t));
+      return [frame](const Model& model, const MovedU& range) {
+        return Flatten(frame->Moved(model, range));
+      };
     };
     const FrameCovariance& covariance = fit.frames[t].covariance;
-    variance[t] =
-        Variances(NumberJacobian(analysis.models[t], covariance, numbers),
-                  covariance.covariance);
-  }
+    variance[t] = Variances(NumberJacobian(analysis.models[t], covariance, make,
+                                           by_frame ? 1 : threads),
+                            covariance.covariance);
+  });
   return variance;
 }
 
@@ -307,6 +343,71 @@ Model SpunWith(const Model& ed, const Model& moved_ed, const Model& model) {
 
 namespace {
 
+// Every frame's numbers (Flatten's, in frame order) for a step of ED's
+// parameters, kept between steps: each frame's FrameMeasurer, and ED's
+// samples, taken again only where a step of a knot moves ED and set back
+// after each step (assigned, not copied anew: no allocation).
+class EdStepMeasurer {
+ public:
+  EdStepMeasurer(const SequenceFit& fit, const FitAnalysis& analysis,
+                 const ReferenceSamples& fitted_samples)
+      : fit_(fit),
+        analysis_(analysis),
+        fitted_ed_(analysis.models[fit.ed_frame]),
+        fitted_samples_(fitted_samples),
+        samples_(fitted_samples) {
+    for (size_t t = 0; t < fit.frames.size(); ++t) {
+      frames_.emplace_back(fitted_ed_, fitted_samples, analysis.regions,
+                           analysis.models[t], VolumePlaneOf(analysis, t));
+    }
+  }
+
+  std::vector<double> operator()(const Model& ed_model, const MovedU& range) {
+    // A step at an end knot that keeps the apex's and the rim's heights
+    // keeps every row's level: only its span's rows move (all rows lie
+    // strictly between u_min and u_max).
+    const ModelConfig& config = ed_model.config;
+    const bool keep_levels = !range.heights;
+    ResampleReference(
+        ed_model, analysis_.layout,
+        keep_levels ? std::max(range.low, std::nextafter(config.u_min, 0.0))
+                    : range.low,
+        keep_levels ? std::min(range.high, std::nextafter(config.u_max, 0.0))
+                    : range.high,
+        &samples_);
+    const bool spun = EdSpin(fitted_ed_, ed_model) != 0.0;
+    ReferenceRings ed_rings(ed_model);
+    std::vector<double> all;
+    for (size_t t = 0; t < frames_.size(); ++t) {
+      const std::vector<double> values =
+          Flatten(MeasureFrameAt(t, ed_model, range, spun, &ed_rings));
+      all.insert(all.end(), values.begin(), values.end());
+    }
+    samples_ = fitted_samples_;
+    return all;
+  }
+
+ private:
+  FrameNumbers MeasureFrameAt(size_t t, const Model& ed_model,
+                              const MovedU& range, bool spun,
+                              ReferenceRings* ed_rings) const {
+    if (t == static_cast<size_t>(fit_.ed_frame)) {
+      return frames_[t].Moved(ed_model, range, *ed_rings, samples_);
+    }
+    if (!spun) return frames_[t].Against(*ed_rings, samples_, range);
+    return MeasureFrame(ed_model, samples_, analysis_.regions,
+                        SpunWith(fitted_ed_, ed_model, analysis_.models[t]),
+                        VolumePlaneOf(analysis_, t));
+  }
+
+  const SequenceFit& fit_;
+  const FitAnalysis& analysis_;
+  const Model& fitted_ed_;
+  const ReferenceSamples& fitted_samples_;
+  std::vector<FrameMeasurer> frames_;
+  ReferenceSamples samples_;
+};
+
 // Every frame's numbers' variance from ED's parameters, in frame order; a
 // spin of ED about its axis turns the other frames with it (SpunWith).  A
 // step that does not spin ED leaves the other frames' models as they are
@@ -317,51 +418,15 @@ Eigen::VectorXd EdVariances(const SequenceFit& fit,
   const Model& fitted_ed = analysis.models[ed];
   const ReferenceSamples fitted_samples =
       SampleReference(fitted_ed, analysis.layout);
-  std::vector<FrameMeasurer> frames;
-  for (size_t t = 0; t < fit.frames.size(); ++t) {
-    frames.emplace_back(fitted_ed, fitted_samples, analysis.regions,
-                        analysis.models[t], VolumePlaneOf(analysis, t));
-  }
-  // Moved samples, taken again only where a step of a knot moves ED and
-  // set back after each step (assigned, not copied anew: no allocation).
-  ReferenceSamples samples = fitted_samples;
-  const MovedNumbersOf numbers = [&](const Model& ed_model,
-                                     const MovedU& range) {
-    // A step at an end knot that keeps the apex's and the rim's heights
-    // keeps every row's level: only its span's rows move (all rows lie
-    // strictly between u_min and u_max).
-    const ModelConfig& config = ed_model.config;
-    const bool keep_levels = !range.heights;
-    ResampleReference(
-        ed_model, analysis.layout,
-        keep_levels ? std::max(range.low, std::nextafter(config.u_min, 0.0))
-                    : range.low,
-        keep_levels ? std::min(range.high, std::nextafter(config.u_max, 0.0))
-                    : range.high,
-        &samples);
-    const bool spun = EdSpin(fitted_ed, ed_model) != 0.0;
-    ReferenceRings ed_rings(ed_model);
-    std::vector<double> all;
-    for (size_t t = 0; t < fit.frames.size(); ++t) {
-      FrameNumbers measured;
-      if (t == ed) {
-        measured = frames[t].Moved(ed_model, range, ed_rings, samples);
-      } else if (!spun) {
-        measured = frames[t].Against(ed_rings, samples, range);
-      } else {
-        measured =
-            MeasureFrame(ed_model, samples, analysis.regions,
-                         SpunWith(fitted_ed, ed_model, analysis.models[t]),
-                         VolumePlaneOf(analysis, t));
-      }
-      const std::vector<double> values = Flatten(measured);
-      all.insert(all.end(), values.begin(), values.end());
-    }
-    samples = fitted_samples;
-    return all;
+  const MakeMovedNumbers make = [&]() -> MovedNumbersOf {
+    const auto measurer =
+        std::make_shared<EdStepMeasurer>(fit, analysis, fitted_samples);
+    return [measurer](const Model& ed_model, const MovedU& range) {
+      return (*measurer)(ed_model, range);
+    };
   };
   const FrameCovariance& covariance = fit.frames[ed].covariance;
-  return Variances(NumberJacobian(fitted_ed, covariance, numbers),
+  return Variances(NumberJacobian(fitted_ed, covariance, make, fit.threads),
                    covariance.covariance);
 }
 

@@ -60,6 +60,14 @@ using MovedNumbersOf =
 Eigen::MatrixXd NumberJacobian(const Model& model,
                                const FrameCovariance& covariance,
                                const MovedNumbersOf& numbers);
+// The same with the steps spread over `threads` threads (util/parallel_for.h),
+// each measuring with a MovedNumbersOf of its own from `make` (what it keeps
+// between steps is its own); every step is measured as with one thread, so
+// the Jacobian is the same to the bit.
+using MakeMovedNumbers = std::function<MovedNumbersOf()>;
+Eigen::MatrixXd NumberJacobian(const Model& model,
+                               const FrameCovariance& covariance,
+                               const MakeMovedNumbers& make, int threads);
 // Where a step along `entry` moves `model`: a knot's between its
 // neighbours, the pose's and the globals' everywhere.
 MovedU MovedRange(const Model& model, const CovarianceEntry& entry);
@@ -69,6 +77,9 @@ Eigen::VectorXd Variances(const Eigen::MatrixXd& jacobian,
                           const Eigen::MatrixXd& covariance);
 
 std::vector<double> Flatten(const FrameNumbers& numbers);
+// Every frame's sds (or biases) in Flatten's order, frame after frame, then
+// the ejection fraction's ratio, EDV and ESV.
+std::vector<double> Flatten(const NumberSd& sd);
 // numbers' fields set from values, in Flatten's order.
 void Unflatten(const double* values, FrameNumbers* numbers);
 

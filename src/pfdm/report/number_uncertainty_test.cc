@@ -4,12 +4,14 @@
 #include <cstdio>
 #include <ctime>
 #include <random>
+#include <string>
 
 #include "Eigen/Eigenvalues"
 #include "gtest/gtest.h"
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/testing/test_util.h"
 
 namespace pfdm {
 namespace {
@@ -235,6 +237,35 @@ TEST(NumberUncertaintyTest, SdsAreTheStraightforwardOnes) {
     }
   }
   EXPECT_GT(compared, 100);
+}
+
+// The steps spread over threads (the fit's --threads) give one thread's
+// sds to the bit: a step's measurement depends on no step before it, and
+// each thread measures with FrameMeasurers of its own.  Three frames: on
+// two threads each thread takes whole frames, on three the two frames'
+// steps are shared out.
+TEST(NumberUncertaintyTest, ThreadsGiveTheSameSdsToTheBit) {
+  LvPhantomOptions options;
+  options.num_frames = 3;
+  options.num_tags = 400;
+  options.seed = 8;
+  FitOptions fit_options;
+  fit_options.uncertainty = true;
+  SequenceFit fit = FitSequence(MakeLvPhantom(options).points,
+                                ModelConfig::Paper(9), fit_options);
+  ASSERT_EQ(fit.threads, 1);
+  const FitAnalysis analysis = AnalyzeFit(fit);
+  const NumberSd one = PropagateUncertainty(fit, analysis);
+  ASSERT_TRUE(one.computed);
+  const std::vector<double> sds = Flatten(one);
+  int measured = 0;
+  for (double sd : sds) measured += sd > 0.0;
+  EXPECT_GT(measured, 200);
+  for (int threads : {2, 3}) {
+    fit.threads = threads;
+    ExpectSameBits(sds, Flatten(PropagateUncertainty(fit, analysis)),
+                   std::to_string(threads) + " threads");
+  }
 }
 
 TEST(NumberUncertaintyTest, NotMeasuredNumbersHaveNoSd) {

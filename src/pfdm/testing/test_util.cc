@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -152,6 +153,18 @@ VtkXmlArrays ReadAppendedRawVtkXml(const std::string& xml) {
     }
   }
   return arrays;
+}
+
+void ExpectSameBits(const std::vector<double>& a, const std::vector<double>& b,
+                    const std::string& what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (std::isnan(a[i])) {
+      EXPECT_TRUE(std::isnan(b[i])) << what << " " << i;
+    } else {
+      EXPECT_EQ(a[i], b[i]) << what << " " << i;
+    }
+  }
 }
 
 }  // namespace pfdm

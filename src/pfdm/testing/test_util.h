@@ -47,6 +47,11 @@ struct VtkXmlArrays {
 };
 VtkXmlArrays ReadAppendedRawVtkXml(const std::string& xml);
 
+// Expects a and b equal to the bit (NaN where the other is NaN), naming
+// `what` and the index of each that differs.
+void ExpectSameBits(const std::vector<double>& a, const std::vector<double>& b,
+                    const std::string& what);
+
 // ../shared/data beside the source tree, or "" when it is absent.
 std::string SharedDataDirectory();
 

@@ -146,6 +146,7 @@ SequenceFit FitSequence(const PointSequence& sequence,
   result.left_out = sequence.left_out;
   result.temporal_prior_weight = options.temporal_prior_weight;
   result.start_seconds = start_seconds;
+  result.threads = options.solver.num_threads;
   const auto checks_time = Clock::now();
   result.surface =
       result.config.Solid() ? WallLayer::kAnywhere : start.wall.surface;

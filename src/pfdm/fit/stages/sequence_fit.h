@@ -140,6 +140,9 @@ struct SequenceFit {
   // coverage, the verdicts' probes).
   double start_seconds = 0.0;
   double checks_seconds = 0.0;
+  // The threads the fit was given (--threads): the analysis's intervals
+  // (report/number_uncertainty.h) take as many.
+  int threads = 1;
   std::vector<FrameFit> frames;
   Model ModelAt(int frame) const { return {config, frames[frame].state}; }
 };
