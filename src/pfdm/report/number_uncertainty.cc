@@ -155,8 +155,7 @@ Eigen::MatrixXd NumberJacobian(const Model& model,
     if (covariance.covariance(j, j) > 0.0) varied.push_back(j);
   }
   // Worker 0's measures `at` too; the others' are made on their own thread.
-  std::vector<MovedNumbersOf> numbers(
-      std::clamp<size_t>(varied.size(), 1, std::max(threads, 1)));
+  std::vector<MovedNumbersOf> numbers(ParallelWorkers(varied.size(), threads));
   numbers[0] = make();
   const std::vector<double> at = numbers[0](model, MovedU());
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(at.size(), n);

@@ -9,10 +9,13 @@
 
 namespace pfdm {
 
+int ParallelWorkers(size_t n, int threads) {
+  return static_cast<int>(std::clamp<size_t>(n, 1, std::max(threads, 1)));
+}
+
 void ParallelFor(size_t n, int threads,
                  const std::function<void(int worker, size_t i)>& work) {
-  const int workers =
-      static_cast<int>(std::clamp<size_t>(n, 1, std::max(threads, 1)));
+  const int workers = ParallelWorkers(n, threads);
   std::atomic<size_t> next(0);
   std::atomic<bool> failed(false);
   std::exception_ptr first_error;

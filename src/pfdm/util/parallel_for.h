@@ -19,6 +19,10 @@ namespace pfdm {
 void ParallelFor(size_t n, int threads,
                  const std::function<void(int worker, size_t i)>& work);
 
+// How many threads ParallelFor(n, threads, ...) runs on: the workers'
+// count, for state kept per worker.
+int ParallelWorkers(size_t n, int threads);
+
 }  // namespace pfdm
 
 #endif  // PFDM_UTIL_PARALLEL_FOR_H_

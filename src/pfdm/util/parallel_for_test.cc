@@ -26,6 +26,7 @@ TEST(ParallelForTest, EveryItemRunsOnceWhateverTheThreads) {
       workers.insert(worker_of[i]);
     }
     EXPECT_LE(workers.size(), static_cast<size_t>(threads));
+    EXPECT_EQ(ParallelWorkers(runs.size(), threads), threads);
   }
 }
 
@@ -33,6 +34,9 @@ TEST(ParallelForTest, NoMoreThreadsThanItems) {
   std::vector<int> worker_of(2, -1);
   ParallelFor(2, 16, [&](int worker, size_t i) { worker_of[i] = worker; });
   for (int worker : worker_of) EXPECT_LT(worker, 2);
+  EXPECT_EQ(ParallelWorkers(2, 16), 2);
+  EXPECT_EQ(ParallelWorkers(0, 4), 1);
+  EXPECT_EQ(ParallelWorkers(5, 0), 1);
   int calls = 0;
   ParallelFor(0, 4, [&](int, size_t) { ++calls; });
   EXPECT_EQ(calls, 0);

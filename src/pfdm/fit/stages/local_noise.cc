@@ -1,5 +1,6 @@
 #include "pfdm/fit/stages/local_noise.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -7,6 +8,7 @@
 #include "pfdm/fit/problem/local_fit.h"
 #include "pfdm/fit/residuals/robust_loss.h"
 #include "pfdm/fit/stages/local_stage.h"
+#include "pfdm/util/parallel_for.h"
 
 namespace pfdm {
 namespace {
@@ -69,18 +71,26 @@ std::vector<std::vector<double>> LocalNoiseDraws(
   std::vector<Eigen::Vector3d> surface;
   const std::vector<Eigen::Vector3d> normals =
       SurfaceNormals(global, material, &surface);
+  // The draws' noise in their order, whatever the threads.
   std::mt19937 random(1000003u + static_cast<unsigned>(points.index));
-  // One solver for every draw: their points, weights and grid are the
-  // same, so it factorizes once.
-  LocalDirectSolver direct;
+  std::vector<std::vector<Eigen::Vector3d>> noisy;
   for (int k = 0; k < draws; ++k) {
-    Model fitted = global;
-    const SolverReport report =
-        FitLocalField(Noisy(surface, normals, searched, sigma_mm, &random),
-                      material, sliding, options, &fitted, &direct);
-    if (!report.usable) return {};
-    fields.push_back(fitted.state.local.Coefficients());
+    noisy.push_back(Noisy(surface, normals, searched, sigma_mm, &random));
   }
+  // One solver a thread: the draws' points, weights and grid are the same,
+  // so each factorizes once, to the same bits.
+  const int threads = options.solver.num_threads;
+  std::vector<LocalDirectSolver> direct(ParallelWorkers(draws, threads));
+  fields.resize(draws);
+  std::vector<char> usable(draws, 0);
+  ParallelFor(draws, threads, [&](int worker, size_t k) {
+    Model fitted = global;
+    const SolverReport report = FitLocalField(
+        noisy[k], material, sliding, options, &fitted, &direct[worker]);
+    usable[k] = report.usable;
+    fields[k] = fitted.state.local.Coefficients();
+  });
+  if (std::find(usable.begin(), usable.end(), 0) != usable.end()) return {};
   return fields;
 }
 

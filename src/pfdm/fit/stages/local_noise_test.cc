@@ -66,6 +66,26 @@ TEST(LocalNoiseTest, DrawsAreLinearInTheNoiseAndRepeatable) {
   EXPECT_LT(rms, 0.5);
 }
 
+// The draws spread over threads (--threads), one solver each, are the
+// one thread's to the bit: the noise is drawn in the draws' order first.
+TEST(LocalNoiseTest, ThreadsGiveTheSameDrawsToTheBit) {
+  const TrackedFrame frame;
+  FitOptions options;
+  const auto one = LocalNoiseDraws(frame.points, frame.material, options,
+                                   frame.model, 0.5, 5);
+  ASSERT_EQ(one.size(), 5u);
+  options.solver.num_threads = 3;
+  const auto three = LocalNoiseDraws(frame.points, frame.material, options,
+                                     frame.model, 0.5, 5);
+  ASSERT_EQ(three.size(), one.size());
+  for (size_t k = 0; k < one.size(); ++k) {
+    ASSERT_EQ(three[k].size(), one[k].size());
+    for (size_t i = 0; i < one[k].size(); ++i) {
+      EXPECT_EQ(three[k][i], one[k][i]) << k << " " << i;
+    }
+  }
+}
+
 // Without a local field, or without noise, there is nothing to draw.
 TEST(LocalNoiseTest, NoFieldNoDraws) {
   const TrackedFrame frame;
