@@ -66,14 +66,18 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
   // % (0.98, 0.97-0.975; ranked 0.98 and 0.989); with the held depths'
   // noise in the tracked frame's covariance the wall's thickening's
   // 0.94-0.95 (0.89-0.90 without) and GCS's 0.95 (0.90-0.92); twist's and
-  // the frames' radial contraction's 0.99 (too wide).
+  // the frames' radial contraction's 0.99 (too wide).  Over 300 draws the
+  // net twist and torsion 0.97-0.98 (claimed), the volume fraction 0.987
+  // without the lesion and radial contraction 0.987 (too wide).
+  EXPECT_TRUE(Has(D::kWallTags, "net_twist_deg"));
+  EXPECT_TRUE(Has(D::kWallTags, "torsion_deg_per_cm"));
+  EXPECT_FALSE(Has(D::kWallTags, "ratio"));
   EXPECT_TRUE(Has(D::kWallTags, "wall_thickening_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "peak_gcs_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "gls_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "thickening_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "longitudinal_shortening_percent"));
   EXPECT_FALSE(Has(D::kWallTags, "radial_contraction_percent"));
-  EXPECT_FALSE(Has(D::kWallTags, "net_twist_deg"));
   EXPECT_TRUE(Has(D::kWallTags, "gcs_percent"));
   // Contours: no turn about the axis is seen.  Each later frame's own
   // length draws (its base rim is held at its highest points) took GLS
@@ -87,10 +91,11 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
   // contours; ESV stayed at 0.88 on mid-wall tags (0.89 with the apex's
   // term), and reached 0.97 on contours with the later frames' draws.  With
   // the contours' field held to the normal (2026-12-04) EDV on contours
-  // read 0.89; with the apex's term in frame 0's length, 0.91.
+  // read 0.89; with the apex's term in frame 0's length, 0.91.  Mid-wall
+  // tags' ESV held in 0.947 and 0.953 over 300 draws (2026-12-07).
   EXPECT_TRUE(Has(D::kMidwallTags, "edv_ml"));
   EXPECT_TRUE(Has(D::kContours, "edv_ml"));
-  EXPECT_FALSE(Has(D::kMidwallTags, "esv_ml"));
+  EXPECT_TRUE(Has(D::kMidwallTags, "esv_ml"));
   EXPECT_TRUE(Has(D::kContours, "esv_ml"));
   EXPECT_TRUE(Has(D::kContours, "lv_mass_g"));
   EXPECT_TRUE(Has(D::kWallTags, "lv_mass_g"));

@@ -33,7 +33,8 @@ TEST(KeyNumbersTest, StarsTheIntervalsThatAreNotCalibrated) {
       "(docs/uncertainty_calibration.md)\">*</sup>";
   EXPECT_NE(html.find("60.0 &plusmn; 2.0 %</b>"), std::string::npos) << html;
   EXPECT_NE(html.find("EDV 150.0 &plusmn; 2.0 ml"), std::string::npos);
-  EXPECT_NE(html.find("ESV 60.0 &plusmn; 2.0" + star), std::string::npos);
+  // ESV's held the noise-free fit in 95 % of 300 draws: calibrated.
+  EXPECT_NE(html.find("ESV 60.0 &plusmn; 2.0 ml"), std::string::npos);
   // Peak GCS's interval held the noise-free fit in 99 % of draws: too wide.
   EXPECT_NE(html.find("-18.0 &plusmn; 2.0" + star + " %</b>"),
             std::string::npos);
@@ -47,7 +48,7 @@ TEST(KeyNumbersTest, StarsTheIntervalsThatAreNotCalibrated) {
             std::string::npos);
   EXPECT_NE(html.find("radial contraction at ES<b>0.0 &plusmn; 0.0 %</b>"),
             std::string::npos);
-  EXPECT_EQ(CountOf(html, star), 4) << html;  // ESV, GCS, mass, thickening.
+  EXPECT_EQ(CountOf(html, star), 3) << html;  // GCS, mass, thickening.
   // Data of no calibrated kind (tags and contours mixed): all eleven
   // starred.
   analysis.interval_data = IntervalData::kOther;
