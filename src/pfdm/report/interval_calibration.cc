@@ -49,13 +49,15 @@ std::string IntervalDataName(IntervalData data) {
   return "other";
 }
 
-const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
+namespace {
+
+const std::vector<std::string>& MidwallTagsKeys() {
   // GCS's interval (and its peak's) held the noise-free fit in 0.99 of
   // draws on 2026-12-05: too wide for issue 30's 90-98 %.  Over 300 draws
   // (2026-12-07) it held it in 0.983 but in 0.853 with the hypokinetic
   // segment (its sd 0.74 of its rms error there): not claimed.  ESV, 0.90
   // over 100 draws, held it in 0.947 and 0.953 over 300: claimed.
-  static const std::vector<std::string> midwall_tags = {
+  static const std::vector<std::string> keys = {
       "ratio",
       "edv_ml",
       "esv_ml",
@@ -69,6 +71,10 @@ const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
       "peak_ecc_percent",
       "ell_percent",
       "rotation_deg"};
+  return keys;
+}
+
+const std::vector<std::string>& WallTagsKeys() {
   // Tags through the wall at held depths (the default since 2026-12-07),
   // 100 draws with and without the hypokinetic segment: shortening 0.98
   // and 0.98 (its sd 1.26 times its error), the segments' thickening 0.975
@@ -86,7 +92,7 @@ const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
   // claimed; the volume fraction in 0.987 without the lesion (its sd 1.20
   // times its rms error; 0.973 with it) and the frames' radial
   // contraction in 0.987 and 0.987 (1.22 and 1.25): too wide, not.
-  static const std::vector<std::string> wall_tags = {
+  static const std::vector<std::string> keys = {
       "edv_ml",
       "esv_ml",
       "lv_mass_g",
@@ -104,11 +110,15 @@ const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
       "rotation_deg",
       "thickening_percent",
   };
+  return keys;
+}
+
+const std::vector<std::string>& ContoursKeys() {
   // EDV's, 0.89 while frame 0's length took the top's error alone, is 0.91
   // with the apex's too (FrameCovariance::apex_length_variance).  The
   // segments' Ell held it in 0.981 of draws (too wide) while untracked
   // frames' length was held at frame 0's; left to the data, 0.952.
-  static const std::vector<std::string> contours = {
+  static const std::vector<std::string> keys = {
       "ratio",
       "edv_ml",
       "esv_ml",
@@ -124,11 +134,15 @@ const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
       "peak_ecc_percent",
       "ell_percent",
       "thickening_percent"};
+  return keys;
+}
+
+const std::vector<std::string>& OneSurfaceContoursKeys() {
   // One surface's contours (no wall to thicken or weigh, no turn seen)
   // measure these; each kind claims them but those whose intervals missed
   // 90-98 % over 100 draws on 2026-12-06 (untracked frames' length left to
   // the data, the covered radii's pull eased).
-  static const std::vector<std::string> one_surface_contours = {
+  static const std::vector<std::string> keys = {
       "ratio",
       "edv_ml",
       "esv_ml",
@@ -141,32 +155,32 @@ const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
       "ecc_percent",
       "peak_ecc_percent",
       "ell_percent"};
-  // Every kind claims all of them since the length noise's derivative is
-  // taken by the top's rise (model/raised_top.h), not a uniform stretch:
-  // over 100 draws on 2026-12-06 the mid-wall's ESV and volume fraction
-  // held the noise-free fit in 0.94 and 0.91 of draws (0.87 and 0.89 with
-  // the stretch), the epicardium's EDV, ESV and volume fraction in 0.95,
-  // 0.94 and 0.92 (0.88, 0.88, 0.89).  The endocardium's GCS 0.95 (0.99,
-  // too wide, while the covered radii were pulled toward frame 0's as
-  // hard as the rest).
-  static const std::vector<std::string>& endo_contours = one_surface_contours;
-  static const std::vector<std::string>& midwall_contours =
-      one_surface_contours;
-  static const std::vector<std::string>& epi_contours = one_surface_contours;
+  return keys;
+}
+
+}  // namespace
+
+const std::vector<std::string>& CalibratedIntervalKeys(IntervalData data) {
   static const std::vector<std::string> none;
   switch (data) {
     case IntervalData::kMidwallTags:
-      return midwall_tags;
+      return MidwallTagsKeys();
     case IntervalData::kWallTags:
-      return wall_tags;
+      return WallTagsKeys();
     case IntervalData::kContours:
-      return contours;
+      return ContoursKeys();
+    // Each one surface's kind claims all its keys since the length noise's
+    // derivative is taken by the top's rise (model/raised_top.h), not a
+    // uniform stretch: over 100 draws on 2026-12-06 the mid-wall's ESV and
+    // volume fraction held the noise-free fit in 0.94 and 0.91 of draws
+    // (0.87 and 0.89 with the stretch), the epicardium's EDV, ESV and
+    // volume fraction in 0.95, 0.94 and 0.92 (0.88, 0.88, 0.89).  The
+    // endocardium's GCS 0.95 (0.99, too wide, while the covered radii were
+    // pulled toward frame 0's as hard as the rest).
     case IntervalData::kEndoContours:
-      return endo_contours;
     case IntervalData::kEpiContours:
-      return epi_contours;
     case IntervalData::kMidwallContours:
-      return midwall_contours;
+      return OneSurfaceContoursKeys();
     case IntervalData::kOther:
       break;
   }
@@ -192,7 +206,8 @@ std::string CalibrationNote(IntervalData data) {
     names += (names.empty() ? "" : ", ") + key;
   }
   return "Fitted: " + IntervalDataName(data) +
-         ". On 100 noise draws of the independent LV phantom with data of "
+         ". On 100 noise draws (300 for tags) of the independent LV phantom "
+         "with data of "
          "this kind the intervals of " +
          names +
          " (the frames' and the segments' numbers of those names) held the "

@@ -1,8 +1,9 @@
 // Which numbers' 95 % intervals were shown to hold what they promise, by
 // the kind of data fitted.  Over 100 noise draws of the independent LV
-// phantom (docs/uncertainty_calibration.md) an interval is calibrated
-// where it held the noise-free fit's number in 90-98 % of draws (issue
-// 30's rule); every other interval is not (fit.json's
+// phantom (300 for tags; docs/uncertainty_calibration.md) an interval is
+// calibrated where it held the noise-free fit's number in 90-98 % of draws
+// (issue 30's rule; to the whole percent, with and without the hypokinetic
+// segment where both were run); every other interval is not (fit.json's
 // uncertainty_calibrated says which, the report stars the others): too
 // narrow or too wide.  Data of another kind (tags and contours mixed,
 // tags some frames lose) have no calibrated interval.
