@@ -53,9 +53,6 @@ TEST(LocalFieldNoiseTest, TheGcsBiasIsTheNoisesAndTheIntervalHoldsTheTruth) {
   EXPECT_GT(measured, 0.5);
 }
 
-// The volume fraction is near linear in the field: its bias is under a
-// tenth of its sd, and the field's spread adds little to the delta
-// method's (the global fit carries the volumes).
 // The draws measured on three threads give one thread's spread and bias
 // to the bit (the draws summed in their order), the delta method's sds
 // with them (number_uncertainty_test.cc).
@@ -72,6 +69,9 @@ TEST(LocalFieldNoiseTest, ThreadsGiveTheSameSpreadAndBiasToTheBit) {
   ExpectSameBits(Flatten(one.noise_bias), Flatten(three.noise_bias), "bias");
 }
 
+// The volume fraction is near linear in the field: its bias is under a
+// tenth of its sd, and the field's spread adds little to the delta
+// method's (the global fit carries the volumes).
 TEST(LocalFieldNoiseTest, ANearLinearNumberHasNoBias) {
   const SequenceFit fit = FitLvSequence(1000, 0.5, true);
   const FitAnalysis a = AnalyzeFit(fit);
