@@ -23,17 +23,23 @@ struct Fitted {
   FitAnalysis analysis;
 };
 
+// `frames` frames of the LV phantom's 400 mid-wall tags (9 knots), fitted
+// with the covariances.
+SequenceFit FitLvTags(int frames, int seed) {
+  LvPhantomOptions options;
+  options.num_frames = frames;
+  options.num_tags = 400;
+  options.seed = seed;
+  FitOptions fit_options;
+  fit_options.uncertainty = true;
+  return FitSequence(MakeLvPhantom(options).points, ModelConfig::Paper(9),
+                     fit_options);
+}
+
 const Fitted& LvFit() {
   static const Fitted* fitted = [] {
-    LvPhantomOptions options;
-    options.num_frames = 2;
-    options.num_tags = 400;
-    options.seed = 7;
-    FitOptions fit_options;
-    fit_options.uncertainty = true;
     auto* f = new Fitted;
-    f->fit = FitSequence(MakeLvPhantom(options).points, ModelConfig::Paper(9),
-                         fit_options);
+    f->fit = FitLvTags(2, 7);
     f->analysis = AnalyzeFit(f->fit);
     return f;
   }();
@@ -245,14 +251,7 @@ TEST(NumberUncertaintyTest, SdsAreTheStraightforwardOnes) {
 // two threads each thread takes whole frames, on three the two frames'
 // steps are shared out.
 TEST(NumberUncertaintyTest, ThreadsGiveTheSameSdsToTheBit) {
-  LvPhantomOptions options;
-  options.num_frames = 3;
-  options.num_tags = 400;
-  options.seed = 8;
-  FitOptions fit_options;
-  fit_options.uncertainty = true;
-  SequenceFit fit = FitSequence(MakeLvPhantom(options).points,
-                                ModelConfig::Paper(9), fit_options);
+  SequenceFit fit = FitLvTags(3, 8);
   ASSERT_EQ(fit.threads, 1);
   const FitAnalysis analysis = AnalyzeFit(fit);
   const NumberSd one = PropagateUncertainty(fit, analysis);
