@@ -7,6 +7,7 @@
 #include "Eigen/Geometry"
 #include "pfdm/model/model_surface.h"
 #include "pfdm/report/reference_rings.h"
+#include "pfdm/report/tracked_response.h"
 #include "pfdm/util/parallel_for.h"
 
 namespace pfdm {
@@ -282,13 +283,14 @@ EjectionFraction EjectionSd(const FitAnalysis& analysis, const NumberSd& sd) {
   return out;
 }
 
-// Each frame's numbers' variance from its own parameters, ED held.
-std::vector<Eigen::VectorXd> OwnVariances(const SequenceFit& fit,
+// Each frame's numbers' Jacobian with respect to its own parameters, ED
+// held (none for ED).
+std::vector<Eigen::MatrixXd> OwnJacobians(const SequenceFit& fit,
                                           const FitAnalysis& analysis) {
   const size_t ed = static_cast<size_t>(fit.ed_frame);
   const Model& ed_model = analysis.models[ed];
   const ReferenceSamples samples = SampleReference(ed_model, analysis.layout);
-  std::vector<Eigen::VectorXd> variance(fit.frames.size());
+  std::vector<Eigen::MatrixXd> jacobian(fit.frames.size());
   // Whole frames to the threads where there are as many later frames as
   // threads; else each frame's steps spread over them.  A thread measures
   // a frame afresh (its own FrameMeasurer) before its first step of it.
@@ -304,12 +306,10 @@ std::vector<Eigen::VectorXd> OwnVariances(const SequenceFit& fit,
         return Flatten(frame->Moved(model, range));
       };
     };
-    const FrameCovariance& covariance = fit.frames[t].covariance;
-    variance[t] = Variances(NumberJacobian(analysis.models[t], covariance, make,
-                                           by_frame ? 1 : threads),
-                            covariance.covariance);
+    jacobian[t] = NumberJacobian(analysis.models[t], fit.frames[t].covariance,
+                                 make, by_frame ? 1 : threads);
   });
-  return variance;
+  return jacobian;
 }
 
 }  // namespace
@@ -407,12 +407,13 @@ class EdStepMeasurer {
   ReferenceSamples samples_;
 };
 
-// Every frame's numbers' variance from ED's parameters, in frame order; a
+// Every frame's numbers' Jacobian with respect to ED's parameters (rows in
+// frame order), each frame's own parameters held; a
 // spin of ED about its axis turns the other frames with it (SpunWith).  A
 // step that does not spin ED leaves the other frames' models as they are
 // (FrameMeasurer::Against).
-Eigen::VectorXd EdVariances(const SequenceFit& fit,
-                            const FitAnalysis& analysis) {
+Eigen::MatrixXd EdJacobian(const SequenceFit& fit,
+                           const FitAnalysis& analysis) {
   const size_t ed = static_cast<size_t>(fit.ed_frame);
   const Model& fitted_ed = analysis.models[ed];
   const ReferenceSamples fitted_samples =
@@ -424,9 +425,17 @@ Eigen::VectorXd EdVariances(const SequenceFit& fit,
       return (*measurer)(ed_model, range);
     };
   };
-  const FrameCovariance& covariance = fit.frames[ed].covariance;
-  return Variances(NumberJacobian(fitted_ed, covariance, make, fit.threads),
-                   covariance.covariance);
+  return NumberJacobian(fitted_ed, fit.frames[ed].covariance, make,
+                        fit.threads);
+}
+
+// Each tracked frame's response to ED's parameters (tracked_response.h),
+// empty where none.
+std::vector<Eigen::MatrixXd> Responses(const SequenceFit& fit) {
+  std::vector<Eigen::MatrixXd> responses(fit.frames.size());
+  ParallelFor(fit.frames.size(), std::max(fit.threads, 1),
+              [&](int, size_t t) { responses[t] = TrackedResponse(fit, t); });
+  return responses;
 }
 
 }  // namespace
@@ -441,16 +450,28 @@ NumberSd PropagateUncertainty(const SequenceFit& fit,
   for (const FrameFit& frame : fit.frames) {
     if (!frame.covariance.computed) return sd;
   }
-  std::vector<Eigen::VectorXd> variance = OwnVariances(fit, analysis);
-  const Eigen::VectorXd from_ed = EdVariances(fit, analysis);
-  const size_t size = from_ed.size() / fit.frames.size();
+  const std::vector<Eigen::MatrixXd> own = OwnJacobians(fit, analysis);
+  const Eigen::MatrixXd from_ed = EdJacobian(fit, analysis);
+  const std::vector<Eigen::MatrixXd> responses = Responses(fit);
   const size_t frames = fit.frames.size();
+  const size_t size = from_ed.rows() / frames;
+  const Eigen::MatrixXd& ed_covariance =
+      fit.frames[fit.ed_frame].covariance.covariance;
   sd.clinical.resize(frames);
   sd.region_motion.resize(frames);
   sd.strain.resize(frames);
   for (size_t t = 0; t < frames; ++t) {
-    Eigen::VectorXd total = from_ed.segment(t * size, size);
-    if (variance[t].size() == total.size()) total += variance[t];
+    // A number of frame t moves with ED's parameters directly and through
+    // frame t's fit, which follows ED's (TrackedResponse).
+    Eigen::MatrixXd along_ed = from_ed.middleRows(t * size, size);
+    const bool follows = own[t].rows() == along_ed.rows() &&
+                         responses[t].rows() == own[t].cols() &&
+                         responses[t].cols() == along_ed.cols();
+    if (follows) along_ed += own[t] * responses[t];
+    Eigen::VectorXd total = Variances(along_ed, ed_covariance);
+    if (own[t].rows() == total.size()) {
+      total += Variances(own[t], fit.frames[t].covariance.covariance);
+    }
     StoreFrame(analysis, t, total, &sd);
   }
   sd.ejection_fraction = EjectionSd(analysis, sd);

@@ -12,12 +12,13 @@
 // round-off of the sampled means (docs/uncertainty.md).
 //
 // A number of frame t is measured against end-diastole's model (ED), so it
-// depends on two frames' parameters.  Their fits are taken as independent
-// (each frame's covariance is conditional on the previous frame's model,
-// frame_covariance.h) and the two variances add: var y = g_t' C_t g_t +
-// g_ED' C_ED g_ED, but for ED's spin about its axis, which every frame
-// shares (SpunWith).  ED's own numbers (and everything at t = ED) vary both
-// at once.  The ejection fraction, (EDV - ESV) / EDV, adds the two
+// depends on two frames' parameters.  Frame t's covariance is conditional
+// on ED's model (frame_covariance.h), and a tracked frame's fit follows
+// ED's errors through the material points ED's fit gave its tags (M_t,
+// tracked_response.h): var y = g_t' C_t g_t + h' C_ED h, h = g_ED + M_t' g_t,
+// and ED's spin about its axis, which every frame shares, turns them all
+// (SpunWith).  ED's own numbers (and everything at t = ED) vary both at
+// once.  The ejection fraction, (EDV - ESV) / EDV, adds the two
 // volumes' variances likewise.
 #ifndef PFDM_REPORT_NUMBER_UNCERTAINTY_H_
 #define PFDM_REPORT_NUMBER_UNCERTAINTY_H_

@@ -11,6 +11,7 @@
 #include "pfdm/fit/stages/fitter.h"
 #include "pfdm/fit/stages/frame_verdict.h"
 #include "pfdm/phantom/lv_phantom.h"
+#include "pfdm/report/tracked_response.h"
 #include "pfdm/testing/test_util.h"
 
 namespace pfdm {
@@ -182,7 +183,8 @@ TEST(NumberUncertaintyTest, SpinOfEdTurnsEveryFrameAlike) {
 }
 
 // The sds as first written (before FrameMeasurer): every step measures
-// every number of every frame again from scratch.
+// every number of every frame again from scratch; ES's numbers move with
+// ED's parameters through ES's response too (tracked_response.h).
 std::vector<Eigen::VectorXd> StraightforwardVariances(const SequenceFit& fit,
                                                       const FitAnalysis& a) {
   const Model& ed = a.models[0];
@@ -192,7 +194,8 @@ std::vector<Eigen::VectorXd> StraightforwardVariances(const SequenceFit& fit,
     return Flatten(MeasureFrame(ed, samples, a.regions, model, nullptr));
   };
   const FrameCovariance& c1 = fit.frames[1].covariance;
-  variance[1] = Variances(NumberJacobian(a.models[1], c1, own), c1.covariance);
+  const Eigen::MatrixXd own_jacobian = NumberJacobian(a.models[1], c1, own);
+  variance[1] = Variances(own_jacobian, c1.covariance);
   const NumbersOf of_ed = [&](const Model& moved) {
     const ReferenceSamples moved_samples = SampleReference(moved, a.layout);
     std::vector<double> all =
@@ -204,11 +207,13 @@ std::vector<Eigen::VectorXd> StraightforwardVariances(const SequenceFit& fit,
     return all;
   };
   const FrameCovariance& c0 = fit.frames[0].covariance;
-  const Eigen::VectorXd from_ed =
-      Variances(NumberJacobian(ed, c0, of_ed), c0.covariance);
-  const Eigen::Index size = from_ed.size() / 2;
-  variance[0] = from_ed.head(size);
-  variance[1] += from_ed.tail(size);
+  const Eigen::MatrixXd from_ed = NumberJacobian(ed, c0, of_ed);
+  const Eigen::Index size = from_ed.rows() / 2;
+  const Eigen::MatrixXd response = TrackedResponse(fit, 1);
+  EXPECT_EQ(response.rows(), own_jacobian.cols());
+  variance[0] = Variances(from_ed.topRows(size), c0.covariance);
+  variance[1] += Variances(from_ed.bottomRows(size) + own_jacobian * response,
+                           c0.covariance);
   return variance;
 }
 

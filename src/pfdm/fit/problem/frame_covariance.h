@@ -87,6 +87,10 @@ struct FrameCovariance {
   // (when free), the globals' free entries, then each knot's, ascending.
   std::vector<CovarianceEntry> entries;
   Eigen::MatrixXd covariance;
+  // (J'J)^+ over `entries`: the covariance at unit sigma, and the least
+  // squares' response to a change of its data, -(J'J)^+ J'dr (report/
+  // tracked_response.h).  Empty where not computed.
+  Eigen::MatrixXd unit_covariance;
   double seconds = 0.0;  // What computing it took.
   // The local field, fitted after this, is not in `covariance`: these are
   // draws of the field the frame's noise alone fits (fit/stages/

@@ -352,6 +352,7 @@ FrameCovariance FrameProblem::ScaledCovariance(
   DataSigma(*model_, frame.points, frame.material, frame.normals, options_.loss,
             options_.loss_scale_mm, result.effective_parameters,
             &result.sigma_mm, &result.degrees_of_freedom);
+  result.unit_covariance = result.covariance;
   result.covariance *= result.sigma_mm * result.sigma_mm;
   if (wall_normals == nullptr) return result;
   // The data's J'J along the wall normals, for each direction's share of

@@ -1,0 +1,135 @@
+#include "pfdm/report/tracked_response.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "Eigen/Dense"
+#include "pfdm/fit/correspondence/correspondence.h"
+#include "pfdm/report/number_uncertainty.h"
+
+namespace pfdm {
+namespace {
+
+using Kind = CovarianceEntry::Kind;
+
+bool Applies(const SequenceFit& fit, size_t t) {
+  if (fit.ed_frame != 0 || t == 0 || t >= fit.frames.size()) return false;
+  const FrameFit& frame = fit.frames[t];
+  const FrameCovariance& own = frame.covariance;
+  const FrameCovariance& reference = fit.frames[0].covariance;
+  return frame.kind == FrameKind::kTracked && !frame.mixed &&
+         !frame.material.empty() && own.computed && reference.computed &&
+         own.unit_covariance.rows() == static_cast<int>(own.entries.size());
+}
+
+// Every tag up to kMaxResponseTags, else every stride-th.
+std::vector<MaterialPoint> ResponseTags(
+    const std::vector<MaterialPoint>& material, std::vector<size_t>* index) {
+  const size_t stride = std::max<size_t>(
+      1, (material.size() + kMaxResponseTags - 1) / kMaxResponseTags);
+  std::vector<MaterialPoint> tags;
+  for (size_t i = 0; i < material.size(); i += stride) {
+    tags.push_back(material[i]);
+    index->push_back(i);
+  }
+  return tags;
+}
+
+// dx/dm at m, by central differences: the columns u, v and (`columns` 3)
+// w.
+Eigen::MatrixXd MaterialJacobian(const Model& model, const MaterialPoint& m,
+                                 int columns) {
+  constexpr double kStep = 1e-5;
+  Eigen::MatrixXd jacobian(3, columns);
+  for (int c = 0; c < columns; ++c) {
+    MaterialPoint plus = m, minus = m;
+    double* plus_c = c == 0 ? &plus.u : c == 1 ? &plus.v : &plus.w;
+    double* minus_c = c == 0 ? &minus.u : c == 1 ? &minus.v : &minus.w;
+    *plus_c += kStep;
+    *minus_c -= kStep;
+    jacobian.col(c) = (model.WorldPoint(plus.u, plus.v, plus.w) -
+                       model.WorldPoint(minus.u, minus.v, minus.w)) /
+                      (2.0 * kStep);
+  }
+  return jacobian;
+}
+
+// Per tag, c_i = -K_i L_i^+ dx_i's matrix -K_i L_i^+ (3 x 3).
+std::vector<Eigen::Matrix3d> RelabelMaps(const Model& reference,
+                                         const Model& frame,
+                                         const std::vector<MaterialPoint>& tags,
+                                         int columns) {
+  std::vector<Eigen::Matrix3d> maps;
+  maps.reserve(tags.size());
+  for (const MaterialPoint& m : tags) {
+    const Eigen::MatrixXd along = MaterialJacobian(reference, m, columns);
+    const Eigen::MatrixXd inverse =
+        along.completeOrthogonalDecomposition().pseudoInverse();
+    maps.push_back(-MaterialJacobian(frame, m, columns) * inverse);
+  }
+  return maps;
+}
+
+// d (tags' world points) / d (covariance coordinate) of `model`, one
+// column a coordinate (3 rows a tag), central differences with steps of
+// kStepSd sd; 0 for a coordinate without variance or `skip_pose`'s pose.
+Eigen::MatrixXd PointJacobian(const Model& model,
+                              const FrameCovariance& covariance,
+                              const std::vector<MaterialPoint>& tags,
+                              bool skip_pose) {
+  const int n = static_cast<int>(covariance.entries.size());
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(3 * tags.size(), n);
+  for (int j = 0; j < n; ++j) {
+    const Kind kind = covariance.entries[j].kind;
+    const bool pose = kind == Kind::kCenter || kind == Kind::kRotation;
+    const double variance = covariance.covariance(j, j);
+    if ((skip_pose && pose) || !(variance > 0.0)) continue;
+    const double step = kStepSd * std::sqrt(variance);
+    Eigen::VectorXd delta = Eigen::VectorXd::Zero(n);
+    delta[j] = step;
+    const std::vector<Eigen::Vector3d> plus =
+        WorldPoints(Nudged(model, covariance.entries, delta), tags);
+    delta[j] = -step;
+    const std::vector<Eigen::Vector3d> minus =
+        WorldPoints(Nudged(model, covariance.entries, delta), tags);
+    for (size_t i = 0; i < tags.size(); ++i) {
+      jacobian.block<3, 1>(3 * i, j) = (plus[i] - minus[i]) / (2.0 * step);
+    }
+  }
+  return jacobian;
+}
+
+}  // namespace
+
+Eigen::MatrixXd TrackedResponse(const SequenceFit& fit, size_t t) {
+  if (!Applies(fit, t)) return {};
+  const FrameFit& frame = fit.frames[t];
+  const Model reference = fit.ModelAt(0);
+  const Model model = fit.ModelAt(static_cast<int>(t));
+  std::vector<size_t> index;
+  const std::vector<MaterialPoint> tags = ResponseTags(frame.material, &index);
+  // A held depth is where frame 0's model put the tag across the wall;
+  // ranked anew, or on a surface, the tag keeps its depth.
+  const int columns = fit.config.Solid() && frame.depths_held ? 3 : 2;
+  const std::vector<Eigen::Matrix3d> maps =
+      RelabelMaps(reference, model, tags, columns);
+  // The residuals' change per unit step of frame 0's coordinates, weighed by
+  // the loss and by each tag's share of the frame's tags.
+  Eigen::MatrixXd change = PointJacobian(reference, fit.frames[0].covariance,
+                                         tags, /*skip_pose=*/true);
+  const double share = static_cast<double>(frame.material.size()) /
+                       static_cast<double>(tags.size());
+  const bool weighed = frame.loss_weights.size() == frame.material.size();
+  for (size_t i = 0; i < tags.size(); ++i) {
+    const double weight =
+        share * (weighed ? frame.loss_weights[index[i]] : 1.0);
+    change.middleRows<3>(3 * i) =
+        weight * maps[i] * change.middleRows<3>(3 * i);
+  }
+  const Eigen::MatrixXd data =
+      PointJacobian(model, frame.covariance, tags, /*skip_pose=*/false);
+  return -frame.covariance.unit_covariance * (data.transpose() * change);
+}
+
+}  // namespace pfdm
