@@ -263,8 +263,47 @@ void StoreFrame(const FitAnalysis& analysis, size_t t,
   sd->strain[t] = sds.strain;
 }
 
-// The ejection fraction's sd from the two volumes', taken as independent.
-EjectionFraction EjectionSd(const FitAnalysis& analysis, const NumberSd& sd) {
+// The rows of every frame's numbers' Jacobians: along ED's parameters
+// (directly, and through the frame's response to them: TrackedResponse)
+// and along the frame's own (none at ED).
+struct NumberJacobians {
+  std::vector<Eigen::MatrixXd> along_ed, own;
+};
+
+// Where volume_ml sits in Flatten's order.
+int VolumeRow() {
+  ClinicalSummary c;
+  const std::vector<double*> fields = ClinicalFields(&c);
+  return static_cast<int>(
+      std::find(fields.begin(), fields.end(), &c.volume_ml) - fields.begin());
+}
+
+// The ejection fraction's sd from the two volumes' rows: ESV's along ED's
+// parameters (through ES's response) shares them with EDV's, so the ratio's
+// variance is that of its derivatives' sum, not of two independent terms.
+double EjectionRatioSd(const SequenceFit& fit, const EjectionFraction& ef,
+                       const NumberJacobians& jacobians) {
+  const double d_edv = ef.esv_ml / (ef.edv_ml * ef.edv_ml);
+  const double d_esv = -1.0 / ef.edv_ml;
+  const int row = VolumeRow();
+  const Eigen::RowVectorXd along_ed =
+      d_edv * jacobians.along_ed[ef.ed_frame].row(row) +
+      d_esv * jacobians.along_ed[ef.es_frame].row(row);
+  double variance = along_ed * fit.frames[fit.ed_frame].covariance.covariance *
+                    along_ed.transpose();
+  const Eigen::MatrixXd& own = jacobians.own[ef.es_frame];
+  if (own.rows() > row) {
+    const Eigen::RowVectorXd es = d_esv * own.row(row);
+    variance +=
+        es * fit.frames[ef.es_frame].covariance.covariance * es.transpose();
+  }
+  return std::sqrt(std::max(variance, 0.0));
+}
+
+// The ejection fraction's sds: the volumes' are their frames'.
+EjectionFraction EjectionSd(const SequenceFit& fit, const FitAnalysis& analysis,
+                            const NumberJacobians& jacobians,
+                            const NumberSd& sd) {
   const EjectionFraction& ef = analysis.ejection_fraction;
   EjectionFraction out = ef;
   out.edv_ml = sd.clinical[ef.ed_frame].volume_ml;
@@ -273,12 +312,10 @@ EjectionFraction EjectionSd(const FitAnalysis& analysis, const NumberSd& sd) {
   out.esv_ml =
       Measured(ef.esv_ml) ? sd.clinical[ef.es_frame].volume_ml : kNotMeasured;
   out.ratio = kNotMeasured;
-  if (Measured(ef.ratio) && ef.edv_ml > 0.0) {
-    const double d_edv = ef.esv_ml / (ef.edv_ml * ef.edv_ml);
-    const double d_esv = -1.0 / ef.edv_ml;
-    out.ratio = ef.es_frame == ef.ed_frame
-                    ? 0.0
-                    : std::hypot(d_edv * out.edv_ml, d_esv * out.esv_ml);
+  if (Measured(ef.ratio) && ef.edv_ml > 0.0 && Measured(out.edv_ml) &&
+      Measured(out.esv_ml)) {
+    out.ratio =
+        ef.es_frame == ef.ed_frame ? 0.0 : EjectionRatioSd(fit, ef, jacobians);
   }
   return out;
 }
@@ -450,7 +487,7 @@ NumberSd PropagateUncertainty(const SequenceFit& fit,
   for (const FrameFit& frame : fit.frames) {
     if (!frame.covariance.computed) return sd;
   }
-  const std::vector<Eigen::MatrixXd> own = OwnJacobians(fit, analysis);
+  NumberJacobians jacobians{{}, OwnJacobians(fit, analysis)};
   const Eigen::MatrixXd from_ed = EdJacobian(fit, analysis);
   const std::vector<Eigen::MatrixXd> responses = Responses(fit);
   const size_t frames = fit.frames.size();
@@ -463,18 +500,20 @@ NumberSd PropagateUncertainty(const SequenceFit& fit,
   for (size_t t = 0; t < frames; ++t) {
     // A number of frame t moves with ED's parameters directly and through
     // frame t's fit, which follows ED's (TrackedResponse).
+    const Eigen::MatrixXd& own = jacobians.own[t];
     Eigen::MatrixXd along_ed = from_ed.middleRows(t * size, size);
-    const bool follows = own[t].rows() == along_ed.rows() &&
-                         responses[t].rows() == own[t].cols() &&
+    const bool follows = own.rows() == along_ed.rows() &&
+                         responses[t].rows() == own.cols() &&
                          responses[t].cols() == along_ed.cols();
-    if (follows) along_ed += own[t] * responses[t];
+    if (follows) along_ed += own * responses[t];
     Eigen::VectorXd total = Variances(along_ed, ed_covariance);
-    if (own[t].rows() == total.size()) {
-      total += Variances(own[t], fit.frames[t].covariance.covariance);
+    if (own.rows() == total.size()) {
+      total += Variances(own, fit.frames[t].covariance.covariance);
     }
     StoreFrame(analysis, t, total, &sd);
+    jacobians.along_ed.push_back(std::move(along_ed));
   }
-  sd.ejection_fraction = EjectionSd(analysis, sd);
+  sd.ejection_fraction = EjectionSd(fit, analysis, jacobians, sd);
   sd.computed = true;
   return sd;
 }

@@ -89,11 +89,15 @@ class ParameterSampler {
     root_ = eigen.eigenvectors() *
             eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
   }
-  Model Draw(std::mt19937* random) const {
+  Model Draw(std::mt19937* random) const { return At(Delta(random)); }
+  Eigen::VectorXd Delta(std::mt19937* random) const {
     std::normal_distribution<double> normal;
     Eigen::VectorXd z(root_.cols());
     for (int i = 0; i < z.size(); ++i) z[i] = normal(*random);
-    return Nudged(model_, covariance_.entries, root_ * z);
+    return root_ * z;
+  }
+  Model At(const Eigen::VectorXd& delta) const {
+    return Nudged(model_, covariance_.entries, delta);
   }
 
  private:
@@ -109,47 +113,85 @@ double Sd(const std::vector<double>& values) {
   return std::sqrt(square / (values.size() - 1));
 }
 
-// The delta method's sds of the ejection fraction (of the mid-wall's
-// volume: its ratio) and of a mid segment's Ecc at ES against the sds of
-// the numbers recomputed on 400 draws of both frames' parameters, drawn
-// independently from their covariances (ES turned with ED's spin, as the
-// delta method does).  400 draws give a sample sd within
-// about 3.5 % (1 / sqrt(2 x 400)) of the true one; the delta method's
-// linearization adds a little: 12 % allowed.
-TEST(NumberUncertaintyTest, DeltaMethodMatchesSampling) {
-  const Fitted& f = LvFit();
-  const FitAnalysis& a = f.analysis;
+// The numbers' sds over 400 draws of both frames' parameters: ED's from
+// its covariance, ES's from its own plus its response to ED's draw
+// (tracked_response.h), ES turned with ED's spin, as the delta method
+// does.  The ejection fraction, a mid segment's Ecc and radial
+// contraction at ES.
+struct Sds {
+  double ratio = 0.0, ecc = 0.0, radial = 0.0;
+};
+Sds SampledSds(const SequenceFit& fit, const FitAnalysis& a, int segment) {
+  const ParameterSampler ed(a.models[0], fit.frames[0].covariance);
+  const ParameterSampler es(a.models[1], fit.frames[1].covariance);
+  const Eigen::MatrixXd response = TrackedResponse(fit, 1);
+  EXPECT_GT(response.size(), 0);
+  std::mt19937 random(11);
+  std::vector<double> ratio, ecc, radial;
+  for (int draw = 0; draw < 400; ++draw) {
+    const Eigen::VectorXd ed_delta = ed.Delta(&random);
+    const Model ed_model = ed.At(ed_delta);
+    const Model es_model = SpunWith(
+        a.models[0], ed_model, es.At(es.Delta(&random) + response * ed_delta));
+    const ReferenceSamples samples = SampleReference(ed_model, a.layout);
+    const double edv = MeasureFrame(ed_model, samples, a.regions, ed_model,
+                                    VolumePlaneOf(a, 0))
+                           .clinical.volume_ml;
+    const FrameNumbers at_es = MeasureFrame(ed_model, samples, a.regions,
+                                            es_model, VolumePlaneOf(a, 1));
+    ratio.push_back((edv - at_es.clinical.volume_ml) / edv);
+    ecc.push_back(at_es.regions[segment].ecc_percent);
+    radial.push_back(at_es.clinical.radial_contraction_percent);
+  }
+  return {Sd(ratio), Sd(ecc), Sd(radial)};
+}
+
+// The delta method's sds against the sampled ones.  400 draws give a
+// sample sd within about 3.5 % (1 / sqrt(2 x 400)) of the true one; the
+// delta method's linearization adds a little: 12 % allowed.
+void ExpectSampledSds(const SequenceFit& fit, const FitAnalysis& a) {
   ASSERT_TRUE(a.sd.computed);
   ASSERT_EQ(a.ejection_fraction.es_frame, 1);
   const int segment = 9;  // Mid 4 (0-based 9).
-  const ParameterSampler ed(a.models[0], f.fit.frames[0].covariance);
-  const ParameterSampler es(a.models[1], f.fit.frames[1].covariance);
-  std::mt19937 random(11);
-  std::vector<double> ef, ecc;
-  for (int draw = 0; draw < 400; ++draw) {
-    const Model ed_model = ed.Draw(&random);
-    const Model es_model = SpunWith(a.models[0], ed_model, es.Draw(&random));
-    const ReferenceSamples samples = SampleReference(ed_model, a.layout);
-    const FrameNumbers at_es =
-        MeasureFrame(ed_model, samples, a.regions, es_model, nullptr);
-    const double edv = SummarizeFrame(0, ed_model, ed_model).volume_ml;
-    ef.push_back((edv - at_es.clinical.volume_ml) / edv);
-    ecc.push_back(at_es.regions[segment].ecc_percent);
-  }
+  const Sds sampled = SampledSds(fit, a, segment);
   // The delta method's own sds: the analysis's add the local field's
   // spread (local_field_noise.h), which these draws do not vary.
-  const NumberSd delta = PropagateUncertainty(f.fit, a);
-  const double ef_sd = delta.ejection_fraction.ratio;
-  const double ecc_sd = delta.region_motion[1][segment].ecc_percent;
+  const NumberSd delta = PropagateUncertainty(fit, a);
+  const Sds sds{delta.ejection_fraction.ratio,
+                delta.region_motion[1][segment].ecc_percent,
+                delta.clinical[1].radial_contraction_percent};
   std::printf(
-      "EF %.4f sd delta %.5f sampled %.5f; Ecc %.3f %% sd delta %.4f "
-      "sampled %.4f\n",
-      a.ejection_fraction.ratio, ef_sd, Sd(ef),
-      a.region_motion[1][segment].ecc_percent, ecc_sd, Sd(ecc));
-  EXPECT_GT(ef_sd, 0.0);
-  EXPECT_GT(ecc_sd, 0.0);
-  EXPECT_NEAR(ef_sd / Sd(ef), 1.0, 0.12);
-  EXPECT_NEAR(ecc_sd / Sd(ecc), 1.0, 0.12);
+      "sd delta / sampled: EF %.5f / %.5f, Ecc %.4f / %.4f, radial "
+      "contraction %.4f / %.4f\n",
+      sds.ratio, sampled.ratio, sds.ecc, sampled.ecc, sds.radial,
+      sampled.radial);
+  EXPECT_GT(sds.ratio, 0.0);
+  EXPECT_GT(sds.ecc, 0.0);
+  EXPECT_NEAR(sds.ratio / sampled.ratio, 1.0, 0.12);
+  EXPECT_NEAR(sds.ecc / sampled.ecc, 1.0, 0.12);
+  EXPECT_NEAR(sds.radial / sampled.radial, 1.0, 0.12);
+}
+
+// Mid-wall tags.
+TEST(NumberUncertaintyTest, DeltaMethodMatchesSampling) {
+  ExpectSampledSds(LvFit().fit, LvFit().analysis);
+}
+
+// Tags through the wall (held depths), where ES follows ED's radii most
+// (TrackedResponseTest): the ejection fraction's volumes share ED's
+// parameters, which EjectionRatioSd takes in.
+TEST(NumberUncertaintyTest, DeltaMethodMatchesSamplingThroughTheWall) {
+  LvPhantomOptions options;
+  options.num_frames = 2;
+  options.num_tags = 400;
+  options.tags = LvTagLayer::kWall;
+  options.seed = 7;
+  FitOptions fit_options;
+  fit_options.uncertainty = true;
+  const SequenceFit fit = FitSequence(MakeLvPhantom(options).points,
+                                      ModelConfig::Paper(9), fit_options);
+  ASSERT_TRUE(fit.config.Solid());
+  ExpectSampledSds(fit, AnalyzeFit(fit));
 }
 
 // ED turned about its axis by 0.1 rad and ES with it: every number of ES
