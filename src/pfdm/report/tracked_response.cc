@@ -23,6 +23,15 @@ bool Applies(const SequenceFit& fit, size_t t) {
          own.unit_covariance.rows() == static_cast<int>(own.entries.size());
 }
 
+// Frame t's global model: the covariance's, at whose solution the local
+// field (fitted after it, held) was not yet there, and the one ED's
+// material points were found on.
+Model GlobalModel(const SequenceFit& fit, size_t t) {
+  Model model = fit.ModelAt(static_cast<int>(t));
+  model.state.local = LocalField();
+  return model;
+}
+
 // Every tag up to kMaxResponseTags, else every stride-th.
 std::vector<MaterialPoint> ResponseTags(
     const std::vector<MaterialPoint>& material, std::vector<size_t>* index) {
@@ -105,8 +114,8 @@ Eigen::MatrixXd PointJacobian(const Model& model,
 Eigen::MatrixXd TrackedResponse(const SequenceFit& fit, size_t t) {
   if (!Applies(fit, t)) return {};
   const FrameFit& frame = fit.frames[t];
-  const Model reference = fit.ModelAt(0);
-  const Model model = fit.ModelAt(static_cast<int>(t));
+  const Model reference = GlobalModel(fit, 0);
+  const Model model = GlobalModel(fit, t);
   std::vector<size_t> index;
   const std::vector<MaterialPoint> tags = ResponseTags(frame.material, &index);
   // A held depth is where frame 0's model put the tag across the wall;

@@ -71,6 +71,31 @@ TEST(TrackedResponseTest, AStillSurfaceDoesNotFollowARadialStep) {
   }
 }
 
+// The response is the global fit's (the covariance's, fitted before the
+// local field): the field through the wall, fitted after it, changes the
+// fit's numbers but not M.
+TEST(TrackedResponseTest, TheLocalFieldDoesNotChangeIt) {
+  LvPhantomOptions phantom;
+  phantom.num_frames = 2;
+  phantom.num_tags = 400;
+  phantom.tags = LvTagLayer::kWall;
+  phantom.seed = 7;
+  const PointSequence points = MakeLvPhantom(phantom).points;
+  FitOptions options;
+  options.uncertainty = true;
+  const SequenceFit bilinear =
+      FitSequence(points, ModelConfig::Paper(9), options);
+  options.local.transmural = true;
+  const SequenceFit transmural =
+      FitSequence(points, ModelConfig::Paper(9), options);
+  ASSERT_EQ(bilinear.frames[1].state.knots, transmural.frames[1].state.knots);
+  ASSERT_FALSE(transmural.frames[1].state.local.empty());
+  const Eigen::MatrixXd a = TrackedResponse(bilinear, 1);
+  const Eigen::MatrixXd b = TrackedResponse(transmural, 1);
+  ASSERT_GT(a.size(), 0);
+  EXPECT_EQ(a, b);
+}
+
 // No response where frame t's material points are not frame 0's alone, or
 // where end-diastole is not frame 0 (the delta method steps ED).
 TEST(TrackedResponseTest, NoneWhereItDoesNotApply) {
