@@ -367,9 +367,9 @@ class EdStepMeasurer {
 };
 
 // Every frame's numbers' Jacobian with respect to ED's parameters (rows in
-// frame order), each frame's own parameters held; a
-// spin of ED about its axis turns the other frames with it (SpunWith).  A
-// step that does not spin ED leaves the other frames' models as they are
+// frame order), each frame's own parameters held; a spin of ED about its
+// axis turns the other frames with it (SpunWith).  A step that does not
+// spin ED leaves the other frames' models as they are
 // (FrameMeasurer::Against).
 Eigen::MatrixXd EdJacobian(const SequenceFit& fit,
                            const FitAnalysis& analysis) {
