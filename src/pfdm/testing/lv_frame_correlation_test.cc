@@ -101,7 +101,7 @@ void Print(const char* name, const Sums& s, int n) {
 // Through the wall (held depths) ES follows ED's errors: over 16 draws radial
 // contraction's two parts were correlated -0.60 and the thickening's -0.26,
 // and the delta method's ED share of radial contraction fell from 0.169 to
-// 0.103 with ES's response (its sd 0.330 -> 0.305 against an error of
+// 0.10 with ES's response (its sd 0.330 -> 0.305 against an error of
 // 0.219; docs/uncertainty.md).
 TEST(LvFrameCorrelationTest, WallTagsFollowEndDiastole) {
   const Case c{LvTagLayer::kWall};
