@@ -24,12 +24,14 @@ struct Fitted {
   FitAnalysis analysis;
 };
 
-// `frames` frames of the LV phantom's 400 mid-wall tags (9 knots), fitted
-// with the covariances.
-SequenceFit FitLvTags(int frames, int seed) {
+// `frames` frames of the LV phantom's 400 tags (9 knots; mid-wall unless
+// `layer` says), fitted with the covariances.
+SequenceFit FitLvTags(int frames, int seed,
+                      LvTagLayer layer = LvTagLayer::kMidwall) {
   LvPhantomOptions options;
   options.num_frames = frames;
   options.num_tags = 400;
+  options.tags = layer;
   options.seed = seed;
   FitOptions fit_options;
   fit_options.uncertainty = true;
@@ -181,15 +183,7 @@ TEST(NumberUncertaintyTest, DeltaMethodMatchesSampling) {
 // (TrackedResponseTest): the ejection fraction's volumes share ED's
 // parameters, which EjectionRatioSd takes in.
 TEST(NumberUncertaintyTest, DeltaMethodMatchesSamplingThroughTheWall) {
-  LvPhantomOptions options;
-  options.num_frames = 2;
-  options.num_tags = 400;
-  options.tags = LvTagLayer::kWall;
-  options.seed = 7;
-  FitOptions fit_options;
-  fit_options.uncertainty = true;
-  const SequenceFit fit = FitSequence(MakeLvPhantom(options).points,
-                                      ModelConfig::Paper(9), fit_options);
+  const SequenceFit fit = FitLvTags(2, 7, LvTagLayer::kWall);
   ASSERT_TRUE(fit.config.Solid());
   ExpectSampledSds(fit, AnalyzeFit(fit));
 }

@@ -9,14 +9,19 @@ namespace {
 
 using Kind = CovarianceEntry::Kind;
 
-// The LV phantom's ED twice: frame 1's tags where frame 0's are.
-SequenceFit FitStill(LvTagLayer layer) {
+// ED and ES of the LV phantom's 400 tags on `layer`.
+PointSequence LvTags(LvTagLayer layer) {
   LvPhantomOptions phantom;
   phantom.num_frames = 2;
   phantom.num_tags = 400;
   phantom.tags = layer;
   phantom.seed = 7;
-  PointSequence points = MakeLvPhantom(phantom).points;
+  return MakeLvPhantom(phantom).points;
+}
+
+// The LV phantom's ED twice: frame 1's tags where frame 0's are.
+SequenceFit FitStill(LvTagLayer layer) {
+  PointSequence points = LvTags(layer);
   points.frames[1].points = points.frames[0].points;
   FitOptions options;
   options.uncertainty = true;
@@ -75,12 +80,7 @@ TEST(TrackedResponseTest, AStillSurfaceDoesNotFollowARadialStep) {
 // local field): the field through the wall, fitted after it, changes the
 // fit's numbers but not M.
 TEST(TrackedResponseTest, TheLocalFieldDoesNotChangeIt) {
-  LvPhantomOptions phantom;
-  phantom.num_frames = 2;
-  phantom.num_tags = 400;
-  phantom.tags = LvTagLayer::kWall;
-  phantom.seed = 7;
-  const PointSequence points = MakeLvPhantom(phantom).points;
+  const PointSequence points = LvTags(LvTagLayer::kWall);
   FitOptions options;
   options.uncertainty = true;
   const SequenceFit bilinear =
