@@ -186,11 +186,28 @@ void StoreFrame(const FitAnalysis& analysis, size_t t,
 }
 
 // The rows of every frame's numbers' Jacobians: along ED's parameters
-// (directly, and through the frame's response to them: TrackedResponse)
-// and along the frame's own (none at ED).
+// (directly, and through the frame's response to them along the surface:
+// TrackedResponse), along the frame's own (none at ED), and along ED's
+// through held depths (empty elsewhere).
 struct NumberJacobians {
-  std::vector<Eigen::MatrixXd> along_ed, own;
+  std::vector<Eigen::MatrixXd> along_ed, own, through_depths;
 };
+
+// The variance ED's noise puts through held depths twice: as the tracked
+// frame's depth noise (FrameCovariance::depth_noise) and as ED's model
+// moving the depths (TrackedResponse::through_wall); it is one error, the
+// ED fit's residual, whose variance is the first less the second
+// (tracked_response.h).  At most the first, per number.
+Eigen::VectorXd SharedDepthVariance(const Eigen::MatrixXd& own,
+                                    const Eigen::MatrixXd& through_depths,
+                                    const FrameCovariance& frame,
+                                    const Eigen::MatrixXd& ed_covariance) {
+  if (through_depths.size() == 0 || frame.depth_noise.size() == 0) {
+    return Eigen::VectorXd::Zero(own.rows());
+  }
+  return Variances(through_depths, ed_covariance)
+      .cwiseMin(Variances(own, frame.depth_noise));
+}
 
 // Where volume_ml sits in Flatten's order.
 int VolumeRow() {
@@ -211,13 +228,20 @@ double EjectionRatioSd(const SequenceFit& fit, const EjectionFraction& ef,
   const Eigen::RowVectorXd along_ed =
       d_edv * jacobians.along_ed[ef.ed_frame].row(row) +
       d_esv * jacobians.along_ed[ef.es_frame].row(row);
-  double variance = along_ed * fit.frames[fit.ed_frame].covariance.covariance *
-                    along_ed.transpose();
+  const Eigen::MatrixXd& ed_covariance =
+      fit.frames[fit.ed_frame].covariance.covariance;
+  double variance = along_ed * ed_covariance * along_ed.transpose();
   const Eigen::MatrixXd& own = jacobians.own[ef.es_frame];
   if (own.rows() > row) {
-    const Eigen::RowVectorXd es = d_esv * own.row(row);
-    variance +=
-        es * fit.frames[ef.es_frame].covariance.covariance * es.transpose();
+    const FrameCovariance& es_covariance = fit.frames[ef.es_frame].covariance;
+    const Eigen::MatrixXd es = d_esv * own.row(row);
+    variance += (es * es_covariance.covariance * es.transpose())(0, 0);
+    const Eigen::MatrixXd& depths = jacobians.through_depths[ef.es_frame];
+    if (depths.rows() > row) {
+      const Eigen::MatrixXd es_depths = d_esv * depths.row(row);
+      variance -=
+          SharedDepthVariance(es, es_depths, es_covariance, ed_covariance)[0];
+    }
   }
   return std::sqrt(std::max(variance, 0.0));
 }
@@ -390,10 +414,11 @@ Eigen::MatrixXd EdJacobian(const SequenceFit& fit,
 
 // Each tracked frame's response to ED's parameters (tracked_response.h),
 // empty where none.
-std::vector<Eigen::MatrixXd> Responses(const SequenceFit& fit) {
-  std::vector<Eigen::MatrixXd> responses(fit.frames.size());
-  ParallelFor(fit.frames.size(), std::max(fit.threads, 1),
-              [&](int, size_t t) { responses[t] = TrackedResponse(fit, t); });
+std::vector<TrackedResponse> Responses(const SequenceFit& fit) {
+  std::vector<TrackedResponse> responses(fit.frames.size());
+  ParallelFor(fit.frames.size(), std::max(fit.threads, 1), [&](int, size_t t) {
+    responses[t] = MeasureTrackedResponse(fit, t);
+  });
   return responses;
 }
 
@@ -409,9 +434,9 @@ NumberSd PropagateUncertainty(const SequenceFit& fit,
   for (const FrameFit& frame : fit.frames) {
     if (!frame.covariance.computed) return sd;
   }
-  NumberJacobians jacobians{{}, OwnJacobians(fit, analysis)};
+  NumberJacobians jacobians{{}, OwnJacobians(fit, analysis), {}};
   const Eigen::MatrixXd from_ed = EdJacobian(fit, analysis);
-  const std::vector<Eigen::MatrixXd> responses = Responses(fit);
+  const std::vector<TrackedResponse> responses = Responses(fit);
   const size_t frames = fit.frames.size();
   const size_t size = from_ed.rows() / frames;
   const Eigen::MatrixXd& ed_covariance =
@@ -423,17 +448,28 @@ NumberSd PropagateUncertainty(const SequenceFit& fit,
     // A number of frame t moves with ED's parameters directly and through
     // frame t's fit, which follows ED's (TrackedResponse).
     const Eigen::MatrixXd& own = jacobians.own[t];
+    const FrameCovariance& covariance = fit.frames[t].covariance;
     Eigen::MatrixXd along_ed = from_ed.middleRows(t * size, size);
-    const bool follows = own.rows() == along_ed.rows() &&
-                         responses[t].rows() == own.cols() &&
-                         responses[t].cols() == along_ed.cols();
-    if (follows) along_ed += own * responses[t];
+    const TrackedResponse& response = responses[t];
+    const bool follows = own.rows() == along_ed.rows() && !response.Empty() &&
+                         response.along_surface.rows() == own.cols() &&
+                         response.along_surface.cols() == along_ed.cols();
+    Eigen::MatrixXd through_depths;
+    if (follows) {
+      along_ed += own * response.along_surface;
+      if (response.through_wall.size() > 0) {
+        through_depths = own * response.through_wall;
+      }
+    }
     Eigen::VectorXd total = Variances(along_ed, ed_covariance);
     if (own.rows() == total.size()) {
-      total += Variances(own, fit.frames[t].covariance.covariance);
+      total +=
+          Variances(own, covariance.covariance) -
+          SharedDepthVariance(own, through_depths, covariance, ed_covariance);
     }
     StoreFrame(analysis, t, total, &sd);
     jacobians.along_ed.push_back(std::move(along_ed));
+    jacobians.through_depths.push_back(std::move(through_depths));
   }
   sd.ejection_fraction = EjectionSd(fit, analysis, jacobians, sd);
   sd.computed = true;

@@ -81,22 +81,33 @@ TEST(NumberUncertaintyTest, MeasureFrameGivesTheAnalysisNumbers) {
   }
 }
 
-// Draws of a frame's parameters from N(x, C): V sqrt(lambda) z.
-class ParameterSampler {
+// Draws from N(0, C): V sqrt(lambda) z, C's negative eigenvalues (none
+// but round-off's in a covariance) taken as 0.
+class GaussianDraws {
  public:
-  ParameterSampler(const Model& model, const FrameCovariance& covariance)
-      : model_(model), covariance_(covariance) {
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
-        covariance.covariance);
+  explicit GaussianDraws(const Eigen::MatrixXd& covariance) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(covariance);
     root_ = eigen.eigenvectors() *
             eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
   }
-  Model Draw(std::mt19937* random) const { return At(Delta(random)); }
   Eigen::VectorXd Delta(std::mt19937* random) const {
     std::normal_distribution<double> normal;
     Eigen::VectorXd z(root_.cols());
     for (int i = 0; i < z.size(); ++i) z[i] = normal(*random);
     return root_ * z;
+  }
+
+ private:
+  Eigen::MatrixXd root_;
+};
+
+// Draws of a frame's parameters from N(x, C).
+class ParameterSampler {
+ public:
+  ParameterSampler(const Model& model, const FrameCovariance& covariance)
+      : model_(model), covariance_(covariance), draws_(covariance.covariance) {}
+  Eigen::VectorXd Delta(std::mt19937* random) const {
+    return draws_.Delta(random);
   }
   Model At(const Eigen::VectorXd& delta) const {
     return Nudged(model_, covariance_.entries, delta);
@@ -105,7 +116,7 @@ class ParameterSampler {
  private:
   const Model& model_;
   const FrameCovariance& covariance_;
-  Eigen::MatrixXd root_;
+  GaussianDraws draws_;
 };
 
 double Sd(const std::vector<double>& values) {
@@ -115,37 +126,92 @@ double Sd(const std::vector<double>& values) {
   return std::sqrt(square / (values.size() - 1));
 }
 
-// The numbers' sds over 400 draws of both frames' parameters: ED's from
-// its covariance, ES's from its own plus its response to ED's draw
-// (tracked_response.h), ES turned with ED's spin, as the delta method
-// does.  The ejection fraction, a mid segment's Ecc and radial
-// contraction at ES.
+// The three numbers at ES: the ejection fraction, a mid segment's Ecc and
+// the radial contraction.
 struct Sds {
   double ratio = 0.0, ecc = 0.0, radial = 0.0;
 };
+
+Eigen::Vector3d EsNumbers(const FitAnalysis& a, const Model& ed_model,
+                          const Model& es_model, int segment) {
+  const ReferenceSamples samples = SampleReference(ed_model, a.layout);
+  const double edv =
+      MeasureFrame(ed_model, samples, a.regions, ed_model, VolumePlaneOf(a, 0))
+          .clinical.volume_ml;
+  const FrameNumbers at_es =
+      MeasureFrame(ed_model, samples, a.regions, es_model, VolumePlaneOf(a, 1));
+  return {(edv - at_es.clinical.volume_ml) / edv,
+          at_es.regions[segment].ecc_percent,
+          at_es.clinical.radial_contraction_percent};
+}
+
+// Through held depths the delta method counts ED's noise in ES's depth
+// noise E less what ED's model took up of it, the response through the
+// depths M_w (tracked_response.h): per number g E g' - min(g M_w C_ED
+// M_w' g', g E g'), which no Gaussian of ES's parameters need reproduce
+// (E - M_w C_ED M_w' is not a covariance).  So it is added to the sampled
+// rest's variance, g from central differences of ES's numbers here.
+Eigen::Vector3d DepthVariances(const SequenceFit& fit, const FitAnalysis& a,
+                               const TrackedResponse& response, int segment) {
+  const FrameCovariance& es = fit.frames[1].covariance;
+  if (response.through_wall.size() == 0 || es.depth_noise.size() == 0) {
+    return Eigen::Vector3d::Zero();
+  }
+  const int n = static_cast<int>(es.entries.size());
+  Eigen::MatrixXd g(3, n);
+  for (int j = 0; j < n; ++j) {
+    const double step = kStepSd * std::sqrt(std::max(es.covariance(j, j), 0.0));
+    if (!(step > 0.0)) {
+      g.col(j).setZero();
+      continue;
+    }
+    Eigen::VectorXd delta = Eigen::VectorXd::Zero(n);
+    delta[j] = step;
+    const Eigen::Vector3d up = EsNumbers(
+        a, a.models[0], Nudged(a.models[1], es.entries, delta), segment);
+    const Eigen::Vector3d down = EsNumbers(
+        a, a.models[0], Nudged(a.models[1], es.entries, -delta), segment);
+    g.col(j) = (up - down) / (2.0 * step);
+  }
+  const Eigen::Vector3d own = Variances(g, es.depth_noise);
+  return own - Variances(g * response.through_wall,
+                         fit.frames[0].covariance.covariance)
+                   .cwiseMin(own);
+}
+
+// The numbers' sds over 400 draws of both frames' parameters: ED's from
+// its covariance, ES's from its own (less held depths' noise, added after)
+// plus its response to ED's draw along the surface (tracked_response.h),
+// ES turned with ED's spin, as the delta method does.
 Sds SampledSds(const SequenceFit& fit, const FitAnalysis& a, int segment) {
+  const TrackedResponse response = MeasureTrackedResponse(fit, 1);
+  EXPECT_FALSE(response.Empty());
+  const FrameCovariance& c1 = fit.frames[1].covariance;
+  const bool depths = response.through_wall.size() > 0;
+  EXPECT_EQ(depths, c1.depth_noise.size() > 0);
   const ParameterSampler ed(a.models[0], fit.frames[0].covariance);
-  const ParameterSampler es(a.models[1], fit.frames[1].covariance);
-  const Eigen::MatrixXd response = TrackedResponse(fit, 1);
-  EXPECT_GT(response.size(), 0);
+  const GaussianDraws es(depths ? c1.covariance - c1.depth_noise
+                                : c1.covariance);
   std::mt19937 random(11);
   std::vector<double> ratio, ecc, radial;
   for (int draw = 0; draw < 400; ++draw) {
     const Eigen::VectorXd ed_delta = ed.Delta(&random);
     const Model ed_model = ed.At(ed_delta);
-    const Model es_model = SpunWith(
-        a.models[0], ed_model, es.At(es.Delta(&random) + response * ed_delta));
-    const ReferenceSamples samples = SampleReference(ed_model, a.layout);
-    const double edv = MeasureFrame(ed_model, samples, a.regions, ed_model,
-                                    VolumePlaneOf(a, 0))
-                           .clinical.volume_ml;
-    const FrameNumbers at_es = MeasureFrame(ed_model, samples, a.regions,
-                                            es_model, VolumePlaneOf(a, 1));
-    ratio.push_back((edv - at_es.clinical.volume_ml) / edv);
-    ecc.push_back(at_es.regions[segment].ecc_percent);
-    radial.push_back(at_es.clinical.radial_contraction_percent);
+    const Eigen::VectorXd es_delta =
+        es.Delta(&random) + response.along_surface * ed_delta;
+    const Model es_model = SpunWith(a.models[0], ed_model,
+                                    Nudged(a.models[1], c1.entries, es_delta));
+    const Eigen::Vector3d y = EsNumbers(a, ed_model, es_model, segment);
+    ratio.push_back(y[0]);
+    ecc.push_back(y[1]);
+    radial.push_back(y[2]);
   }
-  return {Sd(ratio), Sd(ecc), Sd(radial)};
+  const Eigen::Vector3d depth = DepthVariances(fit, a, response, segment);
+  const auto with = [](double sd, double variance) {
+    return std::sqrt(sd * sd + variance);
+  };
+  return {with(Sd(ratio), depth[0]), with(Sd(ecc), depth[1]),
+          with(Sd(radial), depth[2])};
 }
 
 // The delta method's sds against the sampled ones.  400 draws give a
@@ -245,7 +311,10 @@ std::vector<Eigen::VectorXd> StraightforwardVariances(const SequenceFit& fit,
   const FrameCovariance& c0 = fit.frames[0].covariance;
   const Eigen::MatrixXd from_ed = NumberJacobian(ed, c0, of_ed);
   const Eigen::Index size = from_ed.rows() / 2;
-  const Eigen::MatrixXd response = TrackedResponse(fit, 1);
+  // Mid-wall tags: their depth is the surface's, held by nothing.
+  const TrackedResponse tracked = MeasureTrackedResponse(fit, 1);
+  EXPECT_EQ(tracked.through_wall.size(), 0);
+  const Eigen::MatrixXd& response = tracked.along_surface;
   EXPECT_EQ(response.rows(), own_jacobian.cols());
   variance[0] = Variances(from_ed.topRows(size), c0.covariance);
   variance[1] += Variances(from_ed.bottomRows(size) + own_jacobian * response,

@@ -64,18 +64,29 @@ Eigen::MatrixXd MaterialJacobian(const Model& model, const MaterialPoint& m,
   return jacobian;
 }
 
-// Per tag, c_i = -K_i L_i^+ dx_i's matrix -K_i L_i^+ (3 x 3).
-std::vector<Eigen::Matrix3d> RelabelMaps(const Model& reference,
-                                         const Model& frame,
-                                         const std::vector<MaterialPoint>& tags,
-                                         int columns) {
-  std::vector<Eigen::Matrix3d> maps;
+// Per tag, c_i = -K_i L_i^+ dx_i's matrix -K_i L_i^+ (3 x 3), split into
+// the part through the tag's (u, v) and the part through its depth w (0
+// with two columns).
+struct RelabelMap {
+  Eigen::Matrix3d along_surface, through_wall;
+};
+
+std::vector<RelabelMap> RelabelMaps(const Model& reference, const Model& frame,
+                                    const std::vector<MaterialPoint>& tags,
+                                    int columns) {
+  std::vector<RelabelMap> maps;
   maps.reserve(tags.size());
   for (const MaterialPoint& m : tags) {
     const Eigen::MatrixXd along = MaterialJacobian(reference, m, columns);
     const Eigen::MatrixXd inverse =
         along.completeOrthogonalDecomposition().pseudoInverse();
-    maps.push_back(-MaterialJacobian(frame, m, columns) * inverse);
+    const Eigen::MatrixXd follow = -MaterialJacobian(frame, m, columns);
+    RelabelMap map;
+    map.along_surface = follow.leftCols(2) * inverse.topRows(2);
+    map.through_wall = columns == 3
+                           ? Eigen::Matrix3d(follow.col(2) * inverse.row(2))
+                           : Eigen::Matrix3d::Zero();
+    maps.push_back(map);
   }
   return maps;
 }
@@ -111,7 +122,7 @@ Eigen::MatrixXd PointJacobian(const Model& model,
 
 }  // namespace
 
-Eigen::MatrixXd TrackedResponse(const SequenceFit& fit, size_t t) {
+TrackedResponse MeasureTrackedResponse(const SequenceFit& fit, size_t t) {
   if (!Applies(fit, t)) return {};
   const FrameFit& frame = fit.frames[t];
   const Model reference = GlobalModel(fit, 0);
@@ -120,25 +131,34 @@ Eigen::MatrixXd TrackedResponse(const SequenceFit& fit, size_t t) {
   const std::vector<MaterialPoint> tags = ResponseTags(frame.material, &index);
   // A held depth is where frame 0's model put the tag across the wall;
   // ranked anew, or on a surface, the tag keeps its depth.
-  const int columns = fit.config.Solid() && frame.depths_held ? 3 : 2;
-  const std::vector<Eigen::Matrix3d> maps =
-      RelabelMaps(reference, model, tags, columns);
+  const bool through_wall = fit.config.Solid() && frame.depths_held;
+  const std::vector<RelabelMap> maps =
+      RelabelMaps(reference, model, tags, through_wall ? 3 : 2);
   // The residuals' change per unit step of frame 0's coordinates, weighed by
   // the loss and by each tag's share of the frame's tags.
-  Eigen::MatrixXd change = PointJacobian(reference, fit.frames[0].covariance,
-                                         tags, /*skip_pose=*/true);
+  const Eigen::MatrixXd moved = PointJacobian(
+      reference, fit.frames[0].covariance, tags, /*skip_pose=*/true);
+  Eigen::MatrixXd along(moved.rows(), moved.cols());
+  Eigen::MatrixXd across(through_wall ? moved.rows() : 0, moved.cols());
   const double share = static_cast<double>(frame.material.size()) /
                        static_cast<double>(tags.size());
   const bool weighed = frame.loss_weights.size() == frame.material.size();
   for (size_t i = 0; i < tags.size(); ++i) {
     const double weight =
         share * (weighed ? frame.loss_weights[index[i]] : 1.0);
-    change.middleRows<3>(3 * i) =
-        weight * maps[i] * change.middleRows<3>(3 * i);
+    const auto rows = moved.middleRows<3>(3 * i);
+    along.middleRows<3>(3 * i) = weight * maps[i].along_surface * rows;
+    if (through_wall) {
+      across.middleRows<3>(3 * i) = weight * maps[i].through_wall * rows;
+    }
   }
   const Eigen::MatrixXd data =
       PointJacobian(model, frame.covariance, tags, /*skip_pose=*/false);
-  return -frame.covariance.unit_covariance * (data.transpose() * change);
+  const Eigen::MatrixXd& unit = frame.covariance.unit_covariance;
+  TrackedResponse response;
+  response.along_surface = -unit * (data.transpose() * along);
+  if (through_wall) response.through_wall = -unit * (data.transpose() * across);
+  return response;
 }
 
 }  // namespace pfdm

@@ -50,7 +50,7 @@ TEST(TrackedResponseTest, AStillWallFollowsFrameZerosRadius) {
   const SequenceFit fit = FitStill(LvTagLayer::kWall);
   ASSERT_TRUE(fit.config.Solid());
   ASSERT_TRUE(fit.frames[1].depths_held);
-  const Eigen::MatrixXd response = TrackedResponse(fit, 1);
+  const Eigen::MatrixXd response = MeasureTrackedResponse(fit, 1).Total();
   ASSERT_EQ(response.rows(),
             static_cast<int>(fit.frames[1].covariance.entries.size()));
   ASSERT_EQ(response.cols(),
@@ -61,6 +61,27 @@ TEST(TrackedResponseTest, AStillWallFollowsFrameZerosRadius) {
   }
 }
 
+// Through the wall most of it is the depths': the (u, v) part alone follows
+// a radial step about as a surface does (next test), the depths' part the
+// rest; on one surface there is no depths' part.
+TEST(TrackedResponseTest, ThroughTheWallMostOfItIsTheDepths) {
+  const SequenceFit fit = FitStill(LvTagLayer::kWall);
+  const TrackedResponse wall = MeasureTrackedResponse(fit, 1);
+  ASSERT_FALSE(wall.Empty());
+  ASSERT_EQ(wall.through_wall.rows(), wall.along_surface.rows());
+  for (int k : {2, 4, 6}) {
+    const double along = Follows(fit, wall.along_surface, kA1, k);
+    const double depths = Follows(fit, wall.through_wall, kA1, k);
+    EXPECT_LT(std::abs(along), 0.45) << k;
+    EXPECT_GT(depths, 0.55) << k;
+    EXPECT_NEAR(along + depths, 1.0, 0.1) << k;
+  }
+  const TrackedResponse surface =
+      MeasureTrackedResponse(FitStill(LvTagLayer::kMidwall), 1);
+  ASSERT_FALSE(surface.Empty());
+  EXPECT_EQ(surface.through_wall.size(), 0);
+}
+
 // On one surface a tag's material point moves along the surface alone: of
 // a step of frame 0's radius only the part along the inclined wall moves
 // it, and the frame follows that part (0.36, 0.26 and 0.23 at knots 2, 4
@@ -69,7 +90,7 @@ TEST(TrackedResponseTest, AStillWallFollowsFrameZerosRadius) {
 TEST(TrackedResponseTest, AStillSurfaceDoesNotFollowARadialStep) {
   const SequenceFit fit = FitStill(LvTagLayer::kMidwall);
   ASSERT_FALSE(fit.config.Solid());
-  const Eigen::MatrixXd response = TrackedResponse(fit, 1);
+  const Eigen::MatrixXd response = MeasureTrackedResponse(fit, 1).Total();
   ASSERT_GT(response.size(), 0);
   for (int k : {2, 4, 6}) {
     EXPECT_LT(std::abs(Follows(fit, response, kA1, k)), 0.45) << k;
@@ -90,8 +111,8 @@ TEST(TrackedResponseTest, TheLocalFieldDoesNotChangeIt) {
       FitSequence(points, ModelConfig::Paper(9), options);
   ASSERT_EQ(bilinear.frames[1].state.knots, transmural.frames[1].state.knots);
   ASSERT_FALSE(transmural.frames[1].state.local.empty());
-  const Eigen::MatrixXd a = TrackedResponse(bilinear, 1);
-  const Eigen::MatrixXd b = TrackedResponse(transmural, 1);
+  const Eigen::MatrixXd a = MeasureTrackedResponse(bilinear, 1).Total();
+  const Eigen::MatrixXd b = MeasureTrackedResponse(transmural, 1).Total();
   ASSERT_GT(a.size(), 0);
   EXPECT_EQ(a, b);
 }
@@ -100,16 +121,16 @@ TEST(TrackedResponseTest, TheLocalFieldDoesNotChangeIt) {
 // where end-diastole is not frame 0 (the delta method steps ED).
 TEST(TrackedResponseTest, NoneWhereItDoesNotApply) {
   SequenceFit fit = FitStill(LvTagLayer::kMidwall);
-  EXPECT_EQ(TrackedResponse(fit, 0).size(), 0);
-  EXPECT_EQ(TrackedResponse(fit, 2).size(), 0);
+  EXPECT_EQ(MeasureTrackedResponse(fit, 0).Total().size(), 0);
+  EXPECT_EQ(MeasureTrackedResponse(fit, 2).Total().size(), 0);
   fit.frames[1].mixed = true;
-  EXPECT_EQ(TrackedResponse(fit, 1).size(), 0);
+  EXPECT_EQ(MeasureTrackedResponse(fit, 1).Total().size(), 0);
   fit.frames[1].mixed = false;
   fit.ed_frame = 1;
-  EXPECT_EQ(TrackedResponse(fit, 1).size(), 0);
+  EXPECT_EQ(MeasureTrackedResponse(fit, 1).Total().size(), 0);
   fit.ed_frame = 0;
   fit.frames[1].covariance.unit_covariance.resize(0, 0);
-  EXPECT_EQ(TrackedResponse(fit, 1).size(), 0);
+  EXPECT_EQ(MeasureTrackedResponse(fit, 1).Total().size(), 0);
 }
 
 }  // namespace

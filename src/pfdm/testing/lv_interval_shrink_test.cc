@@ -98,17 +98,22 @@ TEST(LvIntervalShrinkTest, HalfWidthsShrinkWithMidwallTags) {
   ExpectRatios(ratios, {"GCS %"}, 0.33, 0.5);
 }
 
-// Through the wall the sds shrink faster (0.36-0.56, most under 0.5): the
+// Through the wall most sds shrink faster (0.36-0.52, most under 0.5): the
 // ranked depths' error, about a tenth of the wall at 400 tags, counts in sigma
 // and shrinks as the ranks grow finer (docs/uncertainty.md, What it is).
-// Segment 9's rotation shrinks least (0.596 since ES follows ED's errors,
-// report/tracked_response.h).
+// Segment 9's rotation shrinks 0.595 (0.57 before ES followed ED's errors,
+// report/tracked_response.h); ESV 0.635 and the volume fraction 0.617
+// since ED's noise through the held depths is counted once: that takes
+// 0.28 ml^2 off ESV's variance at 400 tags and 0.02 at 1,600, the share
+// through ED's covariance shrinking 14 times where the depths' noise does
+// 3 (ED's sigma carries the ranks' error, which shrinks as they grow
+// finer).
 TEST(LvIntervalShrinkTest, HalfWidthsShrinkWithWallTags) {
   const auto ratios =
       ShrinkRatios(Case{LvTagLayer::kWall}, "tags through the wall");
   for (const auto& [name, ratio] : ratios) {
     EXPECT_GE(ratio, 0.3) << name;
-    EXPECT_LE(ratio, 0.62) << name;
+    EXPECT_LE(ratio, 0.65) << name;
   }
 }
 

@@ -62,8 +62,9 @@ void ScaleByDirectionalNoise(const NormalParts& parts,
       NeighbourNormalExcessMm2(points, residuals, wall_normals);
   if (excess <= 0.0) return;
   const Eigen::MatrixXd head = parts.pseudo_inverse.topRows(n);
-  covariance->covariance +=
+  covariance->depth_noise =
       excess * head * normal_data_normal * head.transpose();
+  covariance->covariance += covariance->depth_noise;
 }
 
 }  // namespace pfdm

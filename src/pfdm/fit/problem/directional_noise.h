@@ -30,7 +30,9 @@
 //
 //   C_held = C + e A^+ D_n A^+,
 //
-// D_n = sum_i J_i' n_i n_i' J_i, e measured from neighbouring tags'
+// D_n = sum_i J_i' n_i n_i' J_i (the added term kept apart too:
+// FrameCovariance::depth_noise, part of which frame 0's model took up,
+// report/tracked_response.h), e measured from neighbouring tags'
 // residual differences (NeighbourNormalExcessMm2), which leave out a
 // misfit the global model leaves smooth along the normal (a hypokinetic
 // segment).  On the LV phantom's 400 tags through the wall (100 draws) the

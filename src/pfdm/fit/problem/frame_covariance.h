@@ -91,6 +91,10 @@ struct FrameCovariance {
   // squares' response to a change of its data, -(J'J)^+ J'dr (report/
   // tracked_response.h).  Empty where not computed.
   Eigen::MatrixXd unit_covariance;
+  // The part of `covariance` that held depths' noise adds, e A^+ D_n A^+
+  // (directional_noise.h): frame 0's noise, which also moved frame 0's
+  // model (report/tracked_response.h).  Empty elsewhere.
+  Eigen::MatrixXd depth_noise;
   double seconds = 0.0;  // What computing it took.
   // The local field, fitted after this, is not in `covariance`: these are
   // draws of the field the frame's noise alone fits (fit/stages/
