@@ -70,17 +70,19 @@ TEST(IntervalCalibrationTest, TheCalibratedByKindOfData) {
   // net twist and torsion 0.97-0.98 (claimed), the volume fraction 0.987
   // without the lesion and radial contraction 0.987 (too wide).  With the
   // tracked frame's response to ED (2026-12-08) radial contraction 0.977
-  // (claimed), ESV 0.990-0.993 (too wide, no longer).
+  // (claimed), ESV 0.990-0.993 (too wide, no longer).  With ED's noise
+  // through the held depths counted once ESV 0.967 and the volume fraction
+  // 0.967-0.970 (claimed).
   EXPECT_TRUE(Has(D::kWallTags, "net_twist_deg"));
   EXPECT_TRUE(Has(D::kWallTags, "torsion_deg_per_cm"));
-  EXPECT_FALSE(Has(D::kWallTags, "ratio"));
+  EXPECT_TRUE(Has(D::kWallTags, "ratio"));
   EXPECT_TRUE(Has(D::kWallTags, "wall_thickening_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "peak_gcs_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "gls_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "thickening_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "longitudinal_shortening_percent"));
   EXPECT_TRUE(Has(D::kWallTags, "radial_contraction_percent"));
-  EXPECT_FALSE(Has(D::kWallTags, "esv_ml"));
+  EXPECT_TRUE(Has(D::kWallTags, "esv_ml"));
   EXPECT_TRUE(Has(D::kWallTags, "gcs_percent"));
   // Contours: no turn about the axis is seen.  Each later frame's own
   // length draws (its base rim is held at its highest points) took GLS
