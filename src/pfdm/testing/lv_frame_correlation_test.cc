@@ -133,7 +133,6 @@ void Print(const char* name, const Sums& s, int n) {
 // draws) when ED's noise was counted once through the held depths (the
 // next test).
 TEST(LvFrameCorrelationTest, WallTagsFollowEndDiastole) {
-  const Case c{LvTagLayer::kWall};
   const Pick radial = [](const ClinicalSummary& s) {
     return s.radial_contraction_percent;
   };
