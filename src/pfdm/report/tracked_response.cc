@@ -92,29 +92,25 @@ std::vector<RelabelMap> RelabelMaps(const Model& reference, const Model& frame,
 }
 
 // d (tags' world points) / d (covariance coordinate) of `model`, one
-// column a coordinate (3 rows a tag), central differences with steps of
-// kStepSd sd; 0 for a coordinate without variance or `skip_pose`'s pose.
+// column a coordinate (3 rows a tag): NumberJacobian's central differences
+// of the points; `skip_pose`'s pose columns set to 0.
 Eigen::MatrixXd PointJacobian(const Model& model,
                               const FrameCovariance& covariance,
                               const std::vector<MaterialPoint>& tags,
                               bool skip_pose) {
-  const int n = static_cast<int>(covariance.entries.size());
-  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(3 * tags.size(), n);
-  for (int j = 0; j < n; ++j) {
+  const NumbersOf points = [&tags](const Model& moved) {
+    std::vector<double> flat;
+    flat.reserve(3 * tags.size());
+    for (const Eigen::Vector3d& x : WorldPoints(moved, tags)) {
+      flat.insert(flat.end(), {x.x(), x.y(), x.z()});
+    }
+    return flat;
+  };
+  Eigen::MatrixXd jacobian = NumberJacobian(model, covariance, points);
+  for (size_t j = 0; skip_pose && j < covariance.entries.size(); ++j) {
     const Kind kind = covariance.entries[j].kind;
-    const bool pose = kind == Kind::kCenter || kind == Kind::kRotation;
-    const double variance = covariance.covariance(j, j);
-    if ((skip_pose && pose) || !(variance > 0.0)) continue;
-    const double step = kStepSd * std::sqrt(variance);
-    Eigen::VectorXd delta = Eigen::VectorXd::Zero(n);
-    delta[j] = step;
-    const std::vector<Eigen::Vector3d> plus =
-        WorldPoints(Nudged(model, covariance.entries, delta), tags);
-    delta[j] = -step;
-    const std::vector<Eigen::Vector3d> minus =
-        WorldPoints(Nudged(model, covariance.entries, delta), tags);
-    for (size_t i = 0; i < tags.size(); ++i) {
-      jacobian.block<3, 1>(3 * i, j) = (plus[i] - minus[i]) / (2.0 * step);
+    if (kind == Kind::kCenter || kind == Kind::kRotation) {
+      jacobian.col(static_cast<Eigen::Index>(j)).setZero();
     }
   }
   return jacobian;
