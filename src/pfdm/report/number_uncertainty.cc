@@ -209,6 +209,23 @@ Eigen::VectorXd SharedDepthVariance(const Eigen::MatrixXd& own,
       .cwiseMin(Variances(own, frame.depth_noise));
 }
 
+// The variances of numbers whose rows along ED's parameters are along_ed
+// and along frame t's own are `own` (none at ED: no rows), through held
+// depths `through_depths` (none elsewhere): ED's share, the frame's, less
+// what both counted of ED's noise through the depths.
+Eigen::VectorXd NumberVariances(const Eigen::MatrixXd& along_ed,
+                                const Eigen::MatrixXd& own,
+                                const Eigen::MatrixXd& through_depths,
+                                const FrameCovariance& frame,
+                                const Eigen::MatrixXd& ed_covariance) {
+  Eigen::VectorXd total = Variances(along_ed, ed_covariance);
+  if (own.rows() == total.size()) {
+    total += Variances(own, frame.covariance) -
+             SharedDepthVariance(own, through_depths, frame, ed_covariance);
+  }
+  return total;
+}
+
 // Where volume_ml sits in Flatten's order.
 int VolumeRow() {
   ClinicalSummary c;
@@ -225,24 +242,20 @@ double EjectionRatioSd(const SequenceFit& fit, const EjectionFraction& ef,
   const double d_edv = ef.esv_ml / (ef.edv_ml * ef.edv_ml);
   const double d_esv = -1.0 / ef.edv_ml;
   const int row = VolumeRow();
-  const Eigen::RowVectorXd along_ed =
+  // ES's volume row of `rows` times d ratio / d ESV; none where ES has no
+  // such rows.
+  const auto es_row = [&](const Eigen::MatrixXd& rows) -> Eigen::MatrixXd {
+    if (rows.rows() <= row) return {};
+    return d_esv * rows.row(row);
+  };
+  const Eigen::MatrixXd along_ed =
       d_edv * jacobians.along_ed[ef.ed_frame].row(row) +
       d_esv * jacobians.along_ed[ef.es_frame].row(row);
-  const Eigen::MatrixXd& ed_covariance =
-      fit.frames[fit.ed_frame].covariance.covariance;
-  double variance = along_ed * ed_covariance * along_ed.transpose();
-  const Eigen::MatrixXd& own = jacobians.own[ef.es_frame];
-  if (own.rows() > row) {
-    const FrameCovariance& es_covariance = fit.frames[ef.es_frame].covariance;
-    const Eigen::MatrixXd es = d_esv * own.row(row);
-    variance += (es * es_covariance.covariance * es.transpose())(0, 0);
-    const Eigen::MatrixXd& depths = jacobians.through_depths[ef.es_frame];
-    if (depths.rows() > row) {
-      const Eigen::MatrixXd es_depths = d_esv * depths.row(row);
-      variance -=
-          SharedDepthVariance(es, es_depths, es_covariance, ed_covariance)[0];
-    }
-  }
+  const double variance =
+      NumberVariances(along_ed, es_row(jacobians.own[ef.es_frame]),
+                      es_row(jacobians.through_depths[ef.es_frame]),
+                      fit.frames[ef.es_frame].covariance,
+                      fit.frames[fit.ed_frame].covariance.covariance)[0];
   return std::sqrt(std::max(variance, 0.0));
 }
 
@@ -448,7 +461,6 @@ NumberSd PropagateUncertainty(const SequenceFit& fit,
     // A number of frame t moves with ED's parameters directly and through
     // frame t's fit, which follows ED's (TrackedResponse).
     const Eigen::MatrixXd& own = jacobians.own[t];
-    const FrameCovariance& covariance = fit.frames[t].covariance;
     Eigen::MatrixXd along_ed = from_ed.middleRows(t * size, size);
     const TrackedResponse& response = responses[t];
     const bool follows = own.rows() == along_ed.rows() && !response.Empty() &&
@@ -461,13 +473,10 @@ NumberSd PropagateUncertainty(const SequenceFit& fit,
         through_depths = own * response.through_wall;
       }
     }
-    Eigen::VectorXd total = Variances(along_ed, ed_covariance);
-    if (own.rows() == total.size()) {
-      total +=
-          Variances(own, covariance.covariance) -
-          SharedDepthVariance(own, through_depths, covariance, ed_covariance);
-    }
-    StoreFrame(analysis, t, total, &sd);
+    StoreFrame(analysis, t,
+               NumberVariances(along_ed, own, through_depths,
+                               fit.frames[t].covariance, ed_covariance),
+               &sd);
     jacobians.along_ed.push_back(std::move(along_ed));
     jacobians.through_depths.push_back(std::move(through_depths));
   }

@@ -15,11 +15,13 @@
 // depends on two frames' parameters.  Frame t's covariance is conditional
 // on ED's model (frame_covariance.h), and a tracked frame's fit follows
 // ED's errors through the material points ED's fit gave its tags (M_t,
-// tracked_response.h): var y = g_t' C_t g_t + h' C_ED h, h = g_ED + M_t' g_t,
+// tracked_response.h): var y = g_t' C_t g_t + h' C_ED h, h = g_ED + M_t' g_t
+// (M_t's part along the surface), less what ED's noise through held depths
+// counted twice (M_t's part through them against the depth noise in C_t),
 // and ED's spin about its axis, which every frame shares, turns them all
 // (SpunWith).  ED's own numbers (and everything at t = ED) vary both at
-// once.  The ejection fraction, (EDV - ESV) / EDV, adds the two
-// volumes' variances likewise.
+// once.  The ejection fraction, (EDV - ESV) / EDV, takes the two volumes'
+// rows, summed along ED's parameters (ESV follows them), likewise.
 #ifndef PFDM_REPORT_NUMBER_UNCERTAINTY_H_
 #define PFDM_REPORT_NUMBER_UNCERTAINTY_H_
 
