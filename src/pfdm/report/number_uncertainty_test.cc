@@ -150,29 +150,18 @@ Eigen::Vector3d EsNumbers(const FitAnalysis& a, const Model& ed_model,
 // depths M_w (tracked_response.h): per number g E g' - min(g M_w C_ED
 // M_w' g', g E g'), which no Gaussian of ES's parameters need reproduce
 // (E - M_w C_ED M_w' is not a covariance).  So it is added to the sampled
-// rest's variance, g from central differences of ES's numbers here.
+// rest's variance, g from ES's numbers measured here from scratch.
 Eigen::Vector3d DepthVariances(const SequenceFit& fit, const FitAnalysis& a,
                                const TrackedResponse& response, int segment) {
   const FrameCovariance& es = fit.frames[1].covariance;
   if (response.through_wall.size() == 0 || es.depth_noise.size() == 0) {
     return Eigen::Vector3d::Zero();
   }
-  const int n = static_cast<int>(es.entries.size());
-  Eigen::MatrixXd g(3, n);
-  for (int j = 0; j < n; ++j) {
-    const double step = kStepSd * std::sqrt(std::max(es.covariance(j, j), 0.0));
-    if (!(step > 0.0)) {
-      g.col(j).setZero();
-      continue;
-    }
-    Eigen::VectorXd delta = Eigen::VectorXd::Zero(n);
-    delta[j] = step;
-    const Eigen::Vector3d up = EsNumbers(
-        a, a.models[0], Nudged(a.models[1], es.entries, delta), segment);
-    const Eigen::Vector3d down = EsNumbers(
-        a, a.models[0], Nudged(a.models[1], es.entries, -delta), segment);
-    g.col(j) = (up - down) / (2.0 * step);
-  }
+  const NumbersOf numbers = [&](const Model& moved) {
+    const Eigen::Vector3d y = EsNumbers(a, a.models[0], moved, segment);
+    return std::vector<double>{y[0], y[1], y[2]};
+  };
+  const Eigen::MatrixXd g = NumberJacobian(a.models[1], es, numbers);
   const Eigen::Vector3d own = Variances(g, es.depth_noise);
   return own - Variances(g * response.through_wall,
                          fit.frames[0].covariance.covariance)
